@@ -1,0 +1,126 @@
+#include "pipeline/camera.h"
+
+#include "pipeline/error.h"
+#include "pipeline/view_mapping.h"
+
+#include <algorithm>
+
+namespace vplab {
+
+std::string_view toString(Projection p) {
+  switch (p) {
+    case Projection::perspective: return "perspective";
+    case Projection::parallel: return "parallel";
+    case Projection::oblique: return "oblique";
+  }
+  return "?";
+}
+
+std::optional<Projection> projectionFromString(std::string_view s) {
+  if (s == "perspective") return Projection::perspective;
+  if (s == "parallel") return Projection::parallel;
+  if (s == "oblique") return Projection::oblique;
+  return std::nullopt;
+}
+
+namespace {
+
+// Seed 15.2.2: N points from VRP to the eye, U = VUP × N, V = N × U. No checks here.
+ViewFrame frameUnchecked(const Camera& c) {
+  ViewFrame f{};
+  const Vec3 toEye = c.prp - c.vrp;
+  f.vpd = glm::length(toEye);
+  f.n = toEye / f.vpd;
+  f.u = glm::normalize(glm::cross(c.vup, f.n));
+  f.v = glm::cross(f.n, f.u);
+  f.dmin = f.vpd - c.front;
+  f.dmax = f.vpd - c.back;
+  return f;
+}
+
+// Relative tolerances: a camera closer than this to degenerate would give matrices dominated by
+// rounding error, so it is refused with the same message as the exactly degenerate one.
+constexpr double kDegenerate = 1e-12;
+constexpr double kParallelSine = 1e-9;  // |VUP × N| / |VUP| below this: VUP parallel to N
+
+std::optional<std::string> inputError(const Camera& c) {
+  if (!isFinite(c.vrp) || !isFinite(c.prp) || !isFinite(c.vup))
+    return "VRP " + format(c.vrp) + ", PRP " + format(c.prp) + " and VUP " + format(c.vup) +
+           " must be finite numbers";
+  const ViewWindow& w = c.window;
+  if (!isFinite(w.xmin) || !isFinite(w.xmax) || !isFinite(w.ymin) || !isFinite(w.ymax) ||
+      !isFinite(c.front) || !isFinite(c.back))
+    return "the window and the front and back planes must be finite numbers";
+  const double scale = std::max({1.0, glm::length(c.vrp), glm::length(c.prp)});
+  if (glm::length(c.prp - c.vrp) <= kDegenerate * scale)
+    return "PRP " + format(c.prp) + " equals VRP " + format(c.vrp) +
+           ": the view plane normal N = PRP − VRP is undefined";
+  if (glm::length(c.vup) <= kDegenerate)
+    return "VUP " + format(c.vup) + " is the zero vector: the camera has no up direction";
+  const Vec3 n = glm::normalize(c.prp - c.vrp);
+  if (glm::length(glm::cross(glm::normalize(c.vup), n)) <= kParallelSine)
+    return "VUP " + format(c.vup) + " is parallel to the view plane normal N " + format(n) +
+           " (PRP − VRP): U = VUP × N is undefined";
+  if (!(w.xmax > w.xmin))
+    return "the window needs xmin < xmax, but xmin = " + format(w.xmin) +
+           ", xmax = " + format(w.xmax);
+  if (!(w.ymax > w.ymin))
+    return "the window needs ymin < ymax, but ymin = " + format(w.ymin) +
+           ", ymax = " + format(w.ymax);
+  if (!(c.back < c.front))
+    return "the back plane must lie behind the front plane (B < F), but B = " + format(c.back) +
+           ", F = " + format(c.front);
+  if (c.projection == Projection::perspective) {
+    const double vpd = glm::length(c.prp - c.vrp);
+    if (!(c.front < vpd))
+      return "perspective needs the front plane in front of the eye (F < VPD), but F = " +
+             format(c.front) + ", VPD = |PRP − VRP| = " + format(vpd) +
+             " (dmin = VPD − F = " + format(vpd - c.front) + " must be > 0)";
+  }
+  if (c.projection == Projection::oblique) {
+    if (!isFinite(c.oblique.d) || !isFinite(c.oblique.phiDeg) || c.oblique.d < 0)
+      return "the oblique projection needs a finite shortening factor d >= 0 and a finite angle "
+             "phi, but d = " + format(c.oblique.d) + ", phi = " + format(c.oblique.phiDeg);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> cameraError(const Camera& camera) {
+  if (auto e = inputError(camera)) return e;
+  // Finite inputs can still overflow (a window 1e-300 wide): check what the stages will use.
+  const ViewFrame f = frameUnchecked(camera);
+  const Mat4 m = npcFromVrc(camera, f) * vrcFromWc(f, camera.vrp);
+  if (!isFinite(m) || !isFinite(f.u) || !isFinite(f.v) || !isFinite(f.n))
+    return "the camera's values are too large or too small: the view mapping is not finite "
+           "(window " + format(camera.window.xmin) + ".." + format(camera.window.xmax) + " × " +
+           format(camera.window.ymin) + ".." + format(camera.window.ymax) + ", VPD " +
+           format(f.vpd) + ")";
+  return std::nullopt;
+}
+
+ViewFrame viewFrame(const Camera& camera) {
+  if (auto e = cameraError(camera)) throw Error("invalid camera: " + *e);
+  return frameUnchecked(camera);
+}
+
+Mat4 vrcFromWc(const ViewFrame& f, const Vec3& vrp) {
+  // clang-format off
+  const Mat4 rotate = matrixFromRows(
+      f.u.x, f.u.y, f.u.z, 0,
+      f.v.x, f.v.y, f.v.z, 0,
+      f.n.x, f.n.y, f.n.z, 0,
+      0,     0,     0,     1);
+  const Mat4 translate = matrixFromRows(
+      1, 0, 0, -vrp.x,
+      0, 1, 0, -vrp.y,
+      0, 0, 1, -vrp.z,
+      0, 0, 0, 1);
+  // clang-format on
+  return rotate * translate;
+}
+
+Mat4 vrcFromWc(const Camera& camera) { return vrcFromWc(viewFrame(camera), camera.vrp); }
+
+}  // namespace vplab

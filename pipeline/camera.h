@@ -1,0 +1,66 @@
+// The synthetic camera (seed 15.1) and stage 2, view orientation WC → VRC (seed 15.2.2).
+//
+// VRP is the point looked at and the origin of VRC; PRP is the eye (projection reference point);
+// VUP the view-up vector. The window lies in the view plane z = 0 of VRC, the front and back planes
+// are z = F and z = B in VRC with B < F (domain.md, stages 2 and 3).
+#pragma once
+
+#include "pipeline/math.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace vplab {
+
+enum class Projection { perspective, parallel, oblique };
+
+std::string_view toString(Projection p);
+std::optional<Projection> projectionFromString(std::string_view s);
+
+/// The window in the view plane z = 0, in VRC.
+struct ViewWindow {
+  double xmin = -1, xmax = 1, ymin = -1, ymax = 1;
+  double width() const { return xmax - xmin; }
+  double height() const { return ymax - ymin; }
+};
+
+/// Oblique parallel projection (seed 14.3.2): shortening factor d = 1 / tan α and angle φ.
+struct ObliqueParams {
+  double d = 0.5;
+  double phiDeg = 50;
+};
+inline constexpr ObliqueParams kCavalier{1.0, 35.0};  // α = 45°: depth at full length
+inline constexpr ObliqueParams kCabinet{0.5, 50.0};   // α = 63.43°: depth at half length
+
+struct Camera {
+  Vec3 vrp{0, 0, 0};  // WC
+  Vec3 prp{0, 0, 5};  // WC
+  Vec3 vup{0, 1, 0};  // WC, direction
+  ViewWindow window{-1, 1, -0.75, 0.75};
+  double front = 2;   // F, VRC z of the front plane
+  double back = -2;   // B, VRC z of the back plane, B < F
+  Projection projection = Projection::perspective;
+  ObliqueParams oblique = kCabinet;  // used when projection == oblique
+};
+
+/// The VRC axes and distances derived from a valid camera (seed 15.2.2, domain.md stage 2).
+struct ViewFrame {
+  Vec3 u, v, n;  // WC; U, V, N right-handed, the eye on +N
+  double vpd;    // |PRP − VRP|: the eye is at VRC (0, 0, VPD)
+  double dmin;   // VPD − F: distance eye → front plane (perspective)
+  double dmax;   // VPD − B: distance eye → back plane (perspective)
+};
+
+/// Why the camera is invalid, naming the offending values; nullopt when it is valid.
+/// A valid camera never leads to NaN or infinity in any stage matrix.
+std::optional<std::string> cameraError(const Camera& camera);
+
+/// U, V, N, VPD, dmin, dmax. Throws vplab::Error with cameraError's message when invalid.
+ViewFrame viewFrame(const Camera& camera);
+
+/// Stage 2: vrcFromWc = [U 0; V 0; N 0; 0 0 0 1] · T(−VRP) (seed 15.2.2; rows are U, V, N).
+Mat4 vrcFromWc(const ViewFrame& frame, const Vec3& vrp);
+Mat4 vrcFromWc(const Camera& camera);
+
+}  // namespace vplab

@@ -1,0 +1,91 @@
+#include "pipeline/clipping.h"
+
+namespace vplab {
+
+std::string_view planeName(int plane) {
+  static constexpr std::string_view names[] = {"left", "right", "bottom", "top", "back", "front"};
+  return names[plane];
+}
+
+std::string_view planeInequality(int plane) {
+  static constexpr std::string_view names[] = {"x >= 0", "x <= w", "y >= 0",
+                                               "y <= w", "z >= 0", "z <= w"};
+  return names[plane];
+}
+
+ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t) {
+  ClipVertex v;
+  v.p = a.p + t * (b.p - a.p);
+  for (int i = 0; i < kPlaneCount; ++i) v.bc[i] = a.bc[i] + t * (b.bc[i] - a.bc[i]);
+  v.source = ClipVertex::kCreated;
+  v.onPlanes = a.onPlanes & b.onPlanes;
+  return v;
+}
+
+void snapToPlanes(Vec4& p, uint8_t onPlanes) {
+  if (onPlanes & 1u << kLeft) p.x = 0;
+  if (onPlanes & 1u << kRight) p.x = p.w;
+  if (onPlanes & 1u << kBottom) p.y = 0;
+  if (onPlanes & 1u << kTop) p.y = p.w;
+  if (onPlanes & 1u << kBack) p.z = 0;
+  if (onPlanes & 1u << kFront) p.z = p.w;
+}
+
+namespace {
+
+// The new vertex on the edge from an inside vertex to an outside one, snapped onto the plane:
+// its boundary value is exactly 0 (its coordinates are snapped by the caller, who knows the space).
+ClipVertex intersect(const ClipVertex& inside, const ClipVertex& outside, int plane) {
+  const double t = inside.bc[plane] / (inside.bc[plane] - outside.bc[plane]);
+  ClipVertex v = lerp(inside, outside, t);
+  v.bc[plane] = 0;
+  v.onPlanes |= uint8_t(1u << plane);
+  return v;
+}
+
+}  // namespace
+
+void clipPolygonAgainstPlane(std::span<const ClipVertex> in, int plane, std::vector<ClipVertex>& out) {
+  out.clear();
+  if (in.empty()) return;
+  const ClipVertex* s = &in.back();
+  for (const ClipVertex& p : in) {
+    const bool sInside = s->bc[plane] >= 0;
+    const bool pInside = p.bc[plane] >= 0;
+    // An inside endpoint exactly on the plane is its own intersection: it is not created twice.
+    if (pInside) {
+      if (!sInside && p.bc[plane] > 0) out.push_back(intersect(p, *s, plane));
+      out.push_back(p);
+    } else if (sInside && s->bc[plane] > 0) {
+      out.push_back(intersect(*s, p, plane));
+    }
+    s = &p;
+  }
+}
+
+std::span<const ClipVertex> clipPolygon(Outcode planes, ClipScratch& scratch) {
+  std::vector<ClipVertex>* in = &scratch.a;
+  std::vector<ClipVertex>* out = &scratch.b;
+  for (int plane = 0; plane < kPlaneCount && in->size() >= 3; ++plane) {
+    if (!(planes >> plane & 1)) continue;
+    clipPolygonAgainstPlane(*in, plane, *out);
+    std::swap(in, out);
+  }
+  if (in->size() < 3) return {};
+  return *in;
+}
+
+EdgeRange clipEdge(const Boundary& bc0, const Boundary& bc1, Outcode planes) {
+  EdgeRange r;
+  for (int plane = 0; plane < kPlaneCount; ++plane) {
+    if (!(planes >> plane & 1)) continue;
+    const double b0 = bc0[plane], b1 = bc1[plane];
+    if (b0 < 0 && b1 < 0) return {0, 0, false};
+    if (b0 < 0) r.t0 = std::max(r.t0, b0 / (b0 - b1));  // entering
+    else if (b1 < 0) r.t1 = std::min(r.t1, b0 / (b0 - b1));  // leaving
+  }
+  r.visible = r.t0 <= r.t1;
+  return r;
+}
+
+}  // namespace vplab

@@ -1,0 +1,95 @@
+// Stage 4, clipping in homogeneous coordinates (seed 15.3, 15.2.4; seeds 002 and 003; domain.md).
+//
+// Blinn & Newell, "Clipping using homogeneous coordinates" (SIGGRAPH 1978), as retold by seed 002:
+// a point (x, y, z, w) of homogeneous NPC is inside when 0 ≤ x ≤ w, 0 ≤ y ≤ w, 0 ≤ z ≤ w. Its six
+// boundary coordinates BC0..BC5 are x, w − x, y, w − y, z, w − z; the 6-bit outcode has bit i set
+// when BCi < 0 (Cohen–Sutherland in 3D). Both are computed once per vertex and reused by every edge
+// and polygon the vertex belongs to. Boundary coordinates are linear in the point, so a vertex
+// created on an edge gets its own by the same interpolation, never by recomputation.
+//
+// Clip before dividing: a point behind the eye has w < 0 and fails x ≤ w or 0 ≤ x by itself, while
+// after the division x/w flips sign and can land inside the cube (seeds 002, 003).
+#pragma once
+
+#include "pipeline/math.h"
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace vplab {
+
+enum ClipPlane : int { kLeft = 0, kRight, kBottom, kTop, kBack, kFront, kPlaneCount };
+std::string_view planeName(int plane);         // "left", "right", …
+std::string_view planeInequality(int plane);   // "x >= 0", "x <= w", …
+
+using Outcode = uint8_t;
+using Boundary = std::array<double, kPlaneCount>;  // BC0..BC5
+
+/// Blinn's boundary coordinates of a point in homogeneous NPC.
+inline Boundary boundaryCoordinates(const Vec4& p) {
+  return {p.x, p.w - p.x, p.y, p.w - p.y, p.z, p.w - p.z};
+}
+
+/// Bit i set when BCi < 0: a point exactly on a plane is inside.
+inline Outcode outcodeOf(const Boundary& bc) {
+  Outcode code = 0;
+  for (int i = 0; i < kPlaneCount; ++i) code |= Outcode(bc[i] < 0) << i;
+  return code;
+}
+
+/// A vertex while a polygon is being clipped: its position, its boundary values (for the NPC
+/// strategy Blinn's BCs; for the WC strategy the six frustum plane equations, equal in exact
+/// arithmetic), and where it came from.
+struct ClipVertex {
+  Vec4 p;                // homogeneous NPC (WC strategy: WC with w = 1)
+  Boundary bc;
+  uint32_t source;       // index of the mesh vertex, or kCreated
+  uint8_t onPlanes = 0;  // bit i: the vertex was created on plane i (new edges lie on such planes)
+  static constexpr uint32_t kCreated = 0xffffffffu;
+};
+
+/// One Sutherland–Hodgman pass: the part of the closed polygon `in` with bc[plane] ≥ 0, appended to
+/// `out` (cleared first). Each intersection is computed from the inside endpoint towards the outside
+/// one, t = BC(in) / (BC(in) − BC(out)), interpolating all four coordinates and the boundary values,
+/// so two polygons sharing an edge get the same new vertex. The new vertex lies exactly on the plane.
+void clipPolygonAgainstPlane(std::span<const ClipVertex> in, int plane, std::vector<ClipVertex>& out);
+
+/// Scratch buffers for clipPolygon; sized once, reused for every polygon (no heap allocation per
+/// polygon once they have grown to the largest face).
+struct ClipScratch {
+  std::vector<ClipVertex> a, b;
+};
+
+/// Sutherland–Hodgman against every plane whose bit is set in `planes` (the OR of the polygon's
+/// outcodes: no other plane can cut it). Returns the clipped polygon (inside `scratch`), empty when
+/// fewer than 3 vertices remain. `polygon` is taken from scratch.a, filled by the caller.
+std::span<const ClipVertex> clipPolygon(Outcode planes, ClipScratch& scratch);
+
+/// The visible part [t0, t1] of the edge P(t) = (1 − t)·P0 + t·P1, 0 ≤ t ≤ 1, from the boundary
+/// values of its endpoints (parametric clipping, Liang–Barsky in homogeneous form).
+struct EdgeRange {
+  double t0 = 0, t1 = 1;
+  bool visible = true;
+};
+EdgeRange clipEdge(const Boundary& bc0, const Boundary& bc1, Outcode planes);
+
+/// Linear interpolation of two clip vertices (all four coordinates and the boundary values).
+ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t);
+
+/// The perspective division (x/w, y/w, z/w), only ever applied after clipping, where w > 0. Kept
+/// finite for the divide-first demonstration, which also divides points with w ≤ 0: a point in the
+/// eye plane (|w| < 1e-12) is divided by 1e-12 with w's sign instead of by 0.
+inline Vec3 divideByW(const Vec4& p) {
+  constexpr double kTiny = 1e-12;
+  const double w = std::abs(p.w) < kTiny ? std::copysign(kTiny, p.w) : p.w;
+  return Vec3(p) / w;
+}
+
+/// Puts a homogeneous NPC point exactly onto the planes in `onPlanes` (x = 0, x = w, …), removing
+/// the rounding of the interpolation so clipped output never lies a few ulps outside the cube.
+void snapToPlanes(Vec4& p, uint8_t onPlanes);
+
+}  // namespace vplab

@@ -1,0 +1,52 @@
+// A polygon mesh in MC (seed chapter 16): a vertex list and faces that index it, each face
+// counter-clockwise seen from outside. Faces share vertices, so the pipeline transforms each vertex
+// and computes its outcode once, whatever the number of faces using it (seed 002).
+#pragma once
+
+#include "pipeline/math.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace vplab {
+
+struct Mesh {
+  std::vector<Vec3> positions;       // MC
+  std::vector<uint32_t> indices;     // every face's vertex indices, concatenated
+  std::vector<uint32_t> faceStart{0};  // face f is indices[faceStart[f] .. faceStart[f + 1])
+  std::vector<Vec3> cornerNormals;   // MC, one per entry of `indices`; empty: flat shading
+
+  size_t faceCount() const { return faceStart.size() - 1; }
+  size_t vertexCount() const { return positions.size(); }
+  std::span<const uint32_t> face(size_t f) const {
+    return {indices.data() + faceStart[f], indices.data() + faceStart[f + 1]};
+  }
+  /// The largest number of vertices of any face (sizes the clipper's scratch buffers).
+  size_t maxFaceSize() const;
+
+  /// Appends a face of vertex indices (and, for smooth shading, one normal per corner).
+  void addFace(std::initializer_list<uint32_t> face);
+  void addFace(std::span<const uint32_t> face);
+};
+
+/// Newell's normal of face f (unnormalized; robust for non-planar and concave faces).
+Vec3 faceNormal(const Mesh& mesh, size_t f);
+
+struct Bounds {
+  Vec3 min{0}, max{0};
+  std::array<Vec3, 8> corners() const;
+};
+Bounds bounds(const Mesh& mesh);
+
+/// An undirected edge between two vertices, as drawn by the wireframe styles.
+struct Edge {
+  uint32_t a, b;  // a < b
+};
+/// Every edge of the mesh once, in the order of first appearance in the faces.
+std::vector<Edge> uniqueEdges(const Mesh& mesh);
+
+/// The same mesh with each face split into a fan of triangles (for the GPU and benchmarks).
+Mesh triangulated(const Mesh& mesh);
+
+}  // namespace vplab

@@ -1,0 +1,78 @@
+#include "pipeline/scene.h"
+
+#include "pipeline/error.h"
+#include "pipeline/obj_mesh.h"
+#include "pipeline/primitives.h"
+
+namespace vplab {
+
+std::string_view toString(Shape s) {
+  switch (s) {
+    case Shape::cube: return "cube";
+    case Shape::tetrahedron: return "tetrahedron";
+    case Shape::cylinder: return "cylinder";
+    case Shape::sphere: return "sphere";
+    case Shape::polygon: return "polygon";
+    case Shape::mesh: return "mesh";
+  }
+  return "?";
+}
+
+std::optional<Shape> shapeFromString(std::string_view s) {
+  for (Shape shape : {Shape::cube, Shape::tetrahedron, Shape::cylinder, Shape::sphere,
+                      Shape::polygon, Shape::mesh})
+    if (toString(shape) == s) return shape;
+  return std::nullopt;
+}
+
+void buildMesh(SceneObject& o, const std::filesystem::path& baseDir) {
+  switch (o.shape) {
+    case Shape::cube: o.mesh = std::make_shared<Mesh>(cube()); break;
+    case Shape::tetrahedron: o.mesh = std::make_shared<Mesh>(tetrahedron()); break;
+    case Shape::cylinder: o.mesh = std::make_shared<Mesh>(cylinder(o.segments)); break;
+    case Shape::sphere: o.mesh = std::make_shared<Mesh>(sphere(o.segments)); break;
+    case Shape::polygon:
+      for (const Vec3& v : o.vertices)
+        if (!isFinite(v)) throw Error("polygon vertex " + format(v) + " is not finite");
+      o.mesh = std::make_shared<Mesh>(polygon(o.vertices));
+      break;
+    case Shape::mesh: {
+      if (o.file.empty()) throw Error("a mesh object needs a file");
+      const std::filesystem::path file(o.file);
+      const std::filesystem::path p = file.is_absolute() ? file : baseDir / file;
+      o.mesh = std::make_shared<Mesh>(loadObj(p));
+      break;
+    }
+  }
+}
+
+Scene defaultScene() {
+  Scene s;
+  s.camera.vrp = {0, 0, 0};
+  s.camera.prp = {3.2, 2.4, 6.4};
+  s.camera.vup = {0, 1, 0};
+  s.camera.window = {-1.6, 1.6, -1.2, 1.2};
+  s.camera.front = 2.5;
+  s.camera.back = -2.5;
+  s.device = {640, 480};
+  s.background = {0.11, 0.12, 0.15};
+
+  auto add = [&](std::string name, Shape shape, Vec3 color, ModelTransform t, int segments = 32) {
+    SceneObject o;
+    o.name = std::move(name);
+    o.shape = shape;
+    o.color = color;
+    o.transform = std::move(t);
+    o.segments = segments;
+    buildMesh(o, {});
+    s.objects.push_back(std::move(o));
+  };
+  add("cube", Shape::cube, {0.86, 0.33, 0.27}, {{0, 0, 0}, {{{0, 1, 0}, 30, {}}}, {1.2, 1.2, 1.2}});
+  add("tetrahedron", Shape::tetrahedron, {0.25, 0.55, 0.9}, {{1.6, -0.2, 0.9}, {}, {1.3, 1.3, 1.3}});
+  add("cylinder", Shape::cylinder, {0.35, 0.75, 0.4},
+      {{-1.7, 0.1, -1.6}, {{{1, 0, 0}, 90, {}}}, {0.45, 0.45, 0.9}}, 24);
+  add("sphere", Shape::sphere, {0.93, 0.75, 0.3}, {{1.2, 1.1, -2.6}, {}, {0.9, 0.9, 0.9}}, 24);
+  return s;
+}
+
+}  // namespace vplab

@@ -1,0 +1,54 @@
+// A scene: the synthetic camera, the device, and objects built from primitives in MC, each placed in
+// WC by its modeling transform (seed 15.2.1). Plain data; scene_io.h reads and writes it as JSON.
+#pragma once
+
+#include "pipeline/camera.h"
+#include "pipeline/device_mapping.h"
+#include "pipeline/mesh.h"
+#include "pipeline/modeling.h"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vplab {
+
+enum class Shape { cube, tetrahedron, cylinder, sphere, polygon, mesh };
+std::string_view toString(Shape s);
+std::optional<Shape> shapeFromString(std::string_view s);
+
+struct SceneObject {
+  std::string name;
+  Shape shape = Shape::cube;
+  int segments = 32;             // cylinder and sphere
+  std::vector<Vec3> vertices;    // polygon, MC
+  std::string file;              // mesh: an OBJ file, relative to the scene file
+  Vec3 color{0.8, 0.8, 0.8};     // 0..1
+  ModelTransform transform;      // MC → WC
+  bool visible = true;
+  std::shared_ptr<const Mesh> mesh;  // built from the fields above by buildMesh
+};
+
+/// A point light in WC for the shaded style.
+struct Light {
+  Vec3 position{5, 5, 5};
+  Vec3 color{1, 1, 1};
+};
+
+struct Scene {
+  Camera camera;
+  Device device;
+  Vec3 background{0.12, 0.12, 0.14};
+  std::vector<SceneObject> objects;
+  std::vector<Light> lights;       // empty: one light at the eye
+  std::filesystem::path path;      // where it was loaded from; empty for the built-in scene
+};
+
+/// Builds the object's MC mesh from its shape (OBJ files relative to baseDir). Throws vplab::Error.
+void buildMesh(SceneObject& object, const std::filesystem::path& baseDir);
+
+/// The built-in default lecture scene (also assets/scenes/default.json).
+Scene defaultScene();
+
+}  // namespace vplab

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs what vplab needs from Debian 12 packages (only what is missing, with sudo when not root),
+# then configures and builds into build/. Sourced by run.sh and test.sh; safe to run again.
+set -euo pipefail
+
+VPLAB_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+VPLAB_BUILD="${VPLAB_BUILD:-$VPLAB_ROOT/build}"
+
+packages=(
+  cmake g++ make pkg-config python3-glad
+  libglfw3-dev libglm-dev libimgui-dev libstb-dev
+  libegl-dev libgl-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
+  nlohmann-json3-dev libtinyobjloader-dev libcli11-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  xvfb xauth x11-utils
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "vplab: installing ${missing[*]}" >&2
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+  $sudo apt-get update -q
+  $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S "$VPLAB_ROOT" -B "$VPLAB_BUILD" -DCMAKE_BUILD_TYPE="${VPLAB_BUILD_TYPE:-Release}" >/dev/null
+cmake --build "$VPLAB_BUILD" -j "$(nproc)"
