@@ -1,5 +1,6 @@
 #include "app/cli.h"
 
+#include "app/headless.h"
 #include "pipeline/dump.h"
 #include "pipeline/error.h"
 #include "pipeline/scene_io.h"
@@ -28,6 +29,45 @@ int runDump(const DumpOptions& d) {
   options.boundingBoxTest = d.boundingBox;
   const PipelineRun run = runPipeline(sceneFrom(d.scene), options);
   std::cout << dumpJson(run, d.indent);
+  return 0;
+}
+
+struct RenderOptions {
+  std::string scene;
+  std::string view = "camera";
+  std::string style = "flat";
+  std::string size;
+  std::string out;
+  std::string backend = "auto";
+  std::string strategy = "npc";
+  bool glDebug = false;
+};
+
+std::pair<int, int> parseSize(const std::string& s) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1 ||
+      w > 16384 || h > 16384)
+    throw Error("--size \"" + s + "\" is not WIDTHxHEIGHT with 1 to 16384 pixels each, for example 1280x720");
+  return {w, h};
+}
+
+int runRender(const RenderOptions& r) {
+  const Scene scene = sceneFrom(r.scene);
+  RenderRequest request;
+  request.view = *viewKindFromString(r.view);
+  request.style = *styleFromString(r.style);
+  request.pipeline.strategy = *clipStrategyFromString(r.strategy);
+  if (!r.size.empty()) std::tie(request.width, request.height) = parseSize(r.size);
+  const std::string out = r.out.empty() ? "vplab-" + r.view + ".png" : r.out;
+#ifndef NDEBUG
+  const bool debug = true;  // debug builds treat every GL error as a failure
+#else
+  const bool debug = r.glDebug;
+#endif
+  auto context = createHeadlessContext(*backendFromString(r.backend), debug);
+  ViewRenderer renderer(*context);
+  writePng(renderImage(renderer, scene, request), out);
   return 0;
 }
 
@@ -66,6 +106,30 @@ int runCommandLine(int argc, char** argv) {
   dumpCmd->add_option("--indent", dump.indent, "JSON indentation; -1 prints everything on one line")
       ->check(CLI::Range(-1, 8));
 
+  RenderOptions render;
+  CLI::App* renderCmd = app.add_subcommand("render", "Render a view headless (EGL or OSMesa) to a PNG file");
+  renderCmd->add_option("--scene", render.scene, "Scene file (JSON); default: the built-in lecture scene")
+      ->check(CLI::ExistingFile);
+  renderCmd->add_option("--view", render.view,
+                        "camera (what the synthetic camera sees, W × H, pixel-aligned with DC), world (an "
+                        "observer's view of scene, camera and view volume), npc (the unit cube after view "
+                        "mapping, clipping and division) or all (the three side by side)")
+      ->check(CLI::IsMember({"camera", "world", "npc", "all"}));
+  renderCmd->add_option("--style", render.style,
+                        "flat (object colours, unlit), shaded (lit by the scene's lights), wire (every edge), "
+                        "hidden-line (hidden edges dashed, seed figure 16.1) or hidden-removed (hidden "
+                        "edges left out, figure 16.3)")
+      ->check(CLI::IsMember({"flat", "shaded", "wire", "hidden-line", "hidden-removed"}));
+  renderCmd->add_option("--size", render.size,
+                        "WIDTHxHEIGHT of each view; default: the scene's device (the camera view is then "
+                        "pixel-aligned with DC)");
+  renderCmd->add_option("--out", render.out, "PNG file to write; default: vplab-VIEW.png");
+  renderCmd->add_option("--backend", render.backend, "Headless OpenGL: auto (EGL, then OSMesa), egl or osmesa")
+      ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+  renderCmd->add_option("--strategy", render.strategy, "Clipping strategy of the CPU overlays: npc, wc or divide-first")
+      ->check(CLI::IsMember({"npc", "wc", "divide-first"}));
+  renderCmd->add_flag("--gl-debug", render.glDebug, "Turn on KHR_debug and fail on any OpenGL error");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -73,6 +137,7 @@ int runCommandLine(int argc, char** argv) {
   }
   try {
     if (dumpCmd->parsed()) return runDump(dump);
+    if (renderCmd->parsed()) return runRender(render);
     return runViewer(viewer);
   } catch (const Error& e) {
     std::cerr << "vplab: error: " << e.what() << "\n";

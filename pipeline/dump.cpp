@@ -1,6 +1,6 @@
 #include "pipeline/dump.h"
 
-#include <nlohmann/json.hpp>
+#include "pipeline/json_text.h"
 
 namespace vplab {
 
@@ -75,7 +75,7 @@ std::string dumpJson(const PipelineRun& run, int indent) {
     j["objects"].push_back({{"name", o.name}, {"wc_from_mc", toJson(o.wcFromMc)}, {"polygons", polygons}});
   }
   j["stats"] = statsJson(run);
-  return j.dump(indent) + "\n";
+  return prettyJson(j, indent) + "\n";
 }
 
 }  // namespace vplab

@@ -47,15 +47,20 @@ void buildMesh(SceneObject& o, const std::filesystem::path& baseDir) {
 }
 
 Scene defaultScene() {
+  // The lecture scene: the seed's cube and tetrahedron with a cylinder and a sphere (seed 16), seen
+  // in perspective; the tetrahedron crosses the window's right and bottom edges and the sphere the
+  // back plane, so every view shows clipping.
   Scene s;
   s.camera.vrp = {0, 0, 0};
-  s.camera.prp = {3.2, 2.4, 6.4};
+  s.camera.prp = {3.0, 2.4, 7.5};
   s.camera.vup = {0, 1, 0};
-  s.camera.window = {-1.6, 1.6, -1.2, 1.2};
-  s.camera.front = 2.5;
-  s.camera.back = -2.5;
+  s.camera.window = {-2.4, 2.4, -1.8, 1.8};
+  s.camera.front = 3.0;
+  s.camera.back = -3.2;
+  s.camera.projection = Projection::perspective;
   s.device = {640, 480};
   s.background = {0.11, 0.12, 0.15};
+  s.lights = {{{6, 8, 9}, {1, 1, 1}}};
 
   auto add = [&](std::string name, Shape shape, Vec3 color, ModelTransform t, int segments = 32) {
     SceneObject o;
@@ -67,11 +72,10 @@ Scene defaultScene() {
     buildMesh(o, {});
     s.objects.push_back(std::move(o));
   };
-  add("cube", Shape::cube, {0.86, 0.33, 0.27}, {{0, 0, 0}, {{{0, 1, 0}, 30, {}}}, {1.2, 1.2, 1.2}});
-  add("tetrahedron", Shape::tetrahedron, {0.25, 0.55, 0.9}, {{1.6, -0.2, 0.9}, {}, {1.3, 1.3, 1.3}});
-  add("cylinder", Shape::cylinder, {0.35, 0.75, 0.4},
-      {{-1.7, 0.1, -1.6}, {{{1, 0, 0}, 90, {}}}, {0.45, 0.45, 0.9}}, 24);
-  add("sphere", Shape::sphere, {0.93, 0.75, 0.3}, {{1.2, 1.1, -2.6}, {}, {0.9, 0.9, 0.9}}, 24);
+  add("cube", Shape::cube, {0.86, 0.33, 0.27}, {{0, 0, 0}, {{{0, 1, 0}, 30, {}}}, {1.3, 1.3, 1.3}});
+  add("tetrahedron", Shape::tetrahedron, {0.25, 0.55, 0.9}, {{2.2, -0.9, 1.1}, {}, {1.5, 1.5, 1.5}});
+  add("cylinder", Shape::cylinder, {0.62, 0.45, 0.85}, {{-2.3, 0.3, -0.5}, {{{1, 0, 0}, 90, {}}}, {0.5, 0.5, 1.0}}, 24);
+  add("sphere", Shape::sphere, {0.93, 0.75, 0.3}, {{1.4, 1.0, -3.4}, {}, {0.9, 0.9, 0.9}}, 24);
   return s;
 }
 

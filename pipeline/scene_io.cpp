@@ -2,6 +2,7 @@
 #include "pipeline/scene_io.h"
 
 #include "pipeline/error.h"
+#include "pipeline/json_text.h"
 #include "pipeline/primitives.h"
 
 #include <nlohmann/json.hpp>
@@ -288,7 +289,7 @@ std::string sceneToJson(const Scene& scene) {
   }
   j["objects"] = Json::array();
   for (const SceneObject& o : scene.objects) j["objects"].push_back(toJson(o));
-  return j.dump(2) + "\n";
+  return prettyJson(j) + "\n";
 }
 
 void saveScene(const Scene& scene, const std::filesystem::path& file) {
@@ -298,11 +299,19 @@ void saveScene(const Scene& scene, const std::filesystem::path& file) {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) throw Error(file.string() + ": cannot write the scene file");
     out << text;
-    if (!out.flush()) throw Error(file.string() + ": writing the scene file failed");
+    if (!out.flush()) {
+      std::error_code ignored;
+      std::filesystem::remove(tmp, ignored);  // leave no partial temporary file behind
+      throw Error(file.string() + ": writing the scene file failed");
+    }
   }
   std::error_code ec;
   std::filesystem::rename(tmp, file, ec);
-  if (ec) throw Error(file.string() + ": cannot replace the scene file: " + ec.message());
+  if (ec) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);  // the target is unchanged; so is the directory
+    throw Error(file.string() + ": cannot replace the scene file: " + ec.message());
+  }
 }
 
 }  // namespace vplab

@@ -1,0 +1,92 @@
+#include "app/context/context.h"
+
+#include "pipeline/error.h"
+
+namespace vplab {
+
+std::string_view toString(Backend b) {
+  switch (b) {
+    case Backend::automatic: return "auto";
+    case Backend::egl: return "egl";
+    case Backend::osmesa: return "osmesa";
+  }
+  return "?";
+}
+
+std::optional<Backend> backendFromString(std::string_view s) {
+  for (Backend b : {Backend::automatic, Backend::egl, Backend::osmesa})
+    if (toString(b) == s) return b;
+  return std::nullopt;
+}
+
+namespace {
+
+void GLAD_API_PTR onDebugMessage(GLenum /*source*/, GLenum type, GLuint /*id*/, GLenum severity,
+                                 GLsizei length, const GLchar* message, const void* user) {
+  if (type != GL_DEBUG_TYPE_ERROR && severity != GL_DEBUG_SEVERITY_HIGH) return;
+  auto* log = static_cast<GlDebugLog*>(const_cast<void*>(user));
+  log->errors.emplace_back(message, length > 0 ? size_t(length) : std::char_traits<char>::length(message));
+}
+
+std::string glErrorName(GLenum e) {
+  switch (e) {
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    default: return "GL error " + std::to_string(e);
+  }
+}
+
+}  // namespace
+
+void GlContext::loadGl(GLADloadfunc load, bool debug, std::string_view backendName) {
+  const int version = gladLoadGLContext(&gl_, load);
+  if (version == 0) throw Error(std::string(backendName) + ": loading the OpenGL functions failed");
+  if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 33)
+    throw Error(std::string(backendName) + ": OpenGL 3.3 core is needed, the context has " +
+                std::to_string(GLAD_VERSION_MAJOR(version)) + "." + std::to_string(GLAD_VERSION_MINOR(version)));
+  if (debug) {
+    if (!gl_.KHR_debug) throw Error(std::string(backendName) + ": GL_KHR_debug is not available for a debug context");
+    gl_.Enable(GL_DEBUG_OUTPUT);
+    gl_.Enable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+    gl_.DebugMessageCallback(onDebugMessage, debugLog_.get());
+    debugEnabled_ = true;
+  }
+}
+
+std::string GlContext::description() const {
+  auto str = [&](GLenum name) {
+    const auto* s = reinterpret_cast<const char*>(gl_.GetString(name));
+    return std::string(s ? s : "?");
+  };
+  return str(GL_RENDERER) + " — " + str(GL_VERSION);
+}
+
+void GlContext::checkErrors(std::string_view where) {
+  std::string problems;
+  for (GLenum e = gl_.GetError(); e != GL_NO_ERROR; e = gl_.GetError()) problems += "\n  " + glErrorName(e);
+  for (const std::string& m : debugLog_->errors) problems += "\n  KHR_debug: " + m;
+  debugLog_->errors.clear();
+  if (!problems.empty()) throw Error("OpenGL error while " + std::string(where) + ":" + problems);
+}
+
+std::unique_ptr<GlContext> createHeadlessContext(Backend backend, bool debug) {
+  if (backend == Backend::egl) return createEglContext(debug);
+  if (backend == Backend::osmesa) return createOsMesaContext(debug);
+  std::string reasons;
+  try {
+    return createEglContext(debug);
+  } catch (const Error& e) {
+    reasons += "\n  egl: " + std::string(e.what());
+  }
+  try {
+    return createOsMesaContext(debug);
+  } catch (const Error& e) {
+    reasons += "\n  osmesa: " + std::string(e.what());
+  }
+  throw Error("no OpenGL 3.3 context could be made; tried:" + reasons);
+}
+
+}  // namespace vplab

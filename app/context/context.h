@@ -1,0 +1,62 @@
+// An OpenGL 3.3 core context behind one small interface, one file per backend (as Filament's
+// PlatformEGLHeadless / PlatformOSMesa): a GLFW window for the viewer, EGL surfaceless (the default
+// headless backend) and OSMesa (the fallback). GL functions come from GLAD in multi-context mode:
+// each context owns its GladGLContext, so no function pointers are global.
+#pragma once
+
+#include <glad/gl.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace vplab {
+
+enum class Backend { automatic, egl, osmesa };
+std::string_view toString(Backend b);
+std::optional<Backend> backendFromString(std::string_view s);
+
+/// Errors the KHR_debug callback reported (type ERROR or severity HIGH), collected per context.
+struct GlDebugLog {
+  std::vector<std::string> errors;
+};
+
+class GlContext {
+ public:
+  virtual ~GlContext() = default;
+  GlContext(const GlContext&) = delete;
+  GlContext& operator=(const GlContext&) = delete;
+
+  virtual std::string_view backend() const = 0;  // "egl", "osmesa", "glfw"
+  virtual void makeCurrent() = 0;
+
+  const GladGLContext& gl() const { return gl_; }
+  /// "llvmpipe (LLVM 15.0.6, 256 bits) — 4.5 (Core Profile) Mesa 22.3.6".
+  std::string description() const;
+  bool debug() const { return debugEnabled_; }
+  /// Throws vplab::Error naming `where` and every GL error reported since the last check
+  /// (glGetError and, in debug contexts, KHR_debug messages).
+  void checkErrors(std::string_view where);
+
+ protected:
+  GlContext() = default;
+  /// Loads the GL functions through `load` and, when `debug`, turns on KHR_debug output.
+  void loadGl(GLADloadfunc load, bool debug, std::string_view backendName);
+
+ private:
+  GladGLContext gl_{};
+  bool debugEnabled_ = false;
+  std::unique_ptr<GlDebugLog> debugLog_ = std::make_unique<GlDebugLog>();  // stable address for the callback
+};
+
+/// A headless context: EGL surfaceless, OSMesa, or (automatic) EGL then OSMesa. When none can be
+/// made, throws vplab::Error saying which backends were tried and why each failed.
+std::unique_ptr<GlContext> createHeadlessContext(Backend backend, bool debug);
+
+// One factory per backend file; each throws vplab::Error with the reason it failed.
+std::unique_ptr<GlContext> createEglContext(bool debug);
+std::unique_ptr<GlContext> createOsMesaContext(bool debug);
+
+}  // namespace vplab

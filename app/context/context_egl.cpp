@@ -1,0 +1,95 @@
+// EGL surfaceless (EGL_MESA_platform_surfaceless): a GL context with no window and no default
+// framebuffer; everything renders into framebuffer objects. libEGL is opened at run time by GLAD's
+// loader, so a machine without it gets an error message, not a failure to start.
+#include "app/context/context.h"
+
+#include "pipeline/error.h"
+
+#include <glad/egl.h>
+
+namespace vplab {
+
+namespace {
+
+std::string eglErrorName(EGLint e) {
+  switch (e) {
+    case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
+    case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
+    case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
+    case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
+    case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
+    case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
+    case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
+    case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
+    case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
+    default: return "EGL error " + std::to_string(e);
+  }
+}
+
+class EglContext final : public GlContext {
+ public:
+  explicit EglContext(bool debug) {
+    if (!gladLoaderLoadEGL(EGL_NO_DISPLAY)) throw Error("libEGL.so.1 could not be loaded");
+    if (!GLAD_EGL_EXT_platform_base || !GLAD_EGL_MESA_platform_surfaceless)
+      throw Error("EGL_MESA_platform_surfaceless is not supported by this EGL");
+    display_ = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    if (display_ == EGL_NO_DISPLAY) fail("eglGetPlatformDisplayEXT(surfaceless)");
+    EGLint major = 0, minor = 0;
+    if (!eglInitialize(display_, &major, &minor)) fail("eglInitialize");
+    initialized_ = true;
+    gladLoaderLoadEGL(display_);  // again, now that the display's extensions are known
+    if (!GLAD_EGL_KHR_surfaceless_context) throw Error("EGL_KHR_surfaceless_context is not supported");
+    if (!eglBindAPI(EGL_OPENGL_API)) fail("eglBindAPI(EGL_OPENGL_API)");
+    // No window, so no window config: a pbuffer-capable one, or none at all (KHR_no_config_context).
+    const EGLint configAttribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+    EGLConfig config = EGL_NO_CONFIG_KHR;
+    EGLint count = 0;
+    if ((!eglChooseConfig(display_, configAttribs, &config, 1, &count) || count < 1) &&
+        !GLAD_EGL_KHR_no_config_context)
+      fail("eglChooseConfig(EGL_OPENGL_BIT)");
+    if (count < 1) config = EGL_NO_CONFIG_KHR;
+    const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3,
+                                     EGL_CONTEXT_MINOR_VERSION, 3,
+                                     EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                     EGL_CONTEXT_OPENGL_DEBUG, debug ? EGL_TRUE : EGL_FALSE,
+                                     EGL_NONE};
+    context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, contextAttribs);
+    if (context_ == EGL_NO_CONTEXT) fail("eglCreateContext(OpenGL 3.3 core)");
+    makeCurrent();
+    loadGl(reinterpret_cast<GLADloadfunc>(eglGetProcAddress), debug, "egl");
+  }
+
+  ~EglContext() override {
+    if (context_ != EGL_NO_CONTEXT) {
+      eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+      eglDestroyContext(display_, context_);
+    }
+    if (initialized_) eglTerminate(display_);
+  }
+
+  std::string_view backend() const override { return "egl"; }
+
+  void makeCurrent() override {
+    if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) fail("eglMakeCurrent");
+  }
+
+ private:
+  [[noreturn]] void fail(const char* call) {
+    const EGLint e = eglGetError();
+    if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
+    if (initialized_) eglTerminate(display_);
+    context_ = EGL_NO_CONTEXT;
+    initialized_ = false;
+    throw Error(std::string(call) + " failed: " + eglErrorName(e));
+  }
+
+  EGLDisplay display_ = EGL_NO_DISPLAY;
+  EGLContext context_ = EGL_NO_CONTEXT;
+  bool initialized_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<GlContext> createEglContext(bool debug) { return std::make_unique<EglContext>(debug); }
+
+}  // namespace vplab

@@ -1,0 +1,38 @@
+// An off-screen render target: an RGBA8 colour texture and a 24-bit depth buffer, optionally
+// multisampled (resolved into the texture). Every view draws into one; the viewer shows the texture,
+// `vplab render` reads it back.
+#pragma once
+
+#include "app/gl/objects.h"
+#include "app/image.h"
+
+namespace vplab::gl {
+
+class RenderTarget {
+ public:
+  explicit RenderTarget(const GladGLContext& gl) : gl_(&gl) {}
+
+  /// (Re)allocates for w × h pixels with `samples` per pixel (1: no multisampling).
+  void resize(int width, int height, int samples = 1);
+  /// Binds the framebuffer to draw into and sets the viewport to the whole target.
+  void bind() const;
+  /// Resolves the multisampled buffer into the colour texture (no-op without multisampling).
+  void resolve() const;
+  /// The resolved colour as an image with the top row first.
+  Image read() const;
+
+  GLuint colorTexture() const { return color_.id(); }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  int samples() const { return samples_; }
+
+ private:
+  const GladGLContext* gl_;
+  int width_ = 0, height_ = 0, samples_ = 1;
+  Texture color_;
+  Framebuffer resolved_;      // colour texture
+  Framebuffer drawn_;         // the multisampled buffers, or == resolved_ when samples_ == 1
+  Renderbuffer msColor_, depth_;
+};
+
+}  // namespace vplab::gl

@@ -1,0 +1,90 @@
+#include "app/gl/shader.h"
+
+#include "pipeline/error.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <vector>
+
+namespace vplab::gl {
+
+namespace {
+
+std::string infoLog(const GladGLContext& gl, GLuint object, bool isProgram) {
+  GLint length = 0;
+  (isProgram ? gl.GetProgramiv : gl.GetShaderiv)(object, GL_INFO_LOG_LENGTH, &length);
+  std::string log(size_t(std::max(length, 1)), '\0');
+  (isProgram ? gl.GetProgramInfoLog : gl.GetShaderInfoLog)(object, length, nullptr, log.data());
+  while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
+  return log;
+}
+
+GLenum stageOf(std::string_view file) {
+  if (file.ends_with(".vert")) return GL_VERTEX_SHADER;
+  if (file.ends_with(".geom")) return GL_GEOMETRY_SHADER;
+  if (file.ends_with(".frag")) return GL_FRAGMENT_SHADER;
+  throw Error("shaders/" + std::string(file) + ": unknown shader stage (expected .vert, .geom or .frag)");
+}
+
+}  // namespace
+
+Program::Program(const GladGLContext& gl, std::initializer_list<ShaderStage> stages) : gl_(&gl) {
+  id_ = ProgramId(gl, gl.CreateProgram());
+  std::vector<GLuint> shaders;
+  auto cleanup = [&] {
+    for (GLuint s : shaders) gl.DeleteShader(s);
+  };
+  std::string names;
+  for (const ShaderStage& st : stages) {
+    names += (names.empty() ? "" : " + ") + std::string("shaders/") + std::string(st.name);
+    const GLuint s = gl.CreateShader(st.type);
+    shaders.push_back(s);
+    const GLchar* text = st.source.data();
+    const GLint length = GLint(st.source.size());
+    gl.ShaderSource(s, 1, &text, &length);
+    gl.CompileShader(s);
+    GLint ok = 0;
+    gl.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+      const std::string log = infoLog(gl, s, false);
+      cleanup();
+      throw Error("shaders/" + std::string(st.name) + ": compile failed:\n" + log);
+    }
+    gl.AttachShader(id_.id(), s);
+  }
+  gl.LinkProgram(id_.id());
+  cleanup();
+  GLint ok = 0;
+  gl.GetProgramiv(id_.id(), GL_LINK_STATUS, &ok);
+  if (!ok) throw Error(names + ": link failed:\n" + infoLog(gl, id_.id(), true));
+}
+
+Program Program::fromFiles(const GladGLContext& gl, std::initializer_list<std::string_view> files) {
+  std::vector<ShaderStage> stages;
+  for (std::string_view f : files) stages.push_back({stageOf(f), f, embeddedShader(f)});
+  switch (stages.size()) {
+    case 2: return Program(gl, {stages[0], stages[1]});
+    case 3: return Program(gl, {stages[0], stages[1], stages[2]});
+    default: throw Error("a program needs 2 or 3 shader files");
+  }
+}
+
+GLint Program::location(const char* name) const {
+  auto it = locations_.find(name);
+  if (it != locations_.end()) return it->second;
+  const GLint loc = gl_->GetUniformLocation(id_.id(), name);
+  locations_.emplace(name, loc);
+  return loc;
+}
+
+void Program::set(const char* name, const Mat4& m) const {
+  const glm::mat4 f(m);
+  gl_->UniformMatrix4fv(location(name), 1, GL_FALSE, glm::value_ptr(f));
+}
+
+void Program::set(const char* name, const Mat3& m) const {
+  const glm::mat3 f(m);
+  gl_->UniformMatrix3fv(location(name), 1, GL_FALSE, glm::value_ptr(f));
+}
+
+}  // namespace vplab::gl

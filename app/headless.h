@@ -1,0 +1,24 @@
+// Headless rendering of a scene to an image: the core of `vplab render`, also used by the tests.
+#pragma once
+
+#include "app/context/context.h"
+#include "app/image.h"
+#include "app/views/view_renderer.h"
+
+namespace vplab {
+
+struct RenderRequest {
+  ViewKind view = ViewKind::camera;
+  Style style = Style::flat;
+  int width = 0, height = 0;  // 0: the scene's device
+  PipelineOptions pipeline{ClipStrategy::npc, false, true};
+};
+
+/// The frame settings `vplab render` uses: the style for every view, the default observers framed for
+/// views of the given aspect ratio.
+FrameSettings frameSettingsFor(const Scene& scene, Style style, double aspect);
+
+/// Runs the CPU pipeline and draws the requested view with `renderer`. Throws vplab::Error.
+Image renderImage(ViewRenderer& renderer, const Scene& scene, const RenderRequest& request);
+
+}  // namespace vplab

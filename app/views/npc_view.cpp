@@ -1,0 +1,145 @@
+// The NPC view: the unit cube of normalized projection coordinates (front z = 1, back z = 0) with
+// the scene after view mapping, clipping in homogeneous coordinates and the division by w, seen by
+// an orbiting observer. The filled polygons are the CPU clipper's output; what it cut away is shown
+// faded, as far as it lies in front of the eye (w > 0) and not too far outside the cube.
+#include "app/views/theme.h"
+#include "app/views/view_renderer.h"
+
+#include "pipeline/clipping.h"
+
+namespace vplab {
+
+namespace {
+
+// The faded part: the original polygon in homogeneous NPC, clipped to the cube grown by `margin`
+// on every side (which also keeps w > 0), then divided. Same Sutherland–Hodgman kernel, other
+// boundary values: x + m·w ≥ 0, (1 + m)·w − x ≥ 0, …
+std::vector<Vec3> fadedPolygon(const ObjectRun& o, size_t f, ClipScratch& scratch) {
+  constexpr double m = 0.5;
+  scratch.a.clear();
+  for (uint32_t v : o.mesh->face(f)) {
+    const Vec4& p = o.npcH[v];
+    const Boundary bc{p.x + m * p.w, (1 + m) * p.w - p.x, p.y + m * p.w,
+                      (1 + m) * p.w - p.y, p.z + m * p.w, (1 + m) * p.w - p.z};
+    scratch.a.push_back({p, bc, v});
+  }
+  std::vector<Vec3> out;
+  for (const ClipVertex& c : clipPolygon(0x3f, scratch))
+    if (c.p.w > 1e-12) out.push_back(Vec3(c.p) / c.p.w);
+  return out;
+}
+
+void addCube(OverlayBatch& b, std::vector<TextLabel>& labels, const ViewCamera& view, int w, int h, bool withLabels) {
+  auto corner = [](int i) { return Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1); };
+  for (int i = 0; i < 8; ++i)
+    for (int bit : {1, 2, 4})
+      if (!(i & bit)) b.line(corner(i), corner(i | bit), theme::kCube, 1.5f);
+  b.quad(corner(4), corner(5), corner(7), corner(6), theme::kCubeFront);
+  const double len = 1.18;
+  b.line({0, 0, 0}, {len, 0, 0}, theme::kU, theme::kLineWidth);
+  b.line({0, 0, 0}, {0, len, 0}, theme::kV, theme::kLineWidth);
+  b.line({0, 0, 0}, {0, 0, len}, theme::kN, theme::kLineWidth);
+  if (!withLabels) return;
+  auto label = [&](const Vec3& p, const std::string& text, const glm::vec4& color, Anchor anchor = Anchor::center) {
+    const Projected q = projectToPixels(view, p, w, h);
+    if (q.visible) labels.push_back({q.pixel, text, color, TextSize::label, anchor});
+  };
+  label({len + 0.07, 0, 0}, "x", theme::kU);
+  label({0, len + 0.07, 0}, "y", theme::kV);
+  label({0, 0, len + 0.07}, "z", theme::kN);
+  label({-0.06, -0.06, -0.06}, "0", theme::kText);
+  label({1, -0.07, 0}, "1", theme::kU);
+  label({-0.07, 1, 0}, "1", theme::kV);
+  label({-0.07, -0.07, 1}, "1", theme::kN);
+  label({0.5, 1.08, 1}, "front z = 1", theme::kFrustum);
+  label({0.5, 1.08, 0}, "back z = 0", theme::kFrustum);
+}
+
+}  // namespace
+
+void ViewRenderer::drawNpc(const Scene& /*scene*/, const PipelineRun& run, const FrameSettings& s,
+                           gl::RenderTarget& target) {
+  const int w = target.width(), h = target.height();
+  target.bind();
+  gl_.ClearColor(theme::kViewBackground.r, theme::kViewBackground.g, theme::kViewBackground.b, 1.f);
+  gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthFunc(GL_LESS);
+  gl_.Disable(GL_BLEND);
+  gl_.Disable(GL_CULL_FACE);
+
+  const ViewCamera view = viewCameraOf(observerCamera(s.npc.orbit, double(w) / h));
+  const Style style = s.npc.style;
+  const OverlaySettings& ov = s.overlays;
+
+  std::vector<PolygonSet> inside, faded;
+  OverlayBatch outlines, dashedOutlines, newEdges, fadedOutlines;
+  ClipScratch scratch;
+  for (const ObjectRun& o : run.objects) {
+    PolygonSet in{glm::vec3(o.color), {}}, out{glm::vec3(o.color), {}};
+    const glm::vec4 c(glm::vec3(o.color), 1.f);
+    for (size_t f = 0; f < o.faceCount(); ++f) {
+      const auto face = o.clippedFace(f);
+      if (!face.empty()) {
+        std::vector<Vec3> poly;
+        for (uint32_t ref : face) poly.push_back(o.clippedNpc(ref));
+        for (size_t i = 0; i < face.size(); ++i) {
+          const Vec3 &a = poly[i], &b = poly[(i + 1) % poly.size()];
+          if (ov.newEdges && o.isNewEdge(f, i)) newEdges.line(a, b, theme::kNewEdge, theme::kLineWidth + 0.5f);
+          else if (!isFilled(style)) outlines.line(a, b, c, theme::kEdgeWidth);
+          if (style == Style::hiddenLine) dashedOutlines.line(a, b, glm::vec4(glm::vec3(c), 0.8f), theme::kEdgeWidth, theme::kDashPx);
+        }
+        in.polygons.push_back(std::move(poly));
+      }
+      if (ov.fadeOutside && o.fate[f] != Fate::accepted) {
+        std::vector<Vec3> poly = fadedPolygon(o, f, scratch);
+        if (poly.size() >= 3) {
+          if (!isFilled(style)) fadedOutlines.polyline(poly, true, glm::vec4(glm::vec3(c), theme::kFadedAlpha), theme::kEdgeWidth);
+          out.polygons.push_back(std::move(poly));
+        }
+      }
+    }
+    inside.push_back(std::move(in));
+    faded.push_back(std::move(out));
+  }
+
+  const bool shaded = style == Style::shaded;
+  if (isFilled(style)) {
+    drawPolygons(inside, view, {0, Mat4(1.0), 1.f, shaded});
+  } else if (style != Style::wire) {
+    gl_.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    gl_.Enable(GL_POLYGON_OFFSET_FILL);
+    gl_.PolygonOffset(1.f, 2.f);
+    drawPolygons(inside, view, {0, Mat4(1.0), 1.f, false});
+    gl_.Disable(GL_POLYGON_OFFSET_FILL);
+    gl_.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  }
+  const OverlayDepth depth = style == Style::wire ? OverlayDepth::ignore : OverlayDepth::test;
+  overlay_.draw(outlines, view, w, h, depth);
+  if (style == Style::hiddenLine) {
+    gl_.Enable(GL_BLEND);
+    gl_.DepthMask(GL_FALSE);
+    gl_.DepthFunc(GL_GREATER);
+    overlay_.drawLines(dashedOutlines, view, w, h, Mat4(1.0));
+    gl_.DepthFunc(GL_LESS);
+    gl_.DepthMask(GL_TRUE);
+  }
+  if (ov.fadeOutside) {
+    gl_.Enable(GL_BLEND);
+    gl_.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl_.DepthMask(GL_FALSE);
+    if (isFilled(style)) drawPolygons(faded, view, {0, Mat4(1.0), theme::kFadedAlpha, shaded});
+    else overlay_.draw(fadedOutlines, view, w, h, depth);
+    gl_.DepthMask(GL_TRUE);
+    gl_.Disable(GL_BLEND);
+  }
+
+  OverlayBatch cube;
+  std::vector<TextLabel> labels;
+  if (ov.cube) addCube(cube, labels, view, w, h, ov.labels);
+  overlay_.draw(cube, view, w, h, OverlayDepth::test);
+  overlay_.draw(newEdges, view, w, h, OverlayDepth::test);
+  text_.draw(labels, w, h);
+}
+
+}  // namespace vplab

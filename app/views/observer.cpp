@@ -1,0 +1,115 @@
+#include "app/views/observer.h"
+
+#include "pipeline/view_mapping.h"
+
+#include <algorithm>
+
+namespace vplab {
+
+namespace {
+
+Vec3 eyeDirection(const Orbit& o) {
+  const double yaw = radians(o.yawDeg), pitch = radians(o.pitchDeg);
+  return {std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw)};
+}
+
+}  // namespace
+
+Camera observerCamera(const Orbit& o, double aspect) {
+  Camera c;
+  c.vrp = o.target;
+  c.prp = o.target + o.distance * eyeDirection(o);
+  c.vup = {0, 1, 0};
+  const double halfH = o.distance * std::tan(radians(o.fovDeg) / 2);
+  const double halfW = halfH * aspect;
+  c.window = {-halfW, halfW, -halfH, halfH};
+  c.front = o.distance * 0.99;  // VRC z: the front plane 1% of the distance in front of the eye
+  c.back = -o.distance * 99.0;
+  c.projection = Projection::perspective;
+  return c;
+}
+
+namespace {
+
+// What the world view must show: VRP, PRP, the objects' boxes and the view volume's corners.
+std::vector<Vec3> worldPoints(const Scene& scene) {
+  std::vector<Vec3> points{scene.camera.vrp, scene.camera.prp};
+  for (const SceneObject& o : scene.objects) {
+    if (!o.mesh || !o.visible) continue;
+    const Mat4 m = wcFromMc(o.transform);
+    for (const Vec3& c : bounds(*o.mesh).corners()) points.push_back(transformAffine(m, c));
+  }
+  // The view volume's corners: the unit cube taken back from NPC (exact for every projection).
+  if (!cameraError(scene.camera)) {
+    const Mat4 wcFromNpc = glm::inverse(npcFromVrc(scene.camera) * vrcFromWc(scene.camera));
+    for (int i = 0; i < 8; ++i) {
+      const Vec4 p = wcFromNpc * Vec4(i & 1, (i >> 1) & 1, (i >> 2) & 1, 1.0);
+      if (p.w > 0) points.push_back(Vec3(p) / p.w);
+    }
+  }
+  return points;
+}
+
+}  // namespace
+
+Orbit defaultWorldOrbit(const Scene& scene, double aspect) {
+  const std::vector<Vec3> points = worldPoints(scene);
+  Vec3 lo = points[0], hi = points[0];
+  for (const Vec3& p : points) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  Orbit o;
+  o.target = (lo + hi) * 0.5;
+  double radius = 1e-3;
+  for (const Vec3& p : points) radius = std::max(radius, glm::length(p - o.target));
+  // Seen from the side and above, relative to the scene camera's own direction of view.
+  const Vec3 n = glm::normalize(scene.camera.prp - scene.camera.vrp);
+  o.yawDeg = std::atan2(n.x, n.z) * 180 / kPi + 55;
+  o.pitchDeg = 28;
+  o.distance = radius / std::tan(radians(o.fovDeg) / 2);
+  // Frame the points: centre their projection and scale the distance until they fill 88% of
+  // the view (a few rounds, since moving changes the perspective a little).
+  for (int round = 0; round < 4; ++round) {
+    const Camera c = observerCamera(o, aspect);
+    const Mat4 npcFromWc = npcFromVrc(c) * vrcFromWc(c);
+    Vec2 pmin(1e300), pmax(-1e300);
+    for (const Vec3& p : points) {
+      const Vec4 h = npcFromWc * Vec4(p, 1.0);
+      if (h.w <= 0) continue;
+      pmin = glm::min(pmin, Vec2(h) / h.w);
+      pmax = glm::max(pmax, Vec2(h) / h.w);
+    }
+    const Vec2 centre = (pmin + pmax) * 0.5, extent = pmax - pmin;
+    panBy(o, (centre.x - 0.5) * aspect * -1.0, (centre.y - 0.5));
+    zoomBy(o, std::max(extent.x, extent.y) / 0.88);
+  }
+  return o;
+}
+
+Orbit defaultNpcOrbit() {
+  Orbit o;
+  o.target = {0.5, 0.5, 0.5};
+  o.yawDeg = 38;
+  o.pitchDeg = 24;
+  o.distance = 3.3;
+  o.fovDeg = 40;
+  return o;
+}
+
+void orbitBy(Orbit& o, double dxDeg, double dyDeg) {
+  o.yawDeg = std::fmod(o.yawDeg - dxDeg, 360.0);
+  o.pitchDeg = std::clamp(o.pitchDeg + dyDeg, -89.0, 89.0);
+}
+
+void panBy(Orbit& o, double dxFraction, double dyFraction) {
+  const Vec3 n = eyeDirection(o);
+  const Vec3 u = glm::normalize(glm::cross(Vec3(0, 1, 0), n));
+  const Vec3 v = glm::cross(n, u);
+  const double viewHeight = 2 * o.distance * std::tan(radians(o.fovDeg) / 2);
+  o.target += (-dxFraction * u + dyFraction * v) * viewHeight;
+}
+
+void zoomBy(Orbit& o, double factor) { o.distance = std::clamp(o.distance * factor, 1e-3, 1e6); }
+
+}  // namespace vplab

@@ -1,0 +1,34 @@
+// The observers of the world and NPC views: an orbit (target, yaw, pitch, distance, field of view)
+// turned into a synthetic camera of the pipeline itself, so these views use the very same stage
+// functions as the scene camera (and no other projection matrix).
+#pragma once
+
+#include "pipeline/camera.h"
+#include "pipeline/scene.h"
+
+namespace vplab {
+
+struct Orbit {
+  Vec3 target{0, 0, 0};
+  double yawDeg = 35;     // about the WC y axis, 0 looks along −z
+  double pitchDeg = 22;   // above the xz plane, limited to ±89°
+  double distance = 12;   // eye to target
+  double fovDeg = 40;     // vertical field of view
+};
+
+/// VRP = target, PRP on the orbit, VUP = +y, the window filling the field of view in the view plane
+/// through the target, front and back planes at 1% and 10000% of the distance from the eye.
+Camera observerCamera(const Orbit& orbit, double aspect);
+
+/// An orbit that shows the scene camera's VRP, PRP, view volume and the objects, seen from the side
+/// and above, framed to fill a view of the given aspect ratio.
+Orbit defaultWorldOrbit(const Scene& scene, double aspect = 4.0 / 3.0);
+/// An orbit around the unit cube of NPC.
+Orbit defaultNpcOrbit();
+
+/// Orbit controls: drag by pixels (yaw and pitch), pan in the view plane, zoom by a factor.
+void orbitBy(Orbit& orbit, double dxDeg, double dyDeg);
+void panBy(Orbit& orbit, double dxFraction, double dyFraction);  // fractions of the view's height
+void zoomBy(Orbit& orbit, double factor);
+
+}  // namespace vplab

@@ -1,0 +1,234 @@
+// Index: 1 names  2 construction  3 shared drawing (objects, edges, CPU polygons, lights)
+//        4 headless rendering and the "all" composition
+#include "app/views/view_renderer.h"
+
+#include "app/views/theme.h"
+#include "pipeline/error.h"
+
+namespace vplab {
+
+// ---------------------------------------------------------------- 1 names
+
+std::string_view toString(ViewKind v) {
+  switch (v) {
+    case ViewKind::camera: return "camera";
+    case ViewKind::world: return "world";
+    case ViewKind::npc: return "npc";
+    case ViewKind::all: return "all";
+  }
+  return "?";
+}
+
+std::optional<ViewKind> viewKindFromString(std::string_view s) {
+  for (ViewKind v : {ViewKind::camera, ViewKind::world, ViewKind::npc, ViewKind::all})
+    if (toString(v) == s) return v;
+  return std::nullopt;
+}
+
+std::string_view toString(Style s) {
+  switch (s) {
+    case Style::flat: return "flat";
+    case Style::shaded: return "shaded";
+    case Style::wire: return "wire";
+    case Style::hiddenLine: return "hidden-line";
+    case Style::hiddenRemoved: return "hidden-removed";
+  }
+  return "?";
+}
+
+std::optional<Style> styleFromString(std::string_view s) {
+  for (Style st : {Style::flat, Style::shaded, Style::wire, Style::hiddenLine, Style::hiddenRemoved})
+    if (toString(st) == s) return st;
+  return std::nullopt;
+}
+
+// ---------------------------------------------------------------- 2 construction
+
+ViewRenderer::ViewRenderer(GlContext& context, float textScale)
+    : ctx_(context),
+      gl_(context.gl()),
+      scene_(gl::Program::fromFiles(gl_, {"scene.vert", "scene.frag"})),
+      meshes_(gl_),
+      overlay_(gl_),
+      text_(gl_, textScale),
+      polygonVao_(gl::makeVertexArray(gl_)),
+      polygonVbo_(gl::makeBuffer(gl_)) {
+  gl_.BindVertexArray(polygonVao_.id());
+  gl_.BindBuffer(GL_ARRAY_BUFFER, polygonVbo_.id());
+  gl_.EnableVertexAttribArray(0);
+  gl_.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), nullptr);
+  gl_.EnableVertexAttribArray(1);
+  gl_.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), reinterpret_cast<void*>(sizeof(glm::vec3)));
+  gl_.BindVertexArray(0);
+  ctx_.checkErrors("creating the view renderer");
+}
+
+// ---------------------------------------------------------------- 3 shared drawing
+
+void ViewRenderer::setLights(const Scene& scene, const ViewCamera& view) {
+  std::vector<Light> lights = scene.lights;
+  if (lights.empty()) lights.push_back({scene.camera.prp, {1, 1, 1}});  // a light at the eye
+  const int count = int(std::min<size_t>(lights.size(), 4));
+  for (int i = 0; i < count; ++i) {
+    const std::string k = std::to_string(i);
+    scene_.set(("lightPositions[" + k + "]").c_str(), lights[size_t(i)].position);
+    scene_.set(("lightColors[" + k + "]").c_str(), lights[size_t(i)].color);
+  }
+  scene_.set("lightCount", count);
+  scene_.set("ambient", 0.28f);
+  scene_.set("eyeWc", glm::vec4(view.eyeWc));
+}
+
+void ViewRenderer::drawObjects(const Scene& scene, const ViewCamera& view, const ObjectPass& pass) {
+  scene_.use();
+  scene_.set("vrcFromWc", view.vrcFromWc);
+  scene_.set("npcFromVrc", view.npcFromVrc);
+  scene_.set("glClipFromNpc", glClipFromNpc());
+  scene_.set("volumeMode", pass.volumeMode);
+  scene_.set("volumeNpcFromWc", pass.volumeNpcFromWc);
+  scene_.set("userPlaneCount", 0);
+  scene_.set("shaded", int(pass.shaded));
+  scene_.set("alpha", pass.alpha);
+  setLights(scene, view);
+  for (const SceneObject& o : scene.objects) {
+    if (!o.visible || !o.mesh) continue;
+    const Mat4 m = wcFromMc(o.transform);
+    const GpuMesh& g = meshes_.get(o.mesh);
+    scene_.set("wcFromMc", m);
+    scene_.set("wcNormalFromMc", normalMatrix(m));
+    scene_.set("color", o.color);
+    gl_.BindVertexArray(g.faces.id());
+    gl_.DrawElements(GL_TRIANGLES, g.faceIndexCount, GL_UNSIGNED_INT, nullptr);
+  }
+  gl_.BindVertexArray(0);
+}
+
+// Wire: every edge. Hidden line (seed figures 16.1 and 16.3): the faces fill the depth buffer only,
+// pushed back a little so their own edges pass; visible edges solid, hidden ones dashed or not at all.
+void ViewRenderer::drawEdges(const Scene& scene, const ViewCamera& view, int width, int height, Style style) {
+  const bool hidden = style == Style::hiddenLine || style == Style::hiddenRemoved;
+  if (hidden) {
+    gl_.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    gl_.Enable(GL_POLYGON_OFFSET_FILL);
+    gl_.PolygonOffset(1.f, 2.f);
+    drawObjects(scene, view, {0, Mat4(1.0), 1.f, false});
+    gl_.Disable(GL_POLYGON_OFFSET_FILL);
+    gl_.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  }
+  gl_.Enable(GL_BLEND);
+  gl_.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  gl_.DepthMask(GL_FALSE);
+  struct Pass {
+    GLenum depthFunc;
+    float dash;
+    float alpha;
+  };
+  std::vector<Pass> passes;
+  if (!hidden) passes.push_back({GL_ALWAYS, 0.f, 1.f});
+  if (hidden) passes.push_back({GL_LEQUAL, 0.f, 1.f});
+  if (style == Style::hiddenLine) passes.push_back({GL_GREATER, theme::kDashPx, 0.8f});
+  for (const Pass& p : passes) {
+    gl_.DepthFunc(p.depthFunc);
+    for (const SceneObject& o : scene.objects) {
+      if (!o.visible || !o.mesh) continue;
+      const GpuMesh& g = meshes_.get(o.mesh);
+      overlay_.drawMeshEdges(g.edges.id(), g.edgeIndexCount, view, wcFromMc(o.transform), width, height,
+                             glm::vec4(glm::vec3(o.color), p.alpha), theme::kEdgeWidth, p.dash);
+    }
+  }
+  gl_.DepthFunc(GL_LESS);
+  gl_.DepthMask(GL_TRUE);
+}
+
+void ViewRenderer::drawPolygons(const std::vector<PolygonSet>& sets, const ViewCamera& view, const ObjectPass& pass) {
+  std::vector<glm::vec3> data;  // position, normal per corner, fan-triangulated
+  std::vector<std::pair<GLint, GLsizei>> ranges;
+  for (const PolygonSet& set : sets) {
+    const GLint first = GLint(data.size() / 2);
+    for (const auto& poly : set.polygons) {
+      Vec3 n{0};  // Newell's normal
+      for (size_t i = 0; i < poly.size(); ++i) {
+        const Vec3 &p = poly[i], &q = poly[(i + 1) % poly.size()];
+        n += Vec3((p.y - q.y) * (p.z + q.z), (p.z - q.z) * (p.x + q.x), (p.x - q.x) * (p.y + q.y));
+      }
+      const double len = glm::length(n);
+      const glm::vec3 normal = len > 0 ? glm::vec3(n / len) : glm::vec3(0, 0, 1);
+      for (size_t i = 1; i + 1 < poly.size(); ++i)
+        for (size_t k : {size_t(0), i, i + 1}) data.insert(data.end(), {glm::vec3(poly[k]), normal});
+    }
+    ranges.push_back({first, GLsizei(data.size() / 2) - first});
+  }
+  if (data.empty()) return;
+  gl_.BindVertexArray(polygonVao_.id());
+  gl_.BindBuffer(GL_ARRAY_BUFFER, polygonVbo_.id());
+  gl_.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(glm::vec3)), data.data(), GL_STREAM_DRAW);
+  scene_.use();
+  scene_.set("wcFromMc", Mat4(1.0));
+  scene_.set("wcNormalFromMc", Mat3(1.0));
+  scene_.set("vrcFromWc", view.vrcFromWc);
+  scene_.set("npcFromVrc", view.npcFromVrc);
+  scene_.set("glClipFromNpc", glClipFromNpc());
+  scene_.set("volumeMode", 0);
+  scene_.set("userPlaneCount", 0);
+  scene_.set("shaded", int(pass.shaded));
+  scene_.set("alpha", pass.alpha);
+  scene_.set("lightCount", 1);
+  scene_.set("lightPositions[0]", Vec3(view.eyeWc) + Vec3(0.6, 1.2, 0.4));
+  scene_.set("lightColors[0]", glm::vec3(1));
+  scene_.set("ambient", 0.3f);
+  scene_.set("eyeWc", glm::vec4(view.eyeWc));
+  for (size_t i = 0; i < sets.size(); ++i) {
+    if (ranges[i].second == 0) continue;
+    scene_.set("color", sets[i].color);
+    gl_.BindVertexArray(polygonVao_.id());
+    gl_.DrawArrays(GL_TRIANGLES, ranges[i].first, ranges[i].second);
+  }
+  gl_.BindVertexArray(0);
+}
+
+// ---------------------------------------------------------------- 4 headless rendering
+
+Image ViewRenderer::render(ViewKind kind, const Scene& scene, const PipelineRun& run, const FrameSettings& s,
+                           int width, int height) {
+  auto one = [&](ViewKind k, int samples) {
+    gl::RenderTarget target(gl_);
+    target.resize(width, height, samples);
+    if (k == ViewKind::camera) drawCamera(scene, run, s, target);
+    if (k == ViewKind::world) drawWorld(scene, run, s, target);
+    if (k == ViewKind::npc) drawNpc(scene, run, s, target);
+    Image image = target.read();
+    ctx_.checkErrors("rendering the " + std::string(toString(k)) + " view");
+    return image;
+  };
+  // The camera view is pixel-aligned with DC: no multisampling. The others are antialiased.
+  if (kind != ViewKind::all) return one(kind, kind == ViewKind::camera ? 1 : 4);
+  return compose(one(ViewKind::camera, 1), one(ViewKind::world, 4), one(ViewKind::npc, 4), width, height);
+}
+
+Image ViewRenderer::compose(const Image& camera, const Image& world, const Image& npc, int width, int height) {
+  const int titleHeight = int(text_.measure("Ag", TextSize::title).y) + 14;
+  const int gap = 6;
+  gl::RenderTarget strip(gl_);
+  strip.resize(3 * width + 2 * gap, titleHeight, 4);
+  strip.bind();
+  gl_.ClearColor(theme::kViewBackground.r * 0.7f, theme::kViewBackground.g * 0.7f, theme::kViewBackground.b * 0.7f, 1);
+  gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  const char* titles[] = {"camera: what the synthetic camera sees (DC)", "world: scene, camera and view volume (WC)",
+                          "npc: after view mapping, clipping and division (NPC)"};
+  std::vector<TextLabel> labels;
+  for (int i = 0; i < 3; ++i)
+    labels.push_back({{i * (width + gap) + width * 0.5, titleHeight * 0.5}, titles[i], theme::kText, TextSize::title,
+                      Anchor::center, false});
+  text_.draw(labels, strip.width(), strip.height());
+  const Image titleImage = strip.read();
+  ctx_.checkErrors("drawing the titles");
+
+  Image all(3 * width + 2 * gap, titleHeight + height, Rgba{20, 21, 26, 255});
+  blit(titleImage, all, 0, 0);
+  blit(camera, all, 0, titleHeight);
+  blit(world, all, width + gap, titleHeight);
+  blit(npc, all, 2 * (width + gap), titleHeight);
+  return all;
+}
+
+}  // namespace vplab

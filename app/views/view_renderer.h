@@ -1,0 +1,64 @@
+// Draws the views (views.h) into render targets: the filled scene through the GLSL path with the
+// pipeline's matrices, the overlays from the CPU pipeline's run. One instance per GL context; it
+// owns the programs, the meshes on the GPU and the targets.
+#pragma once
+
+#include "app/context/context.h"
+#include "app/gl/render_target.h"
+#include "app/gl/shader.h"
+#include "app/render/gpu_mesh.h"
+#include "app/render/overlay.h"
+#include "app/render/text.h"
+#include "app/render/view_camera.h"
+#include "app/views/views.h"
+#include "pipeline/pipeline.h"
+
+namespace vplab {
+
+class ViewRenderer {
+ public:
+  explicit ViewRenderer(GlContext& context, float textScale = 1.f);
+
+  /// Each draws one view into `target` (already sized; the camera view is pixel-aligned with DC when
+  /// the target is the device's W × H). `run` is the CPU pipeline's run of `scene` (with clipEdges
+  /// for the wireframe overlays).
+  void drawCamera(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
+  void drawWorld(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
+  void drawNpc(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
+
+  /// Renders a view headless into an image: camera at width × height, world and NPC likewise,
+  /// all as three panels of width × height with a title strip.
+  Image render(ViewKind kind, const Scene& scene, const PipelineRun& run, const FrameSettings& s, int width,
+               int height);
+
+  GlContext& context() { return ctx_; }
+
+ private:
+  struct ObjectPass {
+    int volumeMode = 0;  // 0 none, 1 inside the volume only, 2 outside only
+    Mat4 volumeNpcFromWc{1.0};
+    float alpha = 1.f;
+    bool shaded = true;
+  };
+  void drawObjects(const Scene& scene, const ViewCamera& view, const ObjectPass& pass);
+  void drawEdges(const Scene& scene, const ViewCamera& view, int width, int height, Style style);
+  /// Polygons the CPU made (clipped polygons in NPC), filled through the GLSL path.
+  struct PolygonSet {
+    glm::vec3 color;
+    std::vector<std::vector<Vec3>> polygons;
+  };
+  void drawPolygons(const std::vector<PolygonSet>& sets, const ViewCamera& view, const ObjectPass& pass);
+  void setLights(const Scene& scene, const ViewCamera& view);
+  Image compose(const Image& camera, const Image& world, const Image& npc, int width, int height);
+
+  GlContext& ctx_;
+  const GladGLContext& gl_;
+  gl::Program scene_;
+  GpuMeshCache meshes_;
+  OverlayRenderer overlay_;
+  TextRenderer text_;
+  gl::VertexArray polygonVao_;  // CPU polygons (NPC view): position and normal per corner
+  gl::Buffer polygonVbo_;
+};
+
+}  // namespace vplab

@@ -1,0 +1,53 @@
+// The views that make the pipeline visible (README "Views"):
+//   camera  what the synthetic camera sees, W × H pixels, pixel-aligned with DC
+//   world   an orbiting observer's view of the scene, the camera (VRP, PRP, VUP, U, V, N), the view
+//           plane's window and the frustum; what lies outside the view volume is faded and the
+//           edges clipping created are highlighted
+//   npc     the unit cube of NPC with the scene after view mapping, clipping and division
+//   all     the three side by side, with titles (for slides and tests)
+#pragma once
+
+#include "app/views/observer.h"
+
+#include <optional>
+#include <string_view>
+
+namespace vplab {
+
+enum class ViewKind { camera, world, npc, all };
+std::string_view toString(ViewKind v);
+std::optional<ViewKind> viewKindFromString(std::string_view s);
+
+/// flat: each object's colour, unlit. shaded: lit by the scene's lights. wire: every edge.
+/// hiddenLine: visible edges solid, hidden ones dashed (seed figure 16.1). hiddenRemoved: only the
+/// visible edges (seed figure 16.3).
+enum class Style { flat, shaded, wire, hiddenLine, hiddenRemoved };
+std::string_view toString(Style s);
+std::optional<Style> styleFromString(std::string_view s);
+inline bool isFilled(Style s) { return s == Style::flat || s == Style::shaded; }
+
+struct OverlaySettings {
+  bool frustum = true;       // world: front and back planes, edges from PRP
+  bool viewPlane = true;     // world: the window in the view plane
+  bool cameraAxes = true;    // world: VRP, PRP, VUP and U, V, N
+  bool labels = true;        // names next to points and axes, view titles
+  bool fadeOutside = true;   // world and NPC: what lies outside the view volume, faded
+  bool newEdges = true;      // world and NPC: edges created by clipping, highlighted
+  bool cube = true;          // NPC: the unit cube and its axes
+  bool cpuPolygons = false;  // camera: the CPU clipper's DC polygons over the GPU image
+  bool difference = false;   // camera: where the GPU image and the CPU raster differ
+};
+
+struct ViewSettings {
+  Style style = Style::shaded;
+  Orbit orbit;  // world and NPC views only
+};
+
+struct FrameSettings {
+  ViewSettings camera{Style::flat, {}};
+  ViewSettings world{Style::shaded, {}};
+  ViewSettings npc{Style::shaded, defaultNpcOrbit()};
+  OverlaySettings overlays;
+};
+
+}  // namespace vplab

@@ -1,0 +1,179 @@
+// The world view: an orbiting observer (itself a synthetic camera of the pipeline) sees the scene in
+// WC together with the scene camera: VRP, PRP, VUP, the U, V, N axes, the window in the view plane
+// and the view volume. What lies inside the view volume is drawn solid, the rest faded; the edges
+// the CPU clipper created are highlighted (seed 15.1, figures 15.1–15.5).
+#include "app/views/theme.h"
+#include "app/views/view_renderer.h"
+
+namespace vplab {
+
+namespace {
+
+struct Frame {
+  const PipelineRun& run;
+  Mat4 wcFromNpc;  // the inverse of the scene camera's npcFromVrc · vrcFromWc
+  Mat4 wcFromVrc;
+};
+
+Vec3 wcOfNpc(const Frame& f, const Vec3& npc) {
+  const Vec4 p = f.wcFromNpc * Vec4(npc, 1.0);
+  return Vec3(p) / p.w;
+}
+
+// The view volume's corners: the unit cube taken back to WC, exact for every projection.
+std::array<Vec3, 8> volumeCorners(const Frame& f) {
+  std::array<Vec3, 8> c;
+  for (int i = 0; i < 8; ++i) c[i] = wcOfNpc(f, Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
+  return c;
+}
+
+void addArrow(OverlayBatch& b, const Vec3& from, const Vec3& to, const Vec3& eye, const glm::vec4& color,
+              float dash = 0.f) {
+  b.line(from, to, color, theme::kLineWidth + 0.5f, dash);
+  const Vec3 dir = to - from;
+  const double len = glm::length(dir);
+  if (len <= 0) return;
+  Vec3 side = glm::cross(dir / len, eye - to);
+  if (glm::length(side) < 1e-12) return;
+  side = glm::normalize(side) * (0.07 * len);
+  const Vec3 base = to - dir * 0.16;
+  b.line(to, base + side, color, theme::kLineWidth + 0.5f);
+  b.line(to, base - side, color, theme::kLineWidth + 0.5f);
+}
+
+}  // namespace
+
+void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const FrameSettings& s,
+                             gl::RenderTarget& target) {
+  const int w = target.width(), h = target.height();
+  target.bind();
+  gl_.ClearColor(theme::kViewBackground.r, theme::kViewBackground.g, theme::kViewBackground.b, 1.f);
+  gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthFunc(GL_LESS);
+  gl_.Disable(GL_BLEND);
+  gl_.Disable(GL_CULL_FACE);
+
+  const ViewCamera view = viewCameraOf(observerCamera(s.world.orbit, double(w) / h));
+  const Frame f{run, glm::inverse(run.npcFromWc), glm::inverse(run.vrcFromWc)};
+  const Style style = s.world.style;
+  const bool shaded = style == Style::shaded;
+  const OverlaySettings& ov = s.overlays;
+
+  // The objects: inside the view volume solid, outside faded. The fragment shader splits them by
+  // the scene camera's boundary coordinates (seed 002), exactly where the CPU clipper cuts.
+  if (isFilled(style)) {
+    drawObjects(scene, view, {1, run.npcFromWc, 1.f, shaded});
+    if (ov.fadeOutside) {
+      gl_.Enable(GL_BLEND);
+      gl_.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+      gl_.DepthMask(GL_FALSE);
+      drawObjects(scene, view, {2, run.npcFromWc, theme::kFadedAlpha, shaded});
+      gl_.DepthMask(GL_TRUE);
+      gl_.Disable(GL_BLEND);
+    }
+  } else {
+    // Wireframes from the CPU's edge clipping: the visible part of each edge solid, all of it faded.
+    const bool hidden = style != Style::wire;
+    if (hidden) {
+      gl_.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+      gl_.Enable(GL_POLYGON_OFFSET_FILL);
+      gl_.PolygonOffset(1.f, 2.f);
+      drawObjects(scene, view, {0, Mat4(1.0), 1.f, false});
+      gl_.Disable(GL_POLYGON_OFFSET_FILL);
+      gl_.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    }
+    OverlayBatch solid, dashed, faded;
+    for (const ObjectRun& o : run.objects) {
+      const glm::vec4 c(glm::vec3(o.color), 1.f);
+      for (size_t i = 0; i < o.edges.size() && i < o.edgeRanges.size(); ++i) {
+        const Vec3 a = o.wc[o.edges[i].a], b = o.wc[o.edges[i].b];
+        if (ov.fadeOutside) faded.line(a, b, glm::vec4(glm::vec3(c), theme::kFadedAlpha), theme::kEdgeWidth);
+        const EdgeRange& r = o.edgeRanges[i];
+        if (!r.visible) continue;
+        // Boundary coordinates are linear along the WC segment, so t carries over from NPC.
+        const Vec3 p0 = a + r.t0 * (b - a), p1 = a + r.t1 * (b - a);
+        solid.line(p0, p1, c, theme::kEdgeWidth);
+        if (style == Style::hiddenLine) dashed.line(p0, p1, glm::vec4(glm::vec3(c), 0.8f), theme::kEdgeWidth, theme::kDashPx);
+      }
+    }
+    overlay_.draw(faded, view, w, h, hidden ? OverlayDepth::test : OverlayDepth::ignore);
+    overlay_.draw(solid, view, w, h, hidden ? OverlayDepth::test : OverlayDepth::ignore);
+    if (style == Style::hiddenLine) {
+      gl_.Enable(GL_BLEND);
+      gl_.DepthMask(GL_FALSE);
+      gl_.DepthFunc(GL_GREATER);
+      overlay_.drawLines(dashed, view, w, h, Mat4(1.0));
+      gl_.DepthFunc(GL_LESS);
+      gl_.DepthMask(GL_TRUE);
+    }
+  }
+
+  OverlayBatch b;
+  std::vector<TextLabel> labels;
+  auto label = [&](const Vec3& p, const std::string& text, const glm::vec4& color, Vec2 offset = {8, 0}) {
+    if (!ov.labels) return;
+    const Projected q = projectToPixels(view, p, w, h);
+    if (q.visible) labels.push_back({q.pixel + offset, text, color, TextSize::label, Anchor::left});
+  };
+
+  if (ov.newEdges) {
+    for (const ObjectRun& o : run.objects)
+      for (size_t fi = 0; fi < o.faceCount(); ++fi) {
+        if (o.fate[fi] != Fate::clipped) continue;
+        const auto face = o.clippedFace(fi);
+        for (size_t i = 0; i < face.size(); ++i)
+          if (o.isNewEdge(fi, i))
+            b.line(wcOfNpc(f, o.clippedNpc(face[i])), wcOfNpc(f, o.clippedNpc(face[(i + 1) % face.size()])),
+                   theme::kNewEdge, theme::kLineWidth + 0.5f);
+      }
+  }
+  if (ov.frustum) {
+    const auto c = volumeCorners(f);
+    // Corner i has x = bit 0, y = bit 1, z = bit 2 (z = 1 front, 0 back).
+    const int front[4] = {4, 5, 7, 6}, back[4] = {0, 1, 3, 2};
+    b.quad(c[4], c[5], c[7], c[6], theme::kFrontPlane);
+    b.quad(c[0], c[1], c[3], c[2], theme::kBackPlane);
+    for (int i = 0; i < 4; ++i) {
+      b.line(c[front[i]], c[front[(i + 1) % 4]], theme::kFrustum, theme::kLineWidth);
+      b.line(c[back[i]], c[back[(i + 1) % 4]], theme::kFrustum, theme::kLineWidth);
+      b.line(c[front[i]], c[back[i]], theme::kFrustum, theme::kLineWidth);
+      if (run.camera.projection == Projection::perspective)
+        b.line(run.camera.prp, c[front[i]], glm::vec4(glm::vec3(theme::kFrustum), 0.6f), 1.5f, theme::kDashPx);
+    }
+    label(c[7], "front F", theme::kFrustum, {6, -10});
+    label(c[3], "back B", theme::kFrustum, {6, -10});
+  }
+  if (ov.viewPlane) {
+    const ViewWindow& win = run.camera.window;
+    const Vec3 corners[4] = {transformAffine(f.wcFromVrc, {win.xmin, win.ymin, 0}),
+                             transformAffine(f.wcFromVrc, {win.xmax, win.ymin, 0}),
+                             transformAffine(f.wcFromVrc, {win.xmax, win.ymax, 0}),
+                             transformAffine(f.wcFromVrc, {win.xmin, win.ymax, 0})};
+    b.quad(corners[0], corners[1], corners[2], corners[3], theme::kWindowFill);
+    b.polyline({corners[0], corners[1], corners[2], corners[3]}, true, theme::kWindow, theme::kLineWidth);
+    label(corners[3], "window", theme::kWindow, {6, -10});
+  }
+  if (ov.cameraAxes) {
+    const Camera& cam = run.camera;
+    const double len = 0.3 * std::max(cam.window.width(), cam.window.height());
+    addArrow(b, cam.vrp, cam.vrp + len * run.frame.u, view.camera.prp, theme::kU);
+    addArrow(b, cam.vrp, cam.vrp + len * run.frame.v, view.camera.prp, theme::kV);
+    addArrow(b, cam.vrp, cam.vrp + len * run.frame.n, view.camera.prp, theme::kN);
+    addArrow(b, cam.vrp, cam.vrp + len * glm::normalize(cam.vup), view.camera.prp, theme::kVup, theme::kDashPx);
+    b.point(cam.vrp, theme::kVrp, theme::kPointSize);
+    b.point(cam.prp, theme::kPrp, theme::kPointSize);
+    if (cam.projection == Projection::perspective)
+      b.line(cam.vrp, cam.prp, glm::vec4(glm::vec3(theme::kN), 0.5f), 1.5f, theme::kDashPx);
+    label(cam.vrp + len * run.frame.u, "U", theme::kU);
+    label(cam.vrp + len * run.frame.v, "V", theme::kV);
+    label(cam.vrp + len * run.frame.n, "N", theme::kN);
+    label(cam.vrp + len * glm::normalize(cam.vup), "VUP", theme::kVup);
+    label(cam.vrp, "VRP", theme::kVrp, {8, 12});
+    label(cam.prp, "PRP", theme::kPrp);
+  }
+  overlay_.draw(b, view, w, h, OverlayDepth::xray);
+  text_.draw(labels, w, h);
+}
+
+}  // namespace vplab

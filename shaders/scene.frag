@@ -1,0 +1,45 @@
+#version 330 core
+// Flat: the object's colour, unlit. Shaded: ambient, diffuse and specular (Blinn–Phong) from the
+// scene's point lights, with the normal transformed by the inverse transpose (seed 13.5).
+
+in vec3 wcPosition;
+in vec3 wcNormal;
+in vec4 volumeNpcH;
+
+// 0: no volume test; 1: keep what is inside the other camera's view volume; 2: keep what is outside.
+// Blinn's boundary coordinates are linear in WC, and the interpolation of volumeNpcH is perspective-
+// correct, so the test splits each polygon exactly where the CPU clipper cuts it (seed 002).
+uniform int volumeMode;
+uniform bool shaded;
+uniform vec3 color;
+uniform float alpha;          // < 1: faded (outside the view volume)
+uniform vec4 eyeWc;           // w = 1: the eye point; w = 0: the direction to the viewer (parallel)
+uniform int lightCount;
+uniform vec3 lightPositions[4];
+uniform vec3 lightColors[4];
+uniform float ambient;
+
+out vec4 fragColor;
+
+void main() {
+  if (volumeMode != 0) {
+    vec4 v = volumeNpcH;
+    bool inside = v.x >= 0.0 && v.w - v.x >= 0.0 && v.y >= 0.0 && v.w - v.y >= 0.0 && v.z >= 0.0 && v.w - v.z >= 0.0;
+    if (inside != (volumeMode == 1)) discard;
+  }
+  if (!shaded) {
+    fragColor = vec4(color, alpha);
+    return;
+  }
+  vec3 n = normalize(wcNormal);
+  if (!gl_FrontFacing) n = -n;  // polygons are lit from the side they are seen from
+  vec3 toEye = normalize(eyeWc.w == 0.0 ? eyeWc.xyz : eyeWc.xyz - wcPosition);
+  vec3 c = ambient * color;
+  for (int i = 0; i < lightCount; ++i) {
+    vec3 l = normalize(lightPositions[i] - wcPosition);
+    float diffuse = max(dot(n, l), 0.0);
+    float specular = diffuse > 0.0 ? pow(max(dot(n, normalize(l + toEye)), 0.0), 48.0) : 0.0;
+    c += lightColors[i] * (diffuse * color + 0.3 * specular);
+  }
+  fragColor = vec4(min(c, vec3(1.0)), alpha);
+}

@@ -1,0 +1,38 @@
+#version 330 core
+// The GLSL path of the viewing pipeline (domain.md, "The GLSL path with the same matrices"):
+// the CPU pipeline's own matrices, column vectors, applied right to left:
+//   gl_Position = glClipFromNpc · npcFromVrc · vrcFromWc · wcFromMc · p
+// No other projection matrix exists. glClipFromNpc takes the NPC cube (front z = w) to GL's clip
+// volume (near plane z = −w) without changing what is inside, so GL's clipper clips to the cube.
+
+layout(location = 0) in vec3 mcPosition;  // MC
+layout(location = 1) in vec3 mcNormal;    // MC
+
+uniform mat4 wcFromMc;          // stage 1
+uniform mat4 vrcFromWc;         // stage 2, of the camera this view is seen through
+uniform mat4 npcFromVrc;        // stage 3
+uniform mat4 glClipFromNpc;     // the constant of domain.md
+uniform mat3 wcNormalFromMc;    // inverse transpose of wcFromMc's 3 × 3 (seed 13.5)
+
+// Another camera's view volume (the world view shows the scene camera's volume solid and the rest
+// faded): that camera's homogeneous NPC, whose boundary coordinates the fragment shader tests.
+uniform mat4 volumeNpcFromWc;
+// User clip planes in WC (seed 003, glClipPlane): a·x + b·y + c·z + d ≥ 0 is kept.
+uniform int userPlaneCount;
+uniform vec4 userPlanesWc[6];
+
+out vec3 wcPosition;
+out vec3 wcNormal;
+out vec4 volumeNpcH;
+out float gl_ClipDistance[6];
+
+void main() {
+  vec4 wc = wcFromMc * vec4(mcPosition, 1.0);
+  wcPosition = wc.xyz;
+  wcNormal = wcNormalFromMc * mcNormal;
+
+  volumeNpcH = volumeNpcFromWc * wc;
+  for (int i = 0; i < 6; ++i) gl_ClipDistance[i] = i < userPlaneCount ? dot(userPlanesWc[i], wc) : 1.0;
+
+  gl_Position = glClipFromNpc * npcFromVrc * vrcFromWc * wc;
+}

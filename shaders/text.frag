@@ -1,0 +1,11 @@
+#version 330 core
+// Glyph coverage from the font atlas (ImGui's, single channel) times the text colour.
+
+in vec2 vUv;
+in vec4 vColor;
+
+uniform sampler2D atlas;
+
+out vec4 fragColor;
+
+void main() { fragColor = vec4(vColor.rgb, vColor.a * texture(atlas, vUv).r); }
