@@ -1,6 +1,8 @@
 #include "app/cli.h"
 
 #include "app/headless.h"
+#include "app/ui/headless_viewer.h"
+#include "app/ui/run_viewer.h"
 #include "pipeline/dump.h"
 #include "pipeline/error.h"
 #include "pipeline/scene_io.h"
@@ -8,6 +10,8 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <iostream>
 
 namespace vplab {
@@ -40,6 +44,7 @@ struct RenderOptions {
   std::string out;
   std::string backend = "auto";
   std::string strategy = "npc";
+  float uiScale = 1.f;
   bool glDebug = false;
 };
 
@@ -55,7 +60,7 @@ std::pair<int, int> parseSize(const std::string& s) {
 int runRender(const RenderOptions& r) {
   const Scene scene = sceneFrom(r.scene);
   RenderRequest request;
-  request.view = *viewKindFromString(r.view);
+  if (r.view != "ui") request.view = *viewKindFromString(r.view);
   request.style = *styleFromString(r.style);
   request.pipeline.strategy = *clipStrategyFromString(r.strategy);
   if (!r.size.empty()) std::tie(request.width, request.height) = parseSize(r.size);
@@ -66,6 +71,14 @@ int runRender(const RenderOptions& r) {
   const bool debug = r.glDebug;
 #endif
   auto context = createHeadlessContext(*backendFromString(r.backend), debug);
+  if (r.view == "ui") {
+    // The whole window, panels included, as `vplab` shows it (1280 × 720 unless --size says).
+    HeadlessViewer viewer(*context, scene, request.width > 0 ? request.width : 1280,
+                          request.height > 0 ? request.height : 720, r.uiScale);
+    viewer.frames(3);
+    writePng(viewer.image(), out);
+    return 0;
+  }
   ViewRenderer renderer(*context);
   writePng(renderImage(renderer, scene, request), out);
   return 0;
@@ -73,12 +86,55 @@ int runRender(const RenderOptions& r) {
 
 struct ViewerOptions {
   std::string scene;
+  int quitAfterFrames = 0;
+  std::string screenshot;
+  float uiScale = 1.f;
+  bool glDebug = false;
 };
 
+// Without a display the viewer cannot open: say so, and leave what can be made headless instead.
+int viewerFallback(const ViewerOptions& v, const std::string& why) {
+  std::cerr << "vplab: " << why << "\n"
+            << "vplab: writing the pipeline dump to vplab-dump.json and the three views to vplab-all.png instead\n";
+  const Scene scene = sceneFrom(v.scene);
+  {
+    std::ofstream out("vplab-dump.json");
+    out << dumpJson(runPipeline(scene, {}));
+    if (!out) throw Error("vplab-dump.json: cannot write the dump");
+  }
+  try {
+    auto context = createHeadlessContext(Backend::automatic, false);
+    ViewRenderer renderer(*context);
+    RenderRequest request;
+    request.view = ViewKind::all;
+    request.style = Style::shaded;
+    writePng(renderImage(renderer, scene, request), "vplab-all.png");
+  } catch (const Error& e) {
+    std::cerr << "vplab: no headless picture either: " << e.what() << "\n";
+  }
+  return 0;
+}
+
 int runViewer(const ViewerOptions& v) {
-  std::cerr << "vplab: the interactive viewer is not built yet; writing the pipeline dump of "
-            << (v.scene.empty() ? "the default scene" : v.scene) << " instead\n";
-  return runDump({v.scene, "npc", false, 2});
+  ViewerLaunch launch;
+  launch.scene = sceneFrom(v.scene);
+  launch.quitAfterFrames = v.quitAfterFrames;
+  launch.screenshotOnQuit = v.screenshot;
+  launch.uiScale = v.uiScale;
+#ifndef NDEBUG
+  launch.glDebug = true;
+#else
+  launch.glDebug = v.glDebug;
+#endif
+  const char* display = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  if ((!display || !*display) && (!wayland || !*wayland))
+    return viewerFallback(v, "no display (DISPLAY is not set): the interactive viewer needs one");
+  try {
+    return runViewerWindow(std::move(launch));
+  } catch (const Error& e) {
+    return viewerFallback(v, e.what());
+  }
 }
 
 }  // namespace
@@ -92,6 +148,13 @@ int runCommandLine(int argc, char** argv) {
   ViewerOptions viewer;
   app.add_option("--scene", viewer.scene, "Scene file (JSON) to open; default: the built-in lecture scene")
       ->check(CLI::ExistingFile);
+  app.add_option("--quit-after-frames", viewer.quitAfterFrames,
+                 "Quit by itself after N frames (for smoke tests and scripted screenshots)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--screenshot", viewer.screenshot, "Write a PNG of the whole window when quitting");
+  app.add_option("--ui-scale", viewer.uiScale, "Scale fonts and handles (1.5 or 2 for a projector)")
+      ->check(CLI::Range(0.5f, 4.f));
+  app.add_flag("--gl-debug", viewer.glDebug, "Turn on KHR_debug and fail on any OpenGL error");
 
   DumpOptions dump;
   CLI::App* dumpCmd = app.add_subcommand("dump", "Run the CPU pipeline and print every stage's results as JSON");
@@ -113,8 +176,9 @@ int runCommandLine(int argc, char** argv) {
   renderCmd->add_option("--view", render.view,
                         "camera (what the synthetic camera sees, W × H, pixel-aligned with DC), world (an "
                         "observer's view of scene, camera and view volume), npc (the unit cube after view "
-                        "mapping, clipping and division) or all (the three side by side)")
-      ->check(CLI::IsMember({"camera", "world", "npc", "all"}));
+                        "mapping, clipping and division), all (the three side by side) or ui (the whole "
+                        "viewer window with its panels; needs the EGL backend)")
+      ->check(CLI::IsMember({"camera", "world", "npc", "all", "ui"}));
   renderCmd->add_option("--style", render.style,
                         "flat (object colours, unlit), shaded (lit by the scene's lights), wire (every edge), "
                         "hidden-line (hidden edges dashed, seed figure 16.1) or hidden-removed (hidden "
@@ -129,6 +193,8 @@ int runCommandLine(int argc, char** argv) {
   renderCmd->add_option("--strategy", render.strategy, "Clipping strategy of the CPU overlays: npc, wc or divide-first")
       ->check(CLI::IsMember({"npc", "wc", "divide-first"}));
   renderCmd->add_flag("--gl-debug", render.glDebug, "Turn on KHR_debug and fail on any OpenGL error");
+  renderCmd->add_option("--ui-scale", render.uiScale, "With --view ui: scale fonts and handles")
+      ->check(CLI::Range(0.5f, 4.f));
 
   try {
     app.parse(argc, argv);

@@ -23,12 +23,14 @@ struct ViewWindow {
   double xmin = -1, xmax = 1, ymin = -1, ymax = 1;
   double width() const { return xmax - xmin; }
   double height() const { return ymax - ymin; }
+  bool operator==(const ViewWindow&) const = default;
 };
 
 /// Oblique parallel projection (seed 14.3.2): shortening factor d = 1 / tan α and angle φ.
 struct ObliqueParams {
   double d = 0.5;
   double phiDeg = 50;
+  bool operator==(const ObliqueParams&) const = default;
 };
 inline constexpr ObliqueParams kCavalier{1.0, 35.0};  // α = 45°: depth at full length
 inline constexpr ObliqueParams kCabinet{0.5, 50.0};   // α = 63.43°: depth at half length
@@ -42,6 +44,7 @@ struct Camera {
   double back = -2;   // B, VRC z of the back plane, B < F
   Projection projection = Projection::perspective;
   ObliqueParams oblique = kCabinet;  // used when projection == oblique
+  bool operator==(const Camera&) const = default;
 };
 
 /// The VRC axes and distances derived from a valid camera (seed 15.2.2, domain.md stage 2).

@@ -11,6 +11,7 @@ struct Device {
   int width = 640;
   int height = 480;
   double aspect() const { return double(width) / double(height); }
+  bool operator==(const Device&) const = default;
 };
 
 /// x_dc = W·x, y_dc = H·(1 − y), z_dc = z (1 at the front plane, 0 at the back).

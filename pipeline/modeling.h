@@ -16,12 +16,14 @@ struct Rotation {
   Vec3 axis{0, 0, 1};
   double deg = 0;
   std::optional<Vec3> through;  // a point on the axis, in the coordinates the rotation acts in
+  bool operator==(const Rotation&) const = default;
 };
 
 struct ModelTransform {
   Vec3 translate{0, 0, 0};
   std::vector<Rotation> rotations;  // the first listed acts first
   Vec3 scale{1, 1, 1};
+  bool operator==(const ModelTransform&) const = default;
 };
 
 /// T(t) (seed 13.1).

@@ -46,6 +46,19 @@ void buildMesh(SceneObject& o, const std::filesystem::path& baseDir) {
   }
 }
 
+std::optional<std::string> sceneError(const Scene& scene) {
+  if (auto e = cameraError(scene.camera)) return "camera: " + *e;
+  for (const SceneObject& o : scene.objects) {
+    if (!o.mesh) return "object \"" + o.name + "\" has no mesh";
+    try {
+      wcFromMc(o.transform);
+    } catch (const Error& e) {
+      return "object \"" + o.name + "\": " + e.what();
+    }
+  }
+  return std::nullopt;
+}
+
 Scene defaultScene() {
   // The lecture scene: the seed's cube and tetrahedron with a cylinder and a sphere (seed 16), seen
   // in perspective; the tetrahedron crosses the window's right and bottom edges and the sphere the

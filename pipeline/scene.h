@@ -28,12 +28,14 @@ struct SceneObject {
   ModelTransform transform;      // MC → WC
   bool visible = true;
   std::shared_ptr<const Mesh> mesh;  // built from the fields above by buildMesh
+  bool operator==(const SceneObject&) const = default;  // meshes compare by identity
 };
 
 /// A point light in WC for the shaded style.
 struct Light {
   Vec3 position{5, 5, 5};
   Vec3 color{1, 1, 1};
+  bool operator==(const Light&) const = default;
 };
 
 struct Scene {
@@ -43,10 +45,15 @@ struct Scene {
   std::vector<SceneObject> objects;
   std::vector<Light> lights;       // empty: one light at the eye
   std::filesystem::path path;      // where it was loaded from; empty for the built-in scene
+  bool operator==(const Scene&) const = default;
 };
 
 /// Builds the object's MC mesh from its shape (OBJ files relative to baseDir). Throws vplab::Error.
 void buildMesh(SceneObject& object, const std::filesystem::path& baseDir);
+
+/// Why the scene cannot be run (an invalid camera, an object's invalid transform, a missing mesh),
+/// naming the values; nullopt when it can.
+std::optional<std::string> sceneError(const Scene& scene);
 
 /// The built-in default lecture scene (also assets/scenes/default.json).
 Scene defaultScene();

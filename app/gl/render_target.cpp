@@ -63,18 +63,22 @@ void RenderTarget::resolve() const {
   gl_->BindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+Image readPixels(const GladGLContext& gl, GLuint framebuffer, int width, int height) {
+  Image image(width, height);
+  gl.BindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+  gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+  std::vector<Rgba> rows(image.pixels.size());
+  gl.ReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+  gl.BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  // GL's window y points up, DC's down: GL row 0 is the bottom row.
+  for (int y = 0; y < height; ++y)
+    std::copy_n(rows.begin() + ptrdiff_t(y) * width, width, image.pixels.begin() + ptrdiff_t(height - 1 - y) * width);
+  return image;
+}
+
 Image RenderTarget::read() const {
   resolve();
-  Image image(width_, height_);
-  gl_->BindFramebuffer(GL_READ_FRAMEBUFFER, resolved_.id());
-  gl_->PixelStorei(GL_PACK_ALIGNMENT, 1);
-  std::vector<Rgba> rows(image.pixels.size());
-  gl_->ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
-  gl_->BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  // GL's window y points up, DC's down: GL row 0 is the bottom row.
-  for (int y = 0; y < height_; ++y)
-    std::copy_n(rows.begin() + ptrdiff_t(y) * width_, width_, image.pixels.begin() + ptrdiff_t(height_ - 1 - y) * width_);
-  return image;
+  return readPixels(*gl_, resolved_.id(), width_, height_);
 }
 
 }  // namespace vplab::gl

@@ -8,6 +8,9 @@
 
 namespace vplab::gl {
 
+/// Reads width × height pixels of a framebuffer (0: the window) as an image, top row first.
+Image readPixels(const GladGLContext& gl, GLuint framebuffer, int width, int height);
+
 class RenderTarget {
  public:
   explicit RenderTarget(const GladGLContext& gl) : gl_(&gl) {}
@@ -22,6 +25,9 @@ class RenderTarget {
   Image read() const;
 
   GLuint colorTexture() const { return color_.id(); }
+  /// The framebuffer holding the resolved colour (what the viewer draws its whole window into when
+  /// headless).
+  GLuint framebuffer() const { return resolved_.id(); }
   int width() const { return width_; }
   int height() const { return height_; }
   int samples() const { return samples_; }

@@ -32,8 +32,9 @@ void ViewRenderer::drawCamera(const Scene& scene, const PipelineRun& run, const 
   if (isFilled(style)) drawObjects(scene, view, {0, Mat4(1.0), 1.f, style == Style::shaded});
   else drawEdges(scene, view, target.width(), target.height(), style);
 
+  OverlayBatch batch;
+  if (s.highlights.probeDc) batch.point(*s.highlights.probeDc, theme::kProbe, 14.f);
   if (s.overlays.cpuPolygons) {
-    OverlayBatch batch;
     for (const ObjectRun& o : run.objects) {
       for (size_t f = 0; f < o.faceCount(); ++f) {
         std::vector<Vec3> poly;
@@ -41,8 +42,8 @@ void ViewRenderer::drawCamera(const Scene& scene, const PipelineRun& run, const 
         batch.polyline(poly, true, theme::kCpuPolygon, 1.5f);
       }
     }
-    overlay_.draw(batch, dcCamera(run.device), target.width(), target.height(), OverlayDepth::ignore);
   }
+  if (!batch.empty()) overlay_.draw(batch, dcCamera(run.device), target.width(), target.height(), OverlayDepth::ignore);
 }
 
 }  // namespace vplab

@@ -138,7 +138,8 @@ void ViewRenderer::drawNpc(const Scene& /*scene*/, const PipelineRun& run, const
   std::vector<TextLabel> labels;
   if (ov.cube) addCube(cube, labels, view, w, h, ov.labels);
   overlay_.draw(cube, view, w, h, OverlayDepth::test);
-  overlay_.draw(newEdges, view, w, h, OverlayDepth::test);
+  if (s.highlights.probeNpc) newEdges.point(*s.highlights.probeNpc, theme::kProbe, 14.f);
+  overlay_.draw(newEdges, view, w, h, OverlayDepth::xray);
   text_.draw(labels, w, h);
 }
 

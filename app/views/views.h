@@ -10,7 +10,9 @@
 #include "app/views/observer.h"
 
 #include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace vplab {
 
@@ -43,11 +45,23 @@ struct ViewSettings {
   Orbit orbit;  // world and NPC views only
 };
 
+/// Interactive marks: the probed vertex in each view's space and the world view's camera handles.
+struct Highlights {
+  std::optional<Vec3> probeWc, probeNpc, probeDc;
+  struct HandleMark {
+    Vec3 wc;
+    std::string name;
+    bool hot;  // under the mouse or being dragged
+  };
+  std::vector<HandleMark> handles;
+};
+
 struct FrameSettings {
   ViewSettings camera{Style::flat, {}};
   ViewSettings world{Style::shaded, {}};
   ViewSettings npc{Style::shaded, defaultNpcOrbit()};
   OverlaySettings overlays;
+  Highlights highlights;
 };
 
 }  // namespace vplab

@@ -172,6 +172,12 @@ void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const F
     label(cam.vrp, "VRP", theme::kVrp, {8, 12});
     label(cam.prp, "PRP", theme::kPrp);
   }
+  const Highlights& hl = s.highlights;
+  for (const Highlights::HandleMark& m : hl.handles) {
+    b.point(m.wc, m.hot ? theme::kHandleHot : theme::kHandle, m.hot ? 15.f : 9.f);
+    if (m.hot) label(m.wc, m.name, theme::kHandleHot, {10, -12});
+  }
+  if (hl.probeWc) b.point(*hl.probeWc, theme::kProbe, 14.f);
   overlay_.draw(b, view, w, h, OverlayDepth::xray);
   text_.draw(labels, w, h);
 }

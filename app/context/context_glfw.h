@@ -1,0 +1,34 @@
+// The interactive viewer's context: a GLFW window with an OpenGL 3.3 core context.
+#pragma once
+
+#include "app/context/context.h"
+
+#include <string>
+
+struct GLFWwindow;
+
+namespace vplab {
+
+class GlfwWindow final : public GlContext {
+ public:
+  /// Opens a window of width × height screen units. Throws vplab::Error when there is no display or
+  /// no suitable OpenGL, with GLFW's own description of the problem.
+  GlfwWindow(int width, int height, const std::string& title, bool debug);
+  ~GlfwWindow() override;
+
+  std::string_view backend() const override { return "glfw"; }
+  void makeCurrent() override;
+
+  GLFWwindow* handle() const { return window_; }
+  void setTitle(const std::string& title);
+  bool shouldClose() const;
+  void setShouldClose(bool close);
+  void swapBuffers();
+  /// Framebuffer size in pixels (differs from the window size on high-DPI screens).
+  void framebufferSize(int& width, int& height) const;
+
+ private:
+  GLFWwindow* window_ = nullptr;
+};
+
+}  // namespace vplab

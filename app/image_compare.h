@@ -1,0 +1,57 @@
+// Comparing RGBA8 images the way Magnum's DebugTools::CompareImage reports them: how many pixels
+// differ, by how much at most and on average, and the worst pixels with their coordinates and both
+// colours, plus a difference picture for the viewer's overlay and for failing golden tests.
+//
+// Coordinates are image coordinates: x right, y down, row 0 on top (app/image.h, the DC convention
+// of domain.md stage 5), so a reported pixel can be found in DC directly.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "app/image.h"
+
+namespace vplab {
+
+/// One differing pixel: where it is, both colours, and its largest channel difference.
+struct PixelDelta {
+  int x = 0, y = 0;
+  Rgba actual, expected;
+  int delta = 0;  // max over r, g, b, a of |actual − expected|, 0..255
+};
+
+struct ImageComparison {
+  // Both sizes, so that a mismatch can be reported (instead of compared or crashed on).
+  int actualWidth = 0, actualHeight = 0;
+  int expectedWidth = 0, expectedHeight = 0;
+  bool sizeMismatch = false;  // then nothing below was computed
+
+  int channelThreshold = 0;  // a pixel differs when some channel differs by more than this
+  size_t pixelCount = 0;
+  size_t differingPixels = 0;
+  double differingShare = 0;      // differingPixels / pixelCount, 0 for empty images
+  int maxChannelDelta = 0;        // over all channels (alpha included) of all pixels
+  double meanChannelDelta = 0;    // mean |actual − expected| over all channels of all pixels
+  std::vector<PixelDelta> worst;  // the largest deltas first; equal deltas in row-major order
+
+  /// Same size and no pixel beyond the threshold.
+  bool passed() const { return !sizeMismatch && differingPixels == 0; }
+};
+
+/// Compares channel by channel (r, g, b and a, as Magnum compares every channel of the format).
+/// A size mismatch is reported in the result (sizeMismatch), not thrown. Up to `worstCount`
+/// differing pixels are kept in `worst`.
+ImageComparison compareImages(const Image& actual, const Image& expected, int channelThreshold,
+                              size_t worstCount = 10);
+
+/// A multi-line report: the counts, the share, max and mean delta and the worst pixels with
+/// coordinates and both colours; or both sizes when they differ.
+std::string describe(const ImageComparison& comparison);
+
+/// A picture of where two images of the same size differ: pixels within the threshold as a dimmed
+/// grey version of `expected` (so the scene stays recognisable), differing pixels in magenta, the
+/// brighter the larger their delta. Throws vplab::Error naming both sizes when they differ.
+Image differenceImage(const Image& actual, const Image& expected, int channelThreshold);
+
+}  // namespace vplab

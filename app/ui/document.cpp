@@ -1,0 +1,66 @@
+#include "app/ui/document.h"
+
+#include "pipeline/scene_io.h"
+
+namespace vplab {
+
+Document::Document(Scene scene) : scene_(std::move(scene)), stable_(scene_), shown_(scene_) { refreshShown(); }
+
+void Document::refreshShown() {
+  if (auto e = sceneError(scene_)) {
+    error_ = *e;  // keep showing the last scene that could be run
+  } else {
+    error_.clear();
+    shown_ = scene_;
+  }
+}
+
+void Document::endFrame(bool editInProgress) {
+  if (!(scene_ == shown_) || !error_.empty()) refreshShown();
+  if (editInProgress || scene_ == stable_) return;
+  undo_.push_back(std::move(stable_));
+  if (undo_.size() > kMaxHistory) undo_.erase(undo_.begin());
+  redo_.clear();
+  stable_ = scene_;
+  dirty_ = true;
+}
+
+void Document::undo() {
+  if (undo_.empty()) return;
+  redo_.push_back(std::move(scene_));
+  scene_ = std::move(undo_.back());
+  undo_.pop_back();
+  stable_ = scene_;
+  dirty_ = true;
+  refreshShown();
+}
+
+void Document::redo() {
+  if (redo_.empty()) return;
+  undo_.push_back(std::move(scene_));
+  scene_ = std::move(redo_.back());
+  redo_.pop_back();
+  stable_ = scene_;
+  dirty_ = true;
+  refreshShown();
+}
+
+void Document::replace(Scene scene) {
+  scene_ = std::move(scene);
+  stable_ = scene_;
+  shown_ = scene_;
+  undo_.clear();
+  redo_.clear();
+  dirty_ = false;
+  refreshShown();
+}
+
+void Document::save(const std::filesystem::path& file) {
+  saveScene(scene_, file);
+  scene_.path = file;
+  stable_.path = file;
+  shown_.path = file;
+  dirty_ = false;
+}
+
+}  // namespace vplab

@@ -1,0 +1,55 @@
+// The scene being edited: its file, whether it has unsaved changes, the undo and redo history of
+// every parameter change, and the last valid camera (the views keep showing it while the camera
+// being edited is invalid, so nothing on screen is ever NaN).
+#pragma once
+
+#include "pipeline/scene.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace vplab {
+
+class Document {
+ public:
+  explicit Document(Scene scene);
+
+  /// The scene as edited (its camera may be invalid).
+  Scene& scene() { return scene_; }
+  const Scene& scene() const { return scene_; }
+  /// The scene the views show: the edited one, or while that cannot be run (an invalid camera or
+  /// transform), the last one that could.
+  const Scene& shown() const { return shown_; }
+  /// Why the edited scene cannot be run (sceneError); empty when it can.
+  const std::string& error() const { return error_; }
+
+  /// Call once per frame after the UI may have edited scene(): validates the camera and, unless an
+  /// edit is still under way (a drag), records the change as one undo step.
+  void endFrame(bool editInProgress);
+
+  bool canUndo() const { return !undo_.empty(); }
+  bool canRedo() const { return !redo_.empty(); }
+  void undo();
+  void redo();
+
+  bool dirty() const { return dirty_; }
+  const std::filesystem::path& path() const { return scene_.path; }
+  /// Replaces the scene (open, preset). Clears the history.
+  void replace(Scene scene);
+  /// Writes the scene; on success it is no longer dirty. Throws vplab::Error.
+  void save(const std::filesystem::path& file);
+
+ private:
+  void refreshShown();
+
+  Scene scene_;
+  Scene stable_;  // the scene as of the last recorded step
+  Scene shown_;
+  std::string error_;
+  std::vector<Scene> undo_, redo_;
+  bool dirty_ = false;
+  static constexpr size_t kMaxHistory = 500;
+};
+
+}  // namespace vplab

@@ -1,0 +1,21 @@
+// Key codes for ImGui 1.86's io.KeysDown[], which its GLFW backend indexes by GLFW key code. The
+// tests feed the same codes, so the shortcuts need no GLFW header.
+#pragma once
+
+namespace vplab::keys {
+
+inline constexpr int kEscape = 256;
+inline constexpr int kF1 = 290;
+inline constexpr int kF12 = 301;
+inline constexpr int kDigit1 = '1';  // '1'..'5' are consecutive
+inline constexpr int kB = 'B';
+inline constexpr int kC = 'C';
+inline constexpr int kO = 'O';
+inline constexpr int kP = 'P';
+inline constexpr int kQ = 'Q';
+inline constexpr int kR = 'R';
+inline constexpr int kS = 'S';
+inline constexpr int kY = 'Y';
+inline constexpr int kZ = 'Z';
+
+}  // namespace vplab::keys

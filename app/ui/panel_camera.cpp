@@ -1,0 +1,99 @@
+// The camera panel: the synthetic camera's parameters (seed 15.1–15.2) and what follows from them.
+#include "app/ui/panels.h"
+#include "app/ui/widgets.h"
+
+namespace vplab::ui {
+
+namespace {
+
+// Keeps the window's aspect ratio at the device's: the other axis follows, about its centre.
+void keepAspect(ViewWindow& w, double aspect, bool xChanged) {
+  if (xChanged) {
+    const double cy = (w.ymin + w.ymax) / 2, half = w.width() / aspect / 2;
+    w.ymin = cy - half;
+    w.ymax = cy + half;
+  } else {
+    const double cx = (w.xmin + w.xmax) / 2, half = w.height() * aspect / 2;
+    w.xmin = cx - half;
+    w.xmax = cx + half;
+  }
+}
+
+void derived(const ViewerState& s) {
+  const ViewFrame& f = s.run.frame;
+  ImGui::TextDisabled("derived");
+  ImGui::Text("U = %s", vecText(f.u).c_str());
+  tooltip("U = normalize(VUP × N): the view plane's x axis.", "U = VUP × N normiert: x-Achse der Bildebene.");
+  ImGui::Text("V = %s", vecText(f.v).c_str());
+  tooltip("V = N × U: the view plane's y axis, VUP projected into the view plane.",
+          "V = N × U: y-Achse der Bildebene, der in die Bildebene projizierte VUP.");
+  ImGui::Text("N = %s", vecText(f.n).c_str());
+  tooltip("N = normalize(PRP − VRP): the view plane normal; the eye lies on +N.",
+          "N = (PRP − VRP) normiert: Normale der Bildebene; das Auge liegt auf +N.");
+  ImGui::Text("VPD = %.4g   dmin = %.4g   dmax = %.4g", f.vpd, f.dmin, f.dmax);
+  tooltip("VPD = |PRP − VRP|, the view plane distance. dmin = VPD − F and dmax = VPD − B: the distances "
+          "of the front and back planes from the eye.",
+          "VPD: Abstand der Bildebene vom Augenpunkt. dmin, dmax: Abstände von Front- und Backplane.");
+}
+
+}  // namespace
+
+void cameraPanel(ViewerState& s) {
+  Camera& c = s.doc.scene().camera;
+  dragVec3(s, "VRP", "camera.vrp", c.vrp);
+  tooltip("View reference point: the point looked at, origin of VRC (WC).",
+          "View Reference Point: Bezugspunkt, Ursprung des VRC.");
+  dragVec3(s, "PRP", "camera.prp", c.prp);
+  tooltip("Projection reference point: the eye, the centre of projection (WC).",
+          "Projection Reference Point: Augenpunkt, Projektionszentrum.");
+  dragVec3(s, "VUP", "camera.vup", c.vup);
+  tooltip("View up vector: which way is up; projected into the view plane it gives V.",
+          "View Up Vector: Aufwärtsrichtung; in die Bildebene projiziert ergibt er V.");
+
+  section("window (view plane, VRC)");
+  ViewWindow& w = c.window;
+  const double aspect = s.doc.scene().device.aspect();
+  bool xChanged = dragDouble(s, "xmin", "camera.xmin", w.xmin);
+  xChanged |= dragDouble(s, "xmax", "camera.xmax", w.xmax);
+  bool yChanged = dragDouble(s, "ymin", "camera.ymin", w.ymin);
+  yChanged |= dragDouble(s, "ymax", "camera.ymax", w.ymax);
+  if (ImGui::Checkbox("keep the device's aspect ratio", &s.keepAspect) && s.keepAspect) xChanged = true;
+  if (s.keepAspect && (xChanged || yChanged) && w.width() > 0 && w.height() > 0) keepAspect(w, aspect, xChanged);
+  tooltip("The window's width : height stays the device's W : H, so nothing is stretched.",
+          "Das Seitenverhältnis des Fensters bleibt das des Geräts.");
+
+  section("front and back planes (VRC z)");
+  dragDouble(s, "front F", "camera.front", c.front);
+  tooltip("F: the front (near) plane z = F in VRC; maps to NPC z = 1. Needs B < F (< VPD in perspective).",
+          "F: Front Plane z = F im VRC; wird zu z = 1 im NPC.");
+  dragDouble(s, "back B", "camera.back", c.back);
+  tooltip("B: the back (far) plane z = B in VRC; maps to NPC z = 0.", "B: Back Plane z = B im VRC; wird zu z = 0.");
+
+  section("projection");
+  int p = int(c.projection);
+  ImGui::RadioButton("perspective", &p, int(Projection::perspective));
+  ImGui::SameLine();
+  ImGui::RadioButton("parallel", &p, int(Projection::parallel));
+  ImGui::SameLine();
+  ImGui::RadioButton("oblique", &p, int(Projection::oblique));
+  c.projection = Projection(p);
+  if (c.projection == Projection::oblique) {
+    dragDouble(s, "d", "camera.oblique.d", c.oblique.d, 0.01f, 0.0, 4.0);
+    tooltip("d = 1 / tan α: how much a unit of depth is shortened (seed 14.3.2).",
+            "d = 1/tan α: Verkürzungsfaktor der Tiefe (14.3.2).");
+    dragDouble(s, "phi (deg)", "camera.oblique.phi", c.oblique.phiDeg, 0.5f, -180.0, 180.0, "%.1f");
+    tooltip("φ: the angle under which depth is drawn in the view plane.", "φ: Winkel der Tiefenachse in der Bildebene.");
+    if (ImGui::Button("cavalier (d = 1, φ = 35°)")) c.oblique = kCavalier;
+    ImGui::SameLine();
+    if (ImGui::Button("cabinet (d = 0.5, φ = 50°)")) c.oblique = kCabinet;
+  }
+  ImGui::Separator();
+  if (!s.doc.error().empty()) {
+    errorText(s.doc.error());
+    ImGui::TextDisabled("The views show the last valid camera.");
+  } else {
+    derived(s);
+  }
+}
+
+}  // namespace vplab::ui

@@ -1,0 +1,101 @@
+// The clipping panel (strategy, bounding-box test, statistics and operation counts; seed 15.3) and
+// the display panel (styles and overlays per view).
+#include "app/ui/panels.h"
+#include "app/ui/widgets.h"
+
+namespace vplab::ui {
+
+namespace {
+
+void statRow(const char* name, uint64_t value) {
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(name);
+  ImGui::TableNextColumn();
+  ImGui::Text("%llu", static_cast<unsigned long long>(value));
+}
+
+bool styleCombo(const char* label, Style& style) {
+  int current = int(style);
+  const char* names[] = {"flat", "shaded", "wire", "hidden-line (dashed)", "hidden-line (removed)"};
+  const bool changed = ImGui::Combo(label, &current, names, IM_ARRAYSIZE(names));
+  style = Style(current);
+  return changed;
+}
+
+}  // namespace
+
+void clippingPanel(ViewerState& s) {
+  int strategy = int(s.pipeline.strategy);
+  ImGui::RadioButton("homogeneous NPC (Blinn)", &strategy, int(ClipStrategy::npc));
+  tooltip("Clip against the unit cube in homogeneous coordinates, 0 ≤ x, y, z ≤ w, then divide (seed 002).",
+          "Clipping im NPC in homogenen Koordinaten, dann Division durch w.");
+  ImGui::RadioButton("the six frustum planes in WC", &strategy, int(ClipStrategy::wc));
+  tooltip("Clip in WC against the plane equations of the view volume (seed 15.3.1).", "Clipping im WC (15.3.1).");
+  ImGui::RadioButton("divide first, then clip — WRONG on purpose", &strategy, int(ClipStrategy::divideFirst));
+  tooltip("Divides by w before clipping: points behind the eye (w < 0) flip sign and land in view.",
+          "Erst dividieren, dann clippen: Punkte hinter dem Auge klappen ins Bild.");
+  s.pipeline.strategy = ClipStrategy(strategy);
+  if (!isCorrect(s.pipeline.strategy))
+    errorText("Wrong on purpose: after the division a point behind the eye has x/w and y/w of flipped sign, so "
+              "an edge reaching behind the eye wraps around through infinity.");
+  ImGui::Checkbox("bounding-box test per object (15.3.4)", &s.pipeline.boundingBoxTest);
+  tooltip("One test of an object's bounding box decides all its polygons when the box is wholly inside "
+          "or wholly outside the view volume.",
+          "Umgebungsclipping: ein Test des umgebenden Quaders entscheidet für alle Polygone.");
+
+  const PipelineStats& st = s.run.stats;
+  if (ImGui::BeginTable("stats", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+    statRow("vertices transformed", st.verticesTransformed);
+    statRow("vertices classified", st.verticesClassified);
+    statRow("polygons", st.polygons);
+    statRow("  trivially accepted", st.polygonsTriviallyAccepted);
+    statRow("  trivially rejected", st.polygonsTriviallyRejected);
+    statRow("  clipped", st.polygonsClipped);
+    statRow("  clipped away", st.polygonsClippedAway);
+    statRow("  decided by bounding box", st.polygonsDecidedByBox);
+    statRow("vertices created", st.verticesCreated);
+    statRow("vertices divided and mapped", st.verticesOutput);
+    statRow("objects accepted by box", st.objectsAcceptedByBox);
+    statRow("objects rejected by box", st.objectsRejectedByBox);
+    statRow("multiplications", st.operations.multiplications);
+    statRow("additions", st.operations.additions);
+    statRow("divisions", st.operations.divisions);
+    statRow("comparisons", st.operations.comparisons);
+    ImGui::EndTable();
+  }
+  ImGui::TextDisabled("Operation counts follow the seed's cost model (15.3.3).");
+}
+
+void displayPanel(ViewerState& s) {
+  styleCombo("camera view", s.frame.camera.style);
+  styleCombo("world view", s.frame.world.style);
+  styleCombo("NPC view", s.frame.npc.style);
+  OverlaySettings& o = s.frame.overlays;
+  section("world view");
+  ImGui::Checkbox("view volume", &o.frustum);
+  ImGui::SameLine();
+  ImGui::Checkbox("window", &o.viewPlane);
+  ImGui::SameLine();
+  ImGui::Checkbox("camera axes", &o.cameraAxes);
+  section("world and NPC views");
+  ImGui::Checkbox("fade what is outside", &o.fadeOutside);
+  ImGui::SameLine();
+  ImGui::Checkbox("highlight new edges", &o.newEdges);
+  ImGui::Checkbox("unit cube", &o.cube);
+  ImGui::SameLine();
+  ImGui::Checkbox("labels", &o.labels);
+  section("camera view");
+  ImGui::Checkbox("CPU clipped polygons", &o.cpuPolygons);
+  tooltip("The CPU clipper's polygons in DC, outlined over the GPU's image.", "Die Polygone des CPU-Clippers im DC.");
+  ImGui::SameLine();
+  ImGui::Checkbox("difference to the CPU", &o.difference);
+  tooltip("Where the GPU's image differs from the CPU's polygons filled (magenta).",
+          "Wo das Bild der GPU von den gefüllten CPU-Polygonen abweicht.");
+  if (ImGui::Button("reset the observers")) {
+    s.frame.world.orbit = defaultWorldOrbit(s.doc.shown());
+    s.frame.npc.orbit = defaultNpcOrbit();
+  }
+}
+
+}  // namespace vplab::ui

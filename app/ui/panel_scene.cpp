@@ -1,0 +1,136 @@
+// The scene panel: the objects (seed 16) and their modeling transforms (seed 13, 15.2.1).
+#include "app/ui/panels.h"
+#include "app/ui/widgets.h"
+
+#include "pipeline/error.h"
+#include "pipeline/obj_mesh.h"
+
+#include <imgui_stdlib.h>
+
+namespace vplab::ui {
+
+namespace {
+
+void addObject(ViewerState& s, Shape shape, std::string file = {}) {
+  Scene& scene = s.doc.scene();
+  SceneObject o;
+  o.shape = shape;
+  o.name = std::string(toString(shape)) + " " + std::to_string(scene.objects.size());
+  o.file = std::move(file);
+  o.segments = 24;
+  o.color = {0.75, 0.75, 0.78};
+  if (shape == Shape::polygon) o.vertices = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+  o.transform.translate = scene.camera.vrp;  // where the camera looks
+  try {
+    buildMesh(o, scene.path.empty() ? std::filesystem::path{} : scene.path.parent_path());
+  } catch (const Error& e) {
+    s.status = e.what();
+    s.statusIsError = true;
+    return;
+  }
+  scene.objects.push_back(std::move(o));
+  s.selectedObject = int(scene.objects.size()) - 1;
+}
+
+void transformEditor(ViewerState& s, SceneObject& o) {
+  ModelTransform& t = o.transform;
+  dragVec3(s, "translate", "object.translate", t.translate);
+  tooltip("T(translate), applied last: wcFromMc = T · R_k ⋯ R_1 · S.", "Translation, zuletzt angewandt.");
+  bool uniform = t.scale.x == t.scale.y && t.scale.y == t.scale.z;
+  if (uniform) {
+    double k = t.scale.x;
+    if (dragDouble(s, "scale", "object.scale", k, 0.01f)) t.scale = Vec3(k == 0 ? 1e-3 : k);
+  } else {
+    dragVec3(s, "scale", "object.scale", t.scale, 0.01f);
+  }
+  tooltip("S(scale), applied first. 0 is refused: it would flatten the object.",
+          "Skalierung, zuerst angewandt; 0 ist nicht erlaubt.");
+  for (size_t i = 0; i < t.rotations.size(); ++i) {
+    ImGui::PushID(int(i));
+    Rotation& r = t.rotations[i];
+    ImGui::Text("rotation %zu", i + 1);
+    ImGui::SameLine();
+    const bool remove = ImGui::SmallButton("remove");
+    dragVec3(s, "axis", "object.rotation.axis", r.axis, 0.01f);
+    dragDouble(s, "deg", "object.rotation.deg", r.deg, 0.5f, 0, 0, "%.1f");
+    bool through = r.through.has_value();
+    if (ImGui::Checkbox("axis through a point", &through)) r.through = through ? std::optional<Vec3>(t.translate) : std::nullopt;
+    tooltip("Rotate about the line through this point (seed 13.3: translate, rotate, translate back).",
+            "Drehung um eine Achse durch einen Punkt (13.3).");
+    if (r.through) dragVec3(s, "through", "object.rotation.through", *r.through);
+    ImGui::PopID();
+    if (remove) {
+      t.rotations.erase(t.rotations.begin() + ptrdiff_t(i));
+      break;
+    }
+  }
+  if (ImGui::SmallButton("add rotation")) t.rotations.push_back({{0, 1, 0}, 0, {}});
+  tooltip("Rotations act in the order listed: the first one first.", "Die erste Drehung wirkt zuerst.");
+}
+
+void objectEditor(ViewerState& s, SceneObject& o) {
+  ImGui::InputText("name", &o.name);
+  ImGui::Checkbox("visible", &o.visible);
+  ImGui::SameLine();
+  glm::vec3 color(o.color);  // ColorEdit3 edits floats; the scene's colours are doubles
+  if (ImGui::ColorEdit3("colour", &color.x, ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_Float))
+    o.color = Vec3(color);
+  if (o.shape == Shape::cylinder || o.shape == Shape::sphere) {
+    int n = o.segments;
+    if (ImGui::SliderInt("segments", &n, o.shape == Shape::sphere ? 4 : 3, 128)) {
+      if (o.shape == Shape::sphere) n += n % 2;
+      SceneObject rebuilt = o;
+      rebuilt.segments = n;
+      buildMesh(rebuilt, {});
+      o = std::move(rebuilt);
+    }
+    tooltip("n: the number of facets around (seed 16.2).", "n: Anzahl der Facetten (16.2).");
+  }
+  if (o.shape == Shape::mesh) ImGui::TextDisabled("OBJ: %s (%zu faces)", o.file.c_str(), o.mesh ? o.mesh->faceCount() : 0);
+  transformEditor(s, o);
+}
+
+}  // namespace
+
+void scenePanel(ViewerState& s, FileDialog& dialog) {
+  Scene& scene = s.doc.scene();
+  ImGui::TextDisabled("objects");
+  if (ImGui::BeginListBox("##objects", ImVec2(-1, ImGui::GetTextLineHeightWithSpacing() * 5.5f))) {
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+      const SceneObject& o = scene.objects[i];
+      const std::string label = (o.visible ? "" : "(hidden) ") + o.name + "##" + std::to_string(i);
+      if (ImGui::Selectable(label.c_str(), s.selectedObject == int(i))) s.selectedObject = int(i);
+    }
+    ImGui::EndListBox();
+  }
+  if (ImGui::Button("+ cube")) addObject(s, Shape::cube);
+  ImGui::SameLine();
+  if (ImGui::Button("+ tetrahedron")) addObject(s, Shape::tetrahedron);
+  ImGui::SameLine();
+  if (ImGui::Button("+ cylinder")) addObject(s, Shape::cylinder);
+  if (ImGui::Button("+ sphere")) addObject(s, Shape::sphere);
+  ImGui::SameLine();
+  if (ImGui::Button("+ polygon")) addObject(s, Shape::polygon);
+  ImGui::SameLine();
+  if (ImGui::Button("+ OBJ mesh…"))
+    dialog.open("Load an OBJ mesh", FileDialog::Mode::open, {".obj"}, scene.path.parent_path(),
+                [&s](const std::filesystem::path& file) {
+                  // Relative to the scene file where there is one, as the scene format expects.
+                  const std::filesystem::path base = s.doc.scene().path.parent_path();
+                  std::error_code ec;
+                  const std::filesystem::path rel = base.empty() ? file : std::filesystem::relative(file, base, ec);
+                  addObject(s, Shape::mesh, (ec || rel.empty() ? file : rel).string());
+                });
+  if (scene.objects.empty()) return;
+  s.selectedObject = std::clamp(s.selectedObject, 0, int(scene.objects.size()) - 1);
+  ImGui::Separator();
+  ImGui::PushID(s.selectedObject);
+  objectEditor(s, scene.objects[size_t(s.selectedObject)]);
+  ImGui::PopID();
+  if (ImGui::Button("remove this object")) {
+    scene.objects.erase(scene.objects.begin() + s.selectedObject);
+    s.probe.reset();
+  }
+}
+
+}  // namespace vplab::ui

@@ -1,0 +1,17 @@
+// The viewer's panels, one function each (README "The viewer"). They edit the document's scene and
+// the view settings in place; the viewer records every change for undo.
+#pragma once
+
+#include "app/ui/file_dialog.h"
+#include "app/ui/viewer_state.h"
+
+namespace vplab::ui {
+
+void cameraPanel(ViewerState& s);
+void scenePanel(ViewerState& s, FileDialog& dialog);
+void clippingPanel(ViewerState& s);
+void displayPanel(ViewerState& s);
+void matricesPanel(ViewerState& s);
+void probePanel(ViewerState& s);
+
+}  // namespace vplab::ui

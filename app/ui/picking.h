@@ -1,0 +1,36 @@
+// Which vertex or camera handle lies under the mouse in a view: everything is projected with the
+// view's own synthetic camera (the pipeline's matrices) and the nearest within a radius wins.
+#pragma once
+
+#include "app/render/view_camera.h"
+#include "app/ui/viewer_state.h"
+
+#include <optional>
+
+namespace vplab {
+
+/// Where the world view's handles are, in WC: VRP, PRP, the window's edge midpoints (view plane)
+/// and the centres of the front and back planes.
+Vec3 handlePosition(const PipelineRun& run, Handle h);
+inline constexpr Handle kHandles[] = {Handle::vrp,         Handle::prp,       Handle::windowLeft, Handle::windowRight,
+                                      Handle::windowBottom, Handle::windowTop, Handle::front,      Handle::back};
+const char* handleName(Handle h);
+
+/// The handle within `radiusPx` of the pixel, nearest first.
+Handle pickHandle(const PipelineRun& run, const ViewCamera& view, int width, int height, Vec2 pixel, double radiusPx);
+
+/// The space a view shows the vertices in: world (WC through an observer), camera (DC through the
+/// scene camera), npc (NPC through an observer).
+std::optional<Probe> pickVertex(const PipelineRun& run, ViewKind view, const ViewCamera& observer, int width, int height,
+                                Vec2 pixel, double radiusPx);
+
+/// The probed vertex in a view's space (WC, DC or NPC); nullopt when it has no position there
+/// (behind the eye in NPC or DC).
+std::optional<Vec3> probePosition(const PipelineRun& run, const Probe& probe, ViewKind view);
+
+/// Moves a handle by a mouse motion of (dx, dy) pixels in the world view, changing the camera:
+/// VRP and PRP move parallel to the observer's view plane; window edges along U or V; the front
+/// and back planes along N.
+void dragHandle(Camera& camera, const PipelineRun& run, Handle h, const ViewCamera& observer, int height, Vec2 deltaPx);
+
+}  // namespace vplab

@@ -1,0 +1,73 @@
+// The interactive viewer (README "The viewer"): the three views in resizable ImGui windows beside
+// the panels (camera, scene, matrices, vertex probe, clipping, display). It draws one frame at a
+// time into the bound framebuffer, so the same code runs in a GLFW window and headless (`vplab
+// render --view ui`, the UI tests).
+#pragma once
+
+#include "app/context/context.h"
+#include "app/gl/render_target.h"
+#include "app/ui/file_dialog.h"
+#include "app/ui/viewer_state.h"
+#include "app/views/view_renderer.h"
+
+#include <memory>
+
+struct ImGuiContext;
+
+namespace vplab {
+
+class Viewer {
+ public:
+  /// Creates the ImGui context and its OpenGL3 renderer on `context` (current).
+  Viewer(GlContext& context, Scene scene, float uiScale = 1.f);
+  ~Viewer();
+  Viewer(const Viewer&) = delete;
+  Viewer& operator=(const Viewer&) = delete;
+
+  /// Builds and draws one frame into `framebuffer` (0: the window) of width × height pixels. The
+  /// platform has fed ImGui its input, display size and time step before.
+  void frame(GLuint framebuffer, int width, int height);
+
+  ViewerState& state() { return s_; }
+  const ViewerState& state() const { return s_; }
+  /// The window's close button or Ctrl+Q: quits at once when nothing is unsaved, else asks.
+  void requestQuit() { s_.quitRequested = true; }
+  bool shouldQuit() const { return s_.quitConfirmed; }
+  /// The window title: "vplab — scene.json *" (the star: unsaved changes).
+  std::string title() const;
+
+  /// Written by F12 into the working directory; the runner reads the window back.
+  bool screenshotRequested() const { return screenshotRequested_; }
+  void screenshotTaken(const std::string& file);
+
+ private:
+  void menuBar();
+  void shortcuts();
+  void controlsWindow();
+  void inspectWindow();
+  void viewWindows();
+  void helpWindow();
+  void quitDialog();
+  void runPipeline();
+  void openScene(const std::filesystem::path& file);
+  void saveScene(const std::filesystem::path& file);
+  void setStatus(std::string message, bool error);
+  std::optional<Vec3> probePositionOf(ViewKind view) const;
+  void orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const ViewCamera& observer, int w, int h, Vec2 mouse);
+  void worldInteraction(bool hovered, const ViewCamera& observer, int w, int h, Vec2 mouse);
+  GLuint differenceTexture();
+
+  GlContext& ctx_;
+  ImGuiContext* imgui_ = nullptr;
+  ViewRenderer renderer_;
+  ViewerState s_;
+  gl::RenderTarget world_, camera_, npc_;
+  gl::Texture differenceTexture_;
+  FileDialog dialog_;
+  float uiScale_;
+  int lastWidth_ = 0, lastHeight_ = 0;
+  bool relayout_ = true;
+  bool screenshotRequested_ = false;
+};
+
+}  // namespace vplab

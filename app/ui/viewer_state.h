@@ -1,0 +1,60 @@
+// Everything the interactive viewer knows between frames, in one owned struct (no globals).
+#pragma once
+
+#include "app/gl/render_target.h"
+#include "app/ui/document.h"
+#include "app/views/views.h"
+#include "pipeline/pipeline.h"
+
+#include <imgui.h>
+
+#include <map>
+#include <optional>
+#include <string>
+
+namespace vplab {
+
+/// A probed vertex: an object of the scene (index into scene.objects) and a vertex of its mesh.
+struct Probe {
+  size_t object = 0;
+  uint32_t vertex = 0;
+  bool operator==(const Probe&) const = default;
+};
+
+/// What can be grabbed in the world view to change the camera directly.
+enum class Handle { none, vrp, prp, windowLeft, windowRight, windowBottom, windowTop, front, back };
+
+/// A mouse drag in a view, from button press to release.
+struct Drag {
+  enum class Kind { none, orbit, pan, handle };
+  Kind kind = Kind::none;
+  ViewKind view = ViewKind::world;
+  Handle handle = Handle::none;
+};
+
+struct ViewerState {
+  explicit ViewerState(Scene scene) : doc(std::move(scene)) {}
+
+  Document doc;
+  FrameSettings frame;
+  PipelineOptions pipeline{ClipStrategy::npc, false, true};
+  PipelineRun run;              // the CPU pipeline's run of doc.shown(), every frame
+  std::string runError;         // when even the shown scene could not be run
+  std::optional<Probe> probe;
+  Handle hovered = Handle::none;
+  Drag drag;
+  int selectedObject = 0;
+  bool keepAspect = true;       // the window keeps the device's aspect ratio
+  bool seedForm = false;        // matrices in the seed's row-vector form (transposed)
+  bool showHelp = false;
+  bool quitRequested = false;   // asked to quit; a dirty document asks first
+  bool quitConfirmed = false;
+  std::string status;           // the last message (saved, loaded, an error)
+  bool statusIsError = false;
+
+  // Where named widgets and views were drawn last frame (screen coordinates): the UI tests drive
+  // the viewer through them with synthetic input.
+  std::map<std::string, ImVec4> rects;  // x, y, width, height
+};
+
+}  // namespace vplab
