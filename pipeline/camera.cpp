@@ -25,13 +25,18 @@ std::optional<Projection> projectionFromString(std::string_view s) {
 
 namespace {
 
+// The largest |component|. Unlike glm::length it cannot overflow: glm::length squares the
+// components and is infinite beyond about 1e154, which made large but valid values look like zero
+// vectors after glm::normalize (and gave misleading messages such as "PRP equals VRP").
+double maxAbs(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+
 // Seed 15.2.2: N points from VRP to the eye, U = VUP × N, V = N × U. No checks here.
 ViewFrame frameUnchecked(const Camera& c) {
   ViewFrame f{};
   const Vec3 toEye = c.prp - c.vrp;
   f.vpd = glm::length(toEye);
   f.n = toEye / f.vpd;
-  f.u = glm::normalize(glm::cross(c.vup, f.n));
+  f.u = glm::normalize(glm::cross(c.vup / maxAbs(c.vup), f.n));  // only VUP's direction matters
   f.v = glm::cross(f.n, f.u);
   f.dmin = f.vpd - c.front;
   f.dmax = f.vpd - c.back;
@@ -51,14 +56,14 @@ std::optional<std::string> inputError(const Camera& c) {
   if (!isFinite(w.xmin) || !isFinite(w.xmax) || !isFinite(w.ymin) || !isFinite(w.ymax) ||
       !isFinite(c.front) || !isFinite(c.back))
     return "the window and the front and back planes must be finite numbers";
-  const double scale = std::max({1.0, glm::length(c.vrp), glm::length(c.prp)});
+  const double scale = std::max({1.0, maxAbs(c.vrp), maxAbs(c.prp)});
   if (glm::length(c.prp - c.vrp) <= kDegenerate * scale)
     return "PRP " + format(c.prp) + " equals VRP " + format(c.vrp) +
            ": the view plane normal N = PRP − VRP is undefined";
   if (glm::length(c.vup) <= kDegenerate)
     return "VUP " + format(c.vup) + " is the zero vector: the camera has no up direction";
-  const Vec3 n = glm::normalize(c.prp - c.vrp);
-  if (glm::length(glm::cross(glm::normalize(c.vup), n)) <= kParallelSine)
+  const Vec3 n = glm::normalize((c.prp - c.vrp) / maxAbs(c.prp - c.vrp));
+  if (glm::length(glm::cross(glm::normalize(c.vup / maxAbs(c.vup)), n)) <= kParallelSine)
     return "VUP " + format(c.vup) + " is parallel to the view plane normal N " + format(n) +
            " (PRP − VRP): U = VUP × N is undefined";
   if (!(w.xmax > w.xmin))

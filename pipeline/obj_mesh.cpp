@@ -52,8 +52,9 @@ void checkObjText(std::string_view text, std::string_view name) {
   while (std::getline(in, raw)) {
     ++lineNo;
     if (!raw.empty() && raw.back() == '\r') raw.pop_back();
+    if (const size_t hash = raw.find('#'); hash != std::string::npos) raw.resize(hash);  // "f 1 2 3  # top"
     const auto t = tokens(raw);
-    if (t.empty() || t[0][0] == '#') continue;
+    if (t.empty()) continue;
     const std::string_view kw = t[0];
     if (kw == "v" || kw == "vn" || kw == "vt") {
       const size_t need = kw == "vt" ? 1 : 3;

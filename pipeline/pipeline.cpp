@@ -39,8 +39,24 @@ Vec3 ObjectRun::clippedNpc(uint32_t ref) const { return divideByW(clippedNpcH(re
 bool ObjectRun::isNewEdge(size_t f, size_t i) const {
   const auto face = clippedFace(f);
   const uint32_t a = face[i], b = face[(i + 1) % face.size()];
-  if (!isCreated(a) || !isCreated(b)) return false;
-  return (createdOnPlanes[a - vertexCount()] & createdOnPlanes[b - vertexCount()]) != 0;
+  if (!isCreated(a) && !isCreated(b)) {
+    // Two mesh vertices: an original edge when b follows a in the mesh face. Otherwise clipping
+    // dropped the vertices between them, which it does only when both lie exactly on that plane.
+    const auto original = mesh->face(f);
+    for (size_t k = 0; k < original.size(); ++k)
+      if (original[k] == a && original[(k + 1) % original.size()] == b) return false;
+    return true;
+  }
+  // A mesh vertex kept exactly on a plane (boundary value 0, counted inside) is on it just as a
+  // created vertex is; the clipper creates no vertex for it.
+  auto planes = [&](uint32_t ref) -> unsigned {
+    if (isCreated(ref)) return createdOnPlanes[ref - vertexCount()];
+    unsigned on = 0;
+    if (ref < bc.size())
+      for (int p = 0; p < kPlaneCount; ++p) on |= unsigned(bc[ref][p] == 0) << p;
+    return on;
+  };
+  return (planes(a) & planes(b)) != 0;
 }
 
 std::array<Vec4, kPlaneCount> frustumPlanesWc(const Mat4& npcFromWc) {

@@ -64,6 +64,9 @@ Scene defaultScene() {
   // in perspective; the tetrahedron crosses the window's right and bottom edges and the sphere the
   // back plane, so every view shows clipping.
   Scene s;
+  s.title = "Default lecture scene";
+  s.caption = "Cube, tetrahedron, cylinder and sphere (seed 16) in perspective: the tetrahedron crosses the "
+              "window's edges and the sphere the back plane, so every view shows clipping.";
   s.camera.vrp = {0, 0, 0};
   s.camera.prp = {3.0, 2.4, 7.5};
   s.camera.vup = {0, 1, 0};

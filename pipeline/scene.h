@@ -39,6 +39,8 @@ struct Light {
 };
 
 struct Scene {
+  std::string title;    // a preset's name, shown in the viewer's menu and title
+  std::string caption;  // one or two sentences on the idea the scene shows
   Camera camera;
   Device device;
   Vec3 background{0.12, 0.12, 0.14};

@@ -235,8 +235,10 @@ Scene parseScene(std::string_view text, std::string_view source, const std::file
     if (auto p = what.find("syntax error"); p != std::string::npos) what = what.substr(p);
     throw Error(std::string(source) + ":" + std::to_string(line) + ":" + std::to_string(col) + ": JSON " + what);
   }
-  r.object(j, "", {"camera", "device", "background", "lights", "objects"});
+  r.object(j, "", {"title", "caption", "camera", "device", "background", "lights", "objects"});
   Scene scene;
+  if (auto it = j.find("title"); it != j.end()) scene.title = r.string(*it, "/title");
+  if (auto it = j.find("caption"); it != j.end()) scene.caption = r.string(*it, "/caption");
   scene.camera = readCamera(r, r.required(j, "", "camera"), "/camera");
   if (auto it = j.find("device"); it != j.end()) {
     r.object(*it, "/device", {"width", "height"});
@@ -273,6 +275,8 @@ Scene loadScene(const std::filesystem::path& file) {
 std::string sceneToJson(const Scene& scene) {
   const Camera& c = scene.camera;
   Json j;
+  if (!scene.title.empty()) j["title"] = scene.title;
+  if (!scene.caption.empty()) j["caption"] = scene.caption;
   j["camera"] = {{"vrp", toJson(c.vrp)},
                  {"prp", toJson(c.prp)},
                  {"vup", toJson(c.vup)},

@@ -1,6 +1,7 @@
 // Scene files (JSON), a contract other tools rely on (README "Scene format"):
 //
-//   { "camera": { "vrp": [x,y,z], "prp": [x,y,z], "vup": [x,y,z],
+//   { "title": "…", "caption": "…",                      (optional: a preset's name and idea)
+//     "camera": { "vrp": [x,y,z], "prp": [x,y,z], "vup": [x,y,z],
 //                 "window": {"xmin": a, "xmax": b, "ymin": c, "ymax": d},
 //                 "front": F, "back": B,
 //                 "projection": "perspective" | "parallel" | "oblique",
