@@ -15,6 +15,13 @@ void addIntersections(OperationCounts& c, uint64_t created, uint64_t values) {
   c.multiplications += created * values;
 }
 
+// Seed 15.3.4: the box's 8 corners go through the one transformation to NPC and the inside test.
+void addBoxTests(OperationCounts& c, uint64_t boxes) {
+  c.multiplications += boxes * 8 * kTransformMul;
+  c.additions += boxes * 8 * (kTransformAdd + kNpcTestAdd);
+  c.comparisons += boxes * 8 * kNpcTestCmp;
+}
+
 }  // namespace
 
 OperationCounts npcStrategyCost(const PipelineStats& s) {
@@ -27,6 +34,7 @@ OperationCounts npcStrategyCost(const PipelineStats& s) {
   c.divisions += s.verticesOutput * kDivide;                      // then divide
   c.multiplications += s.verticesOutput * kTransformMul;          // NPC → DC
   c.additions += s.verticesOutput * kTransformAdd;
+  addBoxTests(c, s.objectsBoxTested);
   return c;
 }
 
@@ -41,6 +49,7 @@ OperationCounts wcStrategyCost(const PipelineStats& s) {
   c.multiplications += s.verticesOutput * 2 * kTransformMul;      // WC → NPC, NPC → DC
   c.additions += s.verticesOutput * 2 * kTransformAdd;
   c.divisions += s.verticesOutput * kDivide;
+  addBoxTests(c, s.objectsBoxTested);
   return c;
 }
 
@@ -54,6 +63,7 @@ OperationCounts divideFirstCost(const PipelineStats& s) {
   addIntersections(c, s.verticesCreated, 3 + 6);
   c.multiplications += s.verticesOutput * kTransformMul;          // NPC → DC
   c.additions += s.verticesOutput * kTransformAdd;
+  addBoxTests(c, s.objectsBoxTested);
   return c;
 }
 

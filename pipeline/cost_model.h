@@ -6,6 +6,7 @@
 //   perspective division            3 divisions
 //   a new vertex on an edge         1 division for t, then every interpolated value (coordinates
 //                                   and boundary values) 1 multiplication and 2 additions
+//   a bounding-box test             its 8 corners transformed to NPC and tested (seed 15.3.4)
 //
 // Clipping in WC saves the NPC transformation of invisible points but costs 2 more multiplications
 // per inside test, and one more MC → WC transformation per point when WC is not stored.
@@ -35,7 +36,8 @@ struct PipelineStats {
   uint64_t polygonsClippedAway = 0;  // cut, nothing remains
   uint64_t verticesCreated = 0;      // new vertices on clip planes
   uint64_t verticesOutput = 0;       // divided and mapped to DC
-  uint64_t objectsAcceptedByBox = 0; // seed 15.3.4
+  uint64_t objectsBoxTested = 0;     // seed 15.3.4: each costs 8 corner transformations and tests
+  uint64_t objectsAcceptedByBox = 0;
   uint64_t objectsRejectedByBox = 0;
   uint64_t polygonsDecidedByBox = 0;
   uint64_t edges = 0;

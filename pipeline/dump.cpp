@@ -47,6 +47,7 @@ Json statsJson(const PipelineRun& run) {
          {"polygons_clipped_away", s.polygonsClippedAway},
          {"vertices_created", s.verticesCreated},
          {"vertices_output", s.verticesOutput},
+         {"objects_box_tested", s.objectsBoxTested},
          {"objects_accepted_by_box", s.objectsAcceptedByBox},
          {"objects_rejected_by_box", s.objectsRejectedByBox},
          {"polygons_decided_by_box", s.polygonsDecidedByBox}};

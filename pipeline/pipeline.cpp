@@ -294,6 +294,7 @@ void runObject(ObjectRun& o, const PipelineRun& run, ClipScratch& scratch, Pipel
   if (run.options.boundingBoxTest) {
     Outcode common = 0;
     o.box = boxVerdict(mesh, run.npcFromWc * o.wcFromMc, common);
+    ++stats.objectsBoxTested;
     if (o.box != BoxVerdict::crossing) decideByBox(o, o.box, common, stats);
   }
   if (o.box == BoxVerdict::notTested || o.box == BoxVerdict::crossing) {

@@ -65,4 +65,11 @@ double npcDepthOfVrcZ(const Camera& c, const ViewFrame& f, double vrcZ) {
   return f.dmin * (f.dmax - ze) / ((f.dmax - f.dmin) * ze);
 }
 
+double depthResolution(const Camera& c, const ViewFrame& f, double vrcZ, int bits) {
+  const double step = 1.0 / (std::ldexp(1.0, bits) - 1.0);
+  if (c.projection != Projection::perspective) return step * (c.front - c.back);
+  const double ze = f.vpd - vrcZ;
+  return step * (f.dmax - f.dmin) * ze * ze / (f.dmin * f.dmax);
+}
+
 }  // namespace vplab

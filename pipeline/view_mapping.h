@@ -29,4 +29,10 @@ Mat4 obliqueShear(const ObliqueParams& ob);
 /// for parallel projections.
 double npcDepthOfVrcZ(const Camera& camera, const ViewFrame& frame, double vrcZ);
 
+/// The smallest VRC depth difference a depth buffer of `bits` bits can tell apart at VRC z: one step
+/// 1/(2^bits − 1) of window depth (= 1 − NPC z) divided by how fast NPC z changes with VRC z. For
+/// perspective that is (2^bits − 1)⁻¹ · (dmax − dmin)·ze² / (dmin·dmax), growing with the square of
+/// the distance from the eye ze (seed 15.2.4); for parallel projections it is constant, (F − B) / (2^bits − 1).
+double depthResolution(const Camera& camera, const ViewFrame& frame, double vrcZ, int bits);
+
 }  // namespace vplab
