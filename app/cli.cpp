@@ -1,5 +1,6 @@
 #include "app/cli.h"
 
+#include "app/bench.h"
 #include "app/headless.h"
 #include "app/ui/headless_viewer.h"
 #include "app/ui/run_viewer.h"
@@ -11,6 +12,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 
@@ -196,6 +198,18 @@ int runCommandLine(int argc, char** argv) {
   renderCmd->add_option("--ui-scale", render.uiScale, "With --view ui: scale fonts and handles")
       ->check(CLI::Range(0.5f, 4.f));
 
+  BenchOptions bench;
+  std::string benchOnly;
+  CLI::App* benchCmd = app.add_subcommand(
+      "bench", "Measure, in one run on this machine: the CPU pipeline on ~1M triangles against a floor pass and a "
+               "textbook baseline; frame times per view at 1280×720; the start-up of vplab render; the time "
+               "from an input event to the updated frame");
+  benchCmd->add_flag("--json", bench.json, "Print the report as JSON on stdout (progress goes to stderr)");
+  benchCmd->add_option("--repetitions", bench.repetitions, "Rounds of the pipeline workloads (median reported)")
+      ->check(CLI::Range(1, 100));
+  benchCmd->add_option("--frames", bench.frames, "Frames per frame-time measurement")->check(CLI::Range(5, 10000));
+  benchCmd->add_option("--only", benchOnly, "Comma-separated parts: pipeline, frames, startup, input");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -204,6 +218,20 @@ int runCommandLine(int argc, char** argv) {
   try {
     if (dumpCmd->parsed()) return runDump(dump);
     if (renderCmd->parsed()) return runRender(render);
+    if (benchCmd->parsed()) {
+      for (size_t start = 0; start < benchOnly.size();) {
+        const size_t comma = std::min(benchOnly.find(',', start), benchOnly.size());
+        const std::string part = benchOnly.substr(start, comma - start);
+        if (part != "pipeline" && part != "frames" && part != "startup" && part != "input")
+          throw Error("--only: \"" + part + "\" is not one of pipeline, frames, startup, input");
+        bench.only.push_back(part);
+        start = comma + 1;
+      }
+      std::error_code ec;
+      bench.executable = std::filesystem::read_symlink("/proc/self/exe", ec).string();
+      if (ec) bench.executable = argv[0];
+      return runBench(bench);
+    }
     return runViewer(viewer);
   } catch (const Error& e) {
     std::cerr << "vplab: error: " << e.what() << "\n";

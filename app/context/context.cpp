@@ -21,9 +21,11 @@ std::optional<Backend> backendFromString(std::string_view s) {
 
 namespace {
 
-void GLAD_API_PTR onDebugMessage(GLenum /*source*/, GLenum type, GLuint /*id*/, GLenum severity,
+void GLAD_API_PTR onDebugMessage(GLenum source, GLenum type, GLuint /*id*/, GLenum severity,
                                  GLsizei length, const GLchar* message, const void* user) {
   if (type != GL_DEBUG_TYPE_ERROR && severity != GL_DEBUG_SEVERITY_HIGH) return;
+  // Mesa also sends compile and link logs this way; gl::Program reports those itself.
+  if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
   auto* log = static_cast<GlDebugLog*>(const_cast<void*>(user));
   log->errors.emplace_back(message, length > 0 ? size_t(length) : std::char_traits<char>::length(message));
 }

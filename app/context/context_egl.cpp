@@ -36,7 +36,6 @@ class EglContext final : public GlContext {
     if (display_ == EGL_NO_DISPLAY) fail("eglGetPlatformDisplayEXT(surfaceless)");
     EGLint major = 0, minor = 0;
     if (!eglInitialize(display_, &major, &minor)) fail("eglInitialize");
-    initialized_ = true;
     gladLoaderLoadEGL(display_);  // again, now that the display's extensions are known
     if (!GLAD_EGL_KHR_surfaceless_context) throw Error("EGL_KHR_surfaceless_context is not supported");
     if (!eglBindAPI(EGL_OPENGL_API)) fail("eglBindAPI(EGL_OPENGL_API)");
@@ -59,12 +58,13 @@ class EglContext final : public GlContext {
     loadGl(reinterpret_cast<GLADloadfunc>(eglGetProcAddress), debug, "egl");
   }
 
+  // The display is not terminated: EGL hands every context of the process the same surfaceless
+  // display, and eglTerminate would pull it from under the other contexts still alive.
   ~EglContext() override {
     if (context_ != EGL_NO_CONTEXT) {
       eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
       eglDestroyContext(display_, context_);
     }
-    if (initialized_) eglTerminate(display_);
   }
 
   std::string_view backend() const override { return "egl"; }
@@ -77,15 +77,12 @@ class EglContext final : public GlContext {
   [[noreturn]] void fail(const char* call) {
     const EGLint e = eglGetError();
     if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
-    if (initialized_) eglTerminate(display_);
     context_ = EGL_NO_CONTEXT;
-    initialized_ = false;
     throw Error(std::string(call) + " failed: " + eglErrorName(e));
   }
 
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
-  bool initialized_ = false;
 };
 
 }  // namespace

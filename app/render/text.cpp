@@ -65,9 +65,7 @@ Vec2 TextRenderer::measure(const std::string& text, TextSize size) const {
   return {s.x, s.y};
 }
 
-void TextRenderer::appendText(const TextLabel& label, const glm::vec2& offset, const glm::vec4& color,
-                              std::vector<float>& out) const {
-  const ImFont* f = font(label.size);
+glm::vec2 TextRenderer::topLeft(const TextLabel& label) const {
   const Vec2 size = measure(label.text, label.size);
   glm::vec2 origin(label.pixel);
   switch (label.anchor) {
@@ -77,7 +75,12 @@ void TextRenderer::appendText(const TextLabel& label, const glm::vec2& offset, c
     case Anchor::bottomLeft: origin.y -= float(size.y); break;
     case Anchor::topCenter: origin.x -= float(size.x) * 0.5f; break;
   }
-  origin = glm::round(origin) + offset;
+  return glm::round(origin);
+}
+
+void TextRenderer::appendText(const TextLabel& label, const glm::vec2& origin, const glm::vec4& color,
+                              std::vector<float>& out) const {
+  const ImFont* f = font(label.size);
   float x = origin.x;
   const char* s = label.text.c_str();
   const char* end = s + label.text.size();
@@ -98,13 +101,32 @@ void TextRenderer::appendText(const TextLabel& label, const glm::vec2& offset, c
 void TextRenderer::draw(const std::vector<TextLabel>& labels, int width, int height) {
   if (labels.empty()) return;
   std::vector<float> vertices;
+  std::vector<glm::vec4> placed;  // x0, y0, x1, y1 of the labels so far
   for (const TextLabel& l : labels) {
+    const glm::vec2 size(measure(l.text, l.size));
+    const glm::vec2 wanted = glm::clamp(topLeft(l), glm::vec2(2.f),
+                                        glm::max(glm::vec2(2.f), glm::vec2(width, height) - size - 2.f));
+    auto overlaps = [&](glm::vec2 o) {
+      for (const glm::vec4& r : placed)
+        if (o.x < r.z && o.x + size.x > r.x && o.y < r.w && o.y + size.y > r.y) return true;
+      return false;
+    };
+    // Greedy placement: the wanted place, else half a line or a line below or above it, so a
+    // label never strays far from its point; when all overlap, the wanted place after all.
+    glm::vec2 origin = wanted;
+    if (l.avoid && overlaps(wanted))
+      for (float step : {0.6f, -0.6f, 1.1f, -1.1f})
+        if (!overlaps(wanted + glm::vec2(0, step * size.y))) {
+          origin = wanted + glm::vec2(0, step * size.y);
+          break;
+        }
+    placed.emplace_back(origin.x, origin.y, origin.x + size.x, origin.y + size.y);
     if (l.shadow) {
       const glm::vec4 dark(0.f, 0.f, 0.f, 0.75f * l.color.a);
       for (const glm::vec2 o : {glm::vec2(-1, 0), glm::vec2(1, 0), glm::vec2(0, -1), glm::vec2(0, 1)})
-        appendText(l, o, dark, vertices);
+        appendText(l, origin + o, dark, vertices);
     }
-    appendText(l, {0, 0}, l.color, vertices);
+    appendText(l, origin, l.color, vertices);
   }
   const GladGLContext& gl = *gl_;
   gl.Disable(GL_DEPTH_TEST);

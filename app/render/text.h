@@ -28,6 +28,7 @@ struct TextLabel {
   TextSize size = TextSize::label;
   Anchor anchor = Anchor::left;
   bool shadow = true;  // a dark outline keeps labels readable on any background
+  bool avoid = true;   // moved down, line by line, when it would overlap a label placed before it
 };
 
 class TextRenderer {
@@ -41,7 +42,8 @@ class TextRenderer {
   Vec2 measure(const std::string& text, TextSize size) const;
 
  private:
-  void appendText(const TextLabel& label, const glm::vec2& offset, const glm::vec4& color,
+  glm::vec2 topLeft(const TextLabel& label) const;
+  void appendText(const TextLabel& label, const glm::vec2& origin, const glm::vec4& color,
                   std::vector<float>& out) const;
   const ImFont* font(TextSize size) const;
 

@@ -25,6 +25,15 @@ void Document::endFrame(bool editInProgress) {
   dirty_ = true;
 }
 
+void Document::recordStep(const Scene& before) {
+  if (before == stable_) return;
+  undo_.push_back(std::move(stable_));
+  if (undo_.size() > kMaxHistory) undo_.erase(undo_.begin());
+  redo_.clear();
+  stable_ = before;
+  dirty_ = true;
+}
+
 void Document::undo() {
   if (undo_.empty()) return;
   redo_.push_back(std::move(scene_));

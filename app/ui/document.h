@@ -28,6 +28,9 @@ class Document {
   /// edit is still under way (a drag), records the change as one undo step.
   void endFrame(bool editInProgress);
 
+  /// Ends the current undo step at `before` (the scene as it was when the next edit began).
+  void recordStep(const Scene& before);
+
   bool canUndo() const { return !undo_.empty(); }
   bool canRedo() const { return !redo_.empty(); }
   void undo();

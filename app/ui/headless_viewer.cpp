@@ -9,11 +9,13 @@ namespace vplab {
 HeadlessViewer::HeadlessViewer(GlContext& context, Scene scene, int width, int height, float uiScale)
     : ctx_(context), viewer_(context, std::move(scene), uiScale), target_(context.gl()), width_(width), height_(height) {
   target_.resize(width, height, 1);
+  viewer_.makeCurrent();
   ImGuiIO& io = ImGui::GetIO();
   io.MousePos = ImVec2(-1, -1);
 }
 
 void HeadlessViewer::frame() {
+  viewer_.makeCurrent();
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = ImVec2(float(width_), float(height_));
   io.DisplayFramebufferScale = ImVec2(1, 1);
@@ -26,13 +28,23 @@ void HeadlessViewer::frames(int n) {
   for (int i = 0; i < n; ++i) frame();
 }
 
-void HeadlessViewer::mouseMove(double x, double y) { ImGui::GetIO().MousePos = ImVec2(float(x), float(y)); }
+void HeadlessViewer::mouseMove(double x, double y) {
+  viewer_.makeCurrent();
+  ImGui::GetIO().MousePos = ImVec2(float(x), float(y));
+}
 
-void HeadlessViewer::mouseButton(int button, bool down) { ImGui::GetIO().MouseDown[button] = down; }
+void HeadlessViewer::mouseButton(int button, bool down) {
+  viewer_.makeCurrent();
+  ImGui::GetIO().MouseDown[button] = down;
+}
 
-void HeadlessViewer::wheel(float steps) { ImGui::GetIO().MouseWheel = steps; }
+void HeadlessViewer::wheel(float steps) {
+  viewer_.makeCurrent();
+  ImGui::GetIO().MouseWheel = steps;
+}
 
 void HeadlessViewer::key(int code, bool ctrl, bool shift) {
+  viewer_.makeCurrent();
   ImGuiIO& io = ImGui::GetIO();
   io.KeyCtrl = ctrl;
   io.KeyShift = shift;

@@ -33,8 +33,9 @@ void clippingPanel(ViewerState& s) {
   ImGui::RadioButton("the six frustum planes in WC", &strategy, int(ClipStrategy::wc));
   tooltip("Clip in WC against the plane equations of the view volume (seed 15.3.1).", "Clipping im WC (15.3.1).");
   ImGui::RadioButton("divide first, then clip — WRONG on purpose", &strategy, int(ClipStrategy::divideFirst));
-  tooltip("Divides by w before clipping: points behind the eye (w < 0) flip sign and land in view.",
-          "Erst dividieren, dann clippen: Punkte hinter dem Auge klappen ins Bild.");
+  tooltip("Divides by w before clipping: for points behind the eye (w < 0) x/w and y/w flip sign, so edges "
+          "reaching behind the eye wrap around through infinity.",
+          "Erst dividieren, dann clippen: hinter dem Auge kehren x/w und y/w ihr Vorzeichen um.");
   s.pipeline.strategy = ClipStrategy(strategy);
   if (!isCorrect(s.pipeline.strategy))
     errorText("Wrong on purpose: after the division a point behind the eye has x/w and y/w of flipped sign, so "
@@ -56,6 +57,7 @@ void clippingPanel(ViewerState& s) {
     statRow("  decided by bounding box", st.polygonsDecidedByBox);
     statRow("vertices created", st.verticesCreated);
     statRow("vertices divided and mapped", st.verticesOutput);
+    statRow("objects box-tested", st.objectsBoxTested);
     statRow("objects accepted by box", st.objectsAcceptedByBox);
     statRow("objects rejected by box", st.objectsRejectedByBox);
     statRow("multiplications", st.operations.multiplications);
@@ -93,7 +95,7 @@ void displayPanel(ViewerState& s) {
   tooltip("Where the GPU's image differs from the CPU's polygons filled (magenta).",
           "Wo das Bild der GPU von den gefüllten CPU-Polygonen abweicht.");
   if (ImGui::Button("reset the observers")) {
-    s.frame.world.orbit = defaultWorldOrbit(s.doc.shown());
+    s.frame.world.orbit = defaultWorldOrbit(s.doc.shown(), s.worldAspect);
     s.frame.npc.orbit = defaultNpcOrbit();
   }
 }

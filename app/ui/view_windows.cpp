@@ -66,6 +66,7 @@ void Viewer::viewWindows() {
     if (size.x >= 8 && size.y >= 8) {
       const int w = int(size.x * fbScale.x), hgt = int(size.y * fbScale.y);
       world_.resize(w, hgt, 4);
+      s_.worldAspect = double(w) / hgt;
       const ViewCamera observer = viewCameraOf(observerCamera(s_.frame.world.orbit, double(w) / hgt));
       renderer_.drawWorld(s_.doc.shown(), s_.run, s_.frame, world_);
       world_.resolve();

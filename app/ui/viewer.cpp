@@ -55,6 +55,7 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
       uiScale_(uiScale) {
   IMGUI_CHECKVERSION();
   imgui_ = ImGui::CreateContext();
+  ImGui::SetCurrentContext(imgui_);  // CreateContext makes it current only when none is
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // the layout is computed, not stored in the working directory
   io.ConfigWindowsMoveFromTitleBarOnly = true;
@@ -66,7 +67,7 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
                 " context (it loads OpenGL through libGL.so.1: use a window or the EGL backend)");
   }
   s_.frame.camera.style = Style::shaded;
-  s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown(), 1.6);
+  s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
   runPipeline();
 }
 
@@ -103,8 +104,11 @@ void Viewer::runPipeline() {
   }
 }
 
+void Viewer::makeCurrent() { ImGui::SetCurrentContext(imgui_); }
+
 void Viewer::frame(GLuint framebuffer, int width, int height) {
   ImGui::SetCurrentContext(imgui_);
+  const Scene atFrameStart = s_.doc.scene();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui::NewFrame();
   if (width != lastWidth_ || height != lastHeight_) relayout_ = true;
@@ -120,11 +124,17 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   inspectWindow();
   helpWindow();
   quitDialog();
+  discardDialog();
   dialog_.draw();
   relayout_ = false;
   ImGui::Render();
 
-  const bool editing = ImGui::IsAnyItemActive() || s_.drag.kind == Drag::Kind::handle;
+  // Going straight from one field into the next keeps some item active in every frame: the change
+  // of the active item ends one undo step and begins the next.
+  const ImGuiID active = ImGui::GetActiveID();
+  if (active != lastActive_ && lastActive_ != 0) s_.doc.recordStep(atFrameStart);
+  lastActive_ = active;
+  const bool editing = active != 0 || s_.drag.kind == Drag::Kind::handle;
   s_.doc.endFrame(editing);
 
   const GladGLContext& gl = ctx_.gl();
@@ -142,6 +152,14 @@ void Viewer::controlsWindow() {
   const ui::Layout l = ui::computeLayout(ImGui::GetIO().DisplaySize, ImGui::GetFrameHeight(), uiScale_);
   ui::placeNext(l.controls, relayout_);
   ImGui::Begin("Controls", nullptr, ImGuiWindowFlags_NoCollapse);
+  const Scene& scene = s_.doc.scene();
+  if (!scene.title.empty() || !scene.caption.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.86f, 0.45f, 1.f));
+    ImGui::TextWrapped("%s", scene.title.empty() ? "Scene" : scene.title.c_str());
+    ImGui::PopStyleColor();
+    if (!scene.caption.empty()) ImGui::TextWrapped("%s", scene.caption.c_str());
+    ImGui::Spacing();
+  }
   if (ImGui::BeginTabBar("panels")) {
     if (ImGui::BeginTabItem("Camera")) {
       ui::cameraPanel(s_);
@@ -233,16 +251,17 @@ void Viewer::menuBar() {
   if (ImGui::BeginMenu("File")) {
     if (ImGui::MenuItem("Open scene…", "Ctrl+O"))
       dialog_.open("Open a scene", FileDialog::Mode::open, {".json"}, s_.doc.path(),
-                   [this](const std::filesystem::path& f) { openScene(f); });
+                   [this](const std::filesystem::path& f) { unlessUnsaved([this, f] { openScene(f); }); });
     if (ImGui::MenuItem("Save", "Ctrl+S")) saveScene(s_.doc.path());
     if (ImGui::MenuItem("Save as…", "Ctrl+Shift+S"))
       dialog_.open("Save the scene", FileDialog::Mode::save, {".json"}, s_.doc.path(),
                    [this](const std::filesystem::path& f) { saveScene(f); });
-    if (ImGui::MenuItem("Default lecture scene")) {
-      s_.doc.replace(defaultScene());
-      s_.probe.reset();
-      s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown());
-    }
+    if (ImGui::MenuItem("Default lecture scene"))
+      unlessUnsaved([this] {
+        s_.doc.replace(defaultScene());
+        s_.probe.reset();
+        s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
+      });
     ImGui::Separator();
     if (ImGui::MenuItem("Screenshot", "F12")) screenshotRequested_ = true;
     if (ImGui::MenuItem("Quit", "Ctrl+Q")) requestQuit();
@@ -277,7 +296,7 @@ void Viewer::shortcuts() {
     }
     if (pressed(keys::kO))
       dialog_.open("Open a scene", FileDialog::Mode::open, {".json"}, s_.doc.path(),
-                   [this](const std::filesystem::path& f) { openScene(f); });
+                   [this](const std::filesystem::path& f) { unlessUnsaved([this, f] { openScene(f); }); });
     if (pressed(keys::kQ)) requestQuit();
     return;
   }
@@ -293,7 +312,7 @@ void Viewer::shortcuts() {
   if (pressed(keys::kC)) s_.pipeline.strategy = ClipStrategy((int(s_.pipeline.strategy) + 1) % 3);
   if (pressed(keys::kB)) s_.pipeline.boundingBoxTest = !s_.pipeline.boundingBoxTest;
   if (pressed(keys::kR)) {
-    s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown());
+    s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
     s_.frame.npc.orbit = defaultNpcOrbit();
   }
 }
@@ -330,6 +349,35 @@ void Viewer::quitDialog() {
   ImGui::EndPopup();
 }
 
+void Viewer::unlessUnsaved(std::function<void()> action) {
+  if (!s_.doc.dirty()) {
+    action();
+    return;
+  }
+  pendingReplace_ = std::move(action);
+  askDiscard_ = true;
+}
+
+void Viewer::discardDialog() {
+  if (askDiscard_) {
+    ImGui::OpenPopup("Discard unsaved changes?");
+    askDiscard_ = false;
+  }
+  if (!ImGui::BeginPopupModal("Discard unsaved changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::Text("The scene has unsaved changes. They are lost if another scene is opened.");
+  if (ImGui::Button("Discard them")) {
+    ImGui::CloseCurrentPopup();
+    if (pendingReplace_) pendingReplace_();
+    pendingReplace_ = nullptr;
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Keep editing")) {
+    ImGui::CloseCurrentPopup();
+    pendingReplace_ = nullptr;
+  }
+  ImGui::EndPopup();
+}
+
 // ---------------------------------------------------------------- 5 files
 
 void Viewer::openScene(const std::filesystem::path& file) {
@@ -338,7 +386,7 @@ void Viewer::openScene(const std::filesystem::path& file) {
     s_.doc.replace(std::move(scene));
     s_.probe.reset();
     s_.selectedObject = 0;
-    s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown());
+    s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
     setStatus("opened " + file.string(), false);
   } catch (const Error& e) {
     setStatus(e.what(), true);

@@ -10,6 +10,7 @@
 #include "app/ui/viewer_state.h"
 #include "app/views/view_renderer.h"
 
+#include <functional>
 #include <memory>
 
 struct ImGuiContext;
@@ -28,6 +29,8 @@ class Viewer {
   /// platform has fed ImGui its input, display size and time step before.
   void frame(GLuint framebuffer, int width, int height);
 
+  /// Makes this viewer's ImGui context the current one (input is fed to the current context).
+  void makeCurrent();
   ViewerState& state() { return s_; }
   const ViewerState& state() const { return s_; }
   /// The window's close button or Ctrl+Q: quits at once when nothing is unsaved, else asks.
@@ -48,6 +51,9 @@ class Viewer {
   void viewWindows();
   void helpWindow();
   void quitDialog();
+  /// Runs `action` (which replaces the scene) at once, or after the user agreed to lose unsaved changes.
+  void unlessUnsaved(std::function<void()> action);
+  void discardDialog();
   void runPipeline();
   void openScene(const std::filesystem::path& file);
   void saveScene(const std::filesystem::path& file);
@@ -68,6 +74,9 @@ class Viewer {
   int lastWidth_ = 0, lastHeight_ = 0;
   bool relayout_ = true;
   bool screenshotRequested_ = false;
+  std::function<void()> pendingReplace_;  // waiting for "discard the unsaved changes?"
+  bool askDiscard_ = false;
+  unsigned lastActive_ = 0;  // the ImGui item active in the previous frame
 };
 
 }  // namespace vplab

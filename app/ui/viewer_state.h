@@ -44,6 +44,7 @@ struct ViewerState {
   Handle hovered = Handle::none;
   Drag drag;
   int selectedObject = 0;
+  double worldAspect = 1.6;    // of the world view's image, for framing the observer
   bool keepAspect = true;       // the window keeps the device's aspect ratio
   bool seedForm = false;        // matrices in the seed's row-vector form (transposed)
   bool showHelp = false;

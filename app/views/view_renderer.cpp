@@ -213,12 +213,18 @@ Image ViewRenderer::compose(const Image& camera, const Image& world, const Image
   strip.bind();
   gl_.ClearColor(theme::kViewBackground.r * 0.7f, theme::kViewBackground.g * 0.7f, theme::kViewBackground.b * 0.7f, 1);
   gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  const char* titles[] = {"camera: what the synthetic camera sees (DC)", "world: scene, camera and view volume (WC)",
-                          "npc: after view mapping, clipping and division (NPC)"};
+  // The long titles where they fit the panel, else the short ones.
+  const char* titles[][2] = {{"camera: what the synthetic camera sees (DC)", "camera (DC)"},
+                             {"world: scene, camera and view volume (WC)", "world (WC)"},
+                             {"npc: after view mapping, clipping and division (NPC)", "NPC"}};
   std::vector<TextLabel> labels;
-  for (int i = 0; i < 3; ++i)
-    labels.push_back({{i * (width + gap) + width * 0.5, titleHeight * 0.5}, titles[i], theme::kText, TextSize::title,
-                      Anchor::center, false});
+  for (int i = 0; i < 3; ++i) {
+    const bool fits = text_.measure(titles[i][0], TextSize::title).x <= width - 12;
+    TextLabel title{{i * (width + gap) + width * 0.5, titleHeight * 0.5}, titles[i][fits ? 0 : 1], theme::kText,
+                    TextSize::title, Anchor::center, false};
+    title.avoid = false;
+    labels.push_back(title);
+  }
   text_.draw(labels, strip.width(), strip.height());
   const Image titleImage = strip.read();
   ctx_.checkErrors("drawing the titles");

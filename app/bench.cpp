@@ -1,0 +1,261 @@
+// Index: 1 timing helpers  2 frame times  3 start-up  4 input to frame  5 the report
+#include "app/bench.h"
+
+#include "app/headless.h"
+#include "app/ui/headless_viewer.h"
+#include "app/ui/keys.h"
+#include "bench/workloads.h"
+#include "pipeline/error.h"
+
+#include <imgui.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <unistd.h>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <thread>
+
+namespace vplab {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+using Clock = std::chrono::steady_clock;
+
+// ---------------------------------------------------------------- 1 timing helpers
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+struct Summary {
+  double median = 0, p95 = 0, min = 0;
+  size_t samples = 0;
+};
+
+Summary summarize(std::vector<double> ms) {
+  Summary s;
+  if (ms.empty()) return s;
+  std::sort(ms.begin(), ms.end());
+  s.samples = ms.size();
+  s.min = ms.front();
+  s.median = ms.size() % 2 ? ms[ms.size() / 2] : (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]) / 2;
+  s.p95 = ms[std::min(ms.size() - 1, size_t(std::ceil(0.95 * double(ms.size()))) - 1)];
+  return s;
+}
+
+Json toJson(const Summary& s) {
+  return {{"median_ms", s.median}, {"p95_ms", s.p95}, {"min_ms", s.min}, {"samples", s.samples}};
+}
+
+bool wanted(const BenchOptions& o, const std::string& part) {
+  return o.only.empty() || std::find(o.only.begin(), o.only.end(), part) != o.only.end();
+}
+
+// ---------------------------------------------------------------- 2 frame times
+
+// A frame of one view: the CPU pipeline (with the wireframe overlays' edges) and the drawing,
+// finished on the GPU (glFinish), as the viewer does every frame.
+Summary timeView(ViewRenderer& renderer, const Scene& scene, ViewKind view, int frames, int w, int h) {
+  GlContext& ctx = renderer.context();
+  FrameSettings settings = frameSettingsFor(scene, Style::shaded, double(w) / h);
+  PipelineRun run;
+  gl::RenderTarget target(ctx.gl());
+  target.resize(w, h, view == ViewKind::camera ? 1 : 4);
+  std::vector<double> ms;
+  for (int i = -3; i < frames; ++i) {  // three warm-up frames
+    const auto start = Clock::now();
+    runPipeline(scene, {ClipStrategy::npc, false, true}, run);
+    if (view == ViewKind::camera) renderer.drawCamera(scene, run, settings, target);
+    if (view == ViewKind::world) renderer.drawWorld(scene, run, settings, target);
+    if (view == ViewKind::npc) renderer.drawNpc(scene, run, settings, target);
+    target.resolve();
+    ctx.gl().Finish();
+    if (i >= 0) ms.push_back(msSince(start));
+  }
+  return summarize(ms);
+}
+
+Summary timeThreeViews(ViewRenderer& renderer, const Scene& scene, int frames, int w, int h) {
+  GlContext& ctx = renderer.context();
+  FrameSettings settings = frameSettingsFor(scene, Style::shaded, double(w) / h);
+  PipelineRun run;
+  gl::RenderTarget camera(ctx.gl()), world(ctx.gl()), npc(ctx.gl());
+  camera.resize(w, h, 1);
+  world.resize(w, h, 4);
+  npc.resize(w, h, 4);
+  std::vector<double> ms;
+  for (int i = -3; i < frames; ++i) {
+    const auto start = Clock::now();
+    runPipeline(scene, {ClipStrategy::npc, false, true}, run);
+    renderer.drawCamera(scene, run, settings, camera);
+    renderer.drawWorld(scene, run, settings, world);
+    renderer.drawNpc(scene, run, settings, npc);
+    world.resolve();
+    npc.resolve();
+    ctx.gl().Finish();
+    if (i >= 0) ms.push_back(msSince(start));
+  }
+  return summarize(ms);
+}
+
+Json frameTimes(const BenchOptions& o, std::ostream& log) {
+  auto context = createHeadlessContext(Backend::automatic, false);
+  ViewRenderer renderer(*context);
+  const int w = 1280, h = 720;
+  Json j;
+  j["renderer"] = context->description();
+  j["size"] = {w, h};
+  struct Named {
+    std::string name;
+    Scene scene;
+    int frames;
+  };
+  const std::vector<Named> scenes = {{"default", defaultScene(), o.frames},
+                                     {"mesh_1m_triangles", bench::makeBenchScene(), std::max(5, o.frames / 8)}};
+  Json views = Json::array();
+  for (const Named& n : scenes) {
+    for (ViewKind v : {ViewKind::camera, ViewKind::world, ViewKind::npc}) {
+      log << "  frames: " << n.name << ", " << toString(v) << " view…\n";
+      const Summary s = timeView(renderer, n.scene, v, n.frames, w, h);
+      Json e = toJson(s);
+      e["scene"] = n.name;
+      e["view"] = std::string(toString(v));
+      views.push_back(e);
+    }
+  }
+  j["per_view"] = views;
+  log << "  frames: the three views together…\n";
+  const Summary all = timeThreeViews(renderer, defaultScene(), o.frames, w, h);
+  Json together = toJson(all);
+  together["fps_at_median"] = 1000.0 / all.median;
+  together["target_fps"] = 60;
+  together["target_met"] = 1000.0 / all.median >= 60;
+  j["three_views_default_scene"] = together;
+  return j;
+}
+
+// ---------------------------------------------------------------- 3 start-up
+
+Json startupTimes(const BenchOptions& o, std::ostream& log) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("vplab-bench-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path png = dir / "camera.png";
+  const std::string command = "\"" + o.executable + "\" render --out \"" + png.string() + "\" >/dev/null 2>&1";
+  std::vector<double> ms;
+  log << "  start-up: vplab render, " << 7 << " runs…\n";
+  for (int i = 0; i < 7; ++i) {
+    fs::remove(png);
+    const auto start = Clock::now();
+    const int rc = std::system(command.c_str());
+    const double t = msSince(start);
+    if (rc != 0 || !fs::exists(png)) throw Error("`" + command + "` failed while measuring the start-up");
+    ms.push_back(t);
+  }
+  fs::remove_all(dir);
+  const Summary s = summarize(ms);
+  Json j = toJson(s);
+  j["command"] = "vplab render (default scene, camera view, 640 × 480) until the PNG is on disk";
+  j["target_ms"] = 500;
+  j["target_met"] = s.median < 500;
+  return j;
+}
+
+// ---------------------------------------------------------------- 4 input to frame
+
+// A drag on the VRP field: each frame the mouse moves one pixel, the camera changes, and the frame
+// (pipeline, three views, panels) is drawn and finished. The time from the event to the frame.
+Json inputToFrame(const BenchOptions& o, std::ostream& log) {
+  log << "  input to frame: dragging the VRP field…\n";
+  auto context = createHeadlessContext(Backend::egl, false);
+  HeadlessViewer viewer(*context, defaultScene(), 1280, 720);
+  viewer.frames(3);
+  const auto [x, y] = viewer.centreOf("camera.vrp");
+  viewer.mouseMove(x - 40, y);
+  viewer.frame();
+  viewer.mouseButton(0, true);
+  viewer.frame();
+  std::vector<double> ms;
+  const Vec3 before = viewer.state().doc.scene().camera.vrp;
+  for (int i = 0; i < o.frames; ++i) {
+    viewer.mouseMove(x - 40 + (i % 40), y);  // the input event
+    const auto start = Clock::now();
+    viewer.frame();
+    context->gl().Finish();
+    ms.push_back(msSince(start));
+  }
+  viewer.mouseButton(0, false);
+  viewer.frame();
+  if (viewer.state().doc.scene().camera.vrp == before) throw Error("the benchmark's drag did not change VRP");
+  const Summary s = summarize(ms);
+  Json j = toJson(s);
+  j["event"] = "mouse motion dragging the VRP field; the frame includes the CPU pipeline, the three views and the panels";
+  j["target_ms"] = 16;
+  j["target_met"] = s.median <= 16;
+  return j;
+}
+
+// ---------------------------------------------------------------- 5 the report
+
+std::string ms(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f ms", v);
+  return buf;
+}
+
+const char* verdict(const Json& j, const char* key) { return j.value(key, false) ? "met" : "NOT met"; }
+
+void printHuman(const Json& j) {
+  if (j.contains("pipeline")) {
+    const Json& p = j["pipeline"];
+    std::cout << "CPU pipeline on " << p.value("triangles", 0) << " triangles (one core):\n"
+              << "  full " << ms(p["full"].value("median_ms", 0.0)) << ", floor " << ms(p["floor"].value("median_ms", 0.0))
+              << ", textbook " << ms(p["textbook"].value("median_ms", 0.0)) << "\n"
+              << "  full / floor = " << p.value("full_over_floor", 0.0) << " (target ≤ 2.5: "
+              << verdict(p, "full_over_floor_met") << "), textbook / full = " << p.value("textbook_over_full", 0.0)
+              << " (target ≥ 10: " << verdict(p, "textbook_over_full_met") << ")\n";
+  }
+  if (j.contains("frames")) {
+    const Json& f = j["frames"];
+    std::cout << "Frame times at 1280 × 720 on " << f.value("renderer", "?") << ":\n";
+    for (const Json& v : f["per_view"])
+      std::cout << "  " << v.value("scene", "") << ", " << v.value("view", "") << ": median "
+                << ms(v.value("median_ms", 0.0)) << ", p95 " << ms(v.value("p95_ms", 0.0)) << "\n";
+    const Json& t = f["three_views_default_scene"];
+    std::cout << "  the three views of the default scene: median " << ms(t.value("median_ms", 0.0)) << " ("
+              << t.value("fps_at_median", 0.0) << " fps; target 60: " << verdict(t, "target_met") << ")\n";
+  }
+  if (j.contains("startup"))
+    std::cout << "Start-up, vplab render to PNG: median " << ms(j["startup"].value("median_ms", 0.0))
+              << " (target < 500 ms: " << verdict(j["startup"], "target_met") << ")\n";
+  if (j.contains("input_to_frame"))
+    std::cout << "Input event to updated frame (three views + panels): median "
+              << ms(j["input_to_frame"].value("median_ms", 0.0)) << ", p95 "
+              << ms(j["input_to_frame"].value("p95_ms", 0.0)) << " (target ≤ 16 ms: "
+              << verdict(j["input_to_frame"], "target_met") << ")\n";
+}
+
+}  // namespace
+
+int runBench(const BenchOptions& o) {
+  Json report;
+  report["machine"] = {{"cores", std::thread::hardware_concurrency()}};
+  std::ostream& log = std::cerr;
+  if (wanted(o, "pipeline")) {
+    log << "  pipeline: full, floor and textbook on ~1M triangles, " << o.repetitions << " rounds…\n";
+    report["pipeline"] = bench::toJson(bench::runPipelineBenchmarks(o.repetitions));
+  }
+  if (wanted(o, "frames")) report["frames"] = frameTimes(o, log);
+  if (wanted(o, "startup")) report["startup"] = startupTimes(o, log);
+  if (wanted(o, "input")) report["input_to_frame"] = inputToFrame(o, log);
+  if (o.json) std::cout << report.dump(2) << "\n";
+  else printHuman(report);
+  return 0;
+}
+
+}  // namespace vplab

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Renders the README's pictures into docs/images/ with the built vplab (run scripts/setup.sh first).
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+vplab="${VPLAB:-$root/build/vplab}"
+out="$root/docs/images"
+mkdir -p "$out"
+"$vplab" render --view ui --out "$out/viewer.png"
+"$vplab" render --view all --style shaded --size 480x360 --out "$out/all-shaded.png"
+"$vplab" render --view all --style hidden-line --size 480x360 --out "$out/all-hidden-line.png"
+"$vplab" render --scene "$root/assets/scenes/behind-the-eye.json" --view all --style shaded --size 480x360 \
+  --out "$out/behind-the-eye.png"
+"$vplab" render --scene "$root/assets/scenes/depth-nonlinearity.json" --view all --style shaded --size 480x360 \
+  --out "$out/depth-nonlinearity.png"
+echo "pictures written to $out"

@@ -1,0 +1,281 @@
+// The `vplab` command line, run as a process (VPLAB_EXE through std::system in a temporary
+// directory): `vplab render` is deterministic and draws what the library draws in process; its
+// error cases and `vplab dump`'s give a clear message on stderr and a non-zero exit, and write no
+// file; without a display, `vplab` says so and leaves a dump and a picture instead. Also the check
+// half of the Xvfb smoke test (tests/CMakeLists.txt runs the window first).
+#include "app/headless.h"
+#include "app/image_compare.h"
+#include "pipeline/dump.h"
+#include "pipeline/scene_io.h"
+#include "tests/app/gl_test_support.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace vplab {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+std::string readFile(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void writeFile(const fs::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary);
+  out << text;
+}
+
+/// Single quotes for the shell.
+std::string quoted(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+struct ProcessResult {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+/// A fresh directory per test, removed afterwards unless the test failed.
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("vplab-cli-" + std::string(info->name()) + "-" + std::to_string(getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    if (!HasFailure()) fs::remove_all(dir_);
+    else std::cout << "left for inspection: " << dir_.string() << "\n";
+  }
+
+  /// Runs `vplab ARGS` in the test's directory with the environment prefix `env` (e.g. "env -u
+  /// DISPLAY"), capturing stdout, stderr and the exit code.
+  ProcessResult vplab(const std::string& args, const std::string& env = "") {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string command = "cd " + quoted(dir_.string()) + " && " + env + (env.empty() ? "" : " ") +
+                                quoted(VPLAB_EXE) + " " + args + " >" + quoted(out.string()) + " 2>" +
+                                quoted(err.string());
+    const int status = std::system(command.c_str());
+    ProcessResult r;
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = readFile(out);
+    r.err = readFile(err);
+    fs::remove(out);
+    fs::remove(err);
+    return r;
+  }
+
+  /// The PNG files in the test's directory.
+  std::vector<std::string> pngs() const {
+    std::vector<std::string> files;
+    for (const auto& e : fs::directory_iterator(dir_))
+      if (e.path().extension() == ".png") files.push_back(e.path().filename().string());
+    return files;
+  }
+
+  fs::path dir_;
+};
+
+// ---------------------------------------------------------------- determinism
+
+TEST_F(Cli, RenderTwiceWritesTheSameBytes) {
+  const std::vector<std::string> cases = {"--view camera --style flat", "--view all --style shaded --size 320x240",
+                                          "--view world --style hidden-line --size 320x240",
+                                          "--view ui --size 800x450"};
+  for (const std::string& args : cases) {
+    SCOPED_TRACE(args);
+    const ProcessResult a = vplab("render " + args + " --out a.png");
+    const ProcessResult b = vplab("render " + args + " --out b.png");
+    ASSERT_EQ(a.exitCode, 0) << a.err;
+    ASSERT_EQ(b.exitCode, 0) << b.err;
+    const std::string bytesA = readFile(dir_ / "a.png"), bytesB = readFile(dir_ / "b.png");
+    EXPECT_GT(bytesA.size(), 1000u);
+    EXPECT_TRUE(bytesA == bytesB) << "the two runs wrote different files";
+  }
+}
+
+// Both backends through the command line: the same bytes (contexts_test.cpp explains why).
+TEST_F(Cli, RenderWritesTheSameBytesWithEitherBackend) {
+  ASSERT_EQ(vplab("render --backend egl --out egl.png").exitCode, 0);
+  ASSERT_EQ(vplab("render --backend osmesa --out osmesa.png").exitCode, 0);
+  EXPECT_TRUE(readFile(dir_ / "egl.png") == readFile(dir_ / "osmesa.png"));
+}
+
+// The command line draws exactly what renderImage draws in this process (which the golden and
+// parity tests check), at the device's size by default, to vplab-VIEW.png by default.
+TEST_F(Cli, RenderDrawsWhatTheLibraryDraws) {
+  const ProcessResult r = vplab("render --view npc --style wire");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_TRUE(fs::exists(dir_ / "vplab-npc.png")) << "the default output name";
+  const Image cli = readPng(dir_ / "vplab-npc.png");
+  RenderRequest request;
+  request.view = ViewKind::npc;
+  request.style = Style::wire;
+  const Image library = renderImage(*test::egl().renderer, defaultScene(), request);
+  EXPECT_EQ(cli.width, defaultScene().device.width);
+  EXPECT_EQ(cli.height, defaultScene().device.height);
+  const ImageComparison c = compareImages(cli, library, 0);
+  EXPECT_TRUE(c.passed()) << describe(c);
+}
+
+TEST_F(Cli, DumpTwicePrintsTheSameValidJson) {
+  const ProcessResult a = vplab("dump"), b = vplab("dump");
+  ASSERT_EQ(a.exitCode, 0) << a.err;
+  EXPECT_EQ(a.out, b.out);
+  EXPECT_TRUE(a.err.empty()) << a.err;
+  const nlohmann::json j = nlohmann::json::parse(a.out);  // throws (and fails) when it is not JSON
+  EXPECT_TRUE(j.contains("camera"));
+  EXPECT_EQ(a.out, dumpJson(runPipeline(defaultScene())));  // the library's dump of the same scene
+  // The other strategies and options run too and differ where they should.
+  const ProcessResult wc = vplab("dump --strategy wc --bounding-box --indent -1");
+  ASSERT_EQ(wc.exitCode, 0) << wc.err;
+  EXPECT_EQ(std::count(wc.out.begin(), wc.out.end(), '\n'), 1) << "one line (and its newline)";
+  EXPECT_TRUE(nlohmann::json::accept(wc.out));
+  EXPECT_EQ(vplab("dump --strategy divide-first").exitCode, 0);
+}
+
+// ---------------------------------------------------------------- error cases
+
+/// The default scene as JSON, changed by `edit`: a scene file that is valid but for that change.
+std::string defaultSceneWith(const std::function<void(nlohmann::json&)>& edit) {
+  nlohmann::json j = nlohmann::json::parse(sceneToJson(defaultScene()));
+  edit(j);
+  return j.dump(2);
+}
+
+void expectFailure(const ProcessResult& r, const std::vector<std::string>& mentions, const std::string& what) {
+  EXPECT_NE(r.exitCode, 0) << what;
+  EXPECT_FALSE(r.err.empty()) << what << ": nothing on stderr";
+  for (const std::string& m : mentions) EXPECT_THAT(r.err, HasSubstr(m)) << what;
+  EXPECT_THAT(r.err, Not(HasSubstr("unexpected error"))) << what << ": not a handled error";
+  EXPECT_THAT(r.err, Not(HasSubstr("terminate called"))) << what;
+}
+
+TEST_F(Cli, RenderErrorsAreClearAndFail) {
+  writeFile(dir_ / "malformed.json", "{ \"camera\": { \"vrp\": [0, 0, 0],\n  \"prp\": [0, 0 }\n");
+  writeFile(dir_ / "eye-on-vrp.json", defaultSceneWith([](nlohmann::json& j) { j["camera"]["prp"] = j["camera"]["vrp"]; }));
+  writeFile(dir_ / "unknown-key.json", defaultSceneWith([](nlohmann::json& j) { j["lense"] = 3; }));
+  struct Case {
+    std::string args;
+    std::vector<std::string> mentions;
+  };
+  const std::vector<Case> cases = {
+      {"render --scene missing.json --out x.png", {"missing.json"}},
+      {"render --scene malformed.json --out x.png", {"malformed.json", "vplab: error:", ":2:"}},  // file:line
+      {"render --scene eye-on-vrp.json --out x.png", {"eye-on-vrp.json", "PRP"}},
+      {"render --scene unknown-key.json --out x.png", {"unknown-key.json", "lense"}},
+      {"render --size 12by3 --out x.png", {"--size", "12by3", "WIDTHxHEIGHT"}},
+      {"render --size 0x10 --out x.png", {"--size", "0x10"}},
+      {"render --size 100000x10 --out x.png", {"--size", "100000x10"}},
+      {"render --size 640x480x2 --out x.png", {"--size", "640x480x2"}},
+      {"render --backend vulkan --out x.png", {"--backend", "vulkan"}},
+      {"render --view side --out x.png", {"--view", "side"}},
+      {"render --style cartoon --out x.png", {"--style", "cartoon"}},
+      {"render --view ui --backend osmesa --out x.png", {"osmesa", "EGL"}},  // ImGui's renderer needs libGL
+      {"render --out " + quoted((dir_ / "no-such-dir" / "x.png").string()), {"no-such-dir"}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.args);
+    expectFailure(vplab(c.args), c.mentions, c.args);
+    EXPECT_THAT(pngs(), ::testing::IsEmpty()) << "an error wrote a picture";
+  }
+}
+
+TEST_F(Cli, DumpErrorsAreClearAndFail) {
+  writeFile(dir_ / "malformed.json", "[1, 2,\n");
+  writeFile(dir_ / "bad-device.json", defaultSceneWith([](nlohmann::json& j) { j["device"]["width"] = -5; }));
+  struct Case {
+    std::string args;
+    std::vector<std::string> mentions;
+  };
+  const std::vector<Case> cases = {
+      {"dump --scene missing.json", {"missing.json"}},
+      {"dump --scene malformed.json", {"malformed.json", "vplab: error:"}},
+      {"dump --scene bad-device.json", {"bad-device.json", "width"}},
+      {"dump --strategy sideways", {"--strategy", "sideways"}},
+      {"dump --indent 99", {"--indent", "99"}},
+      {"dump --frobnicate", {"--frobnicate"}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.args);
+    const ProcessResult r = vplab(c.args);
+    expectFailure(r, c.mentions, c.args);
+    EXPECT_TRUE(r.out.empty()) << "no partial dump on stdout: " << r.out.substr(0, 200);
+  }
+}
+
+// ---------------------------------------------------------------- no display
+
+// Without DISPLAY (and WAYLAND_DISPLAY) the viewer cannot open: vplab says so on stderr and writes
+// the dump and the three views into its working directory, the same as `vplab dump` and
+// `vplab render --view all --style shaded` produce.
+TEST_F(Cli, WithoutADisplayTheViewerLeavesADumpAndAPicture) {
+  const ProcessResult r = vplab("", "env -u DISPLAY -u WAYLAND_DISPLAY");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("no display"));
+  EXPECT_THAT(r.err, HasSubstr("DISPLAY"));
+  EXPECT_THAT(r.err, HasSubstr("vplab-dump.json"));
+  EXPECT_THAT(r.err, HasSubstr("vplab-all.png"));
+
+  ASSERT_TRUE(fs::exists(dir_ / "vplab-dump.json"));
+  const std::string dump = readFile(dir_ / "vplab-dump.json");
+  EXPECT_TRUE(nlohmann::json::accept(dump));
+  EXPECT_EQ(dump, dumpJson(runPipeline(defaultScene())));
+
+  ASSERT_TRUE(fs::exists(dir_ / "vplab-all.png"));
+  const Image all = readPng(dir_ / "vplab-all.png");
+  EXPECT_GT(all.width, 3 * defaultScene().device.width);  // three panels side by side
+  EXPECT_GT(all.height, defaultScene().device.height);   // and a title strip
+  EXPECT_GT(test::distinctColours(all), 500u);
+  const ProcessResult rendered = vplab("render --view all --style shaded --out rendered.png");
+  ASSERT_EQ(rendered.exitCode, 0) << rendered.err;
+  EXPECT_TRUE(readFile(dir_ / "vplab-all.png") == readFile(dir_ / "rendered.png"));
+}
+
+// ---------------------------------------------------------------- the Xvfb smoke test's check
+
+// tests/CMakeLists.txt runs the real window under Xvfb (ctest smoke.window) with
+// --quit-after-frames 20 --screenshot FILE, then this test with VPLAB_SMOKE_SCREENSHOT=FILE
+// (smoke.window.check). Run on its own (without the variable) it is skipped.
+TEST(WindowSmoke, ScreenshotShowsTheViewer) {
+  const char* file = std::getenv("VPLAB_SMOKE_SCREENSHOT");
+  if (!file || !*file) GTEST_SKIP() << "run by the ctest entry smoke.window.check after smoke.window";
+  ASSERT_TRUE(fs::exists(file)) << file << ": the window wrote no screenshot";
+  const Image shot = readPng(file);
+  // The window's default size: 1280 × 720 (the Xvfb screen is 1280 × 800, larger).
+  EXPECT_EQ(shot.width, 1280);
+  EXPECT_EQ(shot.height, 720);
+  // Not blank: panels, text, three views; the headless viewer's image has about 10 000 colours.
+  EXPECT_GT(test::distinctColours(shot), 1000u);
+  // The window draws what the headless viewer draws (the same frame code, llvmpipe through GLX
+  // instead of EGL): the golden of the headless viewer, with the golden tests' tolerances
+  // (golden_test.cpp explains them).
+  const fs::path golden = fs::path(VPLAB_GOLDEN) / "default-ui.png";
+  ASSERT_TRUE(fs::exists(golden));
+  const ImageComparison c = compareImages(shot, readPng(golden), 2);
+  EXPECT_FALSE(c.sizeMismatch);
+  EXPECT_LE(c.differingShare, 0.001) << describe(c);
+}
+
+}  // namespace
+}  // namespace vplab
