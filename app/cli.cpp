@@ -47,6 +47,7 @@ struct RenderOptions {
   std::string backend = "auto";
   std::string strategy = "npc";
   float uiScale = 1.f;
+  double morphT = 0;
   bool glDebug = false;
 };
 
@@ -65,6 +66,7 @@ int runRender(const RenderOptions& r) {
   if (r.view != "ui") request.view = *viewKindFromString(r.view);
   request.style = *styleFromString(r.style);
   request.pipeline.strategy = *clipStrategyFromString(r.strategy);
+  request.morphT = r.morphT;
   if (!r.size.empty()) std::tie(request.width, request.height) = parseSize(r.size);
   const std::string out = r.out.empty() ? "vplab-" + r.view + ".png" : r.out;
 #ifndef NDEBUG
@@ -178,9 +180,12 @@ int runCommandLine(int argc, char** argv) {
   renderCmd->add_option("--view", render.view,
                         "camera (what the synthetic camera sees, W × H, pixel-aligned with DC), world (an "
                         "observer's view of scene, camera and view volume), npc (the unit cube after view "
-                        "mapping, clipping and division), all (the three side by side) or ui (the whole "
-                        "viewer window with its panels; needs the EGL backend)")
-      ->check(CLI::IsMember({"camera", "world", "npc", "all", "ui"}));
+                        "mapping, clipping and division), all (the three side by side), morph (the stage "
+                        "morph at --morph-t) or ui (the whole viewer window with its panels; needs EGL)")
+      ->check(CLI::IsMember({"camera", "world", "npc", "all", "morph", "ui"}));
+  renderCmd->add_option("--morph-t", render.morphT,
+                        "With --view morph: 0 MC, 1 WC, 2 VRC, 2.5 homogeneous NPC, 3 NPC, 4 DC, or between")
+      ->check(CLI::Range(0.0, 4.0));
   renderCmd->add_option("--style", render.style,
                         "flat (object colours, unlit), shaded (lit by the scene's lights), wire (every edge), "
                         "hidden-line (hidden edges dashed, seed figure 16.1) or hidden-removed (hidden "

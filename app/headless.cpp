@@ -7,6 +7,7 @@ FrameSettings frameSettingsFor(const Scene& scene, Style style, double aspect) {
   s.camera.style = style;
   s.world = {style, defaultWorldOrbit(scene, aspect)};
   s.npc = {style, defaultNpcOrbit()};
+  s.morph = {style == Style::shaded ? Style::shaded : Style::flat, {}};
   return s;
 }
 
@@ -14,7 +15,9 @@ Image renderImage(ViewRenderer& renderer, const Scene& scene, const RenderReques
   const int w = request.width > 0 ? request.width : scene.device.width;
   const int h = request.height > 0 ? request.height : scene.device.height;
   const PipelineRun run = runPipeline(scene, request.pipeline);
-  return renderer.render(request.view, scene, run, frameSettingsFor(scene, request.style, double(w) / h), w, h);
+  FrameSettings settings = frameSettingsFor(scene, request.style, double(w) / h);
+  settings.morphing.t = request.morphT;
+  return renderer.render(request.view, scene, run, settings, w, h);
 }
 
 }  // namespace vplab

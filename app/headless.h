@@ -11,6 +11,7 @@ struct RenderRequest {
   ViewKind view = ViewKind::camera;
   Style style = Style::flat;
   int width = 0, height = 0;  // 0: the scene's device
+  double morphT = 0;          // the stage morph's t (ViewKind::morph)
   PipelineOptions pipeline{ClipStrategy::npc, false, true};
 };
 

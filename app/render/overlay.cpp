@@ -73,7 +73,7 @@ void OverlayRenderer::drawLines(const OverlayBatch& batch, const ViewCamera& vie
   setCamera(lines_, view, wcFromMc);
   lines_.set("viewportSize", glm::vec2(width, height));
   for (const auto& [style, vertices] : batch.lines()) {
-    lines_.set("widthPx", style.first);
+    lines_.set("widthPx", style.first * scale_);
     lines_.set("dashPx", style.second);
     upload(vertices);
     gl.DrawArrays(GL_LINES, 0, GLsizei(vertices.size()));
@@ -125,7 +125,7 @@ void OverlayRenderer::drawPass(const OverlayBatch& batch, const ViewCamera& view
   points_.set("viewportSize", glm::vec2(width, height));
   points_.set("alphaScale", alphaScale);
   for (const auto& [size, vertices] : batch.points()) {
-    points_.set("sizePx", size);
+    points_.set("sizePx", size * scale_);
     upload(vertices);
     gl.DrawArrays(GL_POINTS, 0, GLsizei(vertices.size()));
   }
@@ -138,7 +138,7 @@ void OverlayRenderer::drawMeshEdges(GLuint edgeVao, GLsizei indexCount, const Vi
   lines_.use();
   setCamera(lines_, view, wcFromMc);
   lines_.set("viewportSize", glm::vec2(width, height));
-  lines_.set("widthPx", widthPx);
+  lines_.set("widthPx", widthPx * scale_);
   lines_.set("dashPx", dashPx);
   lines_.set("alphaScale", 1.f);
   gl.BindVertexArray(edgeVao);

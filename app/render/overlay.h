@@ -50,6 +50,8 @@ enum class OverlayDepth { test, ignore, xray };
 class OverlayRenderer {
  public:
   explicit OverlayRenderer(const GladGLContext& gl);
+  /// Multiplies every line width and point size (lecture mode on a projector).
+  void setScale(float scale) { scale_ = scale; }
   /// Draws the batch seen through `view` into the current viewport of `width` × `height` pixels:
   /// triangles first, then lines, then points.
   void draw(const OverlayBatch& batch, const ViewCamera& view, int width, int height, OverlayDepth depth,
@@ -68,6 +70,7 @@ class OverlayRenderer {
   void upload(const std::vector<OverlayVertex>& vertices);
 
   const GladGLContext* gl_;
+  float scale_ = 1.f;
   gl::Program lines_, points_, triangles_;
   gl::VertexArray vao_;
   gl::Buffer vbo_;

@@ -12,6 +12,9 @@ namespace vplab {
 namespace {
 
 constexpr const char* kFontFiles[] = {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"};
+// Latin, Greek (φ, α), punctuation, super- and subscripts, arrows (→) and mathematical operators (≤, ÷ is Latin-1).
+constexpr ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x206F, 0x2070, 0x209F,
+                                    0x2190, 0x21FF, 0x2200, 0x22FF, 0};
 
 }  // namespace
 
@@ -24,8 +27,8 @@ TextRenderer::TextRenderer(const GladGLContext& gl, float scale)
       vbo_(gl::makeBuffer(gl)) {
   for (const char* file : kFontFiles) {
     if (!std::filesystem::exists(file)) continue;
-    label_ = atlas_->AddFontFromFileTTF(file, 15.f * scale);
-    title_ = atlas_->AddFontFromFileTTF(file, 20.f * scale);
+    label_ = atlas_->AddFontFromFileTTF(file, 15.f * scale, nullptr, kGlyphRanges);
+    title_ = atlas_->AddFontFromFileTTF(file, 20.f * scale, nullptr, kGlyphRanges);
     break;
   }
   if (!label_ || !title_) {

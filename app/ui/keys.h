@@ -6,6 +6,7 @@ namespace vplab::keys {
 
 inline constexpr int kEscape = 256;
 inline constexpr int kF1 = 290;
+inline constexpr int kF11 = 300;
 inline constexpr int kF12 = 301;
 inline constexpr int kDigit1 = '1';  // '1'..'5' are consecutive
 inline constexpr int kB = 'B';

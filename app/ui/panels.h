@@ -13,5 +13,7 @@ void clippingPanel(ViewerState& s);
 void displayPanel(ViewerState& s);
 void matricesPanel(ViewerState& s);
 void probePanel(ViewerState& s);
+void lecturePanel(ViewerState& s);
+void depthPanel(ViewerState& s);
 
 }  // namespace vplab::ui

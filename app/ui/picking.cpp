@@ -85,7 +85,8 @@ std::optional<Vec3> probePosition(const PipelineRun& run, const Probe& probe, Vi
     case ViewKind::camera:
       if (h.w <= 0) return std::nullopt;
       return Vec3(run.dcFromNpc * Vec4(Vec3(h) / h.w, 1.0));
-    case ViewKind::all: break;
+    case ViewKind::all:
+    case ViewKind::morph: break;
   }
   return std::nullopt;
 }
@@ -114,6 +115,36 @@ std::optional<Probe> pickVertex(const PipelineRun& run, ViewKind view, const Vie
       if (d <= bestDistance) {
         bestDistance = d;
         best = candidate;
+      }
+    }
+  }
+  return best;
+}
+
+std::optional<std::pair<size_t, size_t>> pickFace(const PipelineRun& run, Vec2 dc) {
+  std::optional<std::pair<size_t, size_t>> best;
+  double bestZ = -1e300;
+  for (size_t k = 0; k < run.objects.size(); ++k) {
+    const ObjectRun& o = run.objects[k];
+    for (size_t f = 0; f < o.faceCount(); ++f) {
+      const auto face = o.clippedFace(f);
+      if (face.size() < 3) continue;
+      // Inside a convex polygon of either orientation: the point is on one side of every edge.
+      int sign = 0;
+      bool inside = true;
+      double z = 0;
+      for (size_t i = 0; i < face.size() && inside; ++i) {
+        const Vec3 a = o.clippedDc(face[i]), b = o.clippedDc(face[(i + 1) % face.size()]);
+        const double cross = (b.x - a.x) * (dc.y - a.y) - (b.y - a.y) * (dc.x - a.x);
+        const int s = cross > 0 ? 1 : cross < 0 ? -1 : 0;
+        if (s != 0 && sign != 0 && s != sign) inside = false;
+        if (s != 0) sign = s;
+        z += a.z;
+      }
+      z /= double(face.size());  // DC z: larger is nearer (1 at the front plane)
+      if (inside && z > bestZ) {
+        bestZ = z;
+        best = std::pair{run.sceneIndex[k], f};
       }
     }
   }

@@ -28,6 +28,9 @@ std::optional<Probe> pickVertex(const PipelineRun& run, ViewKind view, const Vie
 /// (behind the eye in NPC or DC).
 std::optional<Vec3> probePosition(const PipelineRun& run, const Probe& probe, ViewKind view);
 
+/// The front-most clipped polygon covering a DC point: (scene index of the object, face).
+std::optional<std::pair<size_t, size_t>> pickFace(const PipelineRun& run, Vec2 dc);
+
 /// Moves a handle by a mouse motion of (dx, dy) pixels in the world view, changing the camera:
 /// VRP and PRP move parallel to the observer's view plane; window edges along U or V; the front
 /// and back planes along N.

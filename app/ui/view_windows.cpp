@@ -1,21 +1,29 @@
-// The three views in resizable ImGui windows, and direct manipulation: orbit, pan and zoom the
-// observers; drag the scene camera's handles in the world view; click a vertex to probe it.
-#include "app/render/cpu_raster.h"
+// The views in resizable ImGui windows, and direct manipulation: orbit, pan and zoom the
+// observers; drag the scene camera's handles in the world view; click a vertex to probe it;
+// Shift+click a polygon in the camera view to step through its clipping. Also the stage morph
+// window and lecture mode's full-window view.
+//
+// Index: 1 helpers  2 drawing a view  3 the windows  4 interaction  5 CPU images for the camera view
+#define IMGUI_DEFINE_MATH_OPERATORS
 #include "app/image_compare.h"
+#include "app/render/cpu_raster.h"
 #include "app/ui/layout.h"
 #include "app/ui/picking.h"
 #include "app/ui/viewer.h"
 #include "app/ui/widgets.h"
+#include "pipeline/clip_steps.h"
 
-#define IMGUI_DEFINE_MATH_OPERATORS
 #include <imgui.h>
 #include <imgui_internal.h>
 
 namespace vplab {
 
+// ---------------------------------------------------------------- 1 helpers
+
 namespace {
 
 constexpr double kPickRadiusPx = 9;
+constexpr ImGuiWindowFlags kViewFlags = ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoScrollbar;
 
 ImTextureID textureId(GLuint texture) { return reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)); }
 
@@ -35,14 +43,85 @@ Vec2 mouseIn(ImVec2 itemMin, ImVec2 scale) {
   return {(m.x - itemMin.x) * scale.x, (m.y - itemMin.y) * scale.y};
 }
 
+// A click: the left button released where it went down.
+bool clicked() {
+  if (!ImGui::IsMouseReleased(ImGuiMouseButton_Left)) return false;
+  const ImVec2 d = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.f);
+  return d.x * d.x + d.y * d.y < 4.f;
+}
+
 }  // namespace
+
+// ---------------------------------------------------------------- 2 drawing a view
+
+GLuint Viewer::drawView(ViewKind kind, ImVec2 size) {
+  const ImVec2 fb = ImGui::GetIO().DisplayFramebufferScale;
+  const int w = std::max(8, int(size.x * fb.x)), h = std::max(8, int(size.y * fb.y));
+  const Scene& scene = s_.doc.shown();
+  switch (kind) {
+    case ViewKind::world:
+      world_.resize(w, h, 4);
+      s_.worldAspect = double(w) / h;
+      renderer_.drawWorld(scene, s_.run, s_.frame, world_);
+      world_.resolve();
+      return world_.colorTexture();
+    case ViewKind::npc:
+      npc_.resize(w, h, 4);
+      renderer_.drawNpc(scene, s_.run, s_.frame, npc_);
+      npc_.resolve();
+      return npc_.colorTexture();
+    case ViewKind::morph:
+      morph_.resize(w, h, 4);
+      renderer_.drawMorph(scene, s_.run, s_.frame, morph_);
+      morph_.resolve();
+      return morph_.colorTexture();
+    case ViewKind::camera:
+    case ViewKind::all:
+      // At the device's W × H: pixel-aligned with DC (shown scaled to fit).
+      camera_.resize(scene.device.width, scene.device.height, 1);
+      renderer_.drawCamera(scene, s_.run, s_.frame, camera_);
+      if (s_.frame.overlays.difference) return differenceTexture();
+      return camera_.colorTexture();
+  }
+  return 0;
+}
+
+std::optional<Vec3> Viewer::probePositionOf(ViewKind view) const {
+  return s_.probe ? probePosition(s_.run, *s_.probe, view) : std::nullopt;
+}
+
+// The clipping step-through's current polygon and plane, for the NPC and world views.
+void Viewer::stepHighlight() {
+  const StepThrough& st = s_.stepThrough;
+  if (!st.active) return;
+  for (size_t i = 0; i < s_.run.sceneIndex.size(); ++i) {
+    if (int(s_.run.sceneIndex[i]) != st.object) continue;
+    const ObjectRun& o = s_.run.objects[i];
+    if (st.face < 0 || size_t(st.face) >= o.faceCount()) return;
+    const std::vector<ClipStep> steps = clipSteps(o, size_t(st.face));
+    Highlights::Step h;
+    const bool start = st.step == 0;
+    const ClipStep& step = steps[size_t(start ? 0 : st.step - 1)];
+    const std::vector<ClipVertex>& polygon = start ? step.input : step.output;
+    h.plane = start ? -1 : step.plane;
+    for (size_t k = 0; k < polygon.size(); ++k) {
+      Vec4 p = polygon[k].p;
+      snapToPlanes(p, polygon[k].onPlanes);
+      if (p.w <= 0) continue;  // behind the eye: no point in NPC (only before the first passes)
+      h.polygonNpc.push_back(Vec3(p) / p.w);
+      h.created.push_back(!start && step.created[k]);
+    }
+    s_.frame.highlights.step = std::move(h);
+  }
+}
+
+// ---------------------------------------------------------------- 3 the windows
 
 void Viewer::viewWindows() {
   ImGuiIO& io = ImGui::GetIO();
   const ImVec2 fbScale = io.DisplayFramebufferScale;
   const ui::Layout layout = ui::computeLayout(io.DisplaySize, ImGui::GetFrameHeight(), uiScale_);
 
-  // Highlights for this frame's views.
   Highlights& hl = s_.frame.highlights;
   hl = {};
   if (s_.probe) {
@@ -53,73 +132,41 @@ void Viewer::viewWindows() {
   for (Handle handle : kHandles)
     hl.handles.push_back({handlePosition(s_.run, handle), handleName(handle),
                           handle == s_.hovered || (s_.drag.kind == Drag::Kind::handle && s_.drag.handle == handle)});
+  hl.vanishingObject = s_.selectedObject;
+  stepHighlight();
 
   if (!ImGui::IsMouseDown(ImGuiMouseButton_Left) && !ImGui::IsMouseDown(ImGuiMouseButton_Right) &&
       !ImGui::IsMouseDown(ImGuiMouseButton_Middle))
     s_.drag = {};
 
-  // ---- world
-  ui::placeNext(layout.world, relayout_);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
-  if (ImGui::Begin("World view (WC)", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoScrollbar)) {
+  ui::placeNext(layout.world, relayout_);
+  if (ImGui::Begin("World view (WC)", nullptr, kViewFlags)) {
     const ImVec2 size = ImGui::GetContentRegionAvail();
     if (size.x >= 8 && size.y >= 8) {
-      const int w = int(size.x * fbScale.x), hgt = int(size.y * fbScale.y);
-      world_.resize(w, hgt, 4);
-      s_.worldAspect = double(w) / hgt;
-      const ViewCamera observer = viewCameraOf(observerCamera(s_.frame.world.orbit, double(w) / hgt));
-      renderer_.drawWorld(s_.doc.shown(), s_.run, s_.frame, world_);
-      world_.resolve();
-      const bool hovered = viewImage("world", world_.colorTexture(), size);
+      const GLuint texture = drawView(ViewKind::world, size);
+      const ViewCamera observer = viewCameraOf(observerCamera(s_.frame.world.orbit, s_.worldAspect));
+      const bool hovered = viewImage("world", texture, size);
       ui::recordRect(s_, "view.world");
-      const ImVec2 at = ImGui::GetItemRectMin();
-      const Vec2 mouse = mouseIn(at, fbScale);
-      worldInteraction(hovered, observer, w, hgt, mouse);
+      worldInteraction(hovered, observer, world_.width(), world_.height(), mouseIn(ImGui::GetItemRectMin(), fbScale));
     }
   }
   ImGui::End();
 
-  // ---- camera
   ui::placeNext(layout.camera, relayout_);
-  if (ImGui::Begin("Camera view (DC)", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoScrollbar)) {
-    const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const Device& device = s_.doc.shown().device;
-    // Rendered at the device's W × H (pixel-aligned with DC), shown scaled to fit, aspect kept.
-    const float fit = std::min(avail.x / device.width, avail.y / device.height);
-    if (fit > 0) {
-      camera_.resize(device.width, device.height, 1);
-      renderer_.drawCamera(s_.doc.shown(), s_.run, s_.frame, camera_);
-      GLuint texture = camera_.colorTexture();
-      if (s_.frame.overlays.difference) texture = differenceTexture();
-      const ImVec2 size(device.width * fit, device.height * fit);
-      ImGui::SetCursorPos(ImGui::GetCursorPos() + (avail - size) * 0.5f);
-      const bool hovered = viewImage("camera", texture, size);
-      ui::recordRect(s_, "view.camera");
-      const Vec2 mouse = mouseIn(ImGui::GetItemRectMin(), ImVec2(1, 1));
-      if (hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) && ImGui::GetMouseDragDelta(0, 0).x == 0 &&
-          ImGui::GetMouseDragDelta(0, 0).y == 0) {
-        // Picking in the displayed image's pixels; DC positions are scaled to it.
-        ViewCamera none;
-        s_.probe = pickVertex(s_.run, ViewKind::camera, none, int(size.x), int(size.y), mouse, kPickRadiusPx);
-      }
-    }
-  }
+  if (ImGui::Begin("Camera view (DC)", nullptr, kViewFlags)) cameraWindowContents();
   ImGui::End();
 
-  // ---- NPC
   ui::placeNext(layout.npc, relayout_);
-  if (ImGui::Begin("NPC view", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoScrollbar)) {
+  if (ImGui::Begin("NPC view", nullptr, kViewFlags)) {
     const ImVec2 size = ImGui::GetContentRegionAvail();
     if (size.x >= 8 && size.y >= 8) {
-      const int w = int(size.x * fbScale.x), hgt = int(size.y * fbScale.y);
-      npc_.resize(w, hgt, 4);
-      const ViewCamera observer = viewCameraOf(observerCamera(s_.frame.npc.orbit, double(w) / hgt));
-      renderer_.drawNpc(s_.doc.shown(), s_.run, s_.frame, npc_);
-      npc_.resolve();
-      const bool hovered = viewImage("npc", npc_.colorTexture(), size);
+      const GLuint texture = drawView(ViewKind::npc, size);
+      const ViewCamera observer = viewCameraOf(observerCamera(s_.frame.npc.orbit, double(npc_.width()) / npc_.height()));
+      const bool hovered = viewImage("npc", texture, size);
       ui::recordRect(s_, "view.npc");
-      const Vec2 mouse = mouseIn(ImGui::GetItemRectMin(), fbScale);
-      orbitInteraction(hovered, ViewKind::npc, s_.frame.npc.orbit, observer, w, hgt, mouse);
+      orbitInteraction(hovered, ViewKind::npc, s_.frame.npc.orbit, observer, npc_.width(), npc_.height(),
+                       mouseIn(ImGui::GetItemRectMin(), fbScale));
     }
   }
   ImGui::End();
@@ -127,9 +174,122 @@ void Viewer::viewWindows() {
   ctx_.gl().BindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-std::optional<Vec3> Viewer::probePositionOf(ViewKind view) const {
-  return s_.probe ? probePosition(s_.run, *s_.probe, view) : std::nullopt;
+// The camera view: the GPU's image at the device's size, scaled to fit. With the divide-first
+// strategy the CPU's (wrong) polygons are shown beside it, with the reason.
+void Viewer::cameraWindowContents() {
+  const Device& device = s_.doc.shown().device;
+  const bool demo = !isCorrect(s_.pipeline.strategy);
+  ImVec2 avail = ImGui::GetContentRegionAvail();
+  if (demo) avail.y -= ImGui::GetTextLineHeightWithSpacing() * 3.2f;
+  const float panels = demo ? 2.f : 1.f;
+  const float fit = std::min(avail.x / panels / device.width, avail.y / device.height);
+  if (fit <= 0) return;
+  const ImVec2 size(device.width * fit, device.height * fit);
+  const GLuint texture = drawView(ViewKind::camera, size);
+  if (demo) {
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    ImGui::Image(textureId(divideFirstTexture()), size);
+    ImGui::GetWindowDrawList()->AddText(at + ImVec2(6, 4), IM_COL32(255, 120, 110, 255), "divide first, then clip (wrong)");
+    ImGui::SameLine();
+  } else {
+    ImGui::SetCursorPos(ImGui::GetCursorPos() + (avail - size) * 0.5f);
+  }
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const bool hovered = viewImage("camera", texture, size);
+  ui::recordRect(s_, "view.camera");
+  if (demo) {
+    ImGui::GetWindowDrawList()->AddText(at + ImVec2(6, 4), IM_COL32(140, 230, 140, 255), "clip, then divide (right)");
+    ui::errorText("Dividing by w first flips x/w and y/w of every point behind the eye (w < 0), so an edge that "
+                  "reaches behind the eye wraps around through infinity. Clipping at z ≤ w first cuts it before w "
+                  "reaches 0 (seeds 002, 003).");
+  }
+  if (!hovered || !clicked()) return;
+  const Vec2 mouse = mouseIn(ImGui::GetItemRectMin(), ImVec2(1, 1));
+  if (ImGui::GetIO().KeyShift) {
+    // Shift+click: the front-most clipped polygon under the mouse, for the step-through.
+    const Vec2 dc = mouse * Vec2(device.width / size.x, device.height / size.y);
+    if (const auto face = pickFace(s_.run, dc)) {
+      s_.stepThrough = {true, int(face->first), int(face->second), 0};
+    }
+    return;
+  }
+  ViewCamera none;
+  s_.probe = pickVertex(s_.run, ViewKind::camera, none, int(size.x), int(size.y), mouse, kPickRadiusPx);
 }
+
+void Viewer::morphWindow() {
+  if (!s_.showMorph) return;
+  ImGui::SetNextWindowSize(ImVec2(560, 420) * uiScale_, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos(ImGui::GetIO().DisplaySize * 0.5f, ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
+  if (ImGui::Begin("Stage morph", &s_.showMorph, kViewFlags)) {
+    const ImVec2 size = ImGui::GetContentRegionAvail();
+    if (size.x >= 8 && size.y >= 8) {
+      const GLuint texture = drawView(ViewKind::morph, size);
+      const bool hovered = viewImage("morph", texture, size);
+      ui::recordRect(s_, "view.morph");
+      const ViewCamera none;
+      morphInteraction(hovered);
+    }
+  }
+  ImGui::End();
+  ImGui::PopStyleVar();
+  ctx_.gl().BindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+// Lecture mode: one view fills the window, no panels; the scene's title and caption at the top.
+void Viewer::lectureWindow() {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(0, 0));
+  ImGui::SetNextWindowSize(io.DisplaySize);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                 ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings;
+  if (ImGui::Begin("##lecture", nullptr, flags)) {
+    Highlights& hl = s_.frame.highlights;
+    hl = {};
+    hl.vanishingObject = s_.selectedObject;
+    stepHighlight();
+    const ImVec2 size = io.DisplaySize;
+    const ViewKind kind = s_.lectureView;
+    if (kind == ViewKind::camera) {
+      const Device& d = s_.doc.shown().device;
+      const float fit = std::min(size.x / d.width, size.y / d.height);
+      const ImVec2 shown(d.width * fit, d.height * fit);
+      const GLuint texture = drawView(kind, shown);
+      ImGui::SetCursorPos((size - shown) * 0.5f);
+      viewImage("lecture", texture, shown);
+    } else {
+      const GLuint texture = drawView(kind, size);
+      const bool hovered = viewImage("lecture", texture, size);
+      const ImVec2 fb = io.DisplayFramebufferScale;
+      const Vec2 mouse = mouseIn(ImGui::GetItemRectMin(), fb);
+      if (kind == ViewKind::world)
+        orbitInteraction(hovered, kind, s_.frame.world.orbit,
+                         viewCameraOf(observerCamera(s_.frame.world.orbit, s_.worldAspect)), world_.width(),
+                         world_.height(), mouse);
+      if (kind == ViewKind::npc)
+        orbitInteraction(hovered, kind, s_.frame.npc.orbit,
+                         viewCameraOf(observerCamera(s_.frame.npc.orbit, double(npc_.width()) / npc_.height())),
+                         npc_.width(), npc_.height(), mouse);
+      if (kind == ViewKind::morph) morphInteraction(hovered);
+    }
+    const Scene& scene = s_.doc.scene();
+    ImGui::SetCursorPos(ImVec2(14, 10));
+    ImGui::PushTextWrapPos(size.x * 0.6f);
+    if (!scene.title.empty()) ImGui::TextColored(ImVec4(1.f, 0.86f, 0.45f, 1.f), "%s", scene.title.c_str());
+    if (!scene.caption.empty()) ImGui::TextWrapped("%s", scene.caption.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::SetCursorPos(ImVec2(14, size.y - ImGui::GetTextLineHeightWithSpacing() - 6));
+    ImGui::TextDisabled("lecture mode — F11 or Esc returns to the panels");
+  }
+  ImGui::End();
+  ImGui::PopStyleVar(2);
+  ctx_.gl().BindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+// ---------------------------------------------------------------- 4 interaction
 
 // Left-drag orbits, right- or middle-drag pans, the wheel zooms; a click without motion probes.
 void Viewer::orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const ViewCamera& observer, int w, int h,
@@ -144,49 +304,60 @@ void Viewer::orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const V
     if (s_.drag.kind == Drag::Kind::pan) panBy(orbit, io.MouseDelta.x / h, io.MouseDelta.y / h);
   }
   if (hovered && io.MouseWheel != 0) zoomBy(orbit, std::pow(0.88, io.MouseWheel));
-  if (hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
-    const ImVec2 d = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.f);
-    if (d.x * d.x + d.y * d.y < 4.f) {
-      // GetMouseDragDelta is reset on release in 1.86 only after this frame: a click has no motion.
-      s_.probe = pickVertex(s_.run, view, observer, w, h, mouse, kPickRadiusPx);
-    }
-  }
+  if (hovered && clicked() && view != ViewKind::morph) s_.probe = pickVertex(s_.run, view, observer, w, h, mouse, kPickRadiusPx);
+}
+
+void Viewer::morphInteraction(bool hovered) {
+  // The morph's observer frames the scene by itself: only its angles are dragged.
+  ImGuiIO& io = ImGui::GetIO();
+  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) s_.drag = {Drag::Kind::orbit, ViewKind::morph, Handle::none};
+  if (s_.drag.view == ViewKind::morph && s_.drag.kind == Drag::Kind::orbit)
+    orbitBy(s_.frame.morphing.orbit, io.MouseDelta.x * 0.4, io.MouseDelta.y * 0.4);
 }
 
 void Viewer::worldInteraction(bool hovered, const ViewCamera& observer, int w, int h, Vec2 mouse) {
   s_.hovered = hovered && s_.drag.kind == Drag::Kind::none
                    ? pickHandle(s_.run, observer, w, h, mouse, kPickRadiusPx + 3)
                    : Handle::none;
-  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && s_.hovered != Handle::none) {
+  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && s_.hovered != Handle::none)
     s_.drag = {Drag::Kind::handle, ViewKind::world, s_.hovered};
-  }
   if (s_.drag.kind == Drag::Kind::handle) {
     const ImVec2 d = ImGui::GetIO().MouseDelta;
-    if (d.x != 0 || d.y != 0)
-      dragHandle(s_.doc.scene().camera, s_.run, s_.drag.handle, observer, h, Vec2(d.x, d.y));
+    if (d.x != 0 || d.y != 0) dragHandle(s_.doc.scene().camera, s_.run, s_.drag.handle, observer, h, Vec2(d.x, d.y));
     return;
   }
   orbitInteraction(hovered, ViewKind::world, s_.frame.world.orbit, observer, w, h, mouse);
+}
+
+// ---------------------------------------------------------------- 5 CPU images for the camera view
+
+GLuint Viewer::uploadImage(gl::Texture& texture, const Image& image) {
+  // Bottom row first, as the views' textures are.
+  std::vector<Rgba> rows(image.pixels.size());
+  for (int y = 0; y < image.height; ++y)
+    std::copy_n(image.pixels.begin() + ptrdiff_t(y) * image.width, image.width,
+                rows.begin() + ptrdiff_t(image.height - 1 - y) * image.width);
+  const GladGLContext& gl = ctx_.gl();
+  if (!texture) texture = gl::makeTexture(gl);
+  gl.BindTexture(GL_TEXTURE_2D, texture.id());
+  gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  return texture.id();
 }
 
 GLuint Viewer::differenceTexture() {
   // The GPU's image against the CPU's clipped polygons filled: differing pixels in magenta.
   const Image gpu = camera_.read();
   const Image cpu = rasterizeClippedPolygons(s_.run, s_.doc.shown().background, gpu.width, gpu.height);
-  Image diff = differenceImage(gpu, cpu, 0);
-  // Upload bottom row first, as the views' textures are.
-  std::vector<Rgba> rows(diff.pixels.size());
-  for (int y = 0; y < diff.height; ++y)
-    std::copy_n(diff.pixels.begin() + ptrdiff_t(y) * diff.width, diff.width,
-                rows.begin() + ptrdiff_t(diff.height - 1 - y) * diff.width);
-  const GladGLContext& gl = ctx_.gl();
-  if (!differenceTexture_) differenceTexture_ = gl::makeTexture(gl);
-  gl.BindTexture(GL_TEXTURE_2D, differenceTexture_.id());
-  gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, diff.width, diff.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
-  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  return differenceTexture_.id();
+  return uploadImage(differenceTexture_, differenceImage(gpu, cpu, 0));
+}
+
+GLuint Viewer::divideFirstTexture() {
+  // The GPU always clips correctly; the wrong strategy's result exists only on the CPU.
+  const Device& d = s_.doc.shown().device;
+  return uploadImage(divideFirstTexture_, rasterizeClippedPolygons(s_.run, s_.doc.shown().background, d.width, d.height));
 }
 
 }  // namespace vplab

@@ -52,6 +52,7 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
       world_(context.gl()),
       camera_(context.gl()),
       npc_(context.gl()),
+      morph_(context.gl()),
       uiScale_(uiScale) {
   IMGUI_CHECKVERSION();
   imgui_ = ImGui::CreateContext();
@@ -67,8 +68,23 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
                 " context (it loads OpenGL through libGL.so.1: use a window or the EGL backend)");
   }
   s_.frame.camera.style = Style::shaded;
+  s_.uiScale = uiScale;
+  s_.presets = listPresetScenes();
   s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
   runPipeline();
+}
+
+void Viewer::applyUiScale(float scale) {
+  uiScale_ = scale;
+  ImGuiIO& io = ImGui::GetIO();
+  io.Fonts->Clear();
+  setUpFonts(scale);
+  ImGui_ImplOpenGL3_DestroyFontsTexture();
+  ImGui_ImplOpenGL3_CreateFontsTexture();
+  ImGui::GetStyle() = ImGuiStyle();
+  setUpStyle(scale);
+  renderer_.setScale(scale);
+  relayout_ = true;
 }
 
 Viewer::~Viewer() {
@@ -108,20 +124,32 @@ void Viewer::makeCurrent() { ImGui::SetCurrentContext(imgui_); }
 
 void Viewer::frame(GLuint framebuffer, int width, int height) {
   ImGui::SetCurrentContext(imgui_);
+  if (s_.uiScale != uiScale_) applyUiScale(s_.uiScale);  // the font atlas is locked during a frame
   const Scene atFrameStart = s_.doc.scene();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui::NewFrame();
+  if (s_.morphPlaying) {
+    s_.frame.morphing.t = std::min(4.0, s_.frame.morphing.t + ImGui::GetIO().DeltaTime * s_.morphSpeed);
+    if (s_.frame.morphing.t >= 4) s_.morphPlaying = false;
+  }
   if (width != lastWidth_ || height != lastHeight_) relayout_ = true;
   lastWidth_ = width;
   lastHeight_ = height;
 
   shortcuts();
-  menuBar();
-  controlsWindow();
-  s_.doc.endFrame(true);  // validate what the panels changed; recorded at the end of the frame
-  runPipeline();
-  viewWindows();
-  inspectWindow();
+  if (s_.lectureMode) {
+    s_.doc.endFrame(true);
+    runPipeline();
+    lectureWindow();
+  } else {
+    menuBar();
+    controlsWindow();
+    s_.doc.endFrame(true);  // validate what the panels changed; recorded at the end of the frame
+    runPipeline();
+    viewWindows();
+    inspectWindow();
+    morphWindow();
+  }
   helpWindow();
   quitDialog();
   discardDialog();
@@ -177,6 +205,10 @@ void Viewer::controlsWindow() {
       ui::displayPanel(s_);
       ImGui::EndTabItem();
     }
+    if (ImGui::BeginTabItem("Lecture")) {
+      ui::lecturePanel(s_);
+      ImGui::EndTabItem();
+    }
     ImGui::EndTabBar();
   }
   if (!s_.status.empty()) {
@@ -199,6 +231,10 @@ void Viewer::inspectWindow() {
     }
     if (ImGui::BeginTabItem("Matrices")) {
       ui::matricesPanel(s_);
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Depth")) {
+      ui::depthPanel(s_);
       ImGui::EndTabItem();
     }
     ImGui::EndTabBar();
@@ -229,6 +265,8 @@ void Viewer::helpWindow() {
                              {"R", "reset the observers of the world and NPC views"},
                              {"Esc", "clear the vertex probe"},
                              {"F1", "this help"},
+                             {"F11", "lecture mode: one view fills the window (Esc returns)"},
+                             {"Shift+click", "in the camera view: step through the clipping of that polygon"},
                              {"F12", "screenshot of the whole window (PNG in the working directory)"}};
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
       for (const auto& k : keys) {
@@ -256,6 +294,14 @@ void Viewer::menuBar() {
     if (ImGui::MenuItem("Save as…", "Ctrl+Shift+S"))
       dialog_.open("Save the scene", FileDialog::Mode::save, {".json"}, s_.doc.path(),
                    [this](const std::filesystem::path& f) { saveScene(f); });
+    if (ImGui::BeginMenu("Presets", !s_.presets.empty())) {
+      for (const SceneFileInfo& p : s_.presets)
+        if (ImGui::MenuItem(p.title.c_str())) {
+          const std::filesystem::path file = p.file;
+          unlessUnsaved([this, file] { openScene(file); });
+        }
+      ImGui::EndMenu();
+    }
     if (ImGui::MenuItem("Default lecture scene"))
       unlessUnsaved([this] {
         s_.doc.replace(defaultScene());
@@ -298,6 +344,11 @@ void Viewer::shortcuts() {
       dialog_.open("Open a scene", FileDialog::Mode::open, {".json"}, s_.doc.path(),
                    [this](const std::filesystem::path& f) { unlessUnsaved([this, f] { openScene(f); }); });
     if (pressed(keys::kQ)) requestQuit();
+    return;
+  }
+  if (pressed(keys::kF11)) s_.lectureMode = !s_.lectureMode;
+  if (pressed(keys::kEscape) && s_.lectureMode) {
+    s_.lectureMode = false;
     return;
   }
   if (pressed(keys::kF1)) s_.showHelp = !s_.showHelp;

@@ -61,14 +61,24 @@ class Viewer {
   std::optional<Vec3> probePositionOf(ViewKind view) const;
   void orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const ViewCamera& observer, int w, int h, Vec2 mouse);
   void worldInteraction(bool hovered, const ViewCamera& observer, int w, int h, Vec2 mouse);
+  void morphInteraction(bool hovered);
+  void cameraWindowContents();
   GLuint differenceTexture();
+  GLuint divideFirstTexture();
+  GLuint uploadImage(gl::Texture& texture, const Image& image);
+  void applyUiScale(float scale);
+  void morphWindow();
+  void lectureWindow();
+  void stepHighlight();
+  /// Draws a view into its target for an image of `size` screen units; returns the texture.
+  GLuint drawView(ViewKind kind, ImVec2 size);
 
   GlContext& ctx_;
   ImGuiContext* imgui_ = nullptr;
   ViewRenderer renderer_;
   ViewerState s_;
-  gl::RenderTarget world_, camera_, npc_;
-  gl::Texture differenceTexture_;
+  gl::RenderTarget world_, camera_, npc_, morph_;
+  gl::Texture differenceTexture_, divideFirstTexture_;
   FileDialog dialog_;
   float uiScale_;
   int lastWidth_ = 0, lastHeight_ = 0;

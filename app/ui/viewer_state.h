@@ -1,6 +1,7 @@
 // Everything the interactive viewer knows between frames, in one owned struct (no globals).
 #pragma once
 
+#include "app/assets.h"
 #include "app/gl/render_target.h"
 #include "app/ui/document.h"
 #include "app/views/views.h"
@@ -8,6 +9,7 @@
 
 #include <imgui.h>
 
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
@@ -32,6 +34,14 @@ struct Drag {
   Handle handle = Handle::none;
 };
 
+/// The clipping step-through: a face of an object and how many of the six planes have been applied.
+struct StepThrough {
+  bool active = false;
+  int object = 0;  // index into scene.objects
+  int face = 0;
+  int step = 0;    // 0: the original polygon; k: after the k-th plane (left, right, bottom, top, back, front)
+};
+
 struct ViewerState {
   explicit ViewerState(Scene scene) : doc(std::move(scene)) {}
 
@@ -50,6 +60,16 @@ struct ViewerState {
   bool showHelp = false;
   bool quitRequested = false;   // asked to quit; a dirty document asks first
   bool quitConfirmed = false;
+  // Lecture features.
+  bool showMorph = false;       // the stage morph window
+  bool morphPlaying = false;
+  double morphSpeed = 0.5;      // stages per second
+  StepThrough stepThrough;
+  bool lectureMode = false;     // one view fills the window, no panels (F11)
+  ViewKind lectureView = ViewKind::world;
+  float uiScale = 1.f;          // fonts and handles; applied at the start of the next frame
+  std::vector<SceneFileInfo> presets;  // assets/scenes/, for the presets menu
+
   std::string status;           // the last message (saved, loaded, an error)
   bool statusIsError = false;
 

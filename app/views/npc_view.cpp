@@ -139,8 +139,24 @@ void ViewRenderer::drawNpc(const Scene& /*scene*/, const PipelineRun& run, const
   if (ov.cube) addCube(cube, labels, view, w, h, ov.labels);
   overlay_.draw(cube, view, w, h, OverlayDepth::test);
   if (s.highlights.probeNpc) newEdges.point(*s.highlights.probeNpc, theme::kProbe, 14.f);
+  if (const auto& step = s.highlights.step) {
+    // The clipping step-through: the plane being applied as a face of the cube, the polygon after
+    // the step, its new vertices.
+    if (step->plane >= 0) {
+      const int axisBit = 1 << (step->plane / 2), side = step->plane % 2 ? axisBit : 0;
+      std::vector<int> ring;
+      for (int i = 0; i < 8; ++i)
+        if ((i & axisBit) == side) ring.push_back(i);
+      std::swap(ring[2], ring[3]);  // (0, 1, 2, 3) of the face → a ring
+      auto corner = [](int i) { return Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1); };
+      newEdges.quad(corner(ring[0]), corner(ring[1]), corner(ring[2]), corner(ring[3]), theme::kStepPlane);
+    }
+    newEdges.polyline(step->polygonNpc, true, theme::kProbe, theme::kLineWidth + 1.f);
+    for (size_t i = 0; i < step->polygonNpc.size(); ++i)
+      newEdges.point(step->polygonNpc[i], step->created[i] ? theme::kNewEdge : theme::kProbe, step->created[i] ? 13.f : 9.f);
+  }
   overlay_.draw(newEdges, view, w, h, OverlayDepth::xray);
-  text_.draw(labels, w, h);
+  text_->draw(labels, w, h);
 }
 
 }  // namespace vplab

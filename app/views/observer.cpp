@@ -68,8 +68,13 @@ Orbit defaultWorldOrbit(const Scene& scene, double aspect) {
   o.yawDeg = std::atan2(n.x, n.z) * 180 / kPi + 55;
   o.pitchDeg = 28;
   o.distance = radius / std::tan(radians(o.fovDeg) / 2);
-  // Frame the points: centre their projection and scale the distance until they fill 88% of
-  // the view (a few rounds, since moving changes the perspective a little).
+  return framed(o, points, aspect);
+}
+
+Orbit framed(Orbit o, const std::vector<Vec3>& points, double aspect, double fill) {
+  if (points.empty()) return o;
+  // Centre the points' projection and scale the distance until they fill the view (a few rounds,
+  // since moving changes the perspective a little).
   for (int round = 0; round < 4; ++round) {
     const Camera c = observerCamera(o, aspect);
     const Mat4 npcFromWc = npcFromVrc(c) * vrcFromWc(c);
@@ -81,8 +86,9 @@ Orbit defaultWorldOrbit(const Scene& scene, double aspect) {
       pmax = glm::max(pmax, Vec2(h) / h.w);
     }
     const Vec2 centre = (pmin + pmax) * 0.5, extent = pmax - pmin;
+    if (!(pmax.x > pmin.x)) break;  // nothing in front of the observer
     panBy(o, (centre.x - 0.5) * aspect * -1.0, (centre.y - 0.5));
-    zoomBy(o, std::max(extent.x, extent.y) / 0.88);
+    zoomBy(o, std::max({extent.x, extent.y, 1e-9}) / fill);
   }
   return o;
 }

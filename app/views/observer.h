@@ -23,6 +23,10 @@ Camera observerCamera(const Orbit& orbit, double aspect);
 /// An orbit that shows the scene camera's VRP, PRP, view volume and the objects, seen from the side
 /// and above, framed to fill a view of the given aspect ratio.
 Orbit defaultWorldOrbit(const Scene& scene, double aspect = 4.0 / 3.0);
+/// The orbit moved and zoomed (its angles kept) so the points fill `fill` of a view of the given
+/// aspect ratio.
+Orbit framed(Orbit orbit, const std::vector<Vec3>& points, double aspect, double fill = 0.88);
+
 /// An orbit around the unit cube of NPC.
 Orbit defaultNpcOrbit();
 

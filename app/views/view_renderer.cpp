@@ -15,12 +15,13 @@ std::string_view toString(ViewKind v) {
     case ViewKind::world: return "world";
     case ViewKind::npc: return "npc";
     case ViewKind::all: return "all";
+    case ViewKind::morph: return "morph";
   }
   return "?";
 }
 
 std::optional<ViewKind> viewKindFromString(std::string_view s) {
-  for (ViewKind v : {ViewKind::camera, ViewKind::world, ViewKind::npc, ViewKind::all})
+  for (ViewKind v : {ViewKind::camera, ViewKind::world, ViewKind::npc, ViewKind::all, ViewKind::morph})
     if (toString(v) == s) return v;
   return std::nullopt;
 }
@@ -50,7 +51,7 @@ ViewRenderer::ViewRenderer(GlContext& context, float textScale)
       scene_(gl::Program::fromFiles(gl_, {"scene.vert", "scene.frag"})),
       meshes_(gl_),
       overlay_(gl_),
-      text_(gl_, textScale),
+      text_(std::make_unique<TextRenderer>(gl_, textScale)),
       polygonVao_(gl::makeVertexArray(gl_)),
       polygonVbo_(gl::makeBuffer(gl_)) {
   gl_.BindVertexArray(polygonVao_.id());
@@ -61,6 +62,11 @@ ViewRenderer::ViewRenderer(GlContext& context, float textScale)
   gl_.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), reinterpret_cast<void*>(sizeof(glm::vec3)));
   gl_.BindVertexArray(0);
   ctx_.checkErrors("creating the view renderer");
+}
+
+void ViewRenderer::setScale(float scale) {
+  text_ = std::make_unique<TextRenderer>(gl_, scale);
+  overlay_.setScale(scale);
 }
 
 // ---------------------------------------------------------------- 3 shared drawing
@@ -196,6 +202,7 @@ Image ViewRenderer::render(ViewKind kind, const Scene& scene, const PipelineRun&
     if (k == ViewKind::camera) drawCamera(scene, run, s, target);
     if (k == ViewKind::world) drawWorld(scene, run, s, target);
     if (k == ViewKind::npc) drawNpc(scene, run, s, target);
+    if (k == ViewKind::morph) drawMorph(scene, run, s, target);
     Image image = target.read();
     ctx_.checkErrors("rendering the " + std::string(toString(k)) + " view");
     return image;
@@ -206,7 +213,7 @@ Image ViewRenderer::render(ViewKind kind, const Scene& scene, const PipelineRun&
 }
 
 Image ViewRenderer::compose(const Image& camera, const Image& world, const Image& npc, int width, int height) {
-  const int titleHeight = int(text_.measure("Ag", TextSize::title).y) + 14;
+  const int titleHeight = int(text_->measure("Ag", TextSize::title).y) + 14;
   const int gap = 6;
   gl::RenderTarget strip(gl_);
   strip.resize(3 * width + 2 * gap, titleHeight, 4);
@@ -219,13 +226,13 @@ Image ViewRenderer::compose(const Image& camera, const Image& world, const Image
                              {"npc: after view mapping, clipping and division (NPC)", "NPC"}};
   std::vector<TextLabel> labels;
   for (int i = 0; i < 3; ++i) {
-    const bool fits = text_.measure(titles[i][0], TextSize::title).x <= width - 12;
+    const bool fits = text_->measure(titles[i][0], TextSize::title).x <= width - 12;
     TextLabel title{{i * (width + gap) + width * 0.5, titleHeight * 0.5}, titles[i][fits ? 0 : 1], theme::kText,
                     TextSize::title, Anchor::center, false};
     title.avoid = false;
     labels.push_back(title);
   }
-  text_.draw(labels, strip.width(), strip.height());
+  text_->draw(labels, strip.width(), strip.height());
   const Image titleImage = strip.read();
   ctx_.checkErrors("drawing the titles");
 

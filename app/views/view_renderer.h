@@ -13,6 +13,8 @@
 #include "app/views/views.h"
 #include "pipeline/pipeline.h"
 
+#include <memory>
+
 namespace vplab {
 
 class ViewRenderer {
@@ -25,6 +27,7 @@ class ViewRenderer {
   void drawCamera(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
   void drawWorld(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
   void drawNpc(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
+  void drawMorph(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
 
   /// Renders a view headless into an image: camera at width × height, world and NPC likewise,
   /// all as three panels of width × height with a title strip.
@@ -32,6 +35,8 @@ class ViewRenderer {
                int height);
 
   GlContext& context() { return ctx_; }
+  /// Larger text, lines and points for a projector (lecture mode).
+  void setScale(float scale);
 
  private:
   struct ObjectPass {
@@ -56,7 +61,7 @@ class ViewRenderer {
   gl::Program scene_;
   GpuMeshCache meshes_;
   OverlayRenderer overlay_;
-  TextRenderer text_;
+  std::unique_ptr<TextRenderer> text_;  // replaced by setScale
   gl::VertexArray polygonVao_;  // CPU polygons (NPC view): position and normal per corner
   gl::Buffer polygonVbo_;
 };

@@ -5,6 +5,7 @@
 //           edges clipping created are highlighted
 //   npc     the unit cube of NPC with the scene after view mapping, clipping and division
 //   all     the three side by side, with titles (for slides and tests)
+//   morph   the stage morph: the visible scene moving from MC through WC, VRC and NPC to DC
 #pragma once
 
 #include "app/views/observer.h"
@@ -16,7 +17,7 @@
 
 namespace vplab {
 
-enum class ViewKind { camera, world, npc, all };
+enum class ViewKind { camera, world, npc, all, morph };
 std::string_view toString(ViewKind v);
 std::optional<ViewKind> viewKindFromString(std::string_view s);
 
@@ -38,6 +39,7 @@ struct OverlaySettings {
   bool cube = true;          // NPC: the unit cube and its axes
   bool cpuPolygons = false;  // camera: the CPU clipper's DC polygons over the GPU image
   bool difference = false;   // camera: where the GPU image and the CPU raster differ
+  bool vanishingPoints = false;  // camera: the selected object's vanishing points and lines (seed 14.2)
 };
 
 struct ViewSettings {
@@ -54,12 +56,30 @@ struct Highlights {
     bool hot;  // under the mouse or being dragged
   };
   std::vector<HandleMark> handles;
+  /// The clipping step-through: the polygon after the current step (NPC), which of its vertices
+  /// that step created, and the plane it applied (−1: none yet).
+  struct Step {
+    std::vector<Vec3> polygonNpc;
+    std::vector<bool> created;
+    int plane = -1;
+  };
+  std::optional<Step> step;
+  int vanishingObject = -1;  // scene index of the object whose vanishing points are drawn
+};
+
+/// The stage morph (pipeline/stage_morph.h): t from 0 (MC) to 4 (DC), and the observer's angles
+/// (its distance and target follow the morphing scene so it stays framed).
+struct MorphSettings {
+  double t = 0;
+  Orbit orbit{{0, 0, 0}, 30, 22, 10, 40};
 };
 
 struct FrameSettings {
   ViewSettings camera{Style::flat, {}};
   ViewSettings world{Style::shaded, {}};
   ViewSettings npc{Style::shaded, defaultNpcOrbit()};
+  ViewSettings morph{Style::shaded, {}};
+  MorphSettings morphing;
   OverlaySettings overlays;
   Highlights highlights;
 };

@@ -178,8 +178,25 @@ void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const F
     if (m.hot) label(m.wc, m.name, theme::kHandleHot, {10, -12});
   }
   if (hl.probeWc) b.point(*hl.probeWc, theme::kProbe, 14.f);
+  if (const auto& step = hl.step) {
+    // The clipping step-through in WC: the frustum's face of the plane being applied, the polygon.
+    if (step->plane >= 0) {
+      const auto c = volumeCorners(f);
+      const int axisBit = 1 << (step->plane / 2), side = step->plane % 2 ? axisBit : 0;
+      std::vector<int> ring;
+      for (int i = 0; i < 8; ++i)
+        if ((i & axisBit) == side) ring.push_back(i);
+      std::swap(ring[2], ring[3]);
+      b.quad(c[size_t(ring[0])], c[size_t(ring[1])], c[size_t(ring[2])], c[size_t(ring[3])], theme::kStepPlane);
+    }
+    std::vector<Vec3> poly;
+    for (const Vec3& p : step->polygonNpc) poly.push_back(wcOfNpc(f, p));
+    b.polyline(poly, true, theme::kProbe, theme::kLineWidth + 1.f);
+    for (size_t i = 0; i < poly.size(); ++i)
+      b.point(poly[i], step->created[i] ? theme::kNewEdge : theme::kProbe, step->created[i] ? 13.f : 9.f);
+  }
   overlay_.draw(b, view, w, h, OverlayDepth::xray);
-  text_.draw(labels, w, h);
+  text_->draw(labels, w, h);
 }
 
 }  // namespace vplab

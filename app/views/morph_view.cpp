@@ -1,0 +1,109 @@
+// The stage morph view (pipeline/stage_morph.h): the visible part of the scene (the CPU clipper's
+// polygons) and the view volume move together from MC (t = 0) through WC, VRC, homogeneous NPC and
+// NPC to DC (t = 4). The observer keeps its angles and follows the morphing scene to keep it framed.
+#include "app/views/theme.h"
+#include "app/views/view_renderer.h"
+
+#include "pipeline/stage_morph.h"
+
+#include <cstdio>
+
+namespace vplab {
+
+namespace {
+
+// Every stage of a vertex of a clipped polygon. Created vertices exist only in homogeneous NPC;
+// the inverse matrices give their other stages exactly.
+struct Inverses {
+  Mat4 vrcFromNpc, wcFromVrc;
+};
+
+StageValues stagesOf(const ObjectRun& o, uint32_t ref, const Inverses& inv, const Mat4& mcFromWc) {
+  if (!o.isCreated(ref)) return {o.mesh->positions[ref], o.wc[ref], o.vrc[ref], o.npcH[ref], o.dc[ref]};
+  const Vec4 npcH = o.clippedNpcH(ref);
+  const Vec4 vrcH = inv.vrcFromNpc * npcH;
+  const Vec3 vrc = Vec3(vrcH) / vrcH.w;
+  const Vec3 wc = transformAffine(inv.wcFromVrc, vrc);
+  return {transformAffine(mcFromWc, wc), wc, vrc, npcH, o.clippedDc(ref)};
+}
+
+// The view volume's corners: the unit cube's corners in every stage (no MC: shown at WC for t < 1).
+StageValues cornerStages(const PipelineRun& run, const Inverses& inv, int i) {
+  const Vec3 npc(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  const Vec4 vrcH = inv.vrcFromNpc * Vec4(npc, 1.0);
+  const Vec3 vrc = Vec3(vrcH) / vrcH.w;
+  const Vec3 wc = transformAffine(inv.wcFromVrc, vrc);
+  return {wc, wc, vrc, run.npcFromVrc * Vec4(vrc, 1.0), Vec3(run.dcFromNpc * Vec4(npc, 1.0))};
+}
+
+}  // namespace
+
+void ViewRenderer::drawMorph(const Scene& /*scene*/, const PipelineRun& run, const FrameSettings& s,
+                             gl::RenderTarget& target) {
+  const int w = target.width(), h = target.height();
+  target.bind();
+  gl_.ClearColor(theme::kViewBackground.r, theme::kViewBackground.g, theme::kViewBackground.b, 1.f);
+  gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthFunc(GL_LESS);
+  gl_.Disable(GL_BLEND);
+
+  const double t = s.morphing.t;
+  const Inverses inv{glm::inverse(run.npcFromVrc), glm::inverse(run.vrcFromWc)};
+  std::vector<PolygonSet> sets;
+  std::vector<Vec3> all;
+  OverlayBatch lines;
+  for (const ObjectRun& o : run.objects) {
+    const Mat4 mcFromWc = glm::inverse(o.wcFromMc);
+    PolygonSet set{glm::vec3(o.color), {}};
+    for (size_t f = 0; f < o.faceCount(); ++f) {
+      std::vector<Vec3> poly;
+      for (uint32_t ref : o.clippedFace(f)) poly.push_back(morphPosition(stagesOf(o, ref, inv, mcFromWc), t, run.device));
+      if (poly.size() < 3) continue;
+      lines.polyline(poly, true, glm::vec4(glm::vec3(o.color) * 0.45f, 1.f), 1.f);
+      all.insert(all.end(), poly.begin(), poly.end());
+      set.polygons.push_back(std::move(poly));
+    }
+    sets.push_back(std::move(set));
+  }
+  std::array<Vec3, 8> c;
+  for (int i = 0; i < 8; ++i) c[size_t(i)] = morphPosition(cornerStages(run, inv, i), std::max(t, 1.0), run.device);
+  for (int i = 0; i < 8; ++i)
+    for (int bit : {1, 2, 4})
+      if (!(i & bit)) lines.line(c[size_t(i)], c[size_t(i | bit)], theme::kFrustum, theme::kLineWidth);
+  all.insert(all.end(), c.begin(), c.end());
+
+  // The axes of the space the scene is in at t (of the nearest stage), from its origin.
+  Vec3 lo = all.empty() ? Vec3(0) : all[0], hi = lo;
+  for (const Vec3& p : all) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const double axis = 0.25 * std::max(1e-6, glm::length(hi - lo));
+  lines.line({0, 0, 0}, {axis, 0, 0}, theme::kU, theme::kLineWidth);
+  lines.line({0, 0, 0}, {0, t > 3.5 ? -axis : axis, 0}, theme::kV, theme::kLineWidth);  // DC's y points down
+  lines.line({0, 0, 0}, {0, 0, axis}, theme::kN, theme::kLineWidth);
+  all.push_back({0, 0, 0});
+
+  const Orbit o = framed(s.morphing.orbit, all, double(w) / h);
+  const ViewCamera view = viewCameraOf(observerCamera(o, double(w) / h));
+  drawPolygons(sets, view, {0, Mat4(1.0), 1.f, s.morph.style == Style::shaded});
+  overlay_.draw(lines, view, w, h, OverlayDepth::xray);
+
+  std::vector<TextLabel> labels;
+  char title[160];
+  std::snprintf(title, sizeof title, "t = %.2f   %s", t, std::string(morphStageName(t)).c_str());
+  labels.push_back({{10, 10}, title, theme::kText, TextSize::title, Anchor::topLeft});
+  labels.push_back({{10, 38}, "step: " + std::string(morphStepName(std::min(t, 3.999))), theme::kFrustum,
+                    TextSize::label, Anchor::topLeft});
+  auto axisLabel = [&](const Vec3& p, const char* text, const glm::vec4& color) {
+    const Projected q = projectToPixels(view, p, w, h);
+    if (q.visible) labels.push_back({q.pixel + Vec2(6, 0), text, color, TextSize::label, Anchor::left});
+  };
+  axisLabel({axis, 0, 0}, "x", theme::kU);
+  axisLabel({0, t > 3.5 ? -axis : axis, 0}, "y", theme::kV);
+  axisLabel({0, 0, axis}, "z", theme::kN);
+  text_->draw(labels, w, h);
+}
+
+}  // namespace vplab
