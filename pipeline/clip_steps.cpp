@@ -2,11 +2,16 @@
 
 namespace vplab {
 
-std::vector<ClipStep> clipSteps(const ObjectRun& o, size_t face) {
+std::vector<ClipStep> clipSteps(const PipelineRun& run, const ObjectRun& o, size_t face) {
   std::vector<ClipVertex> polygon;
-  for (uint32_t v : o.mesh->face(face)) polygon.push_back({o.npcH[v], boundaryCoordinates(o.npcH[v]), v});
+  const size_t users = run.userPlanesNpc.size();
+  for (uint32_t v : o.mesh->face(face)) {
+    std::array<double, kMaxUserPlanes> user{};
+    for (size_t k = 0; k < users; ++k) user[k] = glm::dot(run.userPlanesNpc[k], o.npcH[v]);
+    polygon.push_back({o.npcH[v], clipValues(boundaryCoordinates(o.npcH[v]), {user.data(), users}), v});
+  }
   std::vector<ClipStep> steps;
-  for (int plane = 0; plane < kPlaneCount; ++plane) {
+  for (int plane = 0; plane < kPlaneCount + int(users); ++plane) {
     ClipStep step;
     step.plane = plane;
     step.input = polygon;

@@ -20,9 +20,9 @@ struct ClipStep {
   std::vector<bool> created;         // output[i] was made by this pass
 };
 
-/// The six passes (left, right, bottom, top, back, front) over face f of an object, clipping in
-/// homogeneous NPC. A trivially accepted polygon has six skipped steps; a trivially rejected one
-/// is still stepped through (to show why the outcodes reject it).
-std::vector<ClipStep> clipSteps(const ObjectRun& object, size_t face);
+/// The passes over face f of an object, clipping in homogeneous NPC: left, right, bottom, top, back,
+/// front, then the run's user clip planes (seed 003). A trivially accepted polygon has only skipped
+/// steps; a trivially rejected one is still stepped through (to show why the outcodes reject it).
+std::vector<ClipStep> clipSteps(const PipelineRun& run, const ObjectRun& object, size_t face);
 
 }  // namespace vplab

@@ -3,26 +3,34 @@
 namespace vplab {
 
 std::string_view planeName(int plane) {
-  static constexpr std::string_view names[] = {"left", "right", "bottom", "top", "back", "front"};
+  static constexpr std::string_view names[] = {"left",         "right",        "bottom",       "top",
+                                               "back",         "front",        "user plane 1", "user plane 2",
+                                               "user plane 3", "user plane 4", "user plane 5", "user plane 6"};
   return names[plane];
 }
 
 std::string_view planeInequality(int plane) {
-  static constexpr std::string_view names[] = {"x >= 0", "x <= w", "y >= 0",
-                                               "y <= w", "z >= 0", "z <= w"};
-  return names[plane];
+  static constexpr std::string_view names[] = {"x >= 0", "x <= w", "y >= 0", "y <= w", "z >= 0", "z <= w"};
+  return plane < kPlaneCount ? names[plane] : "a·x + b·y + c·z + d >= 0 (WC)";
+}
+
+ClipValues clipValues(const Boundary& cube, std::span<const double> user) {
+  ClipValues v;
+  for (int i = 0; i < kPlaneCount; ++i) v[size_t(i)] = cube[size_t(i)];
+  for (int i = 0; i < kMaxUserPlanes; ++i) v[size_t(kPlaneCount + i)] = size_t(i) < user.size() ? user[size_t(i)] : 1.0;
+  return v;
 }
 
 ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t) {
   ClipVertex v;
   v.p = a.p + t * (b.p - a.p);
-  for (int i = 0; i < kPlaneCount; ++i) v.bc[i] = a.bc[i] + t * (b.bc[i] - a.bc[i]);
+  for (int i = 0; i < kMaxClipPlanes; ++i) v.bc[i] = a.bc[i] + t * (b.bc[i] - a.bc[i]);
   v.source = ClipVertex::kCreated;
   v.onPlanes = a.onPlanes & b.onPlanes;
   return v;
 }
 
-void snapToPlanes(Vec4& p, uint8_t onPlanes) {
+void snapToPlanes(Vec4& p, uint16_t onPlanes) {
   if (onPlanes & 1u << kLeft) p.x = 0;
   if (onPlanes & 1u << kRight) p.x = p.w;
   if (onPlanes & 1u << kBottom) p.y = 0;
@@ -39,7 +47,7 @@ ClipVertex intersect(const ClipVertex& inside, const ClipVertex& outside, int pl
   const double t = inside.bc[plane] / (inside.bc[plane] - outside.bc[plane]);
   ClipVertex v = lerp(inside, outside, t);
   v.bc[plane] = 0;
-  v.onPlanes |= uint8_t(1u << plane);
+  v.onPlanes |= uint16_t(1u << plane);
   return v;
 }
 
@@ -66,7 +74,7 @@ void clipPolygonAgainstPlane(std::span<const ClipVertex> in, int plane, std::vec
 std::span<const ClipVertex> clipPolygon(Outcode planes, ClipScratch& scratch) {
   std::vector<ClipVertex>* in = &scratch.a;
   std::vector<ClipVertex>* out = &scratch.b;
-  for (int plane = 0; plane < kPlaneCount && in->size() >= 3; ++plane) {
+  for (int plane = 0; plane < kMaxClipPlanes && in->size() >= 3; ++plane) {
     if (!(planes >> plane & 1)) continue;
     clipPolygonAgainstPlane(*in, plane, *out);
     std::swap(in, out);
@@ -75,9 +83,9 @@ std::span<const ClipVertex> clipPolygon(Outcode planes, ClipScratch& scratch) {
   return *in;
 }
 
-EdgeRange clipEdge(const Boundary& bc0, const Boundary& bc1, Outcode planes) {
+EdgeRange clipEdge(const ClipValues& bc0, const ClipValues& bc1, Outcode planes) {
   EdgeRange r;
-  for (int plane = 0; plane < kPlaneCount; ++plane) {
+  for (int plane = 0; plane < kMaxClipPlanes; ++plane) {
     if (!(planes >> plane & 1)) continue;
     const double b0 = bc0[plane], b1 = bc1[plane];
     if (b0 < 0 && b1 < 0) return {0, 0, false};

@@ -22,11 +22,16 @@
 namespace vplab {
 
 enum ClipPlane : int { kLeft = 0, kRight, kBottom, kTop, kBack, kFront, kPlaneCount };
-std::string_view planeName(int plane);         // "left", "right", …
-std::string_view planeInequality(int plane);   // "x >= 0", "x <= w", …
+/// User clip planes (seed 003, glClipPlane) follow the cube's six: planes 6 … 11. Each is a linear
+/// form of the homogeneous point too, so the same clipper handles them.
+inline constexpr int kMaxUserPlanes = 6;
+inline constexpr int kMaxClipPlanes = kPlaneCount + kMaxUserPlanes;
+std::string_view planeName(int plane);         // "left", "right", …, "user plane 1", …
+std::string_view planeInequality(int plane);   // "x >= 0", "x <= w", …, "a·x + b·y + c·z + d >= 0"
 
-using Outcode = uint8_t;
-using Boundary = std::array<double, kPlaneCount>;  // BC0..BC5
+using Outcode = uint16_t;  // bits 0–5: the cube's planes; bits 6–11: user planes
+using Boundary = std::array<double, kPlaneCount>;       // BC0..BC5
+using ClipValues = std::array<double, kMaxClipPlanes>;  // the cube's BCs, then the user planes' values
 
 /// Blinn's boundary coordinates of a point in homogeneous NPC.
 inline Boundary boundaryCoordinates(const Vec4& p) {
@@ -40,14 +45,25 @@ inline Outcode outcodeOf(const Boundary& bc) {
   return code;
 }
 
+/// The boundary values of a point for every plane: the cube's six BCs, then `user` (the user
+/// planes' values; planes without a value count as inside).
+ClipValues clipValues(const Boundary& cube, std::span<const double> user = {});
+
+/// Bit i set when value i < 0, for the cube's and the user planes' values.
+inline Outcode outcodeOf(const ClipValues& v) {
+  Outcode code = 0;
+  for (int i = 0; i < kMaxClipPlanes; ++i) code |= Outcode(v[size_t(i)] < 0) << i;
+  return code;
+}
+
 /// A vertex while a polygon is being clipped: its position, its boundary values (for the NPC
 /// strategy Blinn's BCs; for the WC strategy the six frustum plane equations, equal in exact
-/// arithmetic), and where it came from.
+/// arithmetic; then the user planes'), and where it came from.
 struct ClipVertex {
-  Vec4 p;                // homogeneous NPC (WC strategy: WC with w = 1)
-  Boundary bc;
-  uint32_t source;       // index of the mesh vertex, or kCreated
-  uint8_t onPlanes = 0;  // bit i: the vertex was created on plane i (new edges lie on such planes)
+  Vec4 p;                 // homogeneous NPC (WC strategy: WC with w = 1)
+  ClipValues bc;
+  uint32_t source;        // index of the mesh vertex, or kCreated
+  uint16_t onPlanes = 0;  // bit i: the vertex was created on plane i (new edges lie on such planes)
   static constexpr uint32_t kCreated = 0xffffffffu;
 };
 
@@ -74,7 +90,10 @@ struct EdgeRange {
   double t0 = 0, t1 = 1;
   bool visible = true;
 };
-EdgeRange clipEdge(const Boundary& bc0, const Boundary& bc1, Outcode planes);
+EdgeRange clipEdge(const ClipValues& bc0, const ClipValues& bc1, Outcode planes);
+inline EdgeRange clipEdge(const Boundary& bc0, const Boundary& bc1, Outcode planes) {
+  return clipEdge(clipValues(bc0), clipValues(bc1), planes);
+}
 
 /// Linear interpolation of two clip vertices (all four coordinates and the boundary values).
 ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t);
@@ -88,8 +107,9 @@ inline Vec3 divideByW(const Vec4& p) {
   return Vec3(p) / w;
 }
 
-/// Puts a homogeneous NPC point exactly onto the planes in `onPlanes` (x = 0, x = w, …), removing
-/// the rounding of the interpolation so clipped output never lies a few ulps outside the cube.
-void snapToPlanes(Vec4& p, uint8_t onPlanes);
+/// Puts a homogeneous NPC point exactly onto the cube's planes in `onPlanes` (x = 0, x = w, …),
+/// removing the rounding of the interpolation so clipped output never lies a few ulps outside the
+/// cube. (User planes are not axis planes: their vertices keep the interpolated coordinates.)
+void snapToPlanes(Vec4& p, uint16_t onPlanes);
 
 }  // namespace vplab

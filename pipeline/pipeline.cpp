@@ -67,6 +67,8 @@ std::array<Vec4, kPlaneCount> frustumPlanesWc(const Mat4& npcFromWc) {
 
 namespace {
 
+constexpr Outcode kAllPlanes = (1u << kMaxClipPlanes) - 1;
+
 // ---------------------------------------------------------------- 2 stages 1–3
 
 // Stages 1 and 2 are affine: 9 multiplications per point, no w.
@@ -90,7 +92,7 @@ void transformProjective(const Mat4& m, std::span<const Vec3> in, std::vector<Ve
 // How each strategy presents a mesh vertex to the clipper, and what a created vertex becomes.
 struct NpcSource {
   const ObjectRun& o;
-  ClipVertex vertex(uint32_t v) const { return {o.npcH[v], o.bc[v], v}; }
+  ClipVertex vertex(uint32_t v) const { return {o.npcH[v], o.clipValuesOf(v), v}; }
   Vec4 npcH(const ClipVertex& c) const {
     Vec4 p = c.p;
     snapToPlanes(p, c.onPlanes);
@@ -101,7 +103,7 @@ struct NpcSource {
 struct WcSource {
   const ObjectRun& o;
   const Mat4& npcFromWc;
-  ClipVertex vertex(uint32_t v) const { return {Vec4(o.wc[v], 1.0), o.bc[v], v}; }
+  ClipVertex vertex(uint32_t v) const { return {Vec4(o.wc[v], 1.0), o.clipValuesOf(v), v}; }
   Vec4 npcH(const ClipVertex& c) const {
     Vec4 p = npcFromWc * c.p;  // the plane equations were exact in WC; snap away the rounding
     snapToPlanes(p, c.onPlanes);
@@ -111,7 +113,7 @@ struct WcSource {
 
 struct DivideFirstSource {
   const ObjectRun& o;
-  ClipVertex vertex(uint32_t v) const { return {Vec4(divideByW(o.npcH[v]), 1.0), o.bc[v], v}; }
+  ClipVertex vertex(uint32_t v) const { return {Vec4(divideByW(o.npcH[v]), 1.0), o.clipValuesOf(v), v}; }
   Vec4 npcH(const ClipVertex& c) const {
     Vec4 p = c.p;
     snapToPlanes(p, c.onPlanes);
@@ -150,6 +152,33 @@ void classifyDivideFirst(ObjectRun& o) {
   }
 }
 
+// The user clip planes (seed 003): one more linear form per plane, evaluated where the strategy
+// clips (homogeneous NPC, WC, or NPC after the division), its sign in outcode bits 6 … 11.
+void classifyUserPlanes(ObjectRun& o, const PipelineRun& run) {
+  const size_t planes = run.userPlanesWc.size();
+  o.userPlaneCount = int(planes);
+  if (planes == 0) {
+    o.userValues.clear();
+    return;
+  }
+  const size_t n = o.npcH.size();
+  o.userValues.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    Vec4 p = o.npcH[i];
+    switch (run.options.strategy) {
+      case ClipStrategy::npc: p = o.npcH[i]; break;
+      case ClipStrategy::wc: p = Vec4(o.wc[i], 1.0); break;
+      case ClipStrategy::divideFirst: p = Vec4(divideByW(o.npcH[i]), 1.0); break;
+    }
+    const std::vector<Vec4>& forms = run.options.strategy == ClipStrategy::wc ? run.userPlanesWc : run.userPlanesNpc;
+    for (size_t k = 0; k < planes; ++k) {
+      const double u = glm::dot(forms[k], p);
+      o.userValues[i][k] = u;
+      if (u < 0) o.outcodes[i] |= Outcode(1u << (kPlaneCount + k));
+    }
+  }
+}
+
 // Trivial accept and reject by the outcodes (seed 15.2.4), Sutherland–Hodgman for the rest.
 template <class Source>
 void clipFaces(ObjectRun& o, const Source& source, ClipScratch& scratch, PipelineStats& stats) {
@@ -163,7 +192,7 @@ void clipFaces(ObjectRun& o, const Source& source, ClipScratch& scratch, Pipelin
   for (size_t f = 0; f < faces; ++f) {
     o.clippedStart[f] = uint32_t(o.clippedRefs.size());
     const uint32_t b = start[f], e = start[f + 1];
-    Outcode all = 0x3f, any = 0;
+    Outcode all = kAllPlanes, any = 0;
     for (uint32_t k = b; k < e; ++k) {
       all &= oc[idx[k]];
       any |= oc[idx[k]];
@@ -208,17 +237,21 @@ void clipEdges(ObjectRun& o, PipelineStats& stats) {
       o.edgeRanges[i] = {0, 1, true};
       ++stats.edgesAccepted;
     } else {
-      o.edgeRanges[i] = clipEdge(o.bc[e.a], o.bc[e.b], a | b);
+      o.edgeRanges[i] = clipEdge(o.clipValuesOf(e.a), o.clipValuesOf(e.b), a | b);
       ++(o.edgeRanges[i].visible ? stats.edgesClipped : stats.edgesRejected);
     }
   }
 }
 
 // Seed 15.3.4: one test of the object's bounding box can decide all its polygons at once.
-BoxVerdict boxVerdict(const Mesh& mesh, const Mat4& npcFromMc, Outcode& common) {
-  Outcode all = 0x3f, any = 0;
+BoxVerdict boxVerdict(const Mesh& mesh, const Mat4& npcFromMc, const std::vector<Vec4>& userPlanesNpc,
+                      Outcode& common) {
+  Outcode all = kAllPlanes, any = 0;
   for (const Vec3& corner : bounds(mesh).corners()) {
-    const Outcode c = outcodeOf(boundaryCoordinates(npcFromMc * Vec4(corner, 1.0)));
+    const Vec4 h = npcFromMc * Vec4(corner, 1.0);
+    Outcode c = outcodeOf(boundaryCoordinates(h));
+    for (size_t k = 0; k < userPlanesNpc.size(); ++k)
+      if (glm::dot(userPlanesNpc[k], h) < 0) c |= Outcode(1u << (kPlaneCount + k));
     all &= c;
     any |= c;
   }
@@ -293,25 +326,22 @@ void runObject(ObjectRun& o, const PipelineRun& run, ClipScratch& scratch, Pipel
   o.box = BoxVerdict::notTested;
   if (run.options.boundingBoxTest) {
     Outcode common = 0;
-    o.box = boxVerdict(mesh, run.npcFromWc * o.wcFromMc, common);
+    o.box = boxVerdict(mesh, run.npcFromWc * o.wcFromMc, run.userPlanesNpc, common);
     ++stats.objectsBoxTested;
     if (o.box != BoxVerdict::crossing) decideByBox(o, o.box, common, stats);
   }
   if (o.box == BoxVerdict::notTested || o.box == BoxVerdict::crossing) {
     stats.verticesClassified += mesh.vertexCount();
     switch (run.options.strategy) {
-      case ClipStrategy::npc:
-        classifyNpc(o);
-        clipFaces(o, NpcSource{o}, scratch, stats);
-        break;
-      case ClipStrategy::wc:
-        classifyWc(o, frustumPlanesWc(run.npcFromWc));
-        clipFaces(o, WcSource{o, run.npcFromWc}, scratch, stats);
-        break;
-      case ClipStrategy::divideFirst:
-        classifyDivideFirst(o);
-        clipFaces(o, DivideFirstSource{o}, scratch, stats);
-        break;
+      case ClipStrategy::npc: classifyNpc(o); break;
+      case ClipStrategy::wc: classifyWc(o, frustumPlanesWc(run.npcFromWc)); break;
+      case ClipStrategy::divideFirst: classifyDivideFirst(o); break;
+    }
+    classifyUserPlanes(o, run);
+    switch (run.options.strategy) {
+      case ClipStrategy::npc: clipFaces(o, NpcSource{o}, scratch, stats); break;
+      case ClipStrategy::wc: clipFaces(o, WcSource{o, run.npcFromWc}, scratch, stats); break;
+      case ClipStrategy::divideFirst: clipFaces(o, DivideFirstSource{o}, scratch, stats); break;
     }
     if (!o.edges.empty()) clipEdges(o, stats);
   }
@@ -348,6 +378,14 @@ void runPipeline(const Scene& scene, const PipelineOptions& options, PipelineRun
   run.npcFromVrc = npcFromVrcM;
   run.npcFromWc = npcFromVrcM * vrcFromWcM;
   run.dcFromNpc = dcFromNpc(scene.device);
+  run.userPlanesWc.clear();
+  run.userPlanesNpc.clear();
+  const Mat4 npcToWcTransposed = glm::transpose(glm::inverse(run.npcFromWc));
+  for (const UserClipPlane& p : scene.clipPlanes) {
+    if (!p.enabled || run.userPlanesWc.size() == size_t(kMaxUserPlanes)) continue;
+    run.userPlanesWc.push_back(p.coefficients());
+    run.userPlanesNpc.push_back(npcToWcTransposed * p.coefficients());  // plane_wc · wcFromNpc
+  }
   run.sceneIndex = visible;
   run.stats = {};
   run.objects.resize(visible.size());

@@ -63,7 +63,11 @@ struct ObjectRun {
   // of npcH / w) and their outcodes. For an object decided by its box the vertices are not
   // classified: their outcodes are 0 (box inside) or the box's common bits (box outside).
   std::vector<Boundary> bc;
-  std::vector<Outcode> outcodes;
+  std::vector<Outcode> outcodes;  // bits 6 … 11: the user clip planes
+  // The user clip planes' values per vertex (seed 003), in the strategy's space like bc; empty
+  // when the scene has none.
+  std::vector<std::array<double, kMaxUserPlanes>> userValues;
+  int userPlaneCount = 0;
   BoxVerdict box = BoxVerdict::notTested;
 
   // Stage 4, per face.
@@ -82,6 +86,11 @@ struct ObjectRun {
   std::vector<EdgeRange> edgeRanges;
 
   size_t vertexCount() const { return npcH.size(); }
+  /// All the boundary values of a mesh vertex, the cube's and the user planes', for the clipper.
+  ClipValues clipValuesOf(uint32_t v) const {
+    return userValues.empty() ? clipValues(bc[v])
+                              : clipValues(bc[v], {userValues[v].data(), size_t(userPlaneCount)});
+  }
   size_t faceCount() const { return fate.size(); }
   std::span<const uint32_t> clippedFace(size_t f) const {
     return {clippedRefs.data() + clippedStart[f], clippedRefs.data() + clippedStart[f + 1]};
@@ -105,6 +114,9 @@ struct PipelineRun {
   Mat4 npcFromVrc{1.0};
   Mat4 dcFromNpc{1.0};
   Mat4 npcFromWc{1.0};  // npcFromVrc · vrcFromWc
+  // The enabled user clip planes (seed 003) as linear forms: in WC on (x, y, z, 1), and pulled back
+  // to homogeneous NPC (plane_wc · wcFromNpc), where they clip together with the cube's planes.
+  std::vector<Vec4> userPlanesWc, userPlanesNpc;
   std::vector<ObjectRun> objects;  // one per visible scene object, in scene order
   std::vector<size_t> sceneIndex;  // objects[i] is scene.objects[sceneIndex[i]]
   PipelineStats stats;

@@ -38,6 +38,16 @@ struct Light {
   bool operator==(const Light&) const = default;
 };
 
+/// A user clip plane in WC (seed 003, glClipPlane): the half-space n·(x − point) ≥ 0 is kept.
+struct UserClipPlane {
+  Vec3 normal{1, 0, 0};
+  Vec3 point{0, 0, 0};
+  bool enabled = true;
+  /// (a, b, c, d) with a·x + b·y + c·z + d ≥ 0 inside: (n, −n·point).
+  Vec4 coefficients() const { return {normal, -glm::dot(normal, point)}; }
+  bool operator==(const UserClipPlane&) const = default;
+};
+
 struct Scene {
   std::string title;    // a preset's name, shown in the viewer's menu and title
   std::string caption;  // one or two sentences on the idea the scene shows
@@ -46,6 +56,7 @@ struct Scene {
   Vec3 background{0.12, 0.12, 0.14};
   std::vector<SceneObject> objects;
   std::vector<Light> lights;       // empty: one light at the eye
+  std::vector<UserClipPlane> clipPlanes;  // at most 6 (kMaxUserPlanes)
   std::filesystem::path path;      // where it was loaded from; empty for the built-in scene
   bool operator==(const Scene&) const = default;
 };

@@ -3,6 +3,7 @@
 
 #include "pipeline/error.h"
 #include "pipeline/json_text.h"
+#include "pipeline/clipping.h"
 #include "pipeline/primitives.h"
 
 #include <nlohmann/json.hpp>
@@ -235,7 +236,7 @@ Scene parseScene(std::string_view text, std::string_view source, const std::file
     if (auto p = what.find("syntax error"); p != std::string::npos) what = what.substr(p);
     throw Error(std::string(source) + ":" + std::to_string(line) + ":" + std::to_string(col) + ": JSON " + what);
   }
-  r.object(j, "", {"title", "caption", "camera", "device", "background", "lights", "objects"});
+  r.object(j, "", {"title", "caption", "camera", "device", "background", "lights", "clip_planes", "objects"});
   Scene scene;
   if (auto it = j.find("title"); it != j.end()) scene.title = r.string(*it, "/title");
   if (auto it = j.find("caption"); it != j.end()) scene.caption = r.string(*it, "/caption");
@@ -254,6 +255,22 @@ Scene parseScene(std::string_view text, std::string_view source, const std::file
       light.position = r.vec3(r.required((*it)[i], lp, "position"), lp + "/position");
       if (auto c = (*it)[i].find("color"); c != (*it)[i].end()) light.color = r.color(*c, lp + "/color");
       scene.lights.push_back(light);
+    }
+  }
+  if (auto it = j.find("clip_planes"); it != j.end()) {
+    if (r.array(*it, "/clip_planes").size() > kMaxUserPlanes)
+      r.fail("/clip_planes", "at most " + std::to_string(kMaxUserPlanes) + " user clip planes, not " +
+                                 std::to_string(it->size()));
+    for (size_t i = 0; i < it->size(); ++i) {
+      const std::string cp = "/clip_planes/" + std::to_string(i);
+      const Json& pj = (*it)[i];
+      r.object(pj, cp, {"normal", "point", "enabled"});
+      UserClipPlane plane;
+      plane.normal = r.vec3(r.required(pj, cp, "normal"), cp + "/normal");
+      if (glm::length(plane.normal) < 1e-12) r.fail(cp + "/normal", "the plane's normal must not be the zero vector");
+      plane.point = r.vec3(r.required(pj, cp, "point"), cp + "/point");
+      if (auto e = pj.find("enabled"); e != pj.end()) plane.enabled = r.boolean(*e, cp + "/enabled");
+      scene.clipPlanes.push_back(plane);
     }
   }
   const Json& objects = r.array(r.required(j, "", "objects"), "/objects");
@@ -290,6 +307,14 @@ std::string sceneToJson(const Scene& scene) {
   if (!scene.lights.empty()) {
     j["lights"] = Json::array();
     for (const Light& l : scene.lights) j["lights"].push_back({{"position", toJson(l.position)}, {"color", toJson(l.color)}});
+  }
+  if (!scene.clipPlanes.empty()) {
+    j["clip_planes"] = Json::array();
+    for (const UserClipPlane& p : scene.clipPlanes) {
+      Json pj{{"normal", toJson(p.normal)}, {"point", toJson(p.point)}};
+      if (!p.enabled) pj["enabled"] = false;
+      j["clip_planes"].push_back(pj);
+    }
   }
   j["objects"] = Json::array();
   for (const SceneObject& o : scene.objects) j["objects"].push_back(toJson(o));

@@ -9,6 +9,7 @@
 //     "device": {"width": W, "height": H},
 //     "background": [r,g,b],
 //     "lights": [ {"position": [x,y,z], "color": [r,g,b]} ],
+//     "clip_planes": [ {"normal": [a,b,c], "point": [x,y,z], "enabled": true} ],   (at most 6, WC)
 //     "objects": [ { "name": .., "shape": "cube" | "tetrahedron" | "cylinder" | "sphere" | "polygon" | "mesh",
 //                    "segments": n, "vertices": [[x,y,z], ...], "file": "meshes/bunny.obj",
 //                    "color": [r,g,b], "visible": true,

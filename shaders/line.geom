@@ -9,9 +9,15 @@ uniform vec2 viewportSize;
 uniform float widthPx;
 
 in vec4 vColor[];
+in gl_PerVertex {  // as overlay.vert writes it, with six clip distances
+  vec4 gl_Position;
+  float gl_PointSize;
+  float gl_ClipDistance[6];
+} gl_in[];
 out vec4 gColor;
 noperspective out float gAlongPx;   // distance from the segment's start, for dashes
 noperspective out float gAcross;    // −1 … 1 across the line, for the antialiased edge
+out float gl_ClipDistance[6];       // the user clip planes, carried along the segment
 
 void main() {
   vec4 p0 = gl_in[0].gl_Position;
@@ -36,7 +42,10 @@ void main() {
   vec4 ends[4] = vec4[4](a, a, b, b);
   vec4 colors[4] = vec4[4](ca, ca, cb, cb);
   float along[4] = float[4](-0.5 * widthPx, -0.5 * widthPx, len + 0.5 * widthPx, len + 0.5 * widthPx);
+  float ts[4] = float[4](t0, t0, t1, t1);
   for (int i = 0; i < 4; ++i) {
+    for (int k = 0; k < 6; ++k)
+      gl_ClipDistance[k] = mix(gl_in[0].gl_ClipDistance[k], gl_in[1].gl_ClipDistance[k], ts[i]);
     vec2 ndc = corners[i] / viewportSize * 2.0 - 1.0;
     gl_Position = vec4(ndc * ends[i].w, ends[i].z, ends[i].w);
     gColor = colors[i];

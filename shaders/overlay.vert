@@ -10,10 +10,16 @@ uniform mat4 wcFromMc;
 uniform mat4 vrcFromWc;
 uniform mat4 npcFromVrc;
 uniform mat4 glClipFromNpc;
+// User clip planes in WC (seed 003), for the objects' edges in the wireframe styles.
+uniform int userPlaneCount;
+uniform vec4 userPlanesWc[6];
 
 out vec4 vColor;
+out float gl_ClipDistance[6];
 
 void main() {
   vColor = color;
-  gl_Position = glClipFromNpc * npcFromVrc * vrcFromWc * wcFromMc * vec4(position, 1.0);
+  vec4 wc = wcFromMc * vec4(position, 1.0);
+  for (int i = 0; i < 6; ++i) gl_ClipDistance[i] = i < userPlaneCount ? dot(userPlanesWc[i], wc) : 1.0;
+  gl_Position = glClipFromNpc * npcFromVrc * vrcFromWc * wc;
 }

@@ -1,5 +1,8 @@
 #include "app/render/overlay.h"
 
+#include <algorithm>
+#include <string>
+
 namespace vplab {
 
 void OverlayBatch::line(const Vec3& a, const Vec3& b, const glm::vec4& color, float widthPx, float dashPx) {
@@ -52,6 +55,7 @@ OverlayRenderer::OverlayRenderer(const GladGLContext& gl)
 }
 
 void OverlayRenderer::setCamera(const gl::Program& p, const ViewCamera& view, const Mat4& wcFromMc) const {
+  p.set("userPlaneCount", 0);
   p.set("wcFromMc", wcFromMc);
   p.set("vrcFromWc", view.vrcFromWc);
   p.set("npcFromVrc", view.npcFromVrc);
@@ -141,10 +145,17 @@ void OverlayRenderer::drawMeshEdges(GLuint edgeVao, GLsizei indexCount, const Vi
   lines_.set("widthPx", widthPx * scale_);
   lines_.set("dashPx", dashPx);
   lines_.set("alphaScale", 1.f);
+  const int planes = int(std::min<size_t>(userPlanes_.size(), 6));
+  for (int i = 0; i < planes; ++i) {
+    lines_.set(("userPlanesWc[" + std::to_string(i) + "]").c_str(), glm::vec4(userPlanes_[size_t(i)]));
+    gl.Enable(GL_CLIP_DISTANCE0 + GLenum(i));
+  }
+  lines_.set("userPlaneCount", planes);
   gl.BindVertexArray(edgeVao);
   gl.VertexAttrib4f(1, color.r, color.g, color.b, color.a);  // attribute 1 is not an array here
   gl.DrawElements(GL_LINES, indexCount, GL_UNSIGNED_INT, nullptr);
   gl.BindVertexArray(0);
+  for (int i = 0; i < planes; ++i) gl.Disable(GL_CLIP_DISTANCE0 + GLenum(i));
 }
 
 }  // namespace vplab

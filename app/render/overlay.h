@@ -52,6 +52,8 @@ class OverlayRenderer {
   explicit OverlayRenderer(const GladGLContext& gl);
   /// Multiplies every line width and point size (lecture mode on a projector).
   void setScale(float scale) { scale_ = scale; }
+  /// User clip planes in WC (seed 003) for drawMeshEdges; empty: none.
+  void setUserPlanes(std::vector<Vec4> planesWc) { userPlanes_ = std::move(planesWc); }
   /// Draws the batch seen through `view` into the current viewport of `width` × `height` pixels:
   /// triangles first, then lines, then points.
   void draw(const OverlayBatch& batch, const ViewCamera& view, int width, int height, OverlayDepth depth,
@@ -71,6 +73,7 @@ class OverlayRenderer {
 
   const GladGLContext* gl_;
   float scale_ = 1.f;
+  std::vector<Vec4> userPlanes_;
   gl::Program lines_, points_, triangles_;
   gl::VertexArray vao_;
   gl::Buffer vbo_;

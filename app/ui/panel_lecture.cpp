@@ -74,14 +74,16 @@ void stepThroughSection(ViewerState& s) {
   ImGui::SliderInt("polygon", &st.face, 0, int(o->faceCount()) - 1);
   ImGui::SameLine();
   ImGui::TextDisabled("%s", std::string(toString(o->fate[size_t(st.face)])).c_str());
+  const std::vector<ClipStep> steps = clipSteps(s.run, *o, size_t(st.face));
+  const int last = int(steps.size());
+  st.step = std::clamp(st.step, 0, last);
   if (ImGui::Button("< back") && st.step > 0) --st.step;
   ImGui::SameLine();
-  if (ImGui::Button("next >") && st.step < kPlaneCount) ++st.step;
+  if (ImGui::Button("next >") && st.step < last) ++st.step;
   ImGui::SameLine();
-  ImGui::SliderInt("##step", &st.step, 0, kPlaneCount);
+  ImGui::SliderInt("##step", &st.step, 0, last);
   recordRect(s, "step.slider");
 
-  const std::vector<ClipStep> steps = clipSteps(*o, size_t(st.face));
   if (st.step == 0) {
     ImGui::TextWrapped("The polygon as it enters stage 4: %zu vertices in homogeneous NPC.", steps[0].input.size());
     return;

@@ -2,6 +2,7 @@
 #include "app/ui/panels.h"
 #include "app/ui/widgets.h"
 
+#include "pipeline/clipping.h"
 #include "pipeline/error.h"
 #include "pipeline/obj_mesh.h"
 
@@ -90,6 +91,33 @@ void objectEditor(ViewerState& s, SceneObject& o) {
   transformEditor(s, o);
 }
 
+// User clip planes (seed 003, glClipPlane): kept is the half-space the normal points into.
+void clipPlanesEditor(ViewerState& s) {
+  std::vector<UserClipPlane>& planes = s.doc.scene().clipPlanes;
+  for (size_t i = 0; i < planes.size(); ++i) {
+    ImGui::PushID(int(i) + 1000);
+    UserClipPlane& p = planes[i];
+    ImGui::Checkbox("##on", &p.enabled);
+    ImGui::SameLine();
+    ImGui::Text("plane %zu", i + 1);
+    ImGui::SameLine();
+    const bool remove = ImGui::SmallButton("remove");
+    dragVec3(s, "normal", "clipplane.normal", p.normal, 0.01f);
+    if (glm::length(p.normal) < 1e-9) p.normal = {1, 0, 0};
+    dragVec3(s, "point", "clipplane.point", p.point);
+    ImGui::PopID();
+    if (remove) {
+      planes.erase(planes.begin() + ptrdiff_t(i));
+      break;
+    }
+  }
+  if (planes.size() < size_t(kMaxUserPlanes) && ImGui::SmallButton("add a clip plane"))
+    planes.push_back({{-1, 0, 0}, s.doc.scene().camera.vrp, true});
+  tooltip("Up to six planes in WC; what lies on the side the normal points to is kept. The CPU clipper and the "
+          "GPU (gl_ClipDistance) apply them alike.",
+          "Bis zu sechs Clipping-Ebenen im WC (glClipPlane); erhalten bleibt die Seite, in die die Normale zeigt.");
+}
+
 }  // namespace
 
 void scenePanel(ViewerState& s, FileDialog& dialog) {
@@ -121,7 +149,11 @@ void scenePanel(ViewerState& s, FileDialog& dialog) {
                   const std::filesystem::path rel = base.empty() ? file : std::filesystem::relative(file, base, ec);
                   addObject(s, Shape::mesh, (ec || rel.empty() ? file : rel).string());
                 });
-  if (scene.objects.empty()) return;
+  if (scene.objects.empty()) {
+    section("user clip planes (seed 003)");
+    clipPlanesEditor(s);
+    return;
+  }
   s.selectedObject = std::clamp(s.selectedObject, 0, int(scene.objects.size()) - 1);
   ImGui::Separator();
   ImGui::PushID(s.selectedObject);
@@ -131,6 +163,8 @@ void scenePanel(ViewerState& s, FileDialog& dialog) {
     scene.objects.erase(scene.objects.begin() + s.selectedObject);
     s.probe.reset();
   }
+  section("user clip planes (seed 003)");
+  clipPlanesEditor(s);
 }
 
 }  // namespace vplab::ui

@@ -98,10 +98,10 @@ void Viewer::stepHighlight() {
     if (int(s_.run.sceneIndex[i]) != st.object) continue;
     const ObjectRun& o = s_.run.objects[i];
     if (st.face < 0 || size_t(st.face) >= o.faceCount()) return;
-    const std::vector<ClipStep> steps = clipSteps(o, size_t(st.face));
+    const std::vector<ClipStep> steps = clipSteps(s_.run, o, size_t(st.face));
     Highlights::Step h;
     const bool start = st.step == 0;
-    const ClipStep& step = steps[size_t(start ? 0 : st.step - 1)];
+    const ClipStep& step = steps[size_t(start ? 0 : std::min<int>(st.step, int(steps.size())) - 1)];
     const std::vector<ClipVertex>& polygon = start ? step.input : step.output;
     h.plane = start ? -1 : step.plane;
     for (size_t k = 0; k < polygon.size(); ++k) {

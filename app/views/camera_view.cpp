@@ -69,7 +69,7 @@ void ViewRenderer::drawCamera(const Scene& scene, const PipelineRun& run, const 
 
   const ViewCamera view = viewCameraOf(scene.camera);
   const Style style = s.camera.style;
-  if (isFilled(style)) drawObjects(scene, view, {0, Mat4(1.0), 1.f, style == Style::shaded});
+  if (isFilled(style)) drawObjects(scene, view, {0, Mat4(1.0), 1.f, style == Style::shaded, true});
   else drawEdges(scene, view, target.width(), target.height(), style);
 
   OverlayBatch batch;

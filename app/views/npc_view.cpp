@@ -21,10 +21,10 @@ std::vector<Vec3> fadedPolygon(const ObjectRun& o, size_t f, ClipScratch& scratc
     const Vec4& p = o.npcH[v];
     const Boundary bc{p.x + m * p.w, (1 + m) * p.w - p.x, p.y + m * p.w,
                       (1 + m) * p.w - p.y, p.z + m * p.w, (1 + m) * p.w - p.z};
-    scratch.a.push_back({p, bc, v});
+    scratch.a.push_back({p, clipValues(bc), v});
   }
   std::vector<Vec3> out;
-  for (const ClipVertex& c : clipPolygon(0x3f, scratch))
+  for (const ClipVertex& c : clipPolygon(0x3f /* the six grown cube planes */, scratch))
     if (c.p.w > 1e-12) out.push_back(Vec3(c.p) / c.p.w);
   return out;
 }

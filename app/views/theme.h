@@ -22,6 +22,7 @@ inline constexpr glm::vec4 kCube{0.75f, 0.78f, 0.85f, 0.9f};
 inline constexpr glm::vec4 kCubeFront{0.55f, 0.85f, 0.95f, 0.08f};
 inline constexpr glm::vec4 kText{0.93f, 0.94f, 0.96f, 1.f};
 inline constexpr glm::vec4 kCpuPolygon{1.f, 0.93f, 0.2f, 0.95f};
+inline constexpr glm::vec4 kClipPlane{0.95f, 0.45f, 0.75f, 0.13f};
 inline constexpr glm::vec4 kStepPlane{1.f, 0.35f, 0.3f, 0.22f};
 inline constexpr glm::vec4 kProbe{1.f, 1.f, 1.f, 1.f};
 inline constexpr glm::vec4 kHandle{0.95f, 0.95f, 0.95f, 0.55f};

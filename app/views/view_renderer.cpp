@@ -3,6 +3,7 @@
 #include "app/views/view_renderer.h"
 
 #include "app/views/theme.h"
+#include "pipeline/clipping.h"
 #include "pipeline/error.h"
 
 namespace vplab {
@@ -92,7 +93,14 @@ void ViewRenderer::drawObjects(const Scene& scene, const ViewCamera& view, const
   scene_.set("glClipFromNpc", glClipFromNpc());
   scene_.set("volumeMode", pass.volumeMode);
   scene_.set("volumeNpcFromWc", pass.volumeNpcFromWc);
-  scene_.set("userPlaneCount", 0);
+  // The user clip planes in WC (seed 003), the same enabled planes the CPU pipeline clips with.
+  int planes = 0;
+  if (pass.userPlanes)
+    for (const UserClipPlane& p : scene.clipPlanes)
+      if (p.enabled && planes < kMaxUserPlanes)
+        scene_.set(("userPlanesWc[" + std::to_string(planes++) + "]").c_str(), glm::vec4(p.coefficients()));
+  scene_.set("userPlaneCount", planes);
+  for (int i = 0; i < kMaxUserPlanes; ++i) (i < planes ? gl_.Enable : gl_.Disable)(GL_CLIP_DISTANCE0 + GLenum(i));
   scene_.set("shaded", int(pass.shaded));
   scene_.set("alpha", pass.alpha);
   setLights(scene, view);
@@ -107,17 +115,22 @@ void ViewRenderer::drawObjects(const Scene& scene, const ViewCamera& view, const
     gl_.DrawElements(GL_TRIANGLES, g.faceIndexCount, GL_UNSIGNED_INT, nullptr);
   }
   gl_.BindVertexArray(0);
+  for (int i = 0; i < planes; ++i) gl_.Disable(GL_CLIP_DISTANCE0 + GLenum(i));
 }
 
 // Wire: every edge. Hidden line (seed figures 16.1 and 16.3): the faces fill the depth buffer only,
 // pushed back a little so their own edges pass; visible edges solid, hidden ones dashed or not at all.
 void ViewRenderer::drawEdges(const Scene& scene, const ViewCamera& view, int width, int height, Style style) {
   const bool hidden = style == Style::hiddenLine || style == Style::hiddenRemoved;
+  std::vector<Vec4> planes;
+  for (const UserClipPlane& p : scene.clipPlanes)
+    if (p.enabled) planes.push_back(p.coefficients());
+  overlay_.setUserPlanes(planes);
   if (hidden) {
     gl_.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     gl_.Enable(GL_POLYGON_OFFSET_FILL);
     gl_.PolygonOffset(1.f, 2.f);
-    drawObjects(scene, view, {0, Mat4(1.0), 1.f, false});
+    drawObjects(scene, view, {0, Mat4(1.0), 1.f, false, true});
     gl_.Disable(GL_POLYGON_OFFSET_FILL);
     gl_.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   }
@@ -144,6 +157,7 @@ void ViewRenderer::drawEdges(const Scene& scene, const ViewCamera& view, int wid
   }
   gl_.DepthFunc(GL_LESS);
   gl_.DepthMask(GL_TRUE);
+  overlay_.setUserPlanes({});
 }
 
 void ViewRenderer::drawPolygons(const std::vector<PolygonSet>& sets, const ViewCamera& view, const ObjectPass& pass) {

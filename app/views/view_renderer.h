@@ -44,6 +44,7 @@ class ViewRenderer {
     Mat4 volumeNpcFromWc{1.0};
     float alpha = 1.f;
     bool shaded = true;
+    bool userPlanes = false;  // clip by the scene's user clip planes (gl_ClipDistance, seed 003)
   };
   void drawObjects(const Scene& scene, const ViewCamera& view, const ObjectPass& pass);
   void drawEdges(const Scene& scene, const ViewCamera& view, int width, int height, Style style);

@@ -63,7 +63,7 @@ void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const F
   // The objects: inside the view volume solid, outside faded. The fragment shader splits them by
   // the scene camera's boundary coordinates (seed 002), exactly where the CPU clipper cuts.
   if (isFilled(style)) {
-    drawObjects(scene, view, {1, run.npcFromWc, 1.f, shaded});
+    drawObjects(scene, view, {1, run.npcFromWc, 1.f, shaded, true});
     if (ov.fadeOutside) {
       gl_.Enable(GL_BLEND);
       gl_.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -143,6 +143,20 @@ void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const F
     }
     label(c[7], "front F", theme::kFrustum, {6, -10});
     label(c[3], "back B", theme::kFrustum, {6, -10});
+  }
+  // User clip planes (seed 003): a translucent square on each, around its point, with its normal.
+  const double planeSize = 0.6 * std::max(run.camera.window.width(), run.camera.window.height());
+  for (const UserClipPlane& p : scene.clipPlanes) {
+    if (!p.enabled) continue;
+    const Vec3 n = glm::normalize(p.normal);
+    const Vec3 a = glm::normalize(glm::cross(n, std::abs(n.y) < 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0)));
+    const Vec3 bb = glm::cross(n, a);
+    const Vec3 q[4] = {p.point + (a + bb) * planeSize, p.point + (a - bb) * planeSize, p.point - (a + bb) * planeSize,
+                       p.point + (bb - a) * planeSize};
+    b.quad(q[0], q[1], q[2], q[3], theme::kClipPlane);
+    b.polyline({q[0], q[1], q[2], q[3]}, true, glm::vec4(glm::vec3(theme::kClipPlane), 0.8f), 1.5f);
+    addArrow(b, p.point, p.point + n * (0.3 * planeSize), view.camera.prp, glm::vec4(glm::vec3(theme::kClipPlane), 1.f));
+    label(p.point + n * (0.3 * planeSize), "clip plane", glm::vec4(glm::vec3(theme::kClipPlane), 1.f));
   }
   if (ov.viewPlane) {
     const ViewWindow& win = run.camera.window;

@@ -144,6 +144,57 @@ TEST(Parity, CpuClippedPolygonsMatchTheGlslFlatCameraView) {
   EXPECT_GE(scenesWithClipping, size_t(kSceneCount * 3 / 4));
 }
 
+// User clip planes (seed 003): the CPU pipeline clips with them in homogeneous NPC, the GLSL path
+// with gl_ClipDistance in WC; both must cut the same pixels away. Same criterion as above.
+TEST(Parity, UserClipPlanesAgreeBetweenCpuAndGlsl) {
+  test::Rng rng(0xc1a9);
+  ViewRenderer& renderer = *test::egl().renderer;
+  size_t cut = 0;
+  for (int k = 0; k < 8; ++k) {
+    Scene scene;
+    PipelineRun run;
+    Image cpu;
+    for (int attempt = 0;; ++attempt) {
+      ASSERT_LT(attempt, 50) << "no scene with enough coverage";
+      scene = randomConvexScene(rng, k % 2 ? Projection::parallel : Projection::perspective);
+      // One to three planes through the middle of what the camera looks at, their normals across
+      // the view direction so each splits the picture.
+      const int planes = 1 + k % 3;
+      const Vec3 n = glm::normalize(scene.camera.prp - scene.camera.vrp);
+      for (int i = 0; i < planes; ++i) {
+        Vec3 normal = rng.unitVector();
+        normal -= glm::dot(normal, n) * n;
+        if (glm::length(normal) < 0.2) normal = glm::normalize(glm::cross(n, Vec3(0.3, 1, 0.1)));
+        scene.clipPlanes.push_back({normal, scene.camera.vrp + rng.inBox(-0.3, 0.3), true});
+      }
+      run = runPipeline(scene);
+      cpu = rasterizeClippedPolygons(run, scene.background, scene.device.width, scene.device.height, 8);
+      if (nonBackground(cpu, rgbaFromColor(scene.background)) > cpu.pixels.size() / 20) break;
+    }
+    // The planes really cut something: without them more is drawn.
+    Scene unclipped = scene;
+    unclipped.clipPlanes.clear();
+    const Image without = rasterizeClippedPolygons(runPipeline(unclipped), scene.background, scene.device.width,
+                                                   scene.device.height, 8);
+    cut += nonBackground(without, rgbaFromColor(scene.background)) > nonBackground(cpu, rgbaFromColor(scene.background));
+
+    const Image gpu = renderImage(renderer, scene, RenderRequest{});
+    size_t equal = 0;
+    for (size_t i = 0; i < gpu.pixels.size(); ++i) equal += gpu.pixels[i] == cpu.pixels[i];
+    const double share = double(equal) / double(gpu.pixels.size());
+    if (share < kMinEqualShare) {
+      const auto dir = test::outputDir();
+      const std::string stem = "parity-planes-" + std::to_string(k);
+      writePng(gpu, dir / (stem + ".gpu.png"));
+      writePng(cpu, dir / (stem + ".cpu.png"));
+      ADD_FAILURE() << "scene " << k << ": " << 100 * share << " % equal\n"
+                    << describe(compareImages(gpu, cpu, 0)) << "\n  pictures: " << (dir / stem).string()
+                    << ".{gpu,cpu}.png";
+    }
+  }
+  EXPECT_GE(cut, 6u) << "the planes must cut something away in most scenes";
+}
+
 // The oracle is not trivially satisfied: a camera one pixel off, or a different edge rule (no
 // subpixel snapping changes only a few pixels, a shifted window a lot) must fail the same criterion.
 TEST(Parity, CriterionCatchesAOnePixelShift) {

@@ -168,7 +168,7 @@ TEST(Clipping, LerpInterpolatesEverything) {
   b.onPlanes = 0b000110;
   const ClipVertex m = lerp(a, b, 0.25);
   EXPECT_EQ(m.p, Vec4(0.5, 1, 1.5, 1.5));
-  EXPECT_EQ(m.bc, boundaryCoordinates(m.p));  // boundary values are linear in the point
+  EXPECT_EQ(m.bc, clipValues(boundaryCoordinates(m.p)));  // boundary values are linear in the point
   EXPECT_EQ(m.source, ClipVertex::kCreated);
   EXPECT_EQ(m.onPlanes, 0b000100);  // on a plane only when both ends are
 }

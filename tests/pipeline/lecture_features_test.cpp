@@ -77,7 +77,7 @@ TEST(ClipSteps, LastStepEqualsTheClippersOutput) {
     const PipelineRun run = runPipeline(scene);
     for (const ObjectRun& o : run.objects) {
       for (size_t f = 0; f < o.faceCount(); ++f) {
-        const std::vector<ClipStep> steps = clipSteps(o, f);
+        const std::vector<ClipStep> steps = clipSteps(run, o, f);
         ASSERT_EQ(steps.size(), 6u);
         const auto clipped = o.clippedFace(f);
         if (o.fate[f] == Fate::rejected) continue;  // stepped through, but the clipper never ran
@@ -99,7 +99,7 @@ TEST(ClipSteps, EachStepShowsBoundaryValuesAndNewVertices) {
   // A triangle sticking out of the right plane (x > w) only: one pass cuts, five are skipped.
   Scene scene = test::sceneWith(test::checkCamera(), {test::polygonObject("tri", {{0, 0, 0}, {2, 0.2, 0}, {0, 0.5, 0}})});
   const PipelineRun run = runPipeline(scene);
-  const auto steps = clipSteps(run.objects[0], 0);
+  const auto steps = clipSteps(run, run.objects[0], 0);
   for (const ClipStep& s : steps) {
     EXPECT_EQ(s.skipped, s.plane != kRight) << planeName(s.plane);
     for (size_t i = 0; i < s.input.size(); ++i) EXPECT_EQ(s.boundary[i], s.input[i].bc[s.plane]);

@@ -216,7 +216,7 @@ inline double outsideCube(const Vec3& p) {
 
 /// A ClipVertex for a homogeneous NPC point with Blinn's boundary coordinates.
 inline ClipVertex clipVertex(const Vec4& p, uint32_t source = 0) {
-  return {p, boundaryCoordinates(p), source, 0};
+  return {p, clipValues(boundaryCoordinates(p)), source, 0};
 }
 
 }  // namespace vplab::test
