@@ -38,6 +38,13 @@ inline Boundary boundaryCoordinates(const Vec4& p) {
   return {p.x, p.w - p.x, p.y, p.w - p.y, p.z, p.w - p.z};
 }
 
+/// The outcode of a point in homogeneous NPC: outcodeOf(boundaryCoordinates(p)) bit for bit,
+/// without the array in between (the vertex pass's hot loop).
+inline Outcode outcodeOf(const Vec4& p) {
+  return Outcode((p.x < 0) | (p.w - p.x < 0) << 1 | (p.y < 0) << 2 | (p.w - p.y < 0) << 3 | (p.z < 0) << 4 |
+                 (p.w - p.z < 0) << 5);
+}
+
 /// Bit i set when BCi < 0: a point exactly on a plane is inside.
 inline Outcode outcodeOf(const Boundary& bc) {
   Outcode code = 0;

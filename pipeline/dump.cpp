@@ -20,8 +20,8 @@ Json polygonJson(const ObjectRun& o, size_t f) {
   Json mc = Json::array(), wc = Json::array(), vrc = Json::array(), npcH = Json::array(), codes = Json::array();
   for (uint32_t v : o.mesh->face(f)) {
     mc.push_back(toJson(o.mesh->positions[v]));
-    wc.push_back(toJson(o.wc[v]));
-    vrc.push_back(toJson(o.vrc[v]));
+    wc.push_back(toJson(o.wc(v)));
+    vrc.push_back(toJson(o.vrc(v)));
     npcH.push_back(toJson(o.npcH[v]));
     codes.push_back(o.outcodes[v]);
   }

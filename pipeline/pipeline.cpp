@@ -1,13 +1,16 @@
-// Index: 1 names  2 stages 1–3 (batch transforms)  3 stage 4 (classification, per-face clipping,
-//        edges, bounding box)  4 stage 5 (division, device mapping)  5 the run
+// Index: 1 names and accessors  2 the vertex pass (stages 1–3, classification, stage 5 of the
+//        vertices inside)  3 the face pass (stage 4: trivial accept and reject, per-face clipping),
+//        edges, bounding box  4 stage 5 of the created vertices  5 the run
 #include "pipeline/pipeline.h"
 
 #include "pipeline/error.h"
 #include "pipeline/view_mapping.h"
 
+#include <algorithm>
+
 namespace vplab {
 
-// ---------------------------------------------------------------- 1 names
+// ---------------------------------------------------------------- 1 names and accessors
 
 std::string_view toString(ClipStrategy s) {
   switch (s) {
@@ -34,6 +37,70 @@ std::string_view toString(Fate f) {
   return "?";
 }
 
+std::span<const uint32_t> ObjectRun::clippedFace(size_t f) const {
+  switch (fate[f]) {
+    case Fate::accepted: return mesh->face(f);
+    case Fate::clipped: {
+      const auto it = std::lower_bound(clippedFaces.begin(), clippedFaces.end(), uint32_t(f));
+      const size_t i = size_t(it - clippedFaces.begin());
+      return {clippedRefs.data() + clippedStart[i], clippedRefs.data() + clippedStart[i + 1]};
+    }
+    case Fate::rejected:
+    case Fate::clippedAway: break;
+  }
+  return {};
+}
+
+namespace {
+
+constexpr Outcode kAllPlanes = (1u << kMaxClipPlanes) - 1;
+
+// The cube's boundary values each strategy tests, shared by the vertex pass and clipValuesOf so the
+// two agree bit for bit.
+Boundary wcBoundary(const std::array<Vec4, kPlaneCount>& planes, const Vec3& wc) {
+  const Vec4 p(wc, 1.0);
+  Boundary bc;
+  for (int k = 0; k < kPlaneCount; ++k) bc[size_t(k)] = glm::dot(planes[size_t(k)], p);
+  return bc;
+}
+
+Vec4 dividedFirst(const Vec4& npcH) { return Vec4(divideByW(npcH), 1.0); }
+
+// Where the strategy evaluates the user planes' forms for a vertex.
+Vec4 userPoint(ClipStrategy s, const Vec4& npcH, const Vec3& wc) {
+  switch (s) {
+    case ClipStrategy::npc: return npcH;
+    case ClipStrategy::wc: return Vec4(wc, 1.0);
+    case ClipStrategy::divideFirst: return dividedFirst(npcH);
+  }
+  return npcH;
+}
+
+}  // namespace
+
+ClipValues ObjectRun::clipValuesOf(uint32_t v) const {
+  Boundary cube;
+  switch (strategy) {
+    case ClipStrategy::npc: cube = boundaryCoordinates(npcH[v]); break;
+    case ClipStrategy::wc: cube = wcBoundary(planesWc, wc(v)); break;
+    case ClipStrategy::divideFirst: cube = boundaryCoordinates(dividedFirst(npcH[v])); break;
+  }
+  std::array<double, kMaxUserPlanes> user{};
+  if (!userForms.empty()) {
+    const Vec4 p = userPoint(strategy, npcH[v], strategy == ClipStrategy::wc ? wc(v) : Vec3(0));
+    for (size_t k = 0; k < userForms.size(); ++k) user[k] = glm::dot(userForms[k], p);
+  }
+  return clipValues(cube, {user.data(), userForms.size()});
+}
+
+const ClipValues& ObjectRun::sharedClipValues(uint32_t v) {
+  uint64_t& slot = valueSlots[v];
+  if (slot >> 32 == generation) return values[uint32_t(slot)];
+  slot = uint64_t(generation) << 32 | uint32_t(values.size());
+  values.push_back(clipValuesOf(v));
+  return values.back();
+}
+
 Vec3 ObjectRun::clippedNpc(uint32_t ref) const { return divideByW(clippedNpcH(ref)); }
 
 bool ObjectRun::isNewEdge(size_t f, size_t i) const {
@@ -52,8 +119,10 @@ bool ObjectRun::isNewEdge(size_t f, size_t i) const {
   auto planes = [&](uint32_t ref) -> unsigned {
     if (isCreated(ref)) return createdOnPlanes[ref - vertexCount()];
     unsigned on = 0;
-    if (ref < bc.size())
-      for (int p = 0; p < kPlaneCount; ++p) on |= unsigned(bc[ref][p] == 0) << p;
+    if (classified()) {
+      const ClipValues v = clipValuesOf(ref);
+      for (int p = 0; p < kMaxClipPlanes; ++p) on |= unsigned(v[size_t(p)] == 0) << p;
+    }
     return on;
   };
   return (planes(a) & planes(b)) != 0;
@@ -67,32 +136,101 @@ std::array<Vec4, kPlaneCount> frustumPlanesWc(const Mat4& npcFromWc) {
 
 namespace {
 
-constexpr Outcode kAllPlanes = (1u << kMaxClipPlanes) - 1;
+// ---------------------------------------------------------------- 2 the vertex pass
 
-// ---------------------------------------------------------------- 2 stages 1–3
-
-// Stages 1 and 2 are affine: 9 multiplications per point, no w.
-void transformAffine(const Mat4& m, std::span<const Vec3> in, std::vector<Vec3>& out) {
-  out.resize(in.size());
-  const Vec3 c0(m[0]), c1(m[1]), c2(m[2]), c3(m[3]);
-  Vec3* o = out.data();
-  for (size_t i = 0; i < in.size(); ++i) o[i] = c0 * in[i].x + c1 * in[i].y + c2 * in[i].z + c3;
+// Stages 1–3, the classification and stage 5 in one pass over the vertices: each MC vertex is read
+// once, and only what later stages read is written (npcH, outcode, DC). `classify(i, h)` gives the
+// outcode of vertex i with homogeneous NPC h. Stage 5 here rather than after the face pass: a vertex
+// with outcode 0 is inside (w > 0), and the clipped polygons use no other mesh vertex.
+template <class Classify>
+void vertexPass(ObjectRun& o, const Mat4& dcFromNpcM, Classify classify, PipelineStats& stats) {
+  const Mesh& mesh = *o.mesh;
+  const size_t n = mesh.positions.size();
+  o.npcH.resize(n);
+  o.outcodes.resize(n);
+  o.dc.resize(n);
+  // The matrices' entries as scalars: the loop is written out so it stays free of calls.
+  const Mat4& m = o.npcFromMc;
+  const double m00 = m[0][0], m01 = m[1][0], m02 = m[2][0], m03 = m[3][0];
+  const double m10 = m[0][1], m11 = m[1][1], m12 = m[2][1], m13 = m[3][1];
+  const double m20 = m[0][2], m21 = m[1][2], m22 = m[2][2], m23 = m[3][2];
+  const double m30 = m[0][3], m31 = m[1][3], m32 = m[2][3], m33 = m[3][3];
+  const Mat4& d = dcFromNpcM;  // affine (domain.md stage 5)
+  const double d00 = d[0][0], d01 = d[1][0], d02 = d[2][0], d03 = d[3][0];
+  const double d10 = d[0][1], d11 = d[1][1], d12 = d[2][1], d13 = d[3][1];
+  const double d20 = d[0][2], d21 = d[1][2], d22 = d[2][2], d23 = d[3][2];
+  const Vec3* mc = mesh.positions.data();
+  Vec4* npcH = o.npcH.data();
+  Outcode* oc = o.outcodes.data();
+  Vec3* dc = o.dc.data();
+  uint64_t mapped = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const double x = mc[i].x, y = mc[i].y, z = mc[i].z;
+    const Vec4 h(m00 * x + m01 * y + m02 * z + m03, m10 * x + m11 * y + m12 * z + m13,
+                 m20 * x + m21 * y + m22 * z + m23, m30 * x + m31 * y + m32 * z + m33);
+    npcH[i] = h;
+    const Outcode code = classify(i, h);
+    oc[i] = code;
+    if (code == 0) {
+      // Inside, so w ≥ dmin > 0 (perspective) or w = 1: the division is safe; one division and three
+      // multiplications instead of three divisions.
+      const double inv = 1.0 / h.w;
+      const double nx = h.x * inv, ny = h.y * inv, nz = h.z * inv;
+      dc[i] = Vec3(d00 * nx + d01 * ny + d02 * nz + d03, d10 * nx + d11 * ny + d12 * nz + d13,
+                   d20 * nx + d21 * ny + d22 * nz + d23);
+      ++mapped;
+    }  // the DC of a vertex outside is never read (no clipped polygon uses it): not written
+  }
+  stats.verticesOutput += mapped;
 }
 
-// Stage 3 is projective: the result keeps its w (in VRC → homogeneous NPC).
-void transformProjective(const Mat4& m, std::span<const Vec3> in, std::vector<Vec4>& out) {
-  out.resize(in.size());
-  const Vec4 c0(m[0]), c1(m[1]), c2(m[2]), c3(m[3]);
-  Vec4* o = out.data();
-  for (size_t i = 0; i < in.size(); ++i) o[i] = c0 * in[i].x + c1 * in[i].y + c2 * in[i].z + c3;
+// The user planes' outcode bits (6 … 11) of a vertex.
+Outcode userBits(const ObjectRun& o, const Vec4& p) {
+  Outcode bits = 0;
+  for (size_t k = 0; k < o.userForms.size(); ++k)
+    if (glm::dot(o.userForms[k], p) < 0) bits |= Outcode(1u << (kPlaneCount + k));
+  return bits;
 }
 
-// ---------------------------------------------------------------- 3 stage 4
+// The strategy's classification. `kUser`: whether the user planes' bits are needed (decided once
+// per object, so the common case without user planes carries no test per vertex).
+template <bool kUser>
+void classifyVerticesWith(ObjectRun& o, const Mat4& dcFromNpcM, PipelineStats& stats) {
+  switch (o.strategy) {
+    case ClipStrategy::npc:
+      vertexPass(o, dcFromNpcM,
+                 [&](size_t, const Vec4& h) { return Outcode(outcodeOf(h) | (kUser ? userBits(o, h) : 0)); }, stats);
+      break;
+    case ClipStrategy::wc:
+      vertexPass(o, dcFromNpcM,
+                 [&](size_t i, const Vec4&) {
+                   const Vec3 wc = o.wc(uint32_t(i));
+                   return Outcode(outcodeOf(wcBoundary(o.planesWc, wc)) | (kUser ? userBits(o, Vec4(wc, 1.0)) : 0));
+                 },
+                 stats);
+      break;
+    case ClipStrategy::divideFirst:
+      vertexPass(o, dcFromNpcM,
+                 [&](size_t, const Vec4& h) {
+                   const Vec4 d = dividedFirst(h);
+                   return Outcode(outcodeOf(boundaryCoordinates(d)) | (kUser ? userBits(o, d) : 0));
+                 },
+                 stats);
+      break;
+  }
+}
+
+void classifyVertices(ObjectRun& o, const Mat4& dcFromNpcM, PipelineStats& stats) {
+  if (o.userForms.empty()) classifyVerticesWith<false>(o, dcFromNpcM, stats);
+  else classifyVerticesWith<true>(o, dcFromNpcM, stats);
+}
+
+// ---------------------------------------------------------------- 3 the face pass (stage 4)
 
 // How each strategy presents a mesh vertex to the clipper, and what a created vertex becomes.
 struct NpcSource {
-  const ObjectRun& o;
-  ClipVertex vertex(uint32_t v) const { return {o.npcH[v], o.clipValuesOf(v), v}; }
+  ObjectRun& o;
+  ClipVertex vertex(uint32_t v) const { return {o.npcH[v], o.sharedClipValues(v), v}; }
   Vec4 npcH(const ClipVertex& c) const {
     Vec4 p = c.p;
     snapToPlanes(p, c.onPlanes);
@@ -101,9 +239,9 @@ struct NpcSource {
 };
 
 struct WcSource {
-  const ObjectRun& o;
+  ObjectRun& o;
   const Mat4& npcFromWc;
-  ClipVertex vertex(uint32_t v) const { return {Vec4(o.wc[v], 1.0), o.clipValuesOf(v), v}; }
+  ClipVertex vertex(uint32_t v) const { return {Vec4(o.wc(v), 1.0), o.sharedClipValues(v), v}; }
   Vec4 npcH(const ClipVertex& c) const {
     Vec4 p = npcFromWc * c.p;  // the plane equations were exact in WC; snap away the rounding
     snapToPlanes(p, c.onPlanes);
@@ -112,8 +250,8 @@ struct WcSource {
 };
 
 struct DivideFirstSource {
-  const ObjectRun& o;
-  ClipVertex vertex(uint32_t v) const { return {Vec4(divideByW(o.npcH[v]), 1.0), o.clipValuesOf(v), v}; }
+  ObjectRun& o;
+  ClipVertex vertex(uint32_t v) const { return {dividedFirst(o.npcH[v]), o.sharedClipValues(v), v}; }
   Vec4 npcH(const ClipVertex& c) const {
     Vec4 p = c.p;
     snapToPlanes(p, c.onPlanes);
@@ -121,107 +259,75 @@ struct DivideFirstSource {
   }
 };
 
-void classifyNpc(ObjectRun& o) {
-  const size_t n = o.npcH.size();
-  o.bc.resize(n);
-  o.outcodes.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    o.bc[i] = boundaryCoordinates(o.npcH[i]);
-    o.outcodes[i] = outcodeOf(o.bc[i]);
-  }
-}
-
-void classifyWc(ObjectRun& o, const std::array<Vec4, kPlaneCount>& planes) {
-  const size_t n = o.wc.size();
-  o.bc.resize(n);
-  o.outcodes.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    const Vec4 p(o.wc[i], 1.0);
-    for (int k = 0; k < kPlaneCount; ++k) o.bc[i][k] = glm::dot(planes[k], p);
-    o.outcodes[i] = outcodeOf(o.bc[i]);
-  }
-}
-
-void classifyDivideFirst(ObjectRun& o) {
-  const size_t n = o.npcH.size();
-  o.bc.resize(n);
-  o.outcodes.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    o.bc[i] = boundaryCoordinates(Vec4(divideByW(o.npcH[i]), 1.0));
-    o.outcodes[i] = outcodeOf(o.bc[i]);
-  }
-}
-
-// The user clip planes (seed 003): one more linear form per plane, evaluated where the strategy
-// clips (homogeneous NPC, WC, or NPC after the division), its sign in outcode bits 6 … 11.
-void classifyUserPlanes(ObjectRun& o, const PipelineRun& run) {
-  const size_t planes = run.userPlanesWc.size();
-  o.userPlaneCount = int(planes);
-  if (planes == 0) {
-    o.userValues.clear();
-    return;
-  }
-  const size_t n = o.npcH.size();
-  o.userValues.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    Vec4 p = o.npcH[i];
-    switch (run.options.strategy) {
-      case ClipStrategy::npc: p = o.npcH[i]; break;
-      case ClipStrategy::wc: p = Vec4(o.wc[i], 1.0); break;
-      case ClipStrategy::divideFirst: p = Vec4(divideByW(o.npcH[i]), 1.0); break;
+// A face the outcodes cannot decide: Sutherland–Hodgman. Rare (the faces crossing a plane), so it
+// stays out of the face loop.
+template <class Source>
+[[gnu::noinline]] Fate clipFace(ObjectRun& o, const Source& source, ClipScratch& scratch, uint32_t f,
+                                Outcode planes) {
+  const uint32_t nv = uint32_t(o.vertexCount());
+  scratch.a.clear();
+  for (uint32_t v : o.mesh->face(f)) scratch.a.push_back(source.vertex(v));
+  const auto out = clipPolygon(planes, scratch);
+  if (out.empty()) return Fate::clippedAway;
+  for (const ClipVertex& c : out) {
+    if (c.source != ClipVertex::kCreated) {
+      o.clippedRefs.push_back(c.source);
+      continue;
     }
-    const std::vector<Vec4>& forms = run.options.strategy == ClipStrategy::wc ? run.userPlanesWc : run.userPlanesNpc;
-    for (size_t k = 0; k < planes; ++k) {
-      const double u = glm::dot(forms[k], p);
-      o.userValues[i][k] = u;
-      if (u < 0) o.outcodes[i] |= Outcode(1u << (kPlaneCount + k));
-    }
+    o.clippedRefs.push_back(nv + uint32_t(o.createdNpcH.size()));
+    o.createdNpcH.push_back(source.npcH(c));
+    o.createdOnPlanes.push_back(c.onPlanes);
   }
+  o.clippedFaces.push_back(f);
+  o.clippedStart.push_back(uint32_t(o.clippedRefs.size()));
+  return Fate::clipped;
 }
 
-// Trivial accept and reject by the outcodes (seed 15.2.4), Sutherland–Hodgman for the rest.
+// Trivial accept and reject by the outcodes (seed 15.2.4), Sutherland–Hodgman for the rest. Per face
+// only its fate is written.
 template <class Source>
 void clipFaces(ObjectRun& o, const Source& source, ClipScratch& scratch, PipelineStats& stats) {
   const Mesh& mesh = *o.mesh;
-  const size_t faces = mesh.faceCount();
-  const uint32_t nv = uint32_t(o.vertexCount());
+  const uint32_t faces = uint32_t(mesh.faceCount());
   const uint32_t* idx = mesh.indices.data();
   const uint32_t* start = mesh.faceStart.data();
   const Outcode* oc = o.outcodes.data();
-  o.clippedRefs.reserve(mesh.indices.size());
-  for (size_t f = 0; f < faces; ++f) {
-    o.clippedStart[f] = uint32_t(o.clippedRefs.size());
-    const uint32_t b = start[f], e = start[f + 1];
-    Outcode all = kAllPlanes, any = 0;
-    for (uint32_t k = b; k < e; ++k) {
-      all &= oc[idx[k]];
-      any |= oc[idx[k]];
-    }
+  Fate* fate = o.fate.data();
+  // Counted in locals, not in an array indexed by the fate: that would chain every face to the
+  // previous one through memory.
+  uint64_t accepted = 0, rejected = 0, clipped = 0;
+  auto decide = [&](uint32_t f, Outcode all, Outcode any) {
     if (all) {
-      o.fate[f] = Fate::rejected;
-      ++stats.polygonsTriviallyRejected;
+      fate[f] = Fate::rejected;
+      ++rejected;
     } else if (!any) {
-      o.clippedRefs.insert(o.clippedRefs.end(), idx + b, idx + e);
-      o.fate[f] = Fate::accepted;
-      ++stats.polygonsTriviallyAccepted;
+      fate[f] = Fate::accepted;
+      ++accepted;
     } else {
-      scratch.a.clear();
-      for (uint32_t k = b; k < e; ++k) scratch.a.push_back(source.vertex(idx[k]));
-      const auto out = clipPolygon(any, scratch);
-      o.fate[f] = out.empty() ? Fate::clippedAway : Fate::clipped;
-      ++(out.empty() ? stats.polygonsClippedAway : stats.polygonsClipped);
-      for (const ClipVertex& c : out) {
-        if (c.source != ClipVertex::kCreated) {
-          o.clippedRefs.push_back(c.source);
-          continue;
-        }
-        o.clippedRefs.push_back(nv + uint32_t(o.createdNpcH.size()));
-        o.createdNpcH.push_back(source.npcH(c));
-        o.createdOnPlanes.push_back(c.onPlanes);
+      fate[f] = clipFace(o, source, scratch, f, any);
+      ++clipped;
+    }
+  };
+  if (o.uniformFaceSize == 3) {  // triangles (the GPU's and the benchmark's meshes): no faceStart
+    for (uint32_t f = 0; f < faces; ++f) {
+      const Outcode a = oc[idx[3 * f]], b = oc[idx[3 * f + 1]], c = oc[idx[3 * f + 2]];
+      decide(f, Outcode(a & b & c), Outcode(a | b | c));
+    }
+  } else {
+    for (uint32_t f = 0; f < faces; ++f) {
+      Outcode all = kAllPlanes, any = 0;
+      for (uint32_t k = start[f]; k < start[f + 1]; ++k) {
+        all &= oc[idx[k]];
+        any |= oc[idx[k]];
       }
+      decide(f, all, any);
     }
   }
-  o.clippedStart[faces] = uint32_t(o.clippedRefs.size());
+  const uint64_t kept = o.clippedFaces.size();  // clipped with something left
+  stats.polygonsTriviallyAccepted += accepted;
+  stats.polygonsTriviallyRejected += rejected;
+  stats.polygonsClipped += kept;
+  stats.polygonsClippedAway += clipped - kept;
   stats.verticesCreated += o.createdNpcH.size();
 }
 
@@ -237,7 +343,7 @@ void clipEdges(ObjectRun& o, PipelineStats& stats) {
       o.edgeRanges[i] = {0, 1, true};
       ++stats.edgesAccepted;
     } else {
-      o.edgeRanges[i] = clipEdge(o.clipValuesOf(e.a), o.clipValuesOf(e.b), a | b);
+      o.edgeRanges[i] = clipEdge(o.sharedClipValues(e.a), o.sharedClipValues(e.b), Outcode(a | b));
       ++(o.edgeRanges[i].visible ? stats.edgesClipped : stats.edgesRejected);
     }
   }
@@ -249,7 +355,7 @@ BoxVerdict boxVerdict(const Mesh& mesh, const Mat4& npcFromMc, const std::vector
   Outcode all = kAllPlanes, any = 0;
   for (const Vec3& corner : bounds(mesh).corners()) {
     const Vec4 h = npcFromMc * Vec4(corner, 1.0);
-    Outcode c = outcodeOf(boundaryCoordinates(h));
+    Outcode c = outcodeOf(h);
     for (size_t k = 0; k < userPlanesNpc.size(); ++k)
       if (glm::dot(userPlanesNpc[k], h) < 0) c |= Outcode(1u << (kPlaneCount + k));
     all &= c;
@@ -259,18 +365,10 @@ BoxVerdict boxVerdict(const Mesh& mesh, const Mat4& npcFromMc, const std::vector
   return all ? BoxVerdict::outside : any ? BoxVerdict::crossing : BoxVerdict::inside;
 }
 
-void decideByBox(ObjectRun& o, BoxVerdict verdict, Outcode common, PipelineStats& stats) {
+void decideByBox(ObjectRun& o, PipelineStats& stats) {
   const Mesh& mesh = *o.mesh;
-  const bool inside = verdict == BoxVerdict::inside;
-  o.bc.clear();
-  o.outcodes.assign(o.vertexCount(), inside ? 0 : common);
+  const bool inside = o.box == BoxVerdict::inside;
   std::fill(o.fate.begin(), o.fate.end(), inside ? Fate::accepted : Fate::rejected);
-  if (inside) {
-    o.clippedRefs = mesh.indices;
-    std::copy(mesh.faceStart.begin(), mesh.faceStart.end(), o.clippedStart.begin());
-  } else {
-    std::fill(o.clippedStart.begin(), o.clippedStart.end(), 0u);
-  }
   ++(inside ? stats.objectsAcceptedByBox : stats.objectsRejectedByBox);
   stats.polygonsDecidedByBox += mesh.faceCount();
   if (!o.edges.empty()) {
@@ -279,75 +377,75 @@ void decideByBox(ObjectRun& o, BoxVerdict verdict, Outcode common, PipelineStats
   }
 }
 
-// ---------------------------------------------------------------- 4 stage 5
+// ---------------------------------------------------------------- 4 stage 5 of the created vertices
 
-// Divide by w only now, after clipping: every vertex used has w > 0.
-void mapToDevice(ObjectRun& o, const Mat4& dcFromNpc, PipelineStats& stats) {
-  const size_t n = o.vertexCount();
-  o.dc.resize(n);
-  uint64_t mapped = 0;
-  for (size_t i = 0; i < n; ++i) {
-    if (o.outcodes[i] != 0) {
-      o.dc[i] = Vec3(0);  // not used by any clipped polygon
-      continue;
-    }
-    o.dc[i] = Vec3(dcFromNpc * Vec4(divideByW(o.npcH[i]), 1.0));
-    ++mapped;
-  }
+// Divide by w only now, after clipping: every vertex created on a clip plane has w > 0.
+void mapCreatedToDevice(ObjectRun& o, const Mat4& dcFromNpc, PipelineStats& stats) {
   o.createdDc.resize(o.createdNpcH.size());
   for (size_t i = 0; i < o.createdNpcH.size(); ++i)
     o.createdDc[i] = Vec3(dcFromNpc * Vec4(divideByW(o.createdNpcH[i]), 1.0));
-  stats.verticesOutput += mapped + o.createdNpcH.size();
+  stats.verticesOutput += o.createdNpcH.size();
 }
 
 // ---------------------------------------------------------------- 5 the run
 
 void runObject(ObjectRun& o, const PipelineRun& run, ClipScratch& scratch, PipelineStats& stats) {
   const Mesh& mesh = *o.mesh;
-  // Stages 1–3, each a batch over the whole vertex array.
-  transformAffine(o.wcFromMc, mesh.positions, o.wc);
-  transformAffine(run.vrcFromWc, o.wc, o.vrc);
-  transformProjective(run.npcFromVrc, o.vrc, o.npcH);
+  o.vrcFromWc = run.vrcFromWc;
+  o.npcFromMc = run.npcFromWc * o.wcFromMc;
+  o.strategy = run.options.strategy;
+  o.planesWc = frustumPlanesWc(run.npcFromWc);
+  o.userForms = run.options.strategy == ClipStrategy::wc ? run.userPlanesWc : run.userPlanesNpc;
   stats.vertices += mesh.vertexCount();
   stats.verticesTransformed += mesh.vertexCount();
   stats.polygons += mesh.faceCount();
 
   o.fate.resize(mesh.faceCount());
-  o.clippedStart.resize(mesh.faceCount() + 1);
+  o.clippedFaces.clear();
+  o.clippedStart.assign(1, 0);
   o.clippedRefs.clear();
   o.createdNpcH.clear();
   o.createdOnPlanes.clear();
+  o.values.clear();
+  if (++o.generation == 0) {  // the slots' run numbers wrapped around: forget them all
+    std::fill(o.valueSlots.begin(), o.valueSlots.end(), 0);
+    o.generation = 1;
+  }
   if (run.options.clipEdges && o.edges.empty()) o.edges = uniqueEdges(mesh);
   if (!run.options.clipEdges) o.edges.clear();
   o.edgeRanges.clear();
   stats.edges += o.edges.size();
 
-  // Stage 4.
   o.box = BoxVerdict::notTested;
+  Outcode common = 0;
   if (run.options.boundingBoxTest) {
-    Outcode common = 0;
-    o.box = boxVerdict(mesh, run.npcFromWc * o.wcFromMc, run.userPlanesNpc, common);
+    o.box = boxVerdict(mesh, o.npcFromMc, run.userPlanesNpc, common);
     ++stats.objectsBoxTested;
-    if (o.box != BoxVerdict::crossing) decideByBox(o, o.box, common, stats);
   }
-  if (o.box == BoxVerdict::notTested || o.box == BoxVerdict::crossing) {
+  if (!o.classified()) {
+    // Decided by the box: the vertices are transformed (and those inside mapped), not classified.
+    const Outcode code = o.box == BoxVerdict::inside ? 0 : common;
+    vertexPass(o, run.dcFromNpc, [code](size_t, const Vec4&) { return code; }, stats);
+    decideByBox(o, stats);
+  } else {
     stats.verticesClassified += mesh.vertexCount();
-    switch (run.options.strategy) {
-      case ClipStrategy::npc: classifyNpc(o); break;
-      case ClipStrategy::wc: classifyWc(o, frustumPlanesWc(run.npcFromWc)); break;
-      case ClipStrategy::divideFirst: classifyDivideFirst(o); break;
-    }
-    classifyUserPlanes(o, run);
-    switch (run.options.strategy) {
+    classifyVertices(o, run.dcFromNpc, stats);
+    switch (o.strategy) {
       case ClipStrategy::npc: clipFaces(o, NpcSource{o}, scratch, stats); break;
       case ClipStrategy::wc: clipFaces(o, WcSource{o, run.npcFromWc}, scratch, stats); break;
       case ClipStrategy::divideFirst: clipFaces(o, DivideFirstSource{o}, scratch, stats); break;
     }
     if (!o.edges.empty()) clipEdges(o, stats);
   }
+  mapCreatedToDevice(o, run.dcFromNpc, stats);
+}
 
-  // Stage 5.
-  mapToDevice(o, run.dcFromNpc, stats);
+uint32_t uniformFaceSize(const Mesh& mesh) {
+  if (mesh.faceCount() == 0) return 0;
+  const uint32_t size = mesh.faceStart[1] - mesh.faceStart[0];
+  for (size_t f = 1; f < mesh.faceCount(); ++f)
+    if (mesh.faceStart[f + 1] - mesh.faceStart[f] != size) return 0;
+  return size;
 }
 
 }  // namespace
@@ -390,16 +488,20 @@ void runPipeline(const Scene& scene, const PipelineOptions& options, PipelineRun
   run.stats = {};
   run.objects.resize(visible.size());
 
+  // The clipper's buffers grow to the largest face clipped (no pass over every face to size them).
   ClipScratch scratch;
-  size_t maxFace = 0;
-  for (size_t i : visible) maxFace = std::max(maxFace, scene.objects[i].mesh->maxFaceSize());
-  scratch.a.reserve(maxFace + kPlaneCount);
-  scratch.b.reserve(maxFace + kPlaneCount);
+  scratch.a.reserve(16);
+  scratch.b.reserve(16);
 
   for (size_t k = 0; k < visible.size(); ++k) {
     const SceneObject& so = scene.objects[visible[k]];
     ObjectRun& o = run.objects[k];
-    if (o.mesh != so.mesh) o.edges.clear();  // the edge list belongs to the mesh
+    if (o.mesh != so.mesh) {  // the edge list, the face size and the value cache belong to the mesh
+      o.edges.clear();
+      o.uniformFaceSize = uniformFaceSize(*so.mesh);
+      o.valueSlots.assign(so.mesh->vertexCount(), 0);
+      o.generation = 0;
+    }
     o.name = so.name;
     o.color = so.color;
     o.mesh = so.mesh;

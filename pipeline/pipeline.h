@@ -3,8 +3,13 @@
 // divided by w and mapped to DC. A run keeps every stage's results for the views, the dump, the
 // vertex probe and the tests, plus statistics and operation counts (seed 15.3.3).
 //
-// Data-oriented: each stage is a batch over arrays (one per space); polygons index the vertex
-// arrays, so a vertex is transformed and classified once however many faces use it. Buffers are
+// Data-oriented, in two passes: one over the vertices (stages 1–3 as the one composite matrix
+// npcFromMc, the classification, and stage 5 for the vertices inside) and one over the faces (trivial
+// accept and reject by the outcodes; Sutherland–Hodgman for the few faces that cross a plane).
+// Polygons index the vertex arrays, so a vertex is transformed and classified once however many
+// faces use it. Per vertex only what later stages read is stored (homogeneous NPC, outcode, DC); WC
+// and VRC are recomputed on demand from MC, bit for bit as the stage matrices give them. Per face
+// only its fate is stored: an accepted face is drawn from the mesh's own indices. Buffers are
 // reused from run to run; no heap allocation per polygon in the hot loop.
 #pragma once
 
@@ -52,32 +57,46 @@ struct ObjectRun {
   Vec3 color{1};
   std::shared_ptr<const Mesh> mesh;  // MC, stage 0
   Mat4 wcFromMc{1.0};
+  Mat4 vrcFromWc{1.0};  // the run's, kept here so wc() and vrc() need nothing else
+  Mat4 npcFromMc{1.0};  // npcFromVrc · vrcFromWc · wcFromMc: stages 1–3 in one matrix
+  ClipStrategy strategy = ClipStrategy::npc;
+  std::array<Vec4, kPlaneCount> planesWc{};  // the frustum's planes in WC (the WC strategy's tests)
+  // The enabled user clip planes (seed 003) as linear forms in the space the strategy clips in:
+  // homogeneous NPC (npc), WC on (x, y, z, 1) (wc), NPC after the division (divide first).
+  std::vector<Vec4> userForms;
 
-  // Stages 1–3, per mesh vertex.
-  std::vector<Vec3> wc;
-  std::vector<Vec3> vrc;
-  std::vector<Vec4> npcH;  // homogeneous NPC: not divided yet
+  // Stages 1–3, per mesh vertex: homogeneous NPC, not divided yet (npcFromMc · MC: one 4 × 4
+  // product per vertex, the seed's cost model). WC and VRC on demand, the very affine products the
+  // stage matrices define (storing them would double the vertex pass's memory traffic).
+  std::vector<Vec4> npcH;
+  Vec3 wc(uint32_t v) const { return transformAffine(wcFromMc, mesh->positions[v]); }
+  Vec3 vrc(uint32_t v) const { return transformAffine(vrcFromWc, wc(v)); }
 
-  // Stage 4, per mesh vertex: the boundary values the strategy tested (NPC: Blinn's BCs of npcH;
-  // WC: the frustum's plane equations at wc, equal in exact arithmetic; divide first: the BCs
-  // of npcH / w) and their outcodes. For an object decided by its box the vertices are not
-  // classified: their outcodes are 0 (box inside) or the box's common bits (box outside).
-  std::vector<Boundary> bc;
-  std::vector<Outcode> outcodes;  // bits 6 … 11: the user clip planes
-  // The user clip planes' values per vertex (seed 003), in the strategy's space like bc; empty
-  // when the scene has none.
-  std::vector<std::array<double, kMaxUserPlanes>> userValues;
-  int userPlaneCount = 0;
+  // Stage 4, per mesh vertex: the outcode (bits 0–5 the cube's planes, 6–11 the user planes). For
+  // an object decided by its box the vertices are not classified: their outcodes are 0 (box inside)
+  // or the box's common bits (box outside).
+  std::vector<Outcode> outcodes;
   BoxVerdict box = BoxVerdict::notTested;
+  bool classified() const { return box == BoxVerdict::notTested || box == BoxVerdict::crossing; }
+  /// The boundary values the strategy tests for vertex v (NPC: Blinn's BCs of npcH; WC: the
+  /// frustum's plane equations at wc, equal in exact arithmetic; divide first: the BCs of npcH / w;
+  /// then the user planes'), computed as the vertex pass computed them for the outcode.
+  ClipValues clipValuesOf(uint32_t v) const;
+  /// The same, computed once per vertex when a polygon or edge crossing a plane first needs them
+  /// and kept for every other one using the vertex (seed 002), in a cache reused from run to run.
+  const ClipValues& sharedClipValues(uint32_t v);
 
-  // Stage 4, per face.
+  // Stage 4, per face: its fate. The faces cut with something left (fate clipped), ascending, and
+  // their polygons: clipped face i is clippedRefs[clippedStart[i] .. clippedStart[i + 1]).
   std::vector<Fate> fate;
-  std::vector<uint32_t> clippedStart;  // face f: clippedRefs[clippedStart[f] .. clippedStart[f + 1])
+  std::vector<uint32_t> clippedFaces;
+  std::vector<uint32_t> clippedStart{0};
   std::vector<uint32_t> clippedRefs;
-  std::vector<Vec4> createdNpcH;       // homogeneous NPC of the vertices created by clipping
-  std::vector<uint8_t> createdOnPlanes;  // bit i: created on plane i (new edges join such vertices)
+  std::vector<Vec4> createdNpcH;          // homogeneous NPC of the vertices created by clipping
+  std::vector<uint16_t> createdOnPlanes;  // bit i: created on plane i (new edges join such vertices)
 
-  // Stage 5: DC of every vertex the clipped polygons use (mesh vertices with outcode 0).
+  // Stage 5: DC of every vertex the clipped polygons use (mesh vertices with outcode 0; the entries
+  // of the others are not written: nothing reads them).
   std::vector<Vec3> dc;
   std::vector<Vec3> createdDc;
 
@@ -85,16 +104,18 @@ struct ObjectRun {
   std::vector<Edge> edges;
   std::vector<EdgeRange> edgeRanges;
 
+  // Cached per mesh (like `edges`): the number of vertices of every face, 0 when they differ.
+  uint32_t uniformFaceSize = 0;
+  // sharedClipValues' cache: per vertex the run that filled its slot (high 32 bits) and the slot.
+  std::vector<uint64_t> valueSlots;
+  std::vector<ClipValues> values;
+  uint32_t generation = 0;
+
   size_t vertexCount() const { return npcH.size(); }
-  /// All the boundary values of a mesh vertex, the cube's and the user planes', for the clipper.
-  ClipValues clipValuesOf(uint32_t v) const {
-    return userValues.empty() ? clipValues(bc[v])
-                              : clipValues(bc[v], {userValues[v].data(), size_t(userPlaneCount)});
-  }
   size_t faceCount() const { return fate.size(); }
-  std::span<const uint32_t> clippedFace(size_t f) const {
-    return {clippedRefs.data() + clippedStart[f], clippedRefs.data() + clippedStart[f + 1]};
-  }
+  /// The visible polygon of face f: the mesh face when accepted, the clipped polygon when clipped,
+  /// empty when rejected or clipped away.
+  std::span<const uint32_t> clippedFace(size_t f) const;
   bool isCreated(uint32_t ref) const { return ref >= vertexCount(); }
   /// A clipped polygon's vertex: homogeneous NPC, NPC after the division, DC.
   Vec4 clippedNpcH(uint32_t ref) const { return isCreated(ref) ? createdNpcH[ref - vertexCount()] : npcH[ref]; }

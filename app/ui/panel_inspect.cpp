@@ -89,8 +89,8 @@ void probePanel(ViewerState& s) {
       ImGui::TextUnformatted(value.c_str());
     };
     row("MC", vecText(o->mesh->positions[v]));
-    row("WC", vecText(o->wc[v]));
-    row("VRC", vecText(o->vrc[v]));
+    row("WC", vecText(o->wc(v)));
+    row("VRC", vecText(o->vrc(v)));
     row("NPC (homogeneous)", vecText(h));
     if (h.w > 0) {
       const Vec3 npc = Vec3(h) / h.w;

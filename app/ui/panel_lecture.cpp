@@ -178,11 +178,12 @@ void depthPanel(ViewerState& s) {
   // The objects' depth ranges (VRC z of their vertices), as bands along the axis.
   float band = p1.y + 4;
   for (const ObjectRun& o : s.run.objects) {
-    if (o.vrc.empty()) continue;
+    if (o.vertexCount() == 0) continue;
     double lo = 1e300, hi = -1e300;
-    for (const Vec3& v : o.vrc) {
-      lo = std::min(lo, v.z);
-      hi = std::max(hi, v.z);
+    for (uint32_t v = 0; v < o.vertexCount(); ++v) {
+      const double z = o.vrc(v).z;
+      lo = std::min(lo, z);
+      hi = std::max(hi, z);
     }
     lo = std::clamp(lo, c.back, c.front);
     hi = std::clamp(hi, c.back, c.front);

@@ -78,7 +78,7 @@ std::optional<Vec3> probePosition(const PipelineRun& run, const Probe& probe, Vi
   if (!o || probe.vertex >= o->vertexCount()) return std::nullopt;
   const Vec4 h = o->npcH[probe.vertex];
   switch (view) {
-    case ViewKind::world: return o->wc[probe.vertex];
+    case ViewKind::world: return o->wc(probe.vertex);
     case ViewKind::npc:
       if (h.w <= 0) return std::nullopt;
       return Vec3(h) / h.w;

@@ -36,7 +36,7 @@ void addVanishingPoints(const PipelineRun& run, int sceneIndex, OverlayBatch& b,
     if (!vp.finite) continue;
     const Vec3 target(vp.dc, 0.5);
     for (const Edge& e : uniqueEdges(*o->mesh)) {
-      const Vec3 d = o->wc[e.b] - o->wc[e.a];
+      const Vec3 d = o->wc(e.b) - o->wc(e.a);
       if (glm::length(glm::cross(glm::normalize(d), vp.directionWc)) > 1e-6) continue;  // not along this axis
       for (uint32_t v : {e.a, e.b}) {
         const Vec4 h = o->npcH[v];

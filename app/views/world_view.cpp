@@ -87,7 +87,7 @@ void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const F
     for (const ObjectRun& o : run.objects) {
       const glm::vec4 c(glm::vec3(o.color), 1.f);
       for (size_t i = 0; i < o.edges.size() && i < o.edgeRanges.size(); ++i) {
-        const Vec3 a = o.wc[o.edges[i].a], b = o.wc[o.edges[i].b];
+        const Vec3 a = o.wc(o.edges[i].a), b = o.wc(o.edges[i].b);
         if (ov.fadeOutside) faded.line(a, b, glm::vec4(glm::vec3(c), theme::kFadedAlpha), theme::kEdgeWidth);
         const EdgeRange& r = o.edgeRanges[i];
         if (!r.visible) continue;

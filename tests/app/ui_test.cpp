@@ -82,8 +82,7 @@ void expectRunFinite(const PipelineRun& run) {
   EXPECT_TRUE(std::isfinite(run.frame.vpd) && std::isfinite(run.frame.dmin) && std::isfinite(run.frame.dmax));
   size_t values = 0, bad = 0;
   for (const ObjectRun& o : run.objects) {
-    for (const Vec3& p : o.wc) bad += !finite(p), ++values;
-    for (const Vec3& p : o.vrc) bad += !finite(p), ++values;
+    for (uint32_t v = 0; v < o.vertexCount(); ++v) bad += !finite(o.wc(v)) + !finite(o.vrc(v)), values += 2;
     for (const Vec4& p : o.npcH) bad += !finite(p), ++values;
     for (const Vec4& p : o.createdNpcH) bad += !finite(p), ++values;
     for (const Vec3& p : o.createdDc) bad += !finite(p), ++values;

@@ -87,8 +87,8 @@ TEST(Dump, ContractKeysAndValues) {
       for (const char* key : {"mc", "wc", "vrc", "npc_h", "outcodes"}) ASSERT_EQ(p.at(key).size(), face.size()) << key;
       for (size_t i = 0; i < face.size(); ++i) {
         expectVec(p["mc"][i], o.mesh->positions[face[i]]);
-        expectVec(p["wc"][i], o.wc[face[i]]);
-        expectVec(p["vrc"][i], o.vrc[face[i]]);
+        expectVec(p["wc"][i], o.wc(face[i]));
+        expectVec(p["vrc"][i], o.vrc(face[i]));
         ASSERT_EQ(p["npc_h"][i].size(), 4u);
         for (int c = 0; c < 4; ++c) EXPECT_EQ(p["npc_h"][i][c].get<double>(), o.npcH[face[i]][c]);
         EXPECT_EQ(p["outcodes"][i].get<int>(), o.outcodes[face[i]]);

@@ -54,13 +54,11 @@ void expectSameRun(const PipelineRun& a, const PipelineRun& b) {
     EXPECT_EQ(x.name, y.name);
     EXPECT_EQ(x.mesh, y.mesh);
     EXPECT_TRUE(bitwiseEqual(x.wcFromMc, y.wcFromMc));
-    EXPECT_TRUE(bitwiseEqual(x.wc, y.wc));
-    EXPECT_TRUE(bitwiseEqual(x.vrc, y.vrc));
     EXPECT_TRUE(bitwiseEqual(x.npcH, y.npcH));
-    EXPECT_TRUE(bitwiseEqual(x.bc, y.bc));
     EXPECT_EQ(x.outcodes, y.outcodes);
     EXPECT_EQ(x.box, y.box);
     EXPECT_EQ(x.fate, y.fate);
+    EXPECT_EQ(x.clippedFaces, y.clippedFaces);
     EXPECT_EQ(x.clippedStart, y.clippedStart);
     EXPECT_EQ(x.clippedRefs, y.clippedRefs);
     EXPECT_TRUE(bitwiseEqual(x.createdNpcH, y.createdNpcH));
@@ -109,8 +107,8 @@ TEST(Pipeline, EachStageIsItsMatrix) {
         const Vec3 vrc = Vec3(run.vrcFromWc * Vec4(wc, 1));
         const Vec4 npcH = run.npcFromVrc * Vec4(vrc, 1);
         // Relative 1e-14: the batch code sums the same products in another order.
-        EXPECT_NEAR(glm::length(o.wc[i] - wc), 0, 1e-14 * (1 + glm::length(wc)));
-        EXPECT_NEAR(glm::length(o.vrc[i] - vrc), 0, 1e-13 * (1 + glm::length(vrc)));
+        EXPECT_NEAR(glm::length(o.wc(uint32_t(i)) - wc), 0, 1e-14 * (1 + glm::length(wc)));
+        EXPECT_NEAR(glm::length(o.vrc(uint32_t(i)) - vrc), 0, 1e-13 * (1 + glm::length(vrc)));
         EXPECT_NEAR(glm::length(o.npcH[i] - npcH), 0, 1e-12 * (1 + glm::length(npcH)));
       }
     }
@@ -126,21 +124,22 @@ TEST(Pipeline, VerticesAreClassifiedOnce) {
   for (ClipStrategy s : {ClipStrategy::npc, ClipStrategy::wc, ClipStrategy::divideFirst}) {
     const PipelineRun run = runPipeline(scene, {s});
     const ObjectRun& o = run.objects[0];
-    EXPECT_EQ(o.bc.size(), mesh.vertexCount());
     EXPECT_EQ(o.outcodes.size(), mesh.vertexCount());
     EXPECT_EQ(o.npcH.size(), mesh.vertexCount());
     EXPECT_EQ(run.stats.verticesTransformed, mesh.vertexCount());
     EXPECT_EQ(run.stats.verticesClassified, mesh.vertexCount());
-    for (size_t i = 0; i < o.vertexCount(); ++i) EXPECT_EQ(o.outcodes[i], outcodeOf(o.bc[i]));
+    for (size_t i = 0; i < o.vertexCount(); ++i) EXPECT_EQ(o.outcodes[i], outcodeOf(o.clipValuesOf(uint32_t(i))));
     if (s == ClipStrategy::npc) {
-      for (size_t i = 0; i < o.vertexCount(); ++i) EXPECT_EQ(o.bc[i], boundaryCoordinates(o.npcH[i]));
+      for (size_t i = 0; i < o.vertexCount(); ++i)
+        EXPECT_EQ(o.clipValuesOf(uint32_t(i)), clipValues(boundaryCoordinates(o.npcH[i])));
     }
     // WC: the frustum planes evaluated at the WC point, the same linear forms as Blinn's BCs of
     // npcH; relative 1e-12 covers the different summation orders on terms up to ~10·|npcH|.
     if (s == ClipStrategy::wc) {
       for (size_t i = 0; i < o.vertexCount(); ++i)
         for (int p = 0; p < kPlaneCount; ++p)
-          EXPECT_NEAR(o.bc[i][p], boundaryCoordinates(o.npcH[i])[p], 1e-12 * (1 + glm::length(o.npcH[i])));
+          EXPECT_NEAR(o.clipValuesOf(uint32_t(i))[size_t(p)], boundaryCoordinates(o.npcH[i])[p],
+                      1e-12 * (1 + glm::length(o.npcH[i])));
     }
   }
 }
