@@ -1,6 +1,7 @@
 #include "app/cli.h"
 
 #include "app/bench.h"
+#include "app/export/svg.h"
 #include "app/headless.h"
 #include "app/ui/headless_viewer.h"
 #include "app/ui/run_viewer.h"
@@ -49,6 +50,7 @@ struct RenderOptions {
   float uiScale = 1.f;
   double morphT = 0;
   bool glDebug = false;
+  bool styleGiven = false;
 };
 
 std::pair<int, int> parseSize(const std::string& s) {
@@ -69,6 +71,14 @@ int runRender(const RenderOptions& r) {
   request.morphT = r.morphT;
   if (!r.size.empty()) std::tie(request.width, request.height) = parseSize(r.size);
   const std::string out = r.out.empty() ? "vplab-" + r.view + ".png" : r.out;
+  if (std::filesystem::path(out).extension() == ".svg") {
+    // Vector lines for slides and lecture notes: made on the CPU, no GL context needed. Without
+    // --style, the hidden-line drawing (a filled style has no lines to export).
+    if (!r.styleGiven) request.style = Style::hiddenLine;
+    if (r.view == "ui") throw Error("--view ui has no SVG form: write a PNG");
+    writeSvg(svgOfRequest(scene, request), out);
+    return 0;
+  }
 #ifndef NDEBUG
   const bool debug = true;  // debug builds treat every GL error as a failure
 #else
@@ -194,7 +204,9 @@ int runCommandLine(int argc, char** argv) {
   renderCmd->add_option("--size", render.size,
                         "WIDTHxHEIGHT of each view; default: the scene's device (the camera view is then "
                         "pixel-aligned with DC)");
-  renderCmd->add_option("--out", render.out, "PNG file to write; default: vplab-VIEW.png");
+  renderCmd->add_option("--out", render.out,
+                        "PNG file to write, or an SVG file (vector lines of the wireframe styles wire, hidden-line, "
+                        "hidden-removed; hidden-line unless --style says); default: vplab-VIEW.png");
   renderCmd->add_option("--backend", render.backend, "Headless OpenGL: auto (EGL, then OSMesa), egl or osmesa")
       ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
   renderCmd->add_option("--strategy", render.strategy, "Clipping strategy of the CPU overlays: npc, wc or divide-first")
@@ -222,7 +234,10 @@ int runCommandLine(int argc, char** argv) {
   }
   try {
     if (dumpCmd->parsed()) return runDump(dump);
-    if (renderCmd->parsed()) return runRender(render);
+    if (renderCmd->parsed()) {
+      render.styleGiven = renderCmd->count("--style") > 0;
+      return runRender(render);
+    }
     if (benchCmd->parsed()) {
       for (size_t start = 0; start < benchOnly.size();) {
         const size_t comma = std::min(benchOnly.find(',', start), benchOnly.size());

@@ -17,16 +17,20 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
-#include <set>
+#include <optional>
 #include <span>
+#include <string>
+#include <unordered_set>
 #include <variant>
 #include <vector>
 
@@ -57,6 +61,23 @@ std::string num(double v, int decimals = 2) {
   return s;
 }
 
+/// num() appended without a temporary string (a large mesh writes millions of coordinates).
+void appendNum(std::string& out, double v) {
+  if (!std::isfinite(v)) v = 0;
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, 2);
+  char* end = r.ptr;
+  if (std::find(buf, end, '.') != end) {
+    while (end[-1] == '0') --end;
+    if (end[-1] == '.') --end;
+  }
+  if (end - buf == 2 && buf[0] == '-' && buf[1] == '0') {
+    out += '0';
+    return;
+  }
+  out.append(buf, size_t(end - buf));
+}
+
 /// #rrggbb, each channel converted to 8 bits as GL converts a float colour (cpu_raster.h).
 std::string hex(const glm::vec3& c) {
   const Rgba p = rgbaFromColor(Vec3(c));
@@ -69,11 +90,20 @@ std::string escaped(std::string_view text) {
   std::string out;
   for (char ch : text) {
     switch (ch) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += ch;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += ch;
     }
   }
   return out;
@@ -85,8 +115,8 @@ std::string escaped(std::string_view text) {
 // times the text scale with its glyph ranges, else Dear ImGui's built-in font. Built here on the CPU
 // only, to measure and place labels exactly as the PNG does.
 constexpr const char* kFontFile = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
-constexpr ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x206F, 0x2070, 0x209F,
-                                    0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+constexpr ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x206F, 0x2070,
+                                    0x209F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
 // Dear ImGui sizes a font by its line height, ascent − descent (stbtt_ScaleForPixelHeight); SVG by
 // its em. DejaVu Sans: 2048 units per em, hhea ascent 1901, descent −483.
 constexpr double kDejaVuEmPerLine = 2048.0 / (1901.0 + 483.0);
@@ -141,7 +171,8 @@ struct PlacedLabel {
   bool shadow;
 };
 
-std::vector<PlacedLabel> placeLabels(const std::vector<TextLabel>& labels, const Fonts& fonts, int width, int height) {
+std::vector<PlacedLabel> placeLabels(const std::vector<TextLabel>& labels, const Fonts& fonts, int width,
+                                     int height) {
   std::vector<PlacedLabel> out;
   std::vector<glm::dvec4> placed;  // x0, y0, x1, y1
   for (const TextLabel& l : labels) {
@@ -149,13 +180,23 @@ std::vector<PlacedLabel> placeLabels(const std::vector<TextLabel>& labels, const
     const glm::vec2 fsize(fonts.measure(l.text, l.size));
     glm::vec2 origin(l.pixel);
     switch (l.anchor) {
-      case Anchor::topLeft: break;
-      case Anchor::center: origin -= fsize * 0.5f; break;
-      case Anchor::left: origin.y -= fsize.y * 0.5f; break;
-      case Anchor::bottomLeft: origin.y -= fsize.y; break;
-      case Anchor::topCenter: origin.x -= fsize.x * 0.5f; break;
+      case Anchor::topLeft:
+        break;
+      case Anchor::center:
+        origin -= fsize * 0.5f;
+        break;
+      case Anchor::left:
+        origin.y -= fsize.y * 0.5f;
+        break;
+      case Anchor::bottomLeft:
+        origin.y -= fsize.y;
+        break;
+      case Anchor::topCenter:
+        origin.x -= fsize.x * 0.5f;
+        break;
     }
-    const Vec2 wanted(glm::clamp(glm::round(origin), glm::vec2(2.f), glm::max(glm::vec2(2.f), glm::vec2(width, height) - fsize - 2.f)));
+    const Vec2 wanted(glm::clamp(glm::round(origin), glm::vec2(2.f),
+                                 glm::max(glm::vec2(2.f), glm::vec2(width, height) - fsize - 2.f)));
     auto overlaps = [&](const Vec2& o) {
       for (const glm::dvec4& r : placed)
         if (o.x < r.z && o.x + fsize.x > r.x && o.y < r.w && o.y + fsize.y > r.y) return true;
@@ -182,7 +223,9 @@ struct Px {
   double x, y, z;
 };
 
-Px mix(const Px& a, const Px& b, double t) { return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z)}; }
+Px mix(const Px& a, const Px& b, double t) {
+  return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z)};
+}
 double distance2d(const Px& a, const Px& b) { return std::hypot(b.x - a.x, b.y - a.y); }
 
 class DepthField;
@@ -204,8 +247,8 @@ struct Canvas {
 // boundary value at p is dot(form_i, p); inside is ≥ 0.
 using Planes = std::array<Vec4, 6>;
 Planes grownCube(double m) {  // x + m·w ≥ 0, (1 + m)·w − x ≥ 0, … (m = 0: Blinn's BC0..BC5)
-  return {Vec4(1, 0, 0, m), Vec4(-1, 0, 0, 1 + m), Vec4(0, 1, 0, m), Vec4(0, -1, 0, 1 + m), Vec4(0, 0, 1, m),
-          Vec4(0, 0, -1, 1 + m)};
+  return {Vec4(1, 0, 0, m),      Vec4(-1, 0, 0, 1 + m), Vec4(0, 1, 0, m),
+          Vec4(0, -1, 0, 1 + m), Vec4(0, 0, 1, m),      Vec4(0, 0, -1, 1 + m)};
 }
 const Planes kCube = grownCube(0);
 constexpr int kFrontPlane = 5;  // BC5 = w − z: the front plane, GL's near plane
@@ -217,8 +260,10 @@ std::optional<EdgeRange> clipRange(const Vec4& a, const Vec4& b, const Planes& p
   for (const Vec4& f : planes) {
     const double da = glm::dot(f, a), db = glm::dot(f, b);
     if (da < 0 && db < 0) return std::nullopt;
-    if (da < 0) r.t0 = std::max(r.t0, da / (da - db));
-    else if (db < 0) r.t1 = std::min(r.t1, da / (da - db));
+    if (da < 0)
+      r.t0 = std::max(r.t0, da / (da - db));
+    else if (db < 0)
+      r.t1 = std::min(r.t1, da / (da - db));
   }
   if (!(r.t0 <= r.t1)) return std::nullopt;
   return r;
@@ -283,9 +328,7 @@ std::vector<Px> clipPolygonToView(const Canvas& c, std::span<const Vec4> polygon
 /// along a segment can be found to a fraction of a pixel.
 class DepthField {
  public:
-  DepthField(int width, int height)
-      : cols_(std::max(1, (width + kCell - 1) / kCell)), rows_(std::max(1, (height + kCell - 1) / kCell)),
-        cells_(size_t(cols_) * size_t(rows_)) {}
+  DepthField(int width, int height) : width_(width), height_(height) {}
 
   /// A convex polygon (or any polygon GL would fan the same way) as a fan from its first vertex.
   void addFan(std::span<const Px> polygon) {
@@ -296,8 +339,8 @@ class DepthField {
   /// fails when 1 − z_point > 1 − z_face + m + 2r, with m the face's largest depth slope per pixel
   /// (glPolygonOffset factor 1) and r the depth buffer's resolution (units 2; 2^−24).
   bool hides(const Px& p) const {
-    const int cx = std::clamp(int(std::floor(p.x / kCell)), 0, cols_ - 1);
-    const int cy = std::clamp(int(std::floor(p.y / kCell)), 0, rows_ - 1);
+    const int cx = std::clamp(int(std::floor(p.x / cell_)), 0, cols_ - 1);
+    const int cy = std::clamp(int(std::floor(p.y / cell_)), 0, rows_ - 1);
     for (uint32_t i : cells_[size_t(cy) * size_t(cols_) + size_t(cx)]) {
       const Triangle& t = triangles_[i];
       if (p.x < t.min.x || p.x > t.max.x || p.y < t.min.y || p.y > t.max.y) continue;
@@ -310,6 +353,28 @@ class DepthField {
       if (p.z < t.zx * p.x + t.zy * p.y + t.z0 - t.offset) return true;
     }
     return false;
+  }
+
+  /// Sorts the triangles into a grid of square cells (after the last addFan, before the first
+  /// query), the cells about twice the size of an average triangle's box: 1 px for a million-
+  /// polygon sphere, 16 px at most.
+  void finish() {
+    double area = 0;
+    for (const Triangle& t : triangles_) area += (t.max.x - t.min.x) * (t.max.y - t.min.y);
+    const double typical = triangles_.empty() ? 16.0 : 2.0 * std::sqrt(area / double(triangles_.size()));
+    cell_ = std::clamp(std::round(typical), 1.0, 16.0);
+    cols_ = std::max(1, int(std::ceil(width_ / cell_)));
+    rows_ = std::max(1, int(std::ceil(height_ / cell_)));
+    cells_.assign(size_t(cols_) * size_t(rows_), {});
+    for (uint32_t index = 0; index < triangles_.size(); ++index) {
+      const Triangle& t = triangles_[index];
+      const int x0 = std::clamp(int(std::floor(t.min.x / cell_)), 0, cols_ - 1);
+      const int x1 = std::clamp(int(std::floor(t.max.x / cell_)), 0, cols_ - 1);
+      const int y0 = std::clamp(int(std::floor(t.min.y / cell_)), 0, rows_ - 1);
+      const int y1 = std::clamp(int(std::floor(t.max.y / cell_)), 0, rows_ - 1);
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) cells_[size_t(y) * size_t(cols_) + size_t(x)].push_back(index);
+    }
   }
 
   /// The segment a → b cut into pieces [t0, t1] that are all hidden or all visible.
@@ -344,21 +409,21 @@ class DepthField {
       if ((out[i].t1 - out[i].t0) * len < kMinPiecePx) out[i].hidden = out[i > 0 ? i - 1 : i + 1].hidden;
     std::vector<Piece> merged;
     for (const Piece& p : out) {
-      if (!merged.empty() && merged.back().hidden == p.hidden) merged.back().t1 = p.t1;
-      else merged.push_back(p);
+      if (!merged.empty() && merged.back().hidden == p.hidden)
+        merged.back().t1 = p.t1;
+      else
+        merged.push_back(p);
     }
     return merged;
   }
 
  private:
-  static constexpr int kCell = 8;  // px
-
   struct Triangle {
     Vec2 v[3];
     Vec2 min, max;
-    double sign;           // of the area: the inside of every edge function
-    double zx, zy, z0;     // z = zx·x + zy·y + z0
-    double offset;         // the polygon offset in z
+    double sign;        // of the area: the inside of every edge function
+    double zx, zy, z0;  // z = zx·x + zy·y + z0
+    double offset;      // the polygon offset in z
   };
 
   void addTriangle(const Px& a, const Px& b, const Px& c) {
@@ -375,18 +440,13 @@ class DepthField {
     t.zy = ((c.z - a.z) * (b.x - a.x) - (b.z - a.z) * (c.x - a.x)) / area2;
     t.z0 = a.z - t.zx * a.x - t.zy * a.y;
     t.offset = std::max(std::abs(t.zx), std::abs(t.zy)) + 2.0 * std::ldexp(1.0, -24);
-    const uint32_t index = uint32_t(triangles_.size());
     triangles_.push_back(t);
-    const int x0 = std::clamp(int(std::floor(t.min.x / kCell)), 0, cols_ - 1);
-    const int x1 = std::clamp(int(std::floor(t.max.x / kCell)), 0, cols_ - 1);
-    const int y0 = std::clamp(int(std::floor(t.min.y / kCell)), 0, rows_ - 1);
-    const int y1 = std::clamp(int(std::floor(t.max.y / kCell)), 0, rows_ - 1);
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) cells_[size_t(y) * size_t(cols_) + size_t(x)].push_back(index);
   }
 
-  int cols_, rows_;
-  std::vector<std::vector<uint32_t>> cells_;
+  int width_, height_;
+  double cell_ = 16;
+  int cols_ = 1, rows_ = 1;
+  std::vector<std::vector<uint32_t>> cells_ = std::vector<std::vector<uint32_t>>(1);  // empty until finish()
   std::vector<Triangle> triangles_;
 };
 
@@ -446,19 +506,23 @@ using Element = std::variant<LineElement, CircleElement, PolygonElement, TextEle
 /// One view's SVG elements in drawing order (later ones on top, as the GL passes).
 class Drawing {
  public:
-  Drawing(int width, int height, const glm::vec3& background, const Fonts& fonts)
-      : width_(width), height_(height), background_(background), fonts_(&fonts) {}
+  Drawing(int width, int height, const glm::vec3& background, const Fonts& fonts, double scale)
+      : width_(width), height_(height), background_(background), fonts_(&fonts), scale_(scale) {}
 
   void line(const Stroke& s, const Px& a, const Px& b, double along) {
     if (!(distance2d(a, b) > 1e-6)) return;
     size_t id = 0;
     while (id < strokes_.size() && !(strokes_[id] == s)) ++id;
     if (id == strokes_.size()) strokes_.push_back(s);
-    // The same line twice (an edge of two polygons) once: keyed by its style and its end points as
-    // written, in either order.
-    std::string p = num(a.x) + ',' + num(a.y), q = num(b.x) + ',' + num(b.y);
-    if (q < p) std::swap(p, q);
-    if (!lineKeys_.insert(std::to_string(id) + ' ' + p + ' ' + q).second) return;
+    // The same line twice (an edge of two polygons) once: keyed by its style and its end points in
+    // hundredths of a pixel (as written), in either order.
+    std::array<int64_t, 5> key{int64_t(id), std::llround(a.x * 100), std::llround(a.y * 100),
+                               std::llround(b.x * 100), std::llround(b.y * 100)};
+    if (std::pair(key[3], key[4]) < std::pair(key[1], key[2])) {
+      std::swap(key[1], key[3]);
+      std::swap(key[2], key[4]);
+    }
+    if (!lineKeys_.insert(key).second) return;
     elements_.push_back(LineElement{id, a, b, along});
   }
 
@@ -483,17 +547,20 @@ class Drawing {
   void segment(const Canvas& c, const Vec3& a, const Vec3& b, const Stroke& s, DepthMode mode) {
     segment(c, c.hom(a), c.hom(b), s, mode);
   }
-  void polyline(const Canvas& c, const std::vector<Vec3>& points, bool closed, const Stroke& s, DepthMode mode) {
+  void polyline(const Canvas& c, const std::vector<Vec3>& points, bool closed, const Stroke& s,
+                DepthMode mode) {
     if (points.size() < 2) return;
     for (size_t i = 0; i + 1 < points.size(); ++i) segment(c, points[i], points[i + 1], s, mode);
     if (closed && points.size() > 2) segment(c, points.back(), points.front(), s, mode);
   }
 
   /// A marker disc (point.geom, point.frag): dropped behind the view camera's front or back plane.
-  void point(const Canvas& c, const Vec3& p, const glm::vec4& color, double sizePx, DepthMode mode, std::string cls) {
+  void point(const Canvas& c, const Vec3& p, const glm::vec4& color, double sizePx, DepthMode mode,
+             std::string cls) {
     const Vec4 h = c.hom(p);
     if (!(h.w > 0) || h.z > h.w || h.z < 0) return;
     const Px at = c.pixel(h);
+    sizePx *= scale_;
     const double r = 0.5 * sizePx + 1;
     if (at.x < -r || at.y < -r || at.x > c.width + r || at.y > c.height + r) return;
     double alpha = color.a;
@@ -511,11 +578,13 @@ class Drawing {
     std::vector<Vec4> hom;
     for (const Vec3& p : polygon) hom.push_back(c.hom(p));
     std::vector<Px> points = clipPolygonToView(c, hom);
-    if (points.size() >= 3) elements_.push_back(PolygonElement{std::move(cls), std::move(points), glm::vec3(color), color.a});
+    if (points.size() >= 3)
+      elements_.push_back(PolygonElement{std::move(cls), std::move(points), glm::vec3(color), color.a});
   }
 
   void labels(const std::vector<TextLabel>& labels) {
-    for (PlacedLabel& l : placeLabels(labels, *fonts_, width_, height_)) elements_.push_back(TextElement{std::move(l)});
+    for (PlacedLabel& l : placeLabels(labels, *fonts_, width_, height_))
+      elements_.push_back(TextElement{std::move(l)});
   }
 
   /// The elements, background first.
@@ -531,8 +600,16 @@ class Drawing {
   int width_, height_;
   glm::vec3 background_;
   const Fonts* fonts_;
+  double scale_;  // lecture mode: line widths and marker sizes (OverlayRenderer::setScale)
   std::vector<Stroke> strokes_;
-  std::set<std::string> lineKeys_;
+  struct KeyHash {
+    size_t operator()(const std::array<int64_t, 5>& k) const {
+      uint64_t h = 1469598103934665603ull;
+      for (int64_t v : k) h = (h ^ uint64_t(v)) * 1099511628211ull;
+      return size_t(h);
+    }
+  };
+  std::unordered_set<std::array<int64_t, 5>, KeyHash> lineKeys_;
   std::vector<Element> elements_;
 };
 
@@ -557,16 +634,26 @@ std::string Drawing::body() const {
       const Stroke& s = strokes_[l->stroke];
       if (openStroke != l->stroke) {
         close();
-        out += "<g class=\"" + s.cls + "\" stroke=\"" + hex(s.rgb) + '"' + opacity("stroke-opacity", s.alpha) +
-               " stroke-width=\"" + num(s.widthPx + kInkPx) + '"';
+        out += "<g class=\"" + s.cls + "\" stroke=\"" + hex(s.rgb) + '"' +
+               opacity("stroke-opacity", s.alpha) + " stroke-width=\"" + num(s.widthPx * scale_ + kInkPx) +
+               '"';
         // Solid lines end half their width beyond their end points (line.geom); dashes do not.
-        if (s.dashPx > 0) out += " stroke-linecap=\"butt\" stroke-dasharray=\"" + num(s.dashPx) + ' ' + num(s.dashPx) + '"';
-        else out += " stroke-linecap=\"square\"";
+        if (s.dashPx > 0)
+          out += " stroke-linecap=\"butt\" stroke-dasharray=\"" + num(s.dashPx) + ' ' + num(s.dashPx) + '"';
+        else
+          out += " stroke-linecap=\"square\"";
         out += ">\n";
         openStroke = l->stroke;
       }
-      out += "<line x1=\"" + num(l->a.x) + "\" y1=\"" + num(l->a.y) + "\" x2=\"" + num(l->b.x) + "\" y2=\"" +
-             num(l->b.y) + '"';
+      out += "<line x1=\"";
+      appendNum(out, l->a.x);
+      out += "\" y1=\"";
+      appendNum(out, l->a.y);
+      out += "\" x2=\"";
+      appendNum(out, l->b.x);
+      out += "\" y2=\"";
+      appendNum(out, l->b.y);
+      out += '"';
       if (s.dashPx > 0) {
         const double phase = std::fmod(l->along, 2 * s.dashPx);
         if (phase > 0.005) out += " stroke-dashoffset=\"" + num(phase) + '"';
@@ -576,23 +663,23 @@ std::string Drawing::body() const {
       const PlacedLabel& p = t->label;
       if (openText != p.size) {
         close();
-        out += std::string("<g class=\"") + (p.size == TextSize::title ? "title" : "label") + "\" font-family=\"" +
-               fonts_->family() + "\" font-size=\"" + num(fonts_->emPx(p.size)) +
+        out += std::string("<g class=\"") + (p.size == TextSize::title ? "title" : "label") +
+               "\" font-family=\"" + fonts_->family() + "\" font-size=\"" + num(fonts_->emPx(p.size)) +
                // the PNG's text shadow: the glyphs drawn dark one pixel off in four directions
                "\" stroke=\"#000000\" stroke-width=\"2\" stroke-linejoin=\"round\" paint-order=\"stroke\">\n";
         openText = p.size;
       }
-      out += "<text x=\"" + num(p.topLeft.x) + "\" y=\"" + num(p.topLeft.y + fonts_->baseline(p.size)) + "\" fill=\"" +
-             hex(glm::vec3(p.color)) + '"' + opacity("fill-opacity", p.color.a) +
-             (p.shadow ? opacity("stroke-opacity", 0.75 * p.color.a) : std::string(" stroke=\"none\"")) + '>' +
-             escaped(p.text) + "</text>\n";
+      out += "<text x=\"" + num(p.topLeft.x) + "\" y=\"" + num(p.topLeft.y + fonts_->baseline(p.size)) +
+             "\" fill=\"" + hex(glm::vec3(p.color)) + '"' + opacity("fill-opacity", p.color.a) +
+             (p.shadow ? opacity("stroke-opacity", 0.75 * p.color.a) : std::string(" stroke=\"none\"")) +
+             '>' + escaped(p.text) + "</text>\n";
     } else if (const auto* c = std::get_if<CircleElement>(&e)) {
       close();
       // point.frag: a disc sizePx across, its outer 1.5 px darkened to 35 %.
       const double radius = 0.5 * c->sizePx;
-      out += "<circle class=\"" + c->cls + "\" cx=\"" + num(c->centre.x) + "\" cy=\"" + num(c->centre.y) + "\" r=\"" +
-             num(radius - 0.75) + "\" fill=\"" + hex(c->rgb) + "\" stroke=\"" + hex(c->rgb * 0.35f) +
-             "\" stroke-width=\"1.5\"" + opacity("opacity", c->alpha) + "/>\n";
+      out += "<circle class=\"" + c->cls + "\" cx=\"" + num(c->centre.x) + "\" cy=\"" + num(c->centre.y) +
+             "\" r=\"" + num(radius - 0.75) + "\" fill=\"" + hex(c->rgb) + "\" stroke=\"" +
+             hex(c->rgb * 0.35f) + "\" stroke-width=\"1.5\"" + opacity("opacity", c->alpha) + "/>\n";
     } else if (const auto* p = std::get_if<PolygonElement>(&e)) {
       close();
       out += "<polygon class=\"" + p->cls + "\" points=\"";
@@ -604,6 +691,9 @@ std::string Drawing::body() const {
   close();
   return out;
 }
+
+/// A mesh vertex in WC (stage 1, as the pipeline computes it).
+Vec3 wcOf(const ObjectRun& o, uint32_t v) { return transformAffine(o.wcFromMc, o.mesh->positions[v]); }
 
 bool hiddenStyle(Style s) { return s == Style::hiddenLine || s == Style::hiddenRemoved; }
 
@@ -640,7 +730,7 @@ void vanishingPointOverlay(Drawing& d, const Canvas& dc, const PipelineRun& run,
     const Vec3 target(vp.dc, 0.5);
     const Stroke s = stroke("vanishing-line", glm::vec4(glm::vec3(colors[axis]), 0.7f), 1.2, 4);
     for (const Edge& e : uniqueEdges(*o->mesh)) {
-      const Vec3 dir = o->wc[e.b] - o->wc[e.a];
+      const Vec3 dir = wcOf(*o, e.b) - wcOf(*o, e.a);
       if (glm::length(glm::cross(glm::normalize(dir), vp.directionWc)) > 1e-6) continue;
       for (uint32_t v : {e.a, e.b}) {
         const Vec4 h = o->npcH[v];
@@ -650,13 +740,15 @@ void vanishingPointOverlay(Drawing& d, const Canvas& dc, const PipelineRun& run,
       }
     }
     const glm::vec4 color = colors[axis];
-    points.push_back([&d, &dc, target, color] { d.point(dc, target, color, 12, DepthMode::ignore, "vanishing-point"); });
+    points.push_back(
+        [&d, &dc, target, color] { d.point(dc, target, color, 12, DepthMode::ignore, "vanishing-point"); });
     const Vec2 at = vp.dc * toPixels;
     const bool inside = at.x >= 0 && at.y >= 0 && at.x <= dc.width && at.y <= dc.height;
     char text[96];
-    std::snprintf(text, sizeof text, "VP %s (%.0f, %.0f)%s", names[axis], vp.dc.x, vp.dc.y, inside ? "" : " outside");
-    labels.push_back({glm::clamp(at, Vec2(4), Vec2(dc.width - 4, dc.height - 4)) + Vec2(8, -8), text, colors[axis],
-                      TextSize::label, Anchor::left});
+    std::snprintf(text, sizeof text, "VP %s (%.0f, %.0f)%s", names[axis], vp.dc.x, vp.dc.y,
+                  inside ? "" : " outside");
+    labels.push_back({glm::clamp(at, Vec2(4), Vec2(dc.width - 4, dc.height - 4)) + Vec2(8, -8), text,
+                      colors[axis], TextSize::label, Anchor::left});
   }
 }
 
@@ -676,6 +768,7 @@ void cameraView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int 
         for (uint32_t ref : o.clippedFace(f)) face.push_back(Vec4(o.clippedNpc(ref), 1.0));
         addFaceToDepth(depth, c, face);
       }
+    depth.finish();
     c.depth = &depth;
   }
   // drawEdges: wire every edge (GL_ALWAYS); hidden styles the visible parts (GL_LEQUAL), hidden-line
@@ -688,8 +781,10 @@ void cameraView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int 
   }
   if (style == Style::hiddenLine)
     for (const ObjectRun& o : run.objects) {
-      const Stroke dashed = stroke("edge hidden", glm::vec4(glm::vec3(o.color), 0.8f), theme::kEdgeWidth, theme::kDashPx);
-      for (const auto& [e, r] : clippedEdges(o)) d.segment(c, o.npcH[e.a], o.npcH[e.b], dashed, DepthMode::hiddenOnly, r);
+      const Stroke dashed =
+          stroke("edge hidden", glm::vec4(glm::vec3(o.color), 0.8f), theme::kEdgeWidth, theme::kDashPx);
+      for (const auto& [e, r] : clippedEdges(o))
+        d.segment(c, o.npcH[e.a], o.npcH[e.b], dashed, DepthMode::hiddenOnly, r);
     }
 
   // The overlay batch, in the device's DC (dcCamera), drawn without depth: lines, then points.
@@ -697,7 +792,8 @@ void cameraView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int 
   std::vector<TextLabel> labels;
   std::vector<std::function<void()>> points;
   if (s.highlights.probeDc)
-    points.push_back([&] { d.point(dc, *s.highlights.probeDc, theme::kProbe, 14, DepthMode::ignore, "probe"); });
+    points.push_back(
+        [&] { d.point(dc, *s.highlights.probeDc, theme::kProbe, 14, DepthMode::ignore, "probe"); });
   if (s.overlays.cpuPolygons) {
     const Stroke cpu = stroke("cpu-polygon", theme::kCpuPolygon, 1.5);
     for (const ObjectRun& o : run.objects)
@@ -707,7 +803,8 @@ void cameraView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int 
         d.polyline(dc, poly, true, cpu, DepthMode::ignore);
       }
   }
-  if (s.overlays.vanishingPoints) vanishingPointOverlay(d, dc, run, s.highlights.vanishingObject, labels, points);
+  if (s.overlays.vanishingPoints)
+    vanishingPointOverlay(d, dc, run, s.highlights.vanishingObject, labels, points);
   for (const auto& p : points) p();
   d.labels(labels);
 }
@@ -728,8 +825,8 @@ struct WorldFrame {
   }
 };
 
-void addArrow(Drawing& d, const Canvas& c, const Vec3& from, const Vec3& to, const Vec3& eye, const glm::vec4& color,
-              const std::string& cls, double dash = 0) {
+void addArrow(Drawing& d, const Canvas& c, const Vec3& from, const Vec3& to, const Vec3& eye,
+              const glm::vec4& color, const std::string& cls, double dash = 0) {
   d.segment(c, from, to, stroke(cls, color, theme::kLineWidth + 0.5, dash), DepthMode::xray);
   const Vec3 dir = to - from;
   const double len = glm::length(dir);
@@ -746,15 +843,17 @@ void addArrow(Drawing& d, const Canvas& c, const Vec3& from, const Vec3& to, con
 /// The clipping step-through's marks (world and NPC views): the plane's face of the volume, the
 /// polygon after the step, its vertices. `corner` gives a corner of the volume, `place` takes an
 /// NPC point into the canvas's space.
-void stepOverlay(Drawing& d, const Canvas& c, const Highlights::Step& step, const std::function<Vec3(int)>& corner,
-                 const std::function<Vec3(const Vec3&)>& place, std::vector<std::function<void()>>& points) {
+void stepOverlay(Drawing& d, const Canvas& c, const Highlights::Step& step,
+                 const std::function<Vec3(int)>& corner, const std::function<Vec3(const Vec3&)>& place,
+                 std::vector<std::function<void()>>& points) {
   if (step.plane >= 0) {
     const int axisBit = 1 << (step.plane / 2), side = step.plane % 2 ? axisBit : 0;
     std::vector<int> ring;
     for (int i = 0; i < 8; ++i)
       if ((i & axisBit) == side) ring.push_back(i);
     std::swap(ring[2], ring[3]);
-    d.fill(c, {corner(ring[0]), corner(ring[1]), corner(ring[2]), corner(ring[3])}, theme::kStepPlane, "step-plane");
+    d.fill(c, {corner(ring[0]), corner(ring[1]), corner(ring[2]), corner(ring[3])}, theme::kStepPlane,
+           "step-plane");
   }
   std::vector<Vec3> poly;
   for (const Vec3& p : step.polygonNpc) poly.push_back(place(p));
@@ -763,12 +862,13 @@ void stepOverlay(Drawing& d, const Canvas& c, const Highlights::Step& step, cons
     const bool created = i < step.created.size() && step.created[i];
     const Vec3 p = poly[i];
     points.push_back([&d, &c, p, created] {
-      d.point(c, p, created ? theme::kNewEdge : theme::kProbe, created ? 13 : 9, DepthMode::xray, "step-vertex");
+      d.point(c, p, created ? theme::kNewEdge : theme::kProbe, created ? 13 : 9, DepthMode::xray,
+              "step-vertex");
     });
   }
 }
 
-void worldView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int w, int h) {
+void worldView(Drawing& d, const Scene& scene, const PipelineRun& run, const FrameSettings& s, int w, int h) {
   const ViewCamera view = viewCameraOf(observerCamera(s.world.orbit, double(w) / h));
   Canvas c{view.npcFromWc(), w, h};
   const WorldFrame f{glm::inverse(run.npcFromWc), glm::inverse(run.vrcFromWc)};
@@ -784,10 +884,11 @@ void worldView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int w
       if (!o.mesh) continue;
       for (size_t fi = 0; fi < o.mesh->faceCount(); ++fi) {
         face.clear();
-        for (uint32_t v : o.mesh->face(fi)) face.push_back(c.hom(o.wc[v]));
+        for (uint32_t v : o.mesh->face(fi)) face.push_back(c.hom(wcOf(o, v)));
         addFaceToDepth(depth, c, face);
       }
     }
+    depth.finish();
     c.depth = &depth;
   }
   // The wireframe from the CPU's edge clipping: the whole edge faded, the part inside the scene
@@ -795,16 +896,18 @@ void worldView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int w
   const DepthMode mode = hidden ? DepthMode::test : DepthMode::ignore;
   if (ov.fadeOutside)
     for (const ObjectRun& o : run.objects) {
-      const Stroke faded = stroke("edge faded", glm::vec4(glm::vec3(o.color), theme::kFadedAlpha), theme::kEdgeWidth);
-      for (const auto& [e, r] : clippedEdges(o)) d.segment(c, o.wc[e.a], o.wc[e.b], faded, mode);
+      const Stroke faded =
+          stroke("edge faded", glm::vec4(glm::vec3(o.color), theme::kFadedAlpha), theme::kEdgeWidth);
+      for (const auto& [e, r] : clippedEdges(o)) d.segment(c, wcOf(o, e.a), wcOf(o, e.b), faded, mode);
     }
   for (int pass = 0; pass < (style == Style::hiddenLine ? 2 : 1); ++pass)
     for (const ObjectRun& o : run.objects) {
       const Stroke st = pass == 0 ? stroke("edge", glm::vec4(glm::vec3(o.color), 1.f), theme::kEdgeWidth)
-                                  : stroke("edge hidden", glm::vec4(glm::vec3(o.color), 0.8f), theme::kEdgeWidth, theme::kDashPx);
+                                  : stroke("edge hidden", glm::vec4(glm::vec3(o.color), 0.8f),
+                                           theme::kEdgeWidth, theme::kDashPx);
       for (const auto& [e, r] : clippedEdges(o)) {
         if (!r.visible) continue;
-        const Vec3 a = o.wc[e.a], b = o.wc[e.b];
+        const Vec3 a = wcOf(o, e.a), b = wcOf(o, e.b);
         // Boundary coordinates are linear along the WC segment, so t carries over from NPC.
         d.segment(c, a + r.t0 * (b - a), a + r.t1 * (b - a), st, pass == 0 ? mode : DepthMode::hiddenOnly);
       }
@@ -826,8 +929,8 @@ void worldView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int w
         const auto face = o.clippedFace(fi);
         for (size_t i = 0; i < face.size(); ++i)
           if (o.isNewEdge(fi, i))
-            d.segment(c, f.wcOfNpc(o.clippedNpc(face[i])), f.wcOfNpc(o.clippedNpc(face[(i + 1) % face.size()])), st,
-                      DepthMode::xray);
+            d.segment(c, f.wcOfNpc(o.clippedNpc(face[i])),
+                      f.wcOfNpc(o.clippedNpc(face[(i + 1) % face.size()])), st, DepthMode::xray);
       }
   }
   if (ov.frustum) {
@@ -836,7 +939,8 @@ void worldView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int w
     d.fill(c, {k[4], k[5], k[7], k[6]}, theme::kFrontPlane, "front-plane");
     d.fill(c, {k[0], k[1], k[3], k[2]}, theme::kBackPlane, "back-plane");
     const Stroke edge = stroke("frustum", theme::kFrustum, theme::kLineWidth);
-    const Stroke ray = stroke("frustum-ray", glm::vec4(glm::vec3(theme::kFrustum), 0.6f), 1.5, theme::kDashPx);
+    const Stroke ray =
+        stroke("frustum-ray", glm::vec4(glm::vec3(theme::kFrustum), 0.6f), 1.5, theme::kDashPx);
     for (int i = 0; i < 4; ++i) {
       d.segment(c, k[size_t(front[i])], k[size_t(front[(i + 1) % 4])], edge, DepthMode::xray);
       d.segment(c, k[size_t(back[i])], k[size_t(back[(i + 1) % 4])], edge, DepthMode::xray);
@@ -846,6 +950,22 @@ void worldView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int w
     }
     label(k[7], "front F", theme::kFrustum, {6, -10});
     label(k[3], "back B", theme::kFrustum, {6, -10});
+  }
+  // User clip planes (seed 003): a translucent square on each, around its point, with its normal.
+  const double planeSize = 0.6 * std::max(run.camera.window.width(), run.camera.window.height());
+  for (const UserClipPlane& p : scene.clipPlanes) {
+    if (!p.enabled) continue;
+    const Vec3 n = glm::normalize(p.normal);
+    const Vec3 a = glm::normalize(glm::cross(n, std::abs(n.y) < 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0)));
+    const Vec3 bb = glm::cross(n, a);
+    const std::vector<Vec3> q = {p.point + (a + bb) * planeSize, p.point + (a - bb) * planeSize,
+                                 p.point - (a + bb) * planeSize, p.point + (bb - a) * planeSize};
+    d.fill(c, q, theme::kClipPlane, "clip-plane-fill");
+    d.polyline(c, q, true, stroke("clip-plane", glm::vec4(glm::vec3(theme::kClipPlane), 0.8f), 1.5),
+               DepthMode::xray);
+    addArrow(d, c, p.point, p.point + n * (0.3 * planeSize), view.camera.prp,
+             glm::vec4(glm::vec3(theme::kClipPlane), 1.f), "clip-plane-normal");
+    label(p.point + n * (0.3 * planeSize), "clip plane", glm::vec4(glm::vec3(theme::kClipPlane), 1.f));
   }
   if (ov.viewPlane) {
     const ViewWindow& win = run.camera.window;
@@ -864,11 +984,15 @@ void worldView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int w
     addArrow(d, c, cam.vrp, cam.vrp + len * run.frame.u, eye, theme::kU, "axis u");
     addArrow(d, c, cam.vrp, cam.vrp + len * run.frame.v, eye, theme::kV, "axis v");
     addArrow(d, c, cam.vrp, cam.vrp + len * run.frame.n, eye, theme::kN, "axis n");
-    addArrow(d, c, cam.vrp, cam.vrp + len * glm::normalize(cam.vup), eye, theme::kVup, "axis vup", theme::kDashPx);
-    points.push_back([&d, &c, &cam] { d.point(c, cam.vrp, theme::kVrp, theme::kPointSize, DepthMode::xray, "vrp"); });
-    points.push_back([&d, &c, &cam] { d.point(c, cam.prp, theme::kPrp, theme::kPointSize, DepthMode::xray, "prp"); });
+    addArrow(d, c, cam.vrp, cam.vrp + len * glm::normalize(cam.vup), eye, theme::kVup, "axis vup",
+             theme::kDashPx);
+    points.push_back(
+        [&d, &c, &cam] { d.point(c, cam.vrp, theme::kVrp, theme::kPointSize, DepthMode::xray, "vrp"); });
+    points.push_back(
+        [&d, &c, &cam] { d.point(c, cam.prp, theme::kPrp, theme::kPointSize, DepthMode::xray, "prp"); });
     if (cam.projection == Projection::perspective)
-      d.segment(c, cam.vrp, cam.prp, stroke("view-axis", glm::vec4(glm::vec3(theme::kN), 0.5f), 1.5, theme::kDashPx),
+      d.segment(c, cam.vrp, cam.prp,
+                stroke("view-axis", glm::vec4(glm::vec3(theme::kN), 0.5f), 1.5, theme::kDashPx),
                 DepthMode::xray);
     label(cam.vrp + len * run.frame.u, "U", theme::kU);
     label(cam.vrp + len * run.frame.v, "V", theme::kV);
@@ -886,10 +1010,13 @@ void worldView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int w
     });
     if (m.hot) label(m.wc, m.name, theme::kHandleHot, {10, -12});
   }
-  if (hl.probeWc) points.push_back([&] { d.point(c, *hl.probeWc, theme::kProbe, 14, DepthMode::xray, "probe"); });
+  if (hl.probeWc)
+    points.push_back([&] { d.point(c, *hl.probeWc, theme::kProbe, 14, DepthMode::xray, "probe"); });
   if (hl.step) {
     const auto k = f.volumeCorners();
-    stepOverlay(d, c, *hl.step, [&](int i) { return k[size_t(i)]; }, [&](const Vec3& p) { return f.wcOfNpc(p); }, points);
+    stepOverlay(
+        d, c, *hl.step, [&](int i) { return k[size_t(i)]; }, [&](const Vec3& p) { return f.wcOfNpc(p); },
+        points);
   }
   for (const auto& p : points) p();
   d.labels(labels);
@@ -925,6 +1052,7 @@ void npcView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int w, 
         for (uint32_t ref : o.clippedFace(f)) face.push_back(c.hom(o.clippedNpc(ref)));
         addFaceToDepth(depth, c, face);
       }
+    depth.finish();
     c.depth = &depth;
   }
   const DepthMode mode = c.depth ? DepthMode::test : DepthMode::ignore;
@@ -933,7 +1061,8 @@ void npcView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int w, 
   for (int pass = 0; pass < (style == Style::hiddenLine ? 2 : 1); ++pass)
     for (const ObjectRun& o : run.objects) {
       const Stroke st = pass == 0 ? stroke("edge", glm::vec4(glm::vec3(o.color), 1.f), theme::kEdgeWidth)
-                                  : stroke("edge hidden", glm::vec4(glm::vec3(o.color), 0.8f), theme::kEdgeWidth, theme::kDashPx);
+                                  : stroke("edge hidden", glm::vec4(glm::vec3(o.color), 0.8f),
+                                           theme::kEdgeWidth, theme::kDashPx);
       for (size_t f = 0; f < o.faceCount(); ++f) {
         const auto face = o.clippedFace(f);
         for (size_t i = 0; i < face.size(); ++i) {
@@ -946,7 +1075,8 @@ void npcView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int w, 
   if (ov.fadeOutside) {
     for (const ObjectRun& o : run.objects) {
       if (!o.mesh) continue;
-      const Stroke faded = stroke("edge faded", glm::vec4(glm::vec3(o.color), theme::kFadedAlpha), theme::kEdgeWidth);
+      const Stroke faded =
+          stroke("edge faded", glm::vec4(glm::vec3(o.color), theme::kFadedAlpha), theme::kEdgeWidth);
       for (size_t f = 0; f < o.faceCount(); ++f)
         if (o.fate[f] != Fate::accepted) d.polyline(c, fadedPolygon(o, f), true, faded, mode);
     }
@@ -991,34 +1121,42 @@ void npcView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int w, 
         const auto face = o.clippedFace(f);
         for (size_t i = 0; i < face.size(); ++i)
           if (o.isNewEdge(f, i))
-            d.segment(c, o.clippedNpc(face[i]), o.clippedNpc(face[(i + 1) % face.size()]), st, DepthMode::xray);
+            d.segment(c, o.clippedNpc(face[i]), o.clippedNpc(face[(i + 1) % face.size()]), st,
+                      DepthMode::xray);
       }
   }
   if (s.highlights.probeNpc)
-    points.push_back([&] { d.point(c, *s.highlights.probeNpc, theme::kProbe, 14, DepthMode::xray, "probe"); });
+    points.push_back(
+        [&] { d.point(c, *s.highlights.probeNpc, theme::kProbe, 14, DepthMode::xray, "probe"); });
   if (s.highlights.step)
-    stepOverlay(d, c, *s.highlights.step, [](int i) { return Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1); },
-                [](const Vec3& p) { return p; }, points);
+    stepOverlay(
+        d, c, *s.highlights.step, [](int i) { return Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1); },
+        [](const Vec3& p) { return p; }, points);
   for (const auto& p : points) p();
   d.labels(labels);
 }
 
 // ---------------------------------------------------------------- 9 documents and files
 
-std::string panel(ViewKind kind, const PipelineRun& run, const FrameSettings& s, const Scene& scene, int w, int h,
-                  const Fonts& fonts) {
+std::string panel(ViewKind kind, const PipelineRun& run, const FrameSettings& s, const Scene& scene, int w,
+                  int h, const Fonts& fonts, double scale) {
   const bool camera = kind == ViewKind::camera;
-  Drawing d(w, h, camera ? glm::vec3(scene.background) : theme::kViewBackground, fonts);
-  if (camera) cameraView(d, run, s, w, h);
-  else if (kind == ViewKind::world) worldView(d, run, s, w, h);
-  else npcView(d, run, s, w, h);
+  Drawing d(w, h, camera ? glm::vec3(scene.background) : theme::kViewBackground, fonts, scale);
+  if (camera)
+    cameraView(d, run, s, w, h);
+  else if (kind == ViewKind::world)
+    worldView(d, scene, run, s, w, h);
+  else
+    npcView(d, run, s, w, h);
   return d.body();
 }
 
 std::string header(int width, int height, const std::string& title) {
   const std::string w = std::to_string(width), h = std::to_string(height);
-  return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + w +
-         "\" height=\"" + h + "\" viewBox=\"0 0 " + w + ' ' + h + "\">\n<title>" + escaped(title) + "</title>\n";
+  return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
+         "version=\"1.1\" width=\"" +
+         w + "\" height=\"" + h + "\" viewBox=\"0 0 " + w + ' ' + h + "\">\n<title>" + escaped(title) +
+         "</title>\n";
 }
 
 }  // namespace
@@ -1026,8 +1164,8 @@ std::string header(int width, int height, const std::string& title) {
 std::optional<std::string> svgExportError(ViewKind view, const FrameSettings& settings) {
   auto check = [](ViewKind k, Style style) -> std::optional<std::string> {
     if (!isFilled(style)) return std::nullopt;
-    return "SVG export is for the wireframe styles: wire, hidden-line, hidden-removed (the " + std::string(toString(k)) +
-           " view's style is " + std::string(toString(style)) + ")";
+    return "SVG export is for the wireframe styles: wire, hidden-line, hidden-removed (the " +
+           std::string(toString(k)) + " view's style is " + std::string(toString(style)) + ")";
   };
   if (view == ViewKind::camera) return check(view, settings.camera.style);
   if (view == ViewKind::world) return check(view, settings.world.style);
@@ -1037,18 +1175,22 @@ std::optional<std::string> svgExportError(ViewKind view, const FrameSettings& se
     if (auto e = check(ViewKind::world, settings.world.style)) return e;
     return check(ViewKind::npc, settings.npc.style);
   }
-  return "SVG export covers the camera, world, npc and all views, not the " + std::string(toString(view)) + " view";
+  return "SVG export covers the camera, world, npc and all views, not the " + std::string(toString(view)) +
+         " view";
 }
 
-std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run, const FrameSettings& settings,
-                      int width, int height, float textScale) {
+std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run,
+                      const FrameSettings& settings, int width, int height, float scale) {
   if (auto e = svgExportError(view, settings)) throw Error(*e);
   if (width < 1 || height < 1)
     throw Error("SVG export: the size " + std::to_string(width) + " x " + std::to_string(height) +
                 " is not at least 1 x 1 pixels");
-  const Fonts& fonts = fontsFor(textScale);
-  const std::string title = "vplab " + std::string(toString(view)) + " view" + (scene.title.empty() ? "" : ": " + scene.title);
-  if (view != ViewKind::all) return header(width, height, title) + panel(view, run, settings, scene, width, height, fonts) + "</svg>\n";
+  const Fonts& fonts = fontsFor(scale);
+  const std::string title =
+      "vplab " + std::string(toString(view)) + " view" + (scene.title.empty() ? "" : ": " + scene.title);
+  if (view != ViewKind::all)
+    return header(width, height, title) + panel(view, run, settings, scene, width, height, fonts, scale) +
+           "</svg>\n";
 
   // ViewRenderer::compose: a title strip, then the three panels side by side.
   const int titleHeight = int(fonts.measure("Ag", TextSize::title).y) + 14;
@@ -1056,15 +1198,19 @@ std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run,
   std::string out = header(total, titleHeight + height, title);
   out += "<rect class=\"background\" width=\"" + std::to_string(total) + "\" height=\"" +
          std::to_string(titleHeight + height) + "\" fill=\"" + hex(glm::vec3(20, 21, 26) / 255.f) + "\"/>\n";
-  Drawing strip(total, titleHeight, theme::kViewBackground * 0.7f, fonts);
+  Drawing strip(total, titleHeight, theme::kViewBackground * 0.7f, fonts, scale);
   const char* titles[][2] = {{"camera: what the synthetic camera sees (DC)", "camera (DC)"},
                              {"world: scene, camera and view volume (WC)", "world (WC)"},
                              {"npc: after view mapping, clipping and division (NPC)", "NPC"}};
   std::vector<TextLabel> labels;
   for (int i = 0; i < 3; ++i) {
     const bool fits = fonts.measure(titles[i][0], TextSize::title).x <= width - 12;
-    TextLabel t{{i * (width + kGap) + width * 0.5, titleHeight * 0.5}, titles[i][fits ? 0 : 1], theme::kText,
-                TextSize::title, Anchor::center, false};
+    TextLabel t{{i * (width + kGap) + width * 0.5, titleHeight * 0.5},
+                titles[i][fits ? 0 : 1],
+                theme::kText,
+                TextSize::title,
+                Anchor::center,
+                false};
     t.avoid = false;
     labels.push_back(t);
   }
@@ -1072,10 +1218,11 @@ std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run,
   out += "<g class=\"titles\">\n" + strip.body() + "</g>\n";
   const ViewKind kinds[3] = {ViewKind::camera, ViewKind::world, ViewKind::npc};
   for (int i = 0; i < 3; ++i)
-    out += "<svg class=\"" + std::string(toString(kinds[i])) + "\" x=\"" + num(i * (width + kGap)) + "\" y=\"" +
-           std::to_string(titleHeight) + "\" width=\"" + std::to_string(width) + "\" height=\"" + std::to_string(height) +
-           "\" viewBox=\"0 0 " + std::to_string(width) + ' ' + std::to_string(height) + "\">\n" +
-           panel(kinds[i], run, settings, scene, width, height, fonts) + "</svg>\n";
+    out += "<svg class=\"" + std::string(toString(kinds[i])) + "\" x=\"" + num(i * (width + kGap)) +
+           "\" y=\"" + std::to_string(titleHeight) + "\" width=\"" + std::to_string(width) + "\" height=\"" +
+           std::to_string(height) + "\" viewBox=\"0 0 " + std::to_string(width) + ' ' +
+           std::to_string(height) + "\">\n" +
+           panel(kinds[i], run, settings, scene, width, height, fonts, scale) + "</svg>\n";
   return out + "</svg>\n";
 }
 

@@ -6,7 +6,7 @@
 //           as GL's clipping of the camera view's lines), mapped to the width × height pixels
 //   world   the edges in WC seen by the world observer: the part inside the scene camera's view
 //           volume solid, the whole edge faded; the clipping's new edges, the view volume, the
-//           window, VRP, PRP, U, V, N, VUP, labels
+//           user clip planes, the window, VRP, PRP, U, V, N, VUP, labels
 //   npc     the clipped polygons' outlines in NPC seen by the NPC observer, faded what clipping cut
 //           away, the new edges, the unit cube and its axes, labels
 //   all     the three side by side with their title strip, as the PNG of ViewKind::all
@@ -51,10 +51,11 @@ std::optional<std::string> svgExportError(ViewKind view, const FrameSettings& se
 /// The view as a standalone SVG document of width × height pixels (ViewKind::all: three panels of
 /// width × height and a title strip, like the PNG), viewBox in pixels, origin top-left as DC.
 /// `run` is the CPU pipeline's run of `scene` (with PipelineOptions::clipEdges; without, the edges
-/// are clipped here). `textScale` as ViewRenderer's (lecture mode). Throws vplab::Error when
-/// svgExportError says why, or for a size below 1 × 1.
-std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run, const FrameSettings& settings,
-                      int width, int height, float textScale = 1.f);
+/// are clipped here). `scale`: lecture mode, ViewRenderer::setScale's factor for the text, the line
+/// widths and the marker sizes. Throws vplab::Error when svgExportError says why, or for a size
+/// below 1 × 1.
+std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run,
+                      const FrameSettings& settings, int width, int height, float scale = 1.f);
 
 /// The SVG of what renderImage draws for the request (same pipeline run, same frame settings).
 std::string svgOfRequest(const Scene& scene, const RenderRequest& request);

@@ -2,6 +2,7 @@
 //        4 menus, shortcuts and dialogs  5 files
 #include "app/ui/viewer.h"
 
+#include "app/export/svg.h"
 #include "app/ui/keys.h"
 #include "app/ui/layout.h"
 #include "app/ui/panels.h"
@@ -309,6 +310,10 @@ void Viewer::menuBar() {
         s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
       });
     ImGui::Separator();
+    if (ImGui::BeginMenu("Export a view")) {
+      exportMenu();
+      ImGui::EndMenu();
+    }
     if (ImGui::MenuItem("Screenshot", "F12")) screenshotRequested_ = true;
     if (ImGui::MenuItem("Quit", "Ctrl+Q")) requestQuit();
     ImGui::EndMenu();
@@ -398,6 +403,48 @@ void Viewer::quitDialog() {
     s_.quitRequested = false;
   }
   ImGui::EndPopup();
+}
+
+// Each view as it is shown, to PNG, and the wireframe styles also as SVG (vector lines).
+void Viewer::exportMenu() {
+  struct Entry {
+    ViewKind kind;
+    const char* name;
+    gl::RenderTarget* target;
+  };
+  const Entry entries[] = {{ViewKind::camera, "camera", &camera_}, {ViewKind::world, "world", &world_},
+                           {ViewKind::npc, "NPC", &npc_}};
+  for (const Entry& e : entries) {
+    const std::string png = std::string(e.name) + " view as PNG…";
+    if (ImGui::MenuItem(png.c_str(), nullptr, false, e.target->width() > 0)) {
+      gl::RenderTarget* target = e.target;
+      dialog_.open("Export the " + std::string(e.name) + " view", FileDialog::Mode::save, {".png"},
+                   "vplab-" + std::string(toString(e.kind)) + ".png", [this, target](const std::filesystem::path& f) {
+                     try {
+                       writePng(target->read(), f);
+                       setStatus("exported " + f.string(), false);
+                     } catch (const Error& err) {
+                       setStatus(err.what(), true);
+                     }
+                   });
+    }
+    const std::optional<std::string> why = svgExportError(e.kind, s_.frame);
+    const std::string svg = std::string(e.name) + " view as SVG…";
+    if (ImGui::MenuItem(svg.c_str(), nullptr, false, !why && e.target->width() > 0)) {
+      const ViewKind kind = e.kind;
+      const int w = e.target->width(), h = e.target->height();
+      dialog_.open("Export the " + std::string(e.name) + " view", FileDialog::Mode::save, {".svg"},
+                   "vplab-" + std::string(toString(kind)) + ".svg", [this, kind, w, h](const std::filesystem::path& f) {
+                     try {
+                       writeSvg(svgOfView(kind, s_.doc.shown(), s_.run, s_.frame, w, h, uiScale_), f);
+                       setStatus("exported " + f.string(), false);
+                     } catch (const Error& err) {
+                       setStatus(err.what(), true);
+                     }
+                   });
+    }
+    if (why && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", why->c_str());
+  }
 }
 
 void Viewer::unlessUnsaved(std::function<void()> action) {

@@ -54,6 +54,7 @@ class Viewer {
   /// Runs `action` (which replaces the scene) at once, or after the user agreed to lose unsaved changes.
   void unlessUnsaved(std::function<void()> action);
   void discardDialog();
+  void exportMenu();
   void runPipeline();
   void openScene(const std::filesystem::path& file);
   void saveScene(const std::filesystem::path& file);

@@ -7,6 +7,10 @@
 
 #include "pipeline/clipping.h"
 
+#include <array>
+#include <set>
+#include <tuple>
+
 namespace vplab {
 
 namespace {
@@ -27,6 +31,13 @@ std::vector<Vec3> fadedPolygon(const ObjectRun& o, size_t f, ClipScratch& scratc
   for (const ClipVertex& c : clipPolygon(0x3f /* the six grown cube planes */, scratch))
     if (c.p.w > 1e-12) out.push_back(Vec3(c.p) / c.p.w);
   return out;
+}
+
+// An edge by its end points in NPC, in either direction.
+std::array<double, 6> edgeKey(const Vec3& a, const Vec3& b) {
+  const bool swap = std::tie(b.x, b.y, b.z) < std::tie(a.x, a.y, a.z);
+  const Vec3 &p = swap ? b : a, &q = swap ? a : b;
+  return {p.x, p.y, p.z, q.x, q.y, q.z};
 }
 
 void addCube(OverlayBatch& b, std::vector<TextLabel>& labels, const ViewCamera& view, int w, int h, bool withLabels) {
@@ -75,6 +86,7 @@ void ViewRenderer::drawNpc(const Scene& /*scene*/, const PipelineRun& run, const
   std::vector<PolygonSet> inside, faded;
   OverlayBatch outlines, dashedOutlines, newEdges, fadedOutlines;
   ClipScratch scratch;
+  std::set<std::array<double, 6>> drawnEdges;
   for (const ObjectRun& o : run.objects) {
     PolygonSet in{glm::vec3(o.color), {}}, out{glm::vec3(o.color), {}};
     const glm::vec4 c(glm::vec3(o.color), 1.f);
@@ -85,8 +97,13 @@ void ViewRenderer::drawNpc(const Scene& /*scene*/, const PipelineRun& run, const
         for (uint32_t ref : face) poly.push_back(o.clippedNpc(ref));
         for (size_t i = 0; i < face.size(); ++i) {
           const Vec3 &a = poly[i], &b = poly[(i + 1) % poly.size()];
-          if (ov.newEdges && o.isNewEdge(f, i)) newEdges.line(a, b, theme::kNewEdge, theme::kLineWidth + 0.5f);
-          else if (!isFilled(style)) outlines.line(a, b, c, theme::kEdgeWidth);
+          if (ov.newEdges && o.isNewEdge(f, i)) {
+            newEdges.line(a, b, theme::kNewEdge, theme::kLineWidth + 0.5f);
+            continue;
+          }
+          // Two faces share each mesh edge: draw it once, or its dashes would overlap out of phase.
+          if (!drawnEdges.insert(edgeKey(a, b)).second) continue;
+          if (!isFilled(style)) outlines.line(a, b, c, theme::kEdgeWidth);
           if (style == Style::hiddenLine) dashedOutlines.line(a, b, glm::vec4(glm::vec3(c), 0.8f), theme::kEdgeWidth, theme::kDashPx);
         }
         in.polygons.push_back(std::move(poly));

@@ -62,6 +62,7 @@ ViewRenderer::ViewRenderer(GlContext& context, float textScale)
   gl_.EnableVertexAttribArray(1);
   gl_.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), reinterpret_cast<void*>(sizeof(glm::vec3)));
   gl_.BindVertexArray(0);
+  overlay_.setScale(textScale);  // lines and points grow with the text (lecture mode)
   ctx_.checkErrors("creating the view renderer");
 }
 

@@ -31,7 +31,7 @@ FrameSettings everythingOn(const Scene& scene, const PipelineRun& run, Style sty
   s.overlays.difference = true;
   if (!run.objects.empty() && run.objects[0].vertexCount() > 0) {
     const ObjectRun& o = run.objects[0];
-    s.highlights.probeWc = o.wc[0];
+    s.highlights.probeWc = o.wc(0);
     s.highlights.probeNpc = Vec3(o.npcH[0]) / o.npcH[0].w;
     s.highlights.probeDc = Vec3(run.dcFromNpc * Vec4(*s.highlights.probeNpc, 1.0));
   }
