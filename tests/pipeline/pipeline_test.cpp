@@ -66,7 +66,9 @@ void expectSameRun(const PipelineRun& a, const PipelineRun& b) {
     // DC is defined for the vertices inside (outcode 0): the clipped polygons use no other.
     ASSERT_EQ(x.dc.size(), y.dc.size());
     for (size_t i = 0; i < x.dc.size(); ++i)
-      if (x.outcodes[i] == 0) EXPECT_TRUE(bitwiseEqual(x.dc[i], y.dc[i])) << "vertex " << i;
+      if (x.outcodes[i] == 0) {
+        EXPECT_TRUE(bitwiseEqual(x.dc[i], y.dc[i])) << "vertex " << i;
+      }
     EXPECT_TRUE(bitwiseEqual(x.createdDc, y.createdDc));
     EXPECT_TRUE(bitwiseEqual(x.edges, y.edges));
     ASSERT_EQ(x.edgeRanges.size(), y.edgeRanges.size());  // field by field: EdgeRange has padding
