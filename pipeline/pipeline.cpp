@@ -142,32 +142,25 @@ namespace {
 // once, and only what later stages read is written (npcH, outcode, DC). `classify(i, h)` gives the
 // outcode of vertex i with homogeneous NPC h. Stage 5 here rather than after the face pass: a vertex
 // with outcode 0 is inside (w > 0), and the clipped polygons use no other mesh vertex.
+// [[gnu::flatten]]: GCC otherwise leaves GLM's vector operators out of line in this file (they are
+// used too often), which costs a call per operation in the one loop that must run at the speed of
+// a plain transform.
 template <class Classify>
-void vertexPass(ObjectRun& o, const Mat4& dcFromNpcM, Classify classify, PipelineStats& stats) {
+[[gnu::flatten]] void vertexPass(ObjectRun& o, const Mat4& dcFromNpcM, Classify classify, PipelineStats& stats) {
   const Mesh& mesh = *o.mesh;
   const size_t n = mesh.positions.size();
   o.npcH.resize(n);
   o.outcodes.resize(n);
   o.dc.resize(n);
-  // The matrices' entries as scalars: the loop is written out so it stays free of calls.
-  const Mat4& m = o.npcFromMc;
-  const double m00 = m[0][0], m01 = m[1][0], m02 = m[2][0], m03 = m[3][0];
-  const double m10 = m[0][1], m11 = m[1][1], m12 = m[2][1], m13 = m[3][1];
-  const double m20 = m[0][2], m21 = m[1][2], m22 = m[2][2], m23 = m[3][2];
-  const double m30 = m[0][3], m31 = m[1][3], m32 = m[2][3], m33 = m[3][3];
-  const Mat4& d = dcFromNpcM;  // affine (domain.md stage 5)
-  const double d00 = d[0][0], d01 = d[1][0], d02 = d[2][0], d03 = d[3][0];
-  const double d10 = d[0][1], d11 = d[1][1], d12 = d[2][1], d13 = d[3][1];
-  const double d20 = d[0][2], d21 = d[1][2], d22 = d[2][2], d23 = d[3][2];
+  const Vec4 c0(o.npcFromMc[0]), c1(o.npcFromMc[1]), c2(o.npcFromMc[2]), c3(o.npcFromMc[3]);
+  const Vec3 d0(dcFromNpcM[0]), d1(dcFromNpcM[1]), d2(dcFromNpcM[2]), d3(dcFromNpcM[3]);  // affine
   const Vec3* mc = mesh.positions.data();
   Vec4* npcH = o.npcH.data();
   Outcode* oc = o.outcodes.data();
   Vec3* dc = o.dc.data();
   uint64_t mapped = 0;
   for (size_t i = 0; i < n; ++i) {
-    const double x = mc[i].x, y = mc[i].y, z = mc[i].z;
-    const Vec4 h(m00 * x + m01 * y + m02 * z + m03, m10 * x + m11 * y + m12 * z + m13,
-                 m20 * x + m21 * y + m22 * z + m23, m30 * x + m31 * y + m32 * z + m33);
+    const Vec4 h = c0 * mc[i].x + c1 * mc[i].y + c2 * mc[i].z + c3;
     npcH[i] = h;
     const Outcode code = classify(i, h);
     oc[i] = code;
@@ -175,9 +168,7 @@ void vertexPass(ObjectRun& o, const Mat4& dcFromNpcM, Classify classify, Pipelin
       // Inside, so w ≥ dmin > 0 (perspective) or w = 1: the division is safe; one division and three
       // multiplications instead of three divisions.
       const double inv = 1.0 / h.w;
-      const double nx = h.x * inv, ny = h.y * inv, nz = h.z * inv;
-      dc[i] = Vec3(d00 * nx + d01 * ny + d02 * nz + d03, d10 * nx + d11 * ny + d12 * nz + d13,
-                   d20 * nx + d21 * ny + d22 * nz + d23);
+      dc[i] = d0 * (h.x * inv) + d1 * (h.y * inv) + d2 * (h.z * inv) + d3;
       ++mapped;
     }  // the DC of a vertex outside is never read (no clipped polygon uses it): not written
   }
