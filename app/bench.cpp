@@ -60,12 +60,15 @@ bool wanted(const BenchOptions& o, const std::string& part) {
 
 // A frame of one view: the CPU pipeline (with the wireframe overlays' edges) and the drawing,
 // finished on the GPU (glFinish), as the viewer does every frame.
+// The viewer's multisampling on this renderer: none on a software renderer (ViewerState::antialias).
+int viewerSamples(const GlContext& ctx) { return ctx.softwareRenderer() ? 1 : 4; }
+
 Summary timeView(ViewRenderer& renderer, const Scene& scene, ViewKind view, int frames, int w, int h) {
   GlContext& ctx = renderer.context();
   FrameSettings settings = frameSettingsFor(scene, Style::shaded, double(w) / h);
   PipelineRun run;
   gl::RenderTarget target(ctx.gl());
-  target.resize(w, h, view == ViewKind::camera ? 1 : 4);
+  target.resize(w, h, view == ViewKind::camera ? 1 : viewerSamples(ctx));
   std::vector<double> ms;
   for (int i = -3; i < frames; ++i) {  // three warm-up frames
     const auto start = Clock::now();
@@ -86,8 +89,8 @@ Summary timeThreeViews(ViewRenderer& renderer, const Scene& scene, int frames, i
   PipelineRun run;
   gl::RenderTarget camera(ctx.gl()), world(ctx.gl()), npc(ctx.gl());
   camera.resize(w, h, 1);
-  world.resize(w, h, 4);
-  npc.resize(w, h, 4);
+  world.resize(w, h, viewerSamples(ctx));
+  npc.resize(w, h, viewerSamples(ctx));
   std::vector<double> ms;
   for (int i = -3; i < frames; ++i) {
     const auto start = Clock::now();
@@ -110,6 +113,7 @@ Json frameTimes(const BenchOptions& o, std::ostream& log) {
   Json j;
   j["renderer"] = context->description();
   j["size"] = {w, h};
+  j["world_and_npc_samples"] = viewerSamples(*context);
   struct Named {
     std::string name;
     Scene scene;

@@ -22,11 +22,15 @@ uniform float ambient;
 out vec4 fragColor;
 
 void main() {
+#ifdef VOLUME_TEST
+  // Only in the program that needs it: a shader that may discard loses the early depth test, which
+  // on a software renderer means shading every hidden fragment too.
   if (volumeMode != 0) {
     vec4 v = volumeNpcH;
     bool inside = v.x >= 0.0 && v.w - v.x >= 0.0 && v.y >= 0.0 && v.w - v.y >= 0.0 && v.z >= 0.0 && v.w - v.z >= 0.0;
     if (inside != (volumeMode == 1)) discard;
   }
+#endif
   if (!shaded) {
     fragColor = vec4(color, alpha);
     return;

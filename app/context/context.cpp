@@ -66,6 +66,12 @@ std::string GlContext::description() const {
   return str(GL_RENDERER) + " — " + str(GL_VERSION);
 }
 
+bool GlContext::softwareRenderer() const {
+  const auto* r = reinterpret_cast<const char*>(gl_.GetString(GL_RENDERER));
+  const std::string renderer = r ? r : "";
+  return renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
+}
+
 void GlContext::checkErrors(std::string_view where) {
   std::string problems;
   for (GLenum e = gl_.GetError(); e != GL_NO_ERROR; e = gl_.GetError()) problems += "\n  " + glErrorName(e);

@@ -36,6 +36,8 @@ class GlContext {
   /// "llvmpipe (LLVM 15.0.6, 256 bits) — 4.5 (Core Profile) Mesa 22.3.6".
   std::string description() const;
   bool debug() const { return debugEnabled_; }
+  /// Whether OpenGL runs on the CPU (Mesa's llvmpipe or softpipe): multisampling is costly there.
+  bool softwareRenderer() const;
   /// Throws vplab::Error naming `where` and every GL error reported since the last check
   /// (glGetError and, in debug contexts, KHR_debug messages).
   void checkErrors(std::string_view where);

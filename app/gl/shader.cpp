@@ -59,9 +59,20 @@ Program::Program(const GladGLContext& gl, std::initializer_list<ShaderStage> sta
   if (!ok) throw Error(names + ": link failed:\n" + infoLog(gl, id_.id(), true));
 }
 
-Program Program::fromFiles(const GladGLContext& gl, std::initializer_list<std::string_view> files) {
+Program Program::fromFiles(const GladGLContext& gl, std::initializer_list<std::string_view> files,
+                           std::string_view defines) {
   std::vector<ShaderStage> stages;
-  for (std::string_view f : files) stages.push_back({stageOf(f), f, embeddedShader(f)});
+  std::vector<std::string> sources;  // with the defines inserted; ShaderStage only views them
+  sources.reserve(files.size());
+  for (std::string_view f : files) {
+    std::string text(embeddedShader(f));
+    if (!defines.empty()) {
+      const size_t eol = text.find('\n');
+      text.insert(eol == std::string::npos ? text.size() : eol + 1, defines);
+    }
+    sources.push_back(std::move(text));
+    stages.push_back({stageOf(f), f, sources.back()});
+  }
   switch (stages.size()) {
     case 2: return Program(gl, {stages[0], stages[1]});
     case 3: return Program(gl, {stages[0], stages[1], stages[2]});

@@ -28,7 +28,9 @@ class Program {
   /// Compiles and links the stages. Throws vplab::Error "shaders/NAME: compile failed: LOG".
   Program(const GladGLContext& gl, std::initializer_list<ShaderStage> stages);
   /// The same from embedded files, by name ("scene.vert", "scene.frag", …), stage by extension.
-  static Program fromFiles(const GladGLContext& gl, std::initializer_list<std::string_view> files);
+  /// `defines` ("#define X\n…") go right after each file's #version line.
+  static Program fromFiles(const GladGLContext& gl, std::initializer_list<std::string_view> files,
+                           std::string_view defines = {});
 
   void use() const { gl_->UseProgram(id_.id()); }
   GLint location(const char* name) const;

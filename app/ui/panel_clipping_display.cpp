@@ -94,6 +94,10 @@ void displayPanel(ViewerState& s) {
   ImGui::Checkbox("difference to the CPU", &o.difference);
   tooltip("Where the GPU's image differs from the CPU's polygons filled (magenta).",
           "Wo das Bild der GPU von den gefüllten CPU-Polygonen abweicht.");
+  ImGui::Checkbox("antialiasing (4× multisampling)", &s.antialias);
+  tooltip("Smooth edges in the world, NPC and morph views. On a software renderer (Mesa llvmpipe) it costs "
+          "more than all the drawing, so it starts off there.",
+          "Kantenglättung; auf einem Software-Renderer teuer, daher dort zunächst aus.");
   if (ImGui::Button("reset the observers")) {
     s.frame.world.orbit = defaultWorldOrbit(s.doc.shown(), s.worldAspect);
     s.frame.npc.orbit = defaultNpcOrbit();

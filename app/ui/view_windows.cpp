@@ -58,20 +58,21 @@ GLuint Viewer::drawView(ViewKind kind, ImVec2 size) {
   const ImVec2 fb = ImGui::GetIO().DisplayFramebufferScale;
   const int w = std::max(8, int(size.x * fb.x)), h = std::max(8, int(size.y * fb.y));
   const Scene& scene = s_.doc.shown();
+  const int samples = s_.antialias ? 4 : 1;
   switch (kind) {
     case ViewKind::world:
-      world_.resize(w, h, 4);
+      world_.resize(w, h, samples);
       s_.worldAspect = double(w) / h;
       renderer_.drawWorld(scene, s_.run, s_.frame, world_);
       world_.resolve();
       return world_.colorTexture();
     case ViewKind::npc:
-      npc_.resize(w, h, 4);
+      npc_.resize(w, h, samples);
       renderer_.drawNpc(scene, s_.run, s_.frame, npc_);
       npc_.resolve();
       return npc_.colorTexture();
     case ViewKind::morph:
-      morph_.resize(w, h, 4);
+      morph_.resize(w, h, samples);
       renderer_.drawMorph(scene, s_.run, s_.frame, morph_);
       morph_.resolve();
       return morph_.colorTexture();

@@ -69,6 +69,7 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
                 " context (it loads OpenGL through libGL.so.1: use a window or the EGL backend)");
   }
   s_.frame.camera.style = Style::shaded;
+  s_.antialias = !context.softwareRenderer();
   s_.uiScale = uiScale;
   s_.presets = listPresetScenes();
   s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);

@@ -56,6 +56,8 @@ struct ViewerState {
   int selectedObject = 0;
   double worldAspect = 1.6;    // of the world view's image, for framing the observer
   bool keepAspect = true;       // the window keeps the device's aspect ratio
+  bool antialias = true;        // 4× multisampling in the world, NPC and morph views (off by default on
+                                // a software renderer, where it costs more than all the drawing)
   bool seedForm = false;        // matrices in the seed's row-vector form (transposed)
   bool showHelp = false;
   bool quitRequested = false;   // asked to quit; a dirty document asks first

@@ -49,7 +49,8 @@ std::optional<Style> styleFromString(std::string_view s) {
 ViewRenderer::ViewRenderer(GlContext& context, float textScale)
     : ctx_(context),
       gl_(context.gl()),
-      scene_(gl::Program::fromFiles(gl_, {"scene.vert", "scene.frag"})),
+      scenePlain_(gl::Program::fromFiles(gl_, {"scene.vert", "scene.frag"})),
+      sceneVolume_(gl::Program::fromFiles(gl_, {"scene.vert", "scene.frag"}, "#define VOLUME_TEST\n")),
       meshes_(gl_),
       overlay_(gl_),
       text_(std::make_unique<TextRenderer>(gl_, textScale)),
@@ -79,39 +80,40 @@ void ViewRenderer::setLights(const Scene& scene, const ViewCamera& view) {
   const int count = int(std::min<size_t>(lights.size(), 4));
   for (int i = 0; i < count; ++i) {
     const std::string k = std::to_string(i);
-    scene_.set(("lightPositions[" + k + "]").c_str(), lights[size_t(i)].position);
-    scene_.set(("lightColors[" + k + "]").c_str(), lights[size_t(i)].color);
+    scene_->set(("lightPositions[" + k + "]").c_str(), lights[size_t(i)].position);
+    scene_->set(("lightColors[" + k + "]").c_str(), lights[size_t(i)].color);
   }
-  scene_.set("lightCount", count);
-  scene_.set("ambient", 0.28f);
-  scene_.set("eyeWc", glm::vec4(view.eyeWc));
+  scene_->set("lightCount", count);
+  scene_->set("ambient", 0.28f);
+  scene_->set("eyeWc", glm::vec4(view.eyeWc));
 }
 
 void ViewRenderer::drawObjects(const Scene& scene, const ViewCamera& view, const ObjectPass& pass) {
-  scene_.use();
-  scene_.set("vrcFromWc", view.vrcFromWc);
-  scene_.set("npcFromVrc", view.npcFromVrc);
-  scene_.set("glClipFromNpc", glClipFromNpc());
-  scene_.set("volumeMode", pass.volumeMode);
-  scene_.set("volumeNpcFromWc", pass.volumeNpcFromWc);
+  scene_ = pass.volumeMode != 0 ? &sceneVolume_ : &scenePlain_;
+  scene_->use();
+  scene_->set("vrcFromWc", view.vrcFromWc);
+  scene_->set("npcFromVrc", view.npcFromVrc);
+  scene_->set("glClipFromNpc", glClipFromNpc());
+  scene_->set("volumeMode", pass.volumeMode);
+  scene_->set("volumeNpcFromWc", pass.volumeNpcFromWc);
   // The user clip planes in WC (seed 003), the same enabled planes the CPU pipeline clips with.
   int planes = 0;
   if (pass.userPlanes)
     for (const UserClipPlane& p : scene.clipPlanes)
       if (p.enabled && planes < kMaxUserPlanes)
-        scene_.set(("userPlanesWc[" + std::to_string(planes++) + "]").c_str(), glm::vec4(p.coefficients()));
-  scene_.set("userPlaneCount", planes);
+        scene_->set(("userPlanesWc[" + std::to_string(planes++) + "]").c_str(), glm::vec4(p.coefficients()));
+  scene_->set("userPlaneCount", planes);
   for (int i = 0; i < kMaxUserPlanes; ++i) (i < planes ? gl_.Enable : gl_.Disable)(GL_CLIP_DISTANCE0 + GLenum(i));
-  scene_.set("shaded", int(pass.shaded));
-  scene_.set("alpha", pass.alpha);
+  scene_->set("shaded", int(pass.shaded));
+  scene_->set("alpha", pass.alpha);
   setLights(scene, view);
   for (const SceneObject& o : scene.objects) {
     if (!o.visible || !o.mesh) continue;
     const Mat4 m = wcFromMc(o.transform);
     const GpuMesh& g = meshes_.get(o.mesh);
-    scene_.set("wcFromMc", m);
-    scene_.set("wcNormalFromMc", normalMatrix(m));
-    scene_.set("color", o.color);
+    scene_->set("wcFromMc", m);
+    scene_->set("wcNormalFromMc", normalMatrix(m));
+    scene_->set("color", o.color);
     gl_.BindVertexArray(g.faces.id());
     gl_.DrawElements(GL_TRIANGLES, g.faceIndexCount, GL_UNSIGNED_INT, nullptr);
   }
@@ -183,24 +185,25 @@ void ViewRenderer::drawPolygons(const std::vector<PolygonSet>& sets, const ViewC
   gl_.BindVertexArray(polygonVao_.id());
   gl_.BindBuffer(GL_ARRAY_BUFFER, polygonVbo_.id());
   gl_.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(glm::vec3)), data.data(), GL_STREAM_DRAW);
-  scene_.use();
-  scene_.set("wcFromMc", Mat4(1.0));
-  scene_.set("wcNormalFromMc", Mat3(1.0));
-  scene_.set("vrcFromWc", view.vrcFromWc);
-  scene_.set("npcFromVrc", view.npcFromVrc);
-  scene_.set("glClipFromNpc", glClipFromNpc());
-  scene_.set("volumeMode", 0);
-  scene_.set("userPlaneCount", 0);
-  scene_.set("shaded", int(pass.shaded));
-  scene_.set("alpha", pass.alpha);
-  scene_.set("lightCount", 1);
-  scene_.set("lightPositions[0]", Vec3(view.eyeWc) + Vec3(0.6, 1.2, 0.4));
-  scene_.set("lightColors[0]", glm::vec3(1));
-  scene_.set("ambient", 0.3f);
-  scene_.set("eyeWc", glm::vec4(view.eyeWc));
+  scene_ = &scenePlain_;
+  scene_->use();
+  scene_->set("wcFromMc", Mat4(1.0));
+  scene_->set("wcNormalFromMc", Mat3(1.0));
+  scene_->set("vrcFromWc", view.vrcFromWc);
+  scene_->set("npcFromVrc", view.npcFromVrc);
+  scene_->set("glClipFromNpc", glClipFromNpc());
+  scene_->set("volumeMode", 0);
+  scene_->set("userPlaneCount", 0);
+  scene_->set("shaded", int(pass.shaded));
+  scene_->set("alpha", pass.alpha);
+  scene_->set("lightCount", 1);
+  scene_->set("lightPositions[0]", Vec3(view.eyeWc) + Vec3(0.6, 1.2, 0.4));
+  scene_->set("lightColors[0]", glm::vec3(1));
+  scene_->set("ambient", 0.3f);
+  scene_->set("eyeWc", glm::vec4(view.eyeWc));
   for (size_t i = 0; i < sets.size(); ++i) {
     if (ranges[i].second == 0) continue;
-    scene_.set("color", sets[i].color);
+    scene_->set("color", sets[i].color);
     gl_.BindVertexArray(polygonVao_.id());
     gl_.DrawArrays(GL_TRIANGLES, ranges[i].first, ranges[i].second);
   }

@@ -59,7 +59,9 @@ class ViewRenderer {
 
   GlContext& ctx_;
   const GladGLContext& gl_;
-  gl::Program scene_;
+  gl::Program scenePlain_;   // scene.vert/.frag
+  gl::Program sceneVolume_;  // the same with the test against another camera's view volume
+  const gl::Program* scene_ = &scenePlain_;  // the one in use
   GpuMeshCache meshes_;
   OverlayRenderer overlay_;
   std::unique_ptr<TextRenderer> text_;  // replaced by setScale
