@@ -12,4 +12,10 @@ mkdir -p "$out"
   --out "$out/behind-the-eye.png"
 "$vplab" render --scene "$root/assets/scenes/depth-nonlinearity.json" --view all --style shaded --size 480x360 \
   --out "$out/depth-nonlinearity.png"
+"$vplab" render --scene "$root/assets/scenes/clip-planes.json" --view all --style shaded --size 480x360 \
+  --out "$out/clip-planes.png"
+"$vplab" render --view camera --style hidden-line --out "$out/camera-hidden-line.svg"
+for t in 0 1 2 2.5 3 4; do
+  "$vplab" render --view morph --morph-t "$t" --size 320x240 --out "$out/morph-$t.png"
+done
 echo "pictures written to $out"
