@@ -96,4 +96,29 @@ EdgeRange clipEdge(const ClipValues& bc0, const ClipValues& bc1, Outcode planes)
   return r;
 }
 
+namespace {
+
+ClipVertex formVertex(const Vec4& p, std::span<const Vec4> forms, uint32_t source) {
+  ClipVertex v{p, {}, source};
+  v.bc.fill(1.0);
+  for (size_t k = 0; k < forms.size(); ++k) v.bc[k] = glm::dot(forms[k], p);
+  return v;
+}
+
+Outcode allForms(size_t count) { return Outcode((1u << count) - 1); }
+
+}  // namespace
+
+std::vector<Vec4> clipPolygonByForms(std::span<const Vec4> polygon, std::span<const Vec4> forms, ClipScratch& scratch) {
+  scratch.a.clear();
+  for (size_t i = 0; i < polygon.size(); ++i) scratch.a.push_back(formVertex(polygon[i], forms, uint32_t(i)));
+  std::vector<Vec4> out;
+  for (const ClipVertex& c : clipPolygon(allForms(forms.size()), scratch)) out.push_back(c.p);
+  return out;
+}
+
+EdgeRange clipEdgeByForms(const Vec4& a, const Vec4& b, std::span<const Vec4> forms) {
+  return clipEdge(formVertex(a, forms, 0).bc, formVertex(b, forms, 1).bc, allForms(forms.size()));
+}
+
 }  // namespace vplab

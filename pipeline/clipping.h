@@ -102,6 +102,11 @@ inline EdgeRange clipEdge(const Boundary& bc0, const Boundary& bc1, Outcode plan
   return clipEdge(clipValues(bc0), clipValues(bc1), planes);
 }
 
+/// The same kernels for any planes given as linear forms on homogeneous points (inside where
+/// dot(form, p) ≥ 0, at most kMaxClipPlanes of them): another camera's view volume, a grown cube.
+std::vector<Vec4> clipPolygonByForms(std::span<const Vec4> polygon, std::span<const Vec4> forms, ClipScratch& scratch);
+EdgeRange clipEdgeByForms(const Vec4& a, const Vec4& b, std::span<const Vec4> forms);
+
 /// Linear interpolation of two clip vertices (all four coordinates and the boundary values).
 ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t);
 

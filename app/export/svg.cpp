@@ -11,6 +11,7 @@
 #include "app/render/text.h"
 #include "app/render/view_camera.h"
 #include "app/views/theme.h"
+#include "app/views/view_geometry.h"
 #include "pipeline/error.h"
 #include "pipeline/vanishing_points.h"
 
@@ -24,9 +25,7 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
-#include <map>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <span>
 #include <string>
@@ -139,13 +138,9 @@ struct Fonts {
   const char* family() const { return dejaVu ? "DejaVu Sans, Verdana, sans-serif" : "monospace"; }
 };
 
-const Fonts& fontsFor(float scale) {
-  static std::mutex mutex;
-  static std::map<float, std::unique_ptr<Fonts>> cache;
-  const std::lock_guard lock(mutex);
-  std::unique_ptr<Fonts>& f = cache[scale];
-  if (f) return *f;
-  f = std::make_unique<Fonts>();
+// Built for each export (a few milliseconds), so no font cache outlives it.
+std::unique_ptr<Fonts> makeFonts(float scale) {
+  auto f = std::make_unique<Fonts>();
   if (std::filesystem::exists(kFontFile)) {
     f->label = f->atlas->AddFontFromFileTTF(kFontFile, 15.f * scale, nullptr, kGlyphRanges);
     f->title = f->atlas->AddFontFromFileTTF(kFontFile, 20.f * scale, nullptr, kGlyphRanges);
@@ -158,7 +153,7 @@ const Fonts& fontsFor(float scale) {
   }
   if (!f->atlas->Build()) throw Error("SVG export: cannot build the label font atlas");
   f->atlas->ClearTexData();  // the glyph metrics stay
-  return *f;
+  return f;
 }
 
 /// A label where the PNG puts it: its top-left corner after TextRenderer::draw's anchoring,
@@ -253,43 +248,18 @@ Planes grownCube(double m) {  // x + m·w ≥ 0, (1 + m)·w − x ≥ 0, … (m 
 const Planes kCube = grownCube(0);
 constexpr int kFrontPlane = 5;  // BC5 = w − z: the front plane, GL's near plane
 
-/// The parameter range [t0, t1] of a → b inside every plane (Liang–Barsky in homogeneous form, as
-/// pipeline/clipping.h's clipEdge), or nothing.
+/// The parameter range [t0, t1] of a → b inside every plane: pipeline/clipping.h's parametric
+/// clipping, for these forms.
 std::optional<EdgeRange> clipRange(const Vec4& a, const Vec4& b, const Planes& planes = kCube) {
-  EdgeRange r;
-  for (const Vec4& f : planes) {
-    const double da = glm::dot(f, a), db = glm::dot(f, b);
-    if (da < 0 && db < 0) return std::nullopt;
-    if (da < 0)
-      r.t0 = std::max(r.t0, da / (da - db));
-    else if (db < 0)
-      r.t1 = std::min(r.t1, da / (da - db));
-  }
-  if (!(r.t0 <= r.t1)) return std::nullopt;
+  const EdgeRange r = clipEdgeByForms(a, b, planes);
+  if (!r.visible) return std::nullopt;
   return r;
 }
 
-/// Sutherland–Hodgman against every plane, each intersection computed from the inside end point.
+/// Sutherland–Hodgman against every plane with the pipeline's kernel (pipeline/clipping.h).
 std::vector<Vec4> clipPolygonHom(std::vector<Vec4> polygon, const Planes& planes = kCube) {
-  std::vector<Vec4> out;
-  for (const Vec4& f : planes) {
-    if (polygon.size() < 3) break;
-    out.clear();
-    const Vec4* s = &polygon.back();
-    for (const Vec4& p : polygon) {
-      const double ds = glm::dot(f, *s), dp = glm::dot(f, p);
-      if (dp >= 0) {
-        if (ds < 0) out.push_back(glm::mix(p, *s, dp / (dp - ds)));
-        out.push_back(p);
-      } else if (ds >= 0) {
-        out.push_back(glm::mix(*s, p, ds / (ds - dp)));
-      }
-      s = &p;
-    }
-    std::swap(polygon, out);
-  }
-  if (polygon.size() < 3) polygon.clear();
-  return polygon;
+  ClipScratch scratch;
+  return clipPolygonByForms(polygon, planes, scratch);
 }
 
 /// A segment's part inside the view's volume, in pixels, with the dash phase the line shader gives
@@ -818,11 +788,7 @@ struct WorldFrame {
     const Vec4 p = wcFromNpc * Vec4(npc, 1.0);
     return Vec3(p) / p.w;
   }
-  std::array<Vec3, 8> volumeCorners() const {
-    std::array<Vec3, 8> c;
-    for (int i = 0; i < 8; ++i) c[size_t(i)] = wcOfNpc(Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
-    return c;
-  }
+  std::array<Vec3, 8> volumeCorners() const { return geometry::viewVolumeCorners(wcFromNpc); }
 };
 
 void addArrow(Drawing& d, const Canvas& c, const Vec3& from, const Vec3& to, const Vec3& eye,
@@ -846,12 +812,8 @@ void addArrow(Drawing& d, const Canvas& c, const Vec3& from, const Vec3& to, con
 void stepOverlay(Drawing& d, const Canvas& c, const Highlights::Step& step,
                  const std::function<Vec3(int)>& corner, const std::function<Vec3(const Vec3&)>& place,
                  std::vector<std::function<void()>>& points) {
-  if (step.plane >= 0) {
-    const int axisBit = 1 << (step.plane / 2), side = step.plane % 2 ? axisBit : 0;
-    std::vector<int> ring;
-    for (int i = 0; i < 8; ++i)
-      if ((i & axisBit) == side) ring.push_back(i);
-    std::swap(ring[2], ring[3]);
+  if (step.plane >= 0 && step.plane < kPlaneCount) {
+    const auto ring = geometry::cubeFaceRing(step.plane);
     d.fill(c, {corner(ring[0]), corner(ring[1]), corner(ring[2]), corner(ring[3])}, theme::kStepPlane,
            "step-plane");
   }
@@ -952,14 +914,12 @@ void worldView(Drawing& d, const Scene& scene, const PipelineRun& run, const Fra
     label(k[3], "back B", theme::kFrustum, {6, -10});
   }
   // User clip planes (seed 003): a translucent square on each, around its point, with its normal.
-  const double planeSize = 0.6 * std::max(run.camera.window.width(), run.camera.window.height());
+  const double planeSize = geometry::clipPlaneSquareSize(run.camera);
   for (const UserClipPlane& p : scene.clipPlanes) {
     if (!p.enabled) continue;
     const Vec3 n = glm::normalize(p.normal);
-    const Vec3 a = glm::normalize(glm::cross(n, std::abs(n.y) < 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0)));
-    const Vec3 bb = glm::cross(n, a);
-    const std::vector<Vec3> q = {p.point + (a + bb) * planeSize, p.point + (a - bb) * planeSize,
-                                 p.point - (a + bb) * planeSize, p.point + (bb - a) * planeSize};
+    const auto square = geometry::clipPlaneSquare(p, planeSize);
+    const std::vector<Vec3> q(square.begin(), square.end());
     d.fill(c, q, theme::kClipPlane, "clip-plane-fill");
     d.polyline(c, q, true, stroke("clip-plane", glm::vec4(glm::vec3(theme::kClipPlane), 0.8f), 1.5),
                DepthMode::xray);
@@ -1024,16 +984,10 @@ void worldView(Drawing& d, const Scene& scene, const PipelineRun& run, const Fra
 
 // ---------------------------------------------------------------- 8 NPC view (npc_view.cpp)
 
-// npc_view.cpp's fadedPolygon: the original polygon clipped to the cube grown by 0.5 on every side
-// (which keeps w > 0), then divided.
+// The NPC view's faded polygon (view_geometry.h).
 std::vector<Vec3> fadedPolygon(const ObjectRun& o, size_t f) {
-  static const Planes grown = grownCube(0.5);
-  std::vector<Vec4> polygon;
-  for (uint32_t v : o.mesh->face(f)) polygon.push_back(o.npcH[v]);
-  std::vector<Vec3> out;
-  for (const Vec4& h : clipPolygonHom(std::move(polygon), grown))
-    if (h.w > 1e-12) out.push_back(Vec3(h) / h.w);
-  return out;
+  ClipScratch scratch;
+  return geometry::fadedNpcPolygon(o, f, scratch);
 }
 
 void npcView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int w, int h) {
@@ -1100,15 +1054,7 @@ void npcView(Drawing& d, const PipelineRun& run, const FrameSettings& s, int w, 
         const Projected q = projectToPixels(view, p, w, h);
         if (q.visible) labels.push_back({q.pixel, text, color, TextSize::label, Anchor::center});
       };
-      label({len + 0.07, 0, 0}, "x", theme::kU);
-      label({0, len + 0.07, 0}, "y", theme::kV);
-      label({0, 0, len + 0.07}, "z", theme::kN);
-      label({-0.06, -0.06, -0.06}, "0", theme::kText);
-      label({1, -0.07, 0}, "1", theme::kU);
-      label({-0.07, 1, 0}, "1", theme::kV);
-      label({-0.07, -0.07, 1}, "1", theme::kN);
-      label({0.5, 1.08, 1}, "front z = 1", theme::kFrustum);
-      label({0.5, 1.08, 0}, "back z = 0", theme::kFrustum);
+      for (const geometry::AnchoredLabel& l : geometry::npcCubeLabels()) label(l.at, l.text, l.color);
     }
   }
 
@@ -1185,7 +1131,8 @@ std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run,
   if (width < 1 || height < 1)
     throw Error("SVG export: the size " + std::to_string(width) + " x " + std::to_string(height) +
                 " is not at least 1 x 1 pixels");
-  const Fonts& fonts = fontsFor(scale);
+  const std::unique_ptr<Fonts> fontsOwned = makeFonts(scale);
+  const Fonts& fonts = *fontsOwned;
   const std::string title =
       "vplab " + std::string(toString(view)) + " view" + (scene.title.empty() ? "" : ": " + scene.title);
   if (view != ViewKind::all)

@@ -65,13 +65,14 @@ Program Program::fromFiles(const GladGLContext& gl, std::initializer_list<std::s
   std::vector<std::string> sources;  // with the defines inserted; ShaderStage only views them
   sources.reserve(files.size());
   for (std::string_view f : files) {
+    const GLenum stage = stageOf(f);  // an unknown extension is the first thing to report
     std::string text(embeddedShader(f));
     if (!defines.empty()) {
       const size_t eol = text.find('\n');
       text.insert(eol == std::string::npos ? text.size() : eol + 1, defines);
     }
     sources.push_back(std::move(text));
-    stages.push_back({stageOf(f), f, sources.back()});
+    stages.push_back({stage, f, sources.back()});
   }
   switch (stages.size()) {
     case 2: return Program(gl, {stages[0], stages[1]});

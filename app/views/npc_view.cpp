@@ -3,6 +3,7 @@
 // an orbiting observer. The filled polygons are the CPU clipper's output; what it cut away is shown
 // faded, as far as it lies in front of the eye (w > 0) and not too far outside the cube.
 #include "app/views/theme.h"
+#include "app/views/view_geometry.h"
 #include "app/views/view_renderer.h"
 
 #include "pipeline/clipping.h"
@@ -15,24 +16,6 @@ namespace vplab {
 
 namespace {
 
-// The faded part: the original polygon in homogeneous NPC, clipped to the cube grown by `margin`
-// on every side (which also keeps w > 0), then divided. Same Sutherland–Hodgman kernel, other
-// boundary values: x + m·w ≥ 0, (1 + m)·w − x ≥ 0, …
-std::vector<Vec3> fadedPolygon(const ObjectRun& o, size_t f, ClipScratch& scratch) {
-  constexpr double m = 0.5;
-  scratch.a.clear();
-  for (uint32_t v : o.mesh->face(f)) {
-    const Vec4& p = o.npcH[v];
-    const Boundary bc{p.x + m * p.w, (1 + m) * p.w - p.x, p.y + m * p.w,
-                      (1 + m) * p.w - p.y, p.z + m * p.w, (1 + m) * p.w - p.z};
-    scratch.a.push_back({p, clipValues(bc), v});
-  }
-  std::vector<Vec3> out;
-  for (const ClipVertex& c : clipPolygon(0x3f /* the six grown cube planes */, scratch))
-    if (c.p.w > 1e-12) out.push_back(Vec3(c.p) / c.p.w);
-  return out;
-}
-
 // An edge by its end points in NPC, in either direction.
 std::array<double, 6> edgeKey(const Vec3& a, const Vec3& b) {
   const bool swap = std::tie(b.x, b.y, b.z) < std::tie(a.x, a.y, a.z);
@@ -41,29 +24,20 @@ std::array<double, 6> edgeKey(const Vec3& a, const Vec3& b) {
 }
 
 void addCube(OverlayBatch& b, std::vector<TextLabel>& labels, const ViewCamera& view, int w, int h, bool withLabels) {
-  auto corner = [](int i) { return Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1); };
+  using geometry::cubeCorner;
   for (int i = 0; i < 8; ++i)
     for (int bit : {1, 2, 4})
-      if (!(i & bit)) b.line(corner(i), corner(i | bit), theme::kCube, 1.5f);
-  b.quad(corner(4), corner(5), corner(7), corner(6), theme::kCubeFront);
-  const double len = 1.18;
+      if (!(i & bit)) b.line(cubeCorner(i), cubeCorner(i | bit), theme::kCube, 1.5f);
+  b.quad(cubeCorner(4), cubeCorner(5), cubeCorner(7), cubeCorner(6), theme::kCubeFront);
+  const double len = geometry::kNpcAxisLength;
   b.line({0, 0, 0}, {len, 0, 0}, theme::kU, theme::kLineWidth);
   b.line({0, 0, 0}, {0, len, 0}, theme::kV, theme::kLineWidth);
   b.line({0, 0, 0}, {0, 0, len}, theme::kN, theme::kLineWidth);
   if (!withLabels) return;
-  auto label = [&](const Vec3& p, const std::string& text, const glm::vec4& color, Anchor anchor = Anchor::center) {
-    const Projected q = projectToPixels(view, p, w, h);
-    if (q.visible) labels.push_back({q.pixel, text, color, TextSize::label, anchor});
-  };
-  label({len + 0.07, 0, 0}, "x", theme::kU);
-  label({0, len + 0.07, 0}, "y", theme::kV);
-  label({0, 0, len + 0.07}, "z", theme::kN);
-  label({-0.06, -0.06, -0.06}, "0", theme::kText);
-  label({1, -0.07, 0}, "1", theme::kU);
-  label({-0.07, 1, 0}, "1", theme::kV);
-  label({-0.07, -0.07, 1}, "1", theme::kN);
-  label({0.5, 1.08, 1}, "front z = 1", theme::kFrustum);
-  label({0.5, 1.08, 0}, "back z = 0", theme::kFrustum);
+  for (const geometry::AnchoredLabel& l : geometry::npcCubeLabels()) {
+    const Projected q = projectToPixels(view, l.at, w, h);
+    if (q.visible) labels.push_back({q.pixel, l.text, l.color, TextSize::label, Anchor::center});
+  }
 }
 
 }  // namespace
@@ -109,7 +83,7 @@ void ViewRenderer::drawNpc(const Scene& /*scene*/, const PipelineRun& run, const
         in.polygons.push_back(std::move(poly));
       }
       if (ov.fadeOutside && o.fate[f] != Fate::accepted) {
-        std::vector<Vec3> poly = fadedPolygon(o, f, scratch);
+        std::vector<Vec3> poly = geometry::fadedNpcPolygon(o, f, scratch);
         if (poly.size() >= 3) {
           if (!isFilled(style)) fadedOutlines.polyline(poly, true, glm::vec4(glm::vec3(c), theme::kFadedAlpha), theme::kEdgeWidth);
           out.polygons.push_back(std::move(poly));
@@ -159,14 +133,10 @@ void ViewRenderer::drawNpc(const Scene& /*scene*/, const PipelineRun& run, const
   if (const auto& step = s.highlights.step) {
     // The clipping step-through: the plane being applied as a face of the cube, the polygon after
     // the step, its new vertices.
-    if (step->plane >= 0) {
-      const int axisBit = 1 << (step->plane / 2), side = step->plane % 2 ? axisBit : 0;
-      std::vector<int> ring;
-      for (int i = 0; i < 8; ++i)
-        if ((i & axisBit) == side) ring.push_back(i);
-      std::swap(ring[2], ring[3]);  // (0, 1, 2, 3) of the face → a ring
-      auto corner = [](int i) { return Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1); };
-      newEdges.quad(corner(ring[0]), corner(ring[1]), corner(ring[2]), corner(ring[3]), theme::kStepPlane);
+    if (step->plane >= 0 && step->plane < kPlaneCount) {
+      const auto ring = geometry::cubeFaceRing(step->plane);
+      using geometry::cubeCorner;
+      newEdges.quad(cubeCorner(ring[0]), cubeCorner(ring[1]), cubeCorner(ring[2]), cubeCorner(ring[3]), theme::kStepPlane);
     }
     newEdges.polyline(step->polygonNpc, true, theme::kProbe, theme::kLineWidth + 1.f);
     for (size_t i = 0; i < step->polygonNpc.size(); ++i)

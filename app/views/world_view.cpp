@@ -3,6 +3,7 @@
 // and the view volume. What lies inside the view volume is drawn solid, the rest faded; the edges
 // the CPU clipper created are highlighted (seed 15.1, figures 15.1–15.5).
 #include "app/views/theme.h"
+#include "app/views/view_geometry.h"
 #include "app/views/view_renderer.h"
 
 namespace vplab {
@@ -20,12 +21,7 @@ Vec3 wcOfNpc(const Frame& f, const Vec3& npc) {
   return Vec3(p) / p.w;
 }
 
-// The view volume's corners: the unit cube taken back to WC, exact for every projection.
-std::array<Vec3, 8> volumeCorners(const Frame& f) {
-  std::array<Vec3, 8> c;
-  for (int i = 0; i < 8; ++i) c[i] = wcOfNpc(f, Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
-  return c;
-}
+std::array<Vec3, 8> volumeCorners(const Frame& f) { return geometry::viewVolumeCorners(f.wcFromNpc); }
 
 void addArrow(OverlayBatch& b, const Vec3& from, const Vec3& to, const Vec3& eye, const glm::vec4& color,
               float dash = 0.f) {
@@ -145,14 +141,11 @@ void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const F
     label(c[3], "back B", theme::kFrustum, {6, -10});
   }
   // User clip planes (seed 003): a translucent square on each, around its point, with its normal.
-  const double planeSize = 0.6 * std::max(run.camera.window.width(), run.camera.window.height());
+  const double planeSize = geometry::clipPlaneSquareSize(run.camera);
   for (const UserClipPlane& p : scene.clipPlanes) {
     if (!p.enabled) continue;
     const Vec3 n = glm::normalize(p.normal);
-    const Vec3 a = glm::normalize(glm::cross(n, std::abs(n.y) < 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0)));
-    const Vec3 bb = glm::cross(n, a);
-    const Vec3 q[4] = {p.point + (a + bb) * planeSize, p.point + (a - bb) * planeSize, p.point - (a + bb) * planeSize,
-                       p.point + (bb - a) * planeSize};
+    const auto q = geometry::clipPlaneSquare(p, planeSize);
     b.quad(q[0], q[1], q[2], q[3], theme::kClipPlane);
     b.polyline({q[0], q[1], q[2], q[3]}, true, glm::vec4(glm::vec3(theme::kClipPlane), 0.8f), 1.5f);
     addArrow(b, p.point, p.point + n * (0.3 * planeSize), view.camera.prp, glm::vec4(glm::vec3(theme::kClipPlane), 1.f));
@@ -194,13 +187,9 @@ void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const F
   if (hl.probeWc) b.point(*hl.probeWc, theme::kProbe, 14.f);
   if (const auto& step = hl.step) {
     // The clipping step-through in WC: the frustum's face of the plane being applied, the polygon.
-    if (step->plane >= 0) {
+    if (step->plane >= 0 && step->plane < kPlaneCount) {
       const auto c = volumeCorners(f);
-      const int axisBit = 1 << (step->plane / 2), side = step->plane % 2 ? axisBit : 0;
-      std::vector<int> ring;
-      for (int i = 0; i < 8; ++i)
-        if ((i & axisBit) == side) ring.push_back(i);
-      std::swap(ring[2], ring[3]);
+      const auto ring = geometry::cubeFaceRing(step->plane);
       b.quad(c[size_t(ring[0])], c[size_t(ring[1])], c[size_t(ring[2])], c[size_t(ring[3])], theme::kStepPlane);
     }
     std::vector<Vec3> poly;

@@ -1,0 +1,62 @@
+#include "app/views/view_geometry.h"
+
+#include "app/views/theme.h"
+
+namespace vplab::geometry {
+
+std::array<Vec3, 8> viewVolumeCorners(const Mat4& wcFromNpc) {
+  std::array<Vec3, 8> c;
+  for (int i = 0; i < 8; ++i) {
+    const Vec4 p = wcFromNpc * Vec4(cubeCorner(i), 1.0);
+    c[size_t(i)] = Vec3(p) / p.w;
+  }
+  return c;
+}
+
+std::array<int, 4> cubeFaceRing(int plane) {
+  const int axisBit = 1 << (plane / 2), side = plane % 2 ? axisBit : 0;
+  std::array<int, 4> ring{};
+  size_t k = 0;
+  for (int i = 0; i < 8; ++i)
+    if ((i & axisBit) == side) ring[k++] = i;
+  std::swap(ring[2], ring[3]);  // (0, 1, 2, 3) in index order → around the face
+  return ring;
+}
+
+std::array<Vec3, 4> clipPlaneSquare(const UserClipPlane& plane, double halfSize) {
+  const Vec3 n = glm::normalize(plane.normal);
+  const Vec3 a = glm::normalize(glm::cross(n, std::abs(n.y) < 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0)));
+  const Vec3 b = glm::cross(n, a);
+  const Vec3& p = plane.point;
+  return {p + (a + b) * halfSize, p + (a - b) * halfSize, p - (a + b) * halfSize, p + (b - a) * halfSize};
+}
+
+double clipPlaneSquareSize(const Camera& camera) {
+  return 0.6 * std::max(camera.window.width(), camera.window.height());
+}
+
+std::vector<Vec3> fadedNpcPolygon(const ObjectRun& o, size_t f, ClipScratch& scratch) {
+  constexpr double m = 0.5;
+  scratch.a.clear();
+  for (uint32_t v : o.mesh->face(f)) {
+    const Vec4& p = o.npcH[v];
+    const Boundary bc{p.x + m * p.w, (1 + m) * p.w - p.x, p.y + m * p.w,
+                      (1 + m) * p.w - p.y, p.z + m * p.w, (1 + m) * p.w - p.z};
+    scratch.a.push_back({p, clipValues(bc), v});
+  }
+  std::vector<Vec3> out;
+  for (const ClipVertex& c : clipPolygon(0x3f /* the six grown cube planes */, scratch))
+    if (c.p.w > 1e-12) out.push_back(Vec3(c.p) / c.p.w);
+  return out;
+}
+
+std::vector<AnchoredLabel> npcCubeLabels() {
+  const double len = kNpcAxisLength;
+  return {{{len + 0.07, 0, 0}, "x", theme::kU},          {{0, len + 0.07, 0}, "y", theme::kV},
+          {{0, 0, len + 0.07}, "z", theme::kN},          {{-0.06, -0.06, -0.06}, "0", theme::kText},
+          {{1, -0.07, 0}, "1", theme::kU},               {{-0.07, 1, 0}, "1", theme::kV},
+          {{-0.07, -0.07, 1}, "1", theme::kN},           {{0.5, 1.08, 1}, "front z = 1", theme::kFrustum},
+          {{0.5, 1.08, 0}, "back z = 0", theme::kFrustum}};
+}
+
+}  // namespace vplab::geometry

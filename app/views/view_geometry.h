@@ -1,0 +1,47 @@
+// Geometry the views draw, shared by the GL views (app/views/*_view.cpp) and their SVG export
+// (app/export/svg.cpp), so the picture and the vector drawing are built from one description.
+#pragma once
+
+#include "app/render/text.h"
+#include "pipeline/pipeline.h"
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace vplab::geometry {
+
+/// Corner i of the unit cube: x = bit 0, y = bit 1, z = bit 2 (z = 1 front, 0 back).
+inline Vec3 cubeCorner(int i) { return Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1); }
+
+/// The view volume's corners in WC: the unit cube's corners taken back from NPC (exact for every
+/// projection). Corner i as cubeCorner(i).
+std::array<Vec3, 8> viewVolumeCorners(const Mat4& wcFromNpc);
+
+/// The four cube corners lying on a clip plane (ClipPlane 0 … 5), in order around the face.
+std::array<int, 4> cubeFaceRing(int plane);
+
+/// A square of half-size `halfSize` on a user clip plane, around its point (the world view's
+/// translucent quad).
+std::array<Vec3, 4> clipPlaneSquare(const UserClipPlane& plane, double halfSize);
+/// The half-size of those squares for a camera: 0.6 of the window's larger side.
+double clipPlaneSquareSize(const Camera& camera);
+
+/// The NPC view's faded polygon: face f as it was, clipped to the cube grown by half its size on
+/// every side (which also keeps w > 0), then divided. The same Sutherland–Hodgman kernel with other
+/// boundary values: x + m·w ≥ 0, (1 + m)·w − x ≥ 0, …
+std::vector<Vec3> fadedNpcPolygon(const ObjectRun& o, size_t f, ClipScratch& scratch);
+
+/// A label at a point of the view's space.
+struct AnchoredLabel {
+  Vec3 at;
+  std::string text;
+  glm::vec4 color;
+};
+/// The NPC cube's axis length and its labels (axes, 0 and 1 ticks, the front and back faces).
+inline constexpr double kNpcAxisLength = 1.18;
+std::vector<AnchoredLabel> npcCubeLabels();
+
+}  // namespace vplab::geometry
