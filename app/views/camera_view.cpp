@@ -59,13 +59,7 @@ void addVanishingPoints(const PipelineRun& run, int sceneIndex, OverlayBatch& b,
 
 void ViewRenderer::drawCamera(const Scene& scene, const PipelineRun& run, const FrameSettings& s,
                               gl::RenderTarget& target) {
-  target.bind();
-  gl_.ClearColor(float(scene.background.r), float(scene.background.g), float(scene.background.b), 1.f);
-  gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  gl_.Enable(GL_DEPTH_TEST);
-  gl_.DepthFunc(GL_LESS);
-  gl_.Disable(GL_BLEND);
-  gl_.Disable(GL_CULL_FACE);
+  beginView(target, scene.background);
 
   const ViewCamera view = viewCameraOf(scene.camera);
   const Style style = s.camera.style;

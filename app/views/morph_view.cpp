@@ -41,12 +41,7 @@ StageValues cornerStages(const PipelineRun& run, const Inverses& inv, int i) {
 void ViewRenderer::drawMorph(const Scene& /*scene*/, const PipelineRun& run, const FrameSettings& s,
                              gl::RenderTarget& target) {
   const int w = target.width(), h = target.height();
-  target.bind();
-  gl_.ClearColor(theme::kViewBackground.r, theme::kViewBackground.g, theme::kViewBackground.b, 1.f);
-  gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  gl_.Enable(GL_DEPTH_TEST);
-  gl_.DepthFunc(GL_LESS);
-  gl_.Disable(GL_BLEND);
+  beginView(target, Vec3(theme::kViewBackground));
 
   const double t = s.morphing.t;
   const Inverses inv{glm::inverse(run.npcFromVrc), glm::inverse(run.vrcFromWc)};

@@ -45,13 +45,7 @@ void addCube(OverlayBatch& b, std::vector<TextLabel>& labels, const ViewCamera& 
 void ViewRenderer::drawNpc(const Scene& /*scene*/, const PipelineRun& run, const FrameSettings& s,
                            gl::RenderTarget& target) {
   const int w = target.width(), h = target.height();
-  target.bind();
-  gl_.ClearColor(theme::kViewBackground.r, theme::kViewBackground.g, theme::kViewBackground.b, 1.f);
-  gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  gl_.Enable(GL_DEPTH_TEST);
-  gl_.DepthFunc(GL_LESS);
-  gl_.Disable(GL_BLEND);
-  gl_.Disable(GL_CULL_FACE);
+  beginView(target, Vec3(theme::kViewBackground));
 
   const ViewCamera view = viewCameraOf(observerCamera(s.npc.orbit, double(w) / h));
   const Style style = s.npc.style;

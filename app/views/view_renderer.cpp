@@ -74,6 +74,16 @@ void ViewRenderer::setScale(float scale) {
 
 // ---------------------------------------------------------------- 3 shared drawing
 
+void ViewRenderer::beginView(gl::RenderTarget& target, const Vec3& background) {
+  target.bind();
+  gl_.ClearColor(float(background.r), float(background.g), float(background.b), 1.f);
+  gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthFunc(GL_LESS);
+  gl_.Disable(GL_BLEND);
+  gl_.Disable(GL_CULL_FACE);
+}
+
 void ViewRenderer::setLights(const Scene& scene, const ViewCamera& view) {
   std::vector<Light> lights = scene.lights;
   if (lights.empty()) lights.push_back({scene.camera.prp, {1, 1, 1}});  // a light at the eye

@@ -46,6 +46,8 @@ class ViewRenderer {
     bool shaded = true;
     bool userPlanes = false;  // clip by the scene's user clip planes (gl_ClipDistance, seed 003)
   };
+  /// Binds the target, clears it to `background` and sets the state every view starts from.
+  void beginView(gl::RenderTarget& target, const Vec3& background);
   void drawObjects(const Scene& scene, const ViewCamera& view, const ObjectPass& pass);
   void drawEdges(const Scene& scene, const ViewCamera& view, int width, int height, Style style);
   /// Polygons the CPU made (clipped polygons in NPC), filled through the GLSL path.
