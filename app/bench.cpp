@@ -217,12 +217,17 @@ const char* verdict(const Json& j, const char* key) { return j.value(key, false)
 void printHuman(const Json& j) {
   if (j.contains("pipeline")) {
     const Json& p = j["pipeline"];
-    std::cout << "CPU pipeline on " << p.value("triangles", 0) << " triangles (one core):\n"
-              << "  full " << ms(p["full"].value("median_ms", 0.0)) << ", floor " << ms(p["floor"].value("median_ms", 0.0))
-              << ", textbook " << ms(p["textbook"].value("median_ms", 0.0)) << "\n"
-              << "  full / floor = " << p.value("full_over_floor", 0.0) << " (target ≤ 2.5: "
-              << verdict(p, "full_over_floor_met") << "), textbook / full = " << p.value("textbook_over_full", 0.0)
-              << " (target ≥ 10: " << verdict(p, "textbook_over_full_met") << ")\n";
+    const Json& med = p["median_ms"];
+    const Json& ratio = p["ratios"];
+    const Json& target = p["targets"];
+    std::cout << "CPU pipeline on " << p["scene"].value("triangles", 0) << " triangles (one core, median of "
+              << p.value("repetitions", 0) << "):\n"
+              << "  full " << ms(med.value("full_pipeline", 0.0)) << ", floor " << ms(med.value("floor_pass", 0.0))
+              << ", textbook " << ms(med.value("textbook", 0.0)) << "\n"
+              << "  full / floor = " << ratio.value("full_over_floor", 0.0) << " (target ≤ 2.5: "
+              << verdict(target, "full_over_floor_met") << "), textbook / full = "
+              << ratio.value("textbook_over_full", 0.0) << " (target ≥ 10: " << verdict(target, "textbook_over_full_met")
+              << ")\n";
   }
   if (j.contains("frames")) {
     const Json& f = j["frames"];

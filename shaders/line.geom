@@ -9,15 +9,19 @@ uniform vec2 viewportSize;
 uniform float widthPx;
 
 in vec4 vColor[];
+#ifdef USER_PLANES
 in gl_PerVertex {  // as overlay.vert writes it, with six clip distances
   vec4 gl_Position;
   float gl_PointSize;
   float gl_ClipDistance[6];
 } gl_in[];
+#endif
 out vec4 gColor;
 noperspective out float gAlongPx;   // distance from the segment's start, for dashes
 noperspective out float gAcross;    // −1 … 1 across the line, for the antialiased edge
+#ifdef USER_PLANES
 out float gl_ClipDistance[6];       // the user clip planes, carried along the segment
+#endif
 
 void main() {
   vec4 p0 = gl_in[0].gl_Position;
@@ -44,8 +48,10 @@ void main() {
   float along[4] = float[4](-0.5 * widthPx, -0.5 * widthPx, len + 0.5 * widthPx, len + 0.5 * widthPx);
   float ts[4] = float[4](t0, t0, t1, t1);
   for (int i = 0; i < 4; ++i) {
+#ifdef USER_PLANES
     for (int k = 0; k < 6; ++k)
       gl_ClipDistance[k] = mix(gl_in[0].gl_ClipDistance[k], gl_in[1].gl_ClipDistance[k], ts[i]);
+#endif
     vec2 ndc = corners[i] / viewportSize * 2.0 - 1.0;
     gl_Position = vec4(ndc * ends[i].w, ends[i].z, ends[i].w);
     gColor = colors[i];

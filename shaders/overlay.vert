@@ -15,11 +15,15 @@ uniform int userPlaneCount;
 uniform vec4 userPlanesWc[6];
 
 out vec4 vColor;
+#ifdef USER_PLANES  // only in the edges' program for scenes with user planes: costly when written
 out float gl_ClipDistance[6];
+#endif
 
 void main() {
   vColor = color;
   vec4 wc = wcFromMc * vec4(position, 1.0);
+#ifdef USER_PLANES
   for (int i = 0; i < 6; ++i) gl_ClipDistance[i] = i < userPlaneCount ? dot(userPlanesWc[i], wc) : 1.0;
+#endif
   gl_Position = glClipFromNpc * npcFromVrc * vrcFromWc * wc;
 }

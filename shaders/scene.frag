@@ -1,6 +1,8 @@
 #version 330 core
-// Flat: the object's colour, unlit. Shaded: ambient, diffuse and specular (Blinn–Phong) from the
-// scene's point lights, with the normal transformed by the inverse transpose (seed 13.5).
+// Flat: the object's colour, unlit. Shaded (SHADED defined): ambient, diffuse and specular
+// (Blinn–Phong) from the scene's point lights, with the normal transformed by the inverse transpose
+// (seed 13.5). The variants are separate programs: a software renderer runs every instruction of a
+// shader, taken branches or not, so a flat program must not carry the lighting.
 
 in vec3 wcPosition;
 in vec3 wcNormal;
@@ -10,11 +12,10 @@ in vec4 volumeNpcH;
 // Blinn's boundary coordinates are linear in WC, and the interpolation of volumeNpcH is perspective-
 // correct, so the test splits each polygon exactly where the CPU clipper cuts it (seed 002).
 uniform int volumeMode;
-uniform bool shaded;
 uniform vec3 color;
 uniform float alpha;          // < 1: faded (outside the view volume)
 uniform vec4 eyeWc;           // w = 1: the eye point; w = 0: the direction to the viewer (parallel)
-uniform int lightCount;
+// LIGHT_COUNT (1 … 4, with SHADED) is a constant, so the loop over the lights unrolls.
 uniform vec3 lightPositions[4];
 uniform vec3 lightColors[4];
 uniform float ambient;
@@ -31,19 +32,21 @@ void main() {
     if (inside != (volumeMode == 1)) discard;
   }
 #endif
-  if (!shaded) {
-    fragColor = vec4(color, alpha);
-    return;
-  }
+#ifndef SHADED
+  fragColor = vec4(color, alpha);
+#else
   vec3 n = normalize(wcNormal);
   if (!gl_FrontFacing) n = -n;  // polygons are lit from the side they are seen from
   vec3 toEye = normalize(eyeWc.w == 0.0 ? eyeWc.xyz : eyeWc.xyz - wcPosition);
   vec3 c = ambient * color;
-  for (int i = 0; i < lightCount; ++i) {
+  for (int i = 0; i < LIGHT_COUNT; ++i) {
     vec3 l = normalize(lightPositions[i] - wcPosition);
     float diffuse = max(dot(n, l), 0.0);
-    float specular = diffuse > 0.0 ? pow(max(dot(n, normalize(l + toEye)), 0.0), 48.0) : 0.0;
+    float h = max(dot(n, normalize(l + toEye)), 0.0);
+    float h3 = h * h * h, h12 = (h3 * h3) * (h3 * h3);
+    float specular = diffuse > 0.0 ? (h12 * h12) * (h12 * h12) : 0.0;  // h^48, by multiplications
     c += lightColors[i] * (diffuse * color + 0.3 * specular);
   }
   fragColor = vec4(min(c, vec3(1.0)), alpha);
+#endif
 }

@@ -24,7 +24,9 @@ uniform vec4 userPlanesWc[6];
 out vec3 wcPosition;
 out vec3 wcNormal;
 out vec4 volumeNpcH;
-out float gl_ClipDistance[6];
+#ifdef USER_PLANES
+out float gl_ClipDistance[6];  // only in the program for scenes with user planes: costly when written
+#endif
 
 void main() {
   vec4 wc = wcFromMc * vec4(mcPosition, 1.0);
@@ -32,7 +34,9 @@ void main() {
   wcNormal = wcNormalFromMc * mcNormal;
 
   volumeNpcH = volumeNpcFromWc * wc;
+#ifdef USER_PLANES
   for (int i = 0; i < 6; ++i) gl_ClipDistance[i] = i < userPlaneCount ? dot(userPlanesWc[i], wc) : 1.0;
+#endif
 
   gl_Position = glClipFromNpc * npcFromVrc * vrcFromWc * wc;
 }

@@ -42,6 +42,7 @@ OverlayRenderer::OverlayRenderer(const GladGLContext& gl)
       lines_(gl::Program::fromFiles(gl, {"overlay.vert", "line.geom", "line.frag"})),
       points_(gl::Program::fromFiles(gl, {"overlay.vert", "point.geom", "point.frag"})),
       triangles_(gl::Program::fromFiles(gl, {"overlay.vert", "color.frag"})),
+      clippedLines_(gl::Program::fromFiles(gl, {"overlay.vert", "line.geom", "line.frag"}, "#define USER_PLANES\n")),
       vao_(gl::makeVertexArray(gl)),
       vbo_(gl::makeBuffer(gl)) {
   gl.BindVertexArray(vao_.id());
@@ -55,7 +56,6 @@ OverlayRenderer::OverlayRenderer(const GladGLContext& gl)
 }
 
 void OverlayRenderer::setCamera(const gl::Program& p, const ViewCamera& view, const Mat4& wcFromMc) const {
-  p.set("userPlaneCount", 0);
   p.set("wcFromMc", wcFromMc);
   p.set("vrcFromWc", view.vrcFromWc);
   p.set("npcFromVrc", view.npcFromVrc);
@@ -139,18 +139,19 @@ void OverlayRenderer::drawMeshEdges(GLuint edgeVao, GLsizei indexCount, const Vi
                                     const Mat4& wcFromMc, int width, int height, const glm::vec4& color,
                                     float widthPx, float dashPx) {
   const GladGLContext& gl = *gl_;
-  lines_.use();
-  setCamera(lines_, view, wcFromMc);
-  lines_.set("viewportSize", glm::vec2(width, height));
-  lines_.set("widthPx", widthPx * scale_);
-  lines_.set("dashPx", dashPx);
-  lines_.set("alphaScale", 1.f);
   const int planes = int(std::min<size_t>(userPlanes_.size(), 6));
+  const gl::Program& p = planes > 0 ? clippedLines_ : lines_;
+  p.use();
+  setCamera(p, view, wcFromMc);
+  p.set("viewportSize", glm::vec2(width, height));
+  p.set("widthPx", widthPx * scale_);
+  p.set("dashPx", dashPx);
+  p.set("alphaScale", 1.f);
   for (int i = 0; i < planes; ++i) {
-    lines_.set(("userPlanesWc[" + std::to_string(i) + "]").c_str(), glm::vec4(userPlanes_[size_t(i)]));
+    p.set(("userPlanesWc[" + std::to_string(i) + "]").c_str(), glm::vec4(userPlanes_[size_t(i)]));
     gl.Enable(GL_CLIP_DISTANCE0 + GLenum(i));
   }
-  lines_.set("userPlaneCount", planes);
+  p.set("userPlaneCount", planes);
   gl.BindVertexArray(edgeVao);
   gl.VertexAttrib4f(1, color.r, color.g, color.b, color.a);  // attribute 1 is not an array here
   gl.DrawElements(GL_LINES, indexCount, GL_UNSIGNED_INT, nullptr);

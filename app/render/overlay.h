@@ -75,6 +75,7 @@ class OverlayRenderer {
   float scale_ = 1.f;
   std::vector<Vec4> userPlanes_;
   gl::Program lines_, points_, triangles_;
+  gl::Program clippedLines_;  // lines_ with the user clip planes (USER_PLANES), for objects' edges
   gl::VertexArray vao_;
   gl::Buffer vbo_;
 };

@@ -6,6 +6,8 @@
 #include "pipeline/clipping.h"
 #include "pipeline/error.h"
 
+#include <algorithm>
+
 namespace vplab {
 
 // ---------------------------------------------------------------- 1 names
@@ -49,8 +51,6 @@ std::optional<Style> styleFromString(std::string_view s) {
 ViewRenderer::ViewRenderer(GlContext& context, float textScale)
     : ctx_(context),
       gl_(context.gl()),
-      scenePlain_(gl::Program::fromFiles(gl_, {"scene.vert", "scene.frag"})),
-      sceneVolume_(gl::Program::fromFiles(gl_, {"scene.vert", "scene.frag"}, "#define VOLUME_TEST\n")),
       meshes_(gl_),
       overlay_(gl_),
       text_(std::make_unique<TextRenderer>(gl_, textScale)),
@@ -74,6 +74,19 @@ void ViewRenderer::setScale(float scale) {
 
 // ---------------------------------------------------------------- 3 shared drawing
 
+const gl::Program& ViewRenderer::sceneProgram(bool volumeTest, int lights, bool userPlanes) {
+  lights = std::clamp(lights, 0, 4);
+  std::optional<gl::Program>& p = scenePrograms_[size_t(volumeTest) + 2 * size_t(lights) + 10 * size_t(userPlanes)];
+  if (!p) {
+    std::string defines;
+    if (volumeTest) defines += "#define VOLUME_TEST\n";
+    if (lights > 0) defines += "#define SHADED\n#define LIGHT_COUNT " + std::to_string(lights) + "\n";
+    if (userPlanes) defines += "#define USER_PLANES\n";
+    p = gl::Program::fromFiles(gl_, {"scene.vert", "scene.frag"}, defines);
+  }
+  return *p;
+}
+
 void ViewRenderer::beginView(gl::RenderTarget& target, const Vec3& background) {
   target.bind();
   gl_.ClearColor(float(background.r), float(background.g), float(background.b), 1.f);
@@ -93,13 +106,17 @@ void ViewRenderer::setLights(const Scene& scene, const ViewCamera& view) {
     scene_->set(("lightPositions[" + k + "]").c_str(), lights[size_t(i)].position);
     scene_->set(("lightColors[" + k + "]").c_str(), lights[size_t(i)].color);
   }
-  scene_->set("lightCount", count);
   scene_->set("ambient", 0.28f);
   scene_->set("eyeWc", glm::vec4(view.eyeWc));
 }
 
 void ViewRenderer::drawObjects(const Scene& scene, const ViewCamera& view, const ObjectPass& pass) {
-  scene_ = pass.volumeMode != 0 ? &sceneVolume_ : &scenePlain_;
+  int planes = 0;
+  if (pass.userPlanes)
+    for (const UserClipPlane& p : scene.clipPlanes) planes += p.enabled;
+  planes = std::min(planes, kMaxUserPlanes);
+  const int lights = pass.shaded ? int(std::min<size_t>(std::max<size_t>(scene.lights.size(), 1), 4)) : 0;
+  scene_ = &sceneProgram(pass.volumeMode != 0, lights, planes > 0);
   scene_->use();
   scene_->set("vrcFromWc", view.vrcFromWc);
   scene_->set("npcFromVrc", view.npcFromVrc);
@@ -107,16 +124,15 @@ void ViewRenderer::drawObjects(const Scene& scene, const ViewCamera& view, const
   scene_->set("volumeMode", pass.volumeMode);
   scene_->set("volumeNpcFromWc", pass.volumeNpcFromWc);
   // The user clip planes in WC (seed 003), the same enabled planes the CPU pipeline clips with.
-  int planes = 0;
-  if (pass.userPlanes)
+  if (planes > 0) {
+    int k = 0;
     for (const UserClipPlane& p : scene.clipPlanes)
-      if (p.enabled && planes < kMaxUserPlanes)
-        scene_->set(("userPlanesWc[" + std::to_string(planes++) + "]").c_str(), glm::vec4(p.coefficients()));
-  scene_->set("userPlaneCount", planes);
+      if (p.enabled && k < planes) scene_->set(("userPlanesWc[" + std::to_string(k++) + "]").c_str(), glm::vec4(p.coefficients()));
+    scene_->set("userPlaneCount", planes);
+  }
   for (int i = 0; i < kMaxUserPlanes; ++i) (i < planes ? gl_.Enable : gl_.Disable)(GL_CLIP_DISTANCE0 + GLenum(i));
-  scene_->set("shaded", int(pass.shaded));
   scene_->set("alpha", pass.alpha);
-  setLights(scene, view);
+  if (pass.shaded) setLights(scene, view);
   for (const SceneObject& o : scene.objects) {
     if (!o.visible || !o.mesh) continue;
     const Mat4 m = wcFromMc(o.transform);
@@ -195,7 +211,7 @@ void ViewRenderer::drawPolygons(const std::vector<PolygonSet>& sets, const ViewC
   gl_.BindVertexArray(polygonVao_.id());
   gl_.BindBuffer(GL_ARRAY_BUFFER, polygonVbo_.id());
   gl_.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(glm::vec3)), data.data(), GL_STREAM_DRAW);
-  scene_ = &scenePlain_;
+  scene_ = &sceneProgram(false, pass.shaded ? 1 : 0, false);
   scene_->use();
   scene_->set("wcFromMc", Mat4(1.0));
   scene_->set("wcNormalFromMc", Mat3(1.0));
@@ -203,10 +219,7 @@ void ViewRenderer::drawPolygons(const std::vector<PolygonSet>& sets, const ViewC
   scene_->set("npcFromVrc", view.npcFromVrc);
   scene_->set("glClipFromNpc", glClipFromNpc());
   scene_->set("volumeMode", 0);
-  scene_->set("userPlaneCount", 0);
-  scene_->set("shaded", int(pass.shaded));
   scene_->set("alpha", pass.alpha);
-  scene_->set("lightCount", 1);
   scene_->set("lightPositions[0]", Vec3(view.eyeWc) + Vec3(0.6, 1.2, 0.4));
   scene_->set("lightColors[0]", glm::vec3(1));
   scene_->set("ambient", 0.3f);

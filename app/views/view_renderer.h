@@ -13,7 +13,9 @@
 #include "app/views/views.h"
 #include "pipeline/pipeline.h"
 
+#include <array>
 #include <memory>
+#include <optional>
 
 namespace vplab {
 
@@ -61,9 +63,11 @@ class ViewRenderer {
 
   GlContext& ctx_;
   const GladGLContext& gl_;
-  gl::Program scenePlain_;   // scene.vert/.frag
-  gl::Program sceneVolume_;  // the same with the test against another camera's view volume
-  const gl::Program* scene_ = &scenePlain_;  // the one in use
+  /// scene.vert/.frag in the variant a pass needs (compiled on first use): with the test against
+  /// another camera's view volume, lit by `lights` lights (0: flat), with user clip planes.
+  const gl::Program& sceneProgram(bool volumeTest, int lights, bool userPlanes);
+  std::array<std::optional<gl::Program>, 2 * 5 * 2> scenePrograms_;
+  const gl::Program* scene_ = nullptr;  // the one in use
   GpuMeshCache meshes_;
   OverlayRenderer overlay_;
   std::unique_ptr<TextRenderer> text_;  // replaced by setScale
