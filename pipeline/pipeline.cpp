@@ -153,7 +153,10 @@ template <class Classify>
   o.outcodes.resize(n);
   o.dc.resize(n);
   const Vec4 c0(o.npcFromMc[0]), c1(o.npcFromMc[1]), c2(o.npcFromMc[2]), c3(o.npcFromMc[3]);
-  const Vec3 d0(dcFromNpcM[0]), d1(dcFromNpcM[1]), d2(dcFromNpcM[2]), d3(dcFromNpcM[3]);  // affine
+  // dcFromNpc scales x and y and moves y (domain.md stage 5): its diagonal and last column are all
+  // there is to it, so the vertices inside cost two multiplications more than the division.
+  const double sx = dcFromNpcM[0][0], sy = dcFromNpcM[1][1], sz = dcFromNpcM[2][2];
+  const double tx = dcFromNpcM[3][0], ty = dcFromNpcM[3][1], tz = dcFromNpcM[3][2];
   const Vec3* mc = mesh.positions.data();
   Vec4* npcH = o.npcH.data();
   Outcode* oc = o.outcodes.data();
@@ -168,7 +171,7 @@ template <class Classify>
       // Inside, so w ≥ dmin > 0 (perspective) or w = 1: the division is safe; one division and three
       // multiplications instead of three divisions.
       const double inv = 1.0 / h.w;
-      dc[i] = d0 * (h.x * inv) + d1 * (h.y * inv) + d2 * (h.z * inv) + d3;
+      dc[i] = Vec3(sx * (h.x * inv) + tx, sy * (h.y * inv) + ty, sz * (h.z * inv) + tz);
       ++mapped;
     }  // the DC of a vertex outside is never read (no clipped polygon uses it): not written
   }
