@@ -50,14 +50,15 @@ void ViewRenderer::drawMorph(const Scene& /*scene*/, const PipelineRun& run, con
   OverlayBatch lines;
   for (const ObjectRun& o : run.objects) {
     const Mat4 mcFromWc = glm::inverse(o.wcFromMc);
-    PolygonSet set{glm::vec3(o.color), {}};
+    PolygonSet set{glm::vec3(o.color), {}, {}};
+    std::vector<Vec3> poly;
     for (size_t f = 0; f < o.faceCount(); ++f) {
-      std::vector<Vec3> poly;
+      poly.clear();
       for (uint32_t ref : o.clippedFace(f)) poly.push_back(morphPosition(stagesOf(o, ref, inv, mcFromWc), t, run.device));
       if (poly.size() < 3) continue;
       lines.polyline(poly, true, glm::vec4(glm::vec3(o.color) * 0.45f, 1.f), 1.f);
       all.insert(all.end(), poly.begin(), poly.end());
-      set.polygons.push_back(std::move(poly));
+      set.add(poly);
     }
     sets.push_back(std::move(set));
   }

@@ -55,32 +55,36 @@ void ViewRenderer::drawNpc(const Scene& /*scene*/, const PipelineRun& run, const
   OverlayBatch outlines, dashedOutlines, newEdges, fadedOutlines;
   ClipScratch scratch;
   std::set<std::array<double, 6>> drawnEdges;
+  const bool outlined = !isFilled(style) || style == Style::hiddenLine;
+  std::vector<Vec3> poly;  // reused: no allocation per polygon
   for (const ObjectRun& o : run.objects) {
-    PolygonSet in{glm::vec3(o.color), {}}, out{glm::vec3(o.color), {}};
+    PolygonSet in{glm::vec3(o.color), {}, {}}, out{glm::vec3(o.color), {}, {}};
     const glm::vec4 c(glm::vec3(o.color), 1.f);
     for (size_t f = 0; f < o.faceCount(); ++f) {
       const auto face = o.clippedFace(f);
       if (!face.empty()) {
-        std::vector<Vec3> poly;
+        poly.clear();
         for (uint32_t ref : face) poly.push_back(o.clippedNpc(ref));
-        for (size_t i = 0; i < face.size(); ++i) {
+        // Only clipped faces have new edges; only the wireframe styles draw the others.
+        const bool clipped = ov.newEdges && o.fate[f] == Fate::clipped;
+        for (size_t i = 0; (clipped || outlined) && i < face.size(); ++i) {
           const Vec3 &a = poly[i], &b = poly[(i + 1) % poly.size()];
-          if (ov.newEdges && o.isNewEdge(f, i)) {
+          if (clipped && o.isNewEdge(f, i)) {
             newEdges.line(a, b, theme::kNewEdge, theme::kLineWidth + 0.5f);
             continue;
           }
           // Two faces share each mesh edge: draw it once, or its dashes would overlap out of phase.
-          if (!drawnEdges.insert(edgeKey(a, b)).second) continue;
+          if (!outlined || !drawnEdges.insert(edgeKey(a, b)).second) continue;
           if (!isFilled(style)) outlines.line(a, b, c, theme::kEdgeWidth);
           if (style == Style::hiddenLine) dashedOutlines.line(a, b, glm::vec4(glm::vec3(c), 0.8f), theme::kEdgeWidth, theme::kDashPx);
         }
-        in.polygons.push_back(std::move(poly));
+        in.add(poly);
       }
       if (ov.fadeOutside && o.fate[f] != Fate::accepted) {
-        std::vector<Vec3> poly = geometry::fadedNpcPolygon(o, f, scratch);
+        geometry::fadedNpcPolygon(o, f, scratch, poly);
         if (poly.size() >= 3) {
           if (!isFilled(style)) fadedOutlines.polyline(poly, true, glm::vec4(glm::vec3(c), theme::kFadedAlpha), theme::kEdgeWidth);
-          out.polygons.push_back(std::move(poly));
+          out.add(poly);
         }
       }
     }

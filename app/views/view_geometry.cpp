@@ -36,6 +36,12 @@ double clipPlaneSquareSize(const Camera& camera) {
 }
 
 std::vector<Vec3> fadedNpcPolygon(const ObjectRun& o, size_t f, ClipScratch& scratch) {
+  std::vector<Vec3> out;
+  fadedNpcPolygon(o, f, scratch, out);
+  return out;
+}
+
+void fadedNpcPolygon(const ObjectRun& o, size_t f, ClipScratch& scratch, std::vector<Vec3>& out) {
   constexpr double m = 0.5;
   scratch.a.clear();
   for (uint32_t v : o.mesh->face(f)) {
@@ -44,10 +50,9 @@ std::vector<Vec3> fadedNpcPolygon(const ObjectRun& o, size_t f, ClipScratch& scr
                       (1 + m) * p.w - p.y, p.z + m * p.w, (1 + m) * p.w - p.z};
     scratch.a.push_back({p, clipValues(bc), v});
   }
-  std::vector<Vec3> out;
+  out.clear();
   for (const ClipVertex& c : clipPolygon(0x3f /* the six grown cube planes */, scratch))
     if (c.p.w > 1e-12) out.push_back(Vec3(c.p) / c.p.w);
-  return out;
 }
 
 std::vector<AnchoredLabel> npcCubeLabels() {

@@ -33,6 +33,8 @@ double clipPlaneSquareSize(const Camera& camera);
 /// every side (which also keeps w > 0), then divided. The same Sutherland–Hodgman kernel with other
 /// boundary values: x + m·w ≥ 0, (1 + m)·w − x ≥ 0, …
 std::vector<Vec3> fadedNpcPolygon(const ObjectRun& o, size_t f, ClipScratch& scratch);
+/// The same into `out` (cleared first), without allocating once `out` has grown.
+void fadedNpcPolygon(const ObjectRun& o, size_t f, ClipScratch& scratch, std::vector<Vec3>& out);
 
 /// A label at a point of the view's space.
 struct AnchoredLabel {

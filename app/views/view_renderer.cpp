@@ -194,7 +194,9 @@ void ViewRenderer::drawPolygons(const std::vector<PolygonSet>& sets, const ViewC
   std::vector<std::pair<GLint, GLsizei>> ranges;
   for (const PolygonSet& set : sets) {
     const GLint first = GLint(data.size() / 2);
-    for (const auto& poly : set.polygons) {
+    for (size_t k = 0; k < set.ends.size(); ++k) {
+      const uint32_t begin = k ? set.ends[k - 1] : 0;
+      const std::span<const Vec3> poly(set.points.data() + begin, set.ends[k] - begin);
       Vec3 n{0};  // Newell's normal
       for (size_t i = 0; i < poly.size(); ++i) {
         const Vec3 &p = poly[i], &q = poly[(i + 1) % poly.size()];
@@ -203,7 +205,7 @@ void ViewRenderer::drawPolygons(const std::vector<PolygonSet>& sets, const ViewC
       const double len = glm::length(n);
       const glm::vec3 normal = len > 0 ? glm::vec3(n / len) : glm::vec3(0, 0, 1);
       for (size_t i = 1; i + 1 < poly.size(); ++i)
-        for (size_t k : {size_t(0), i, i + 1}) data.insert(data.end(), {glm::vec3(poly[k]), normal});
+        for (size_t c : {size_t(0), i, i + 1}) data.insert(data.end(), {glm::vec3(poly[c]), normal});
     }
     ranges.push_back({first, GLsizei(data.size() / 2) - first});
   }

@@ -53,9 +53,15 @@ class ViewRenderer {
   void drawObjects(const Scene& scene, const ViewCamera& view, const ObjectPass& pass);
   void drawEdges(const Scene& scene, const ViewCamera& view, int width, int height, Style style);
   /// Polygons the CPU made (clipped polygons in NPC), filled through the GLSL path.
+  /// Flat arrays: polygon i is points[ends[i − 1] .. ends[i]) (no allocation per polygon).
   struct PolygonSet {
     glm::vec3 color;
-    std::vector<std::vector<Vec3>> polygons;
+    std::vector<Vec3> points;
+    std::vector<uint32_t> ends;
+    void add(std::span<const Vec3> polygon) {
+      points.insert(points.end(), polygon.begin(), polygon.end());
+      ends.push_back(uint32_t(points.size()));
+    }
   };
   void drawPolygons(const std::vector<PolygonSet>& sets, const ViewCamera& view, const ObjectPass& pass);
   void setLights(const Scene& scene, const ViewCamera& view);
