@@ -11,17 +11,7 @@
 namespace vplab {
 namespace {
 
-Camera checkCamera() {
-  Camera c;
-  c.vrp = {0, 0, 0};
-  c.prp = {0, 0, 5};
-  c.vup = {0, 1, 0};
-  c.window = {-1, 1, -0.75, 0.75};
-  c.front = 2;
-  c.back = -2;
-  c.projection = Projection::perspective;
-  return c;
-}
+using test::checkCamera;  // VRP (0,0,0), PRP (0,0,5), VUP (0,1,0), window ±1 × ±0.75, F = 2, B = −2
 
 Vec3 dcOf(const Camera& c, const Device& d, const Vec3& wc) {
   const Vec4 h = dcFromNpc(d) * npcFromVrc(c) * vrcFromWc(c) * Vec4(wc, 1.0);
