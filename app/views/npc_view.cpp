@@ -96,12 +96,7 @@ void ViewRenderer::drawNpc(const Scene& /*scene*/, const PipelineRun& run, const
   if (isFilled(style)) {
     drawPolygons(inside, view, {0, Mat4(1.0), 1.f, shaded});
   } else if (style != Style::wire) {
-    gl_.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    gl_.Enable(GL_POLYGON_OFFSET_FILL);
-    gl_.PolygonOffset(1.f, 2.f);
-    drawPolygons(inside, view, {0, Mat4(1.0), 1.f, false});
-    gl_.Disable(GL_POLYGON_OFFSET_FILL);
-    gl_.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    depthOnly([&] { drawPolygons(inside, view, {0, Mat4(1.0), 1.f, false}); });
   }
   const OverlayDepth depth = style == Style::wire ? OverlayDepth::ignore : OverlayDepth::test;
   overlay_.draw(outlines, view, w, h, depth);

@@ -97,6 +97,15 @@ void ViewRenderer::beginView(gl::RenderTarget& target, const Vec3& background) {
   gl_.Disable(GL_CULL_FACE);
 }
 
+void ViewRenderer::depthOnly(const std::function<void()>& draw) {
+  gl_.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  gl_.Enable(GL_POLYGON_OFFSET_FILL);
+  gl_.PolygonOffset(1.f, 2.f);
+  draw();
+  gl_.Disable(GL_POLYGON_OFFSET_FILL);
+  gl_.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
 void ViewRenderer::setLights(const Scene& scene, const ViewCamera& view) {
   std::vector<Light> lights = scene.lights;
   if (lights.empty()) lights.push_back({scene.camera.prp, {1, 1, 1}});  // a light at the eye
@@ -156,12 +165,7 @@ void ViewRenderer::drawEdges(const Scene& scene, const ViewCamera& view, int wid
     if (p.enabled) planes.push_back(p.coefficients());
   overlay_.setUserPlanes(planes);
   if (hidden) {
-    gl_.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    gl_.Enable(GL_POLYGON_OFFSET_FILL);
-    gl_.PolygonOffset(1.f, 2.f);
-    drawObjects(scene, view, {0, Mat4(1.0), 1.f, false, true});
-    gl_.Disable(GL_POLYGON_OFFSET_FILL);
-    gl_.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    depthOnly([&] { drawObjects(scene, view, {0, Mat4(1.0), 1.f, false, true}); });
   }
   gl_.Enable(GL_BLEND);
   gl_.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);

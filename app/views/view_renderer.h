@@ -14,6 +14,7 @@
 #include "pipeline/pipeline.h"
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -51,6 +52,9 @@ class ViewRenderer {
   /// Binds the target, clears it to `background` and sets the state every view starts from.
   void beginView(gl::RenderTarget& target, const Vec3& background);
   void drawObjects(const Scene& scene, const ViewCamera& view, const ObjectPass& pass);
+  /// The hidden-line styles' first pass: `draw` fills only the depth buffer, its polygons pushed back
+  /// by glPolygonOffset(1, 2) so their own edges pass the depth test (app/export/svg.cpp mirrors it).
+  void depthOnly(const std::function<void()>& draw);
   void drawEdges(const Scene& scene, const ViewCamera& view, int width, int height, Style style);
   /// Polygons the CPU made (clipped polygons in NPC), filled through the GLSL path.
   /// Flat arrays: polygon i is points[ends[i − 1] .. ends[i]) (no allocation per polygon).

@@ -66,12 +66,7 @@ void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const F
     // Wireframes from the CPU's edge clipping: the visible part of each edge solid, all of it faded.
     const bool hidden = style != Style::wire;
     if (hidden) {
-      gl_.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-      gl_.Enable(GL_POLYGON_OFFSET_FILL);
-      gl_.PolygonOffset(1.f, 2.f);
-      drawObjects(scene, view, {0, Mat4(1.0), 1.f, false});
-      gl_.Disable(GL_POLYGON_OFFSET_FILL);
-      gl_.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+      depthOnly([&] { drawObjects(scene, view, {0, Mat4(1.0), 1.f, false}); });
     }
     OverlayBatch solid, dashed, faded;
     for (const ObjectRun& o : run.objects) {
