@@ -57,6 +57,22 @@ std::string typeName(const Json& j) {
   return "null";
 }
 
+// The cyclic shift k that puts the reference's vertex k under the student's first vertex (the
+// nearest one), for clipped polygons that start elsewhere.
+size_t alignment(const Json& student, const Json& reference) {
+  if (student.empty() || reference.empty() || !student[0].is_array()) return 0;
+  size_t shift = 0;
+  double best = INFINITY;
+  for (size_t k = 0; k < reference.size(); ++k) {
+    double d = 0;
+    for (size_t c = 0; c < std::min(student[0].size(), reference[k].size()); ++c)
+      if (student[0][c].is_number() && reference[k][c].is_number())
+        d += std::abs(student[0][c].get<double>() - reference[k][c].get<double>());
+    if (d < best) best = d, shift = k;
+  }
+  return shift;
+}
+
 struct Walker {
   std::string source;
   double tolerance;
@@ -131,17 +147,8 @@ struct Walker {
         pathKeys.push_back(keys);
         return;
       }
-      size_t shift = 0;
-      if (keys.back() == "clipped_dc" && !s.empty() && isNumberArray(s[0])) {
-        // The clipped polygon may start anywhere: align the student's first vertex.
-        double best = INFINITY;
-        for (size_t k = 0; k < r.size(); ++k) {
-          double d = 0;
-          for (size_t c = 0; c < std::min(s[0].size(), r[k].size()); ++c)
-            if (s[0][c].is_number()) d += std::abs(s[0][c].get<double>() - r[k][c].get<double>());
-          if (d < best) best = d, shift = k;
-        }
-      }
+      // The clipped polygon may start anywhere: align the student's first vertex.
+      const size_t shift = keys.back() == "clipped_dc" ? alignment(s, r) : 0;
       for (size_t i = 0; i < s.size(); ++i) {
         const size_t ri = (i + shift) % r.size();
         auto sub = keys;
@@ -172,6 +179,24 @@ const Json* at(const Json& dump, const std::vector<std::string>& keys) {
   return j;
 }
 
+// The keys of a value in a model's dump: the same as in the reference, except that a clipped
+// polygon's vertices are aligned with the model's polygon instead of the reference's.
+std::vector<std::string> predictedKeys(const Json& answer, const Json& reference, const Json& model,
+                                       std::vector<std::string> keys) {
+  const auto it = std::find(keys.begin(), keys.end(), "clipped_dc");
+  if (it == keys.end() || it + 1 == keys.end()) return keys;
+  const std::vector<std::string> polygonKeys(keys.begin(), it + 1);
+  const Json *ref = at(reference, polygonKeys), *mod = at(model, polygonKeys);
+  // The answer's polygon: the same keys (objects and polygons are not shifted).
+  const Json* stu = at(answer, polygonKeys);
+  if (!ref || !mod || !stu || ref->empty() || mod->empty() || mod->size() != ref->size()) return keys;
+  const size_t n = ref->size();
+  const size_t ri = std::stoul(*(it + 1));
+  const size_t studentIndex = (ri + n - alignment(*stu, *ref)) % n;
+  *(it + 1) = std::to_string((studentIndex + alignment(*stu, *mod)) % n);
+  return keys;
+}
+
 }  // namespace
 
 NumbersGrade gradeNumbers(const Json& answer, std::string_view source, const Scene& scene, double tolerance) {
@@ -200,9 +225,19 @@ NumbersGrade gradeNumbers(const Json& answer, std::string_view source, const Sce
     ModelMatch match{model.id};
     bool differs = false;
     for (size_t i = 0; i < g.values.size(); ++i) {
-      const Json* predicted = at(dump, w.pathKeys[i]);
+      const Json* predicted = at(dump, predictedKeys(answer, reference, dump, w.pathKeys[i]));
       const Json* ref = w.referenceOf[i];
-      if (!predicted || !ref) {
+      if (!ref) {
+        // A list of another length than the reference's: does the model's list have the student's length?
+        const Json* given = at(answer, w.pathKeys[i]);
+        const bool agrees = predicted && given && predicted->is_array() && given->is_array() &&
+                            predicted->size() == given->size();
+        if (!agrees) ++match.contradicted;
+        else ++match.explained;
+        differs = true;
+        continue;
+      }
+      if (!predicted) {
         ++match.contradicted;
         continue;
       }
