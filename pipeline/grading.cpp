@@ -136,6 +136,8 @@ struct Walker {
       const bool numbers = isNumberArray(r);
       if (numbers && s.size() != r.size())
         fail(path, std::to_string(s.size()) + " numbers where " + std::to_string(r.size()) + " are expected");
+      if (keys.back().find("_from_") != std::string::npos && s.size() != r.size())
+        fail(path, std::to_string(s.size()) + " rows where a 4 × 4 matrix (4 rows of 4 numbers) is expected");
       const bool objects = !r.empty() && r[0].is_object();
       if (objects && s.size() > r.size())
         fail(path, std::to_string(s.size()) + " entries, but the scene has only " + std::to_string(r.size()));
