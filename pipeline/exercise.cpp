@@ -105,9 +105,16 @@ SceneObject drawPolygon(Draw& d, const Camera& camera, bool behindEye) {
   return o;
 }
 
-bool isSmallRational(double x) { return Rational::approximate(x, 1000).has_value(); }
-bool isSmallRational(const Vec3& v) { return isSmallRational(v.x) && isSmallRational(v.y) && isSmallRational(v.z); }
-bool isSmallRational(const Vec4& v) { return isSmallRational(Vec3(v)) && isSmallRational(v.w); }
+// The given data and the stages of P1: denominators up to 100; the clipping's t and new vertices,
+// which divide by differences of boundary values, up to 1000.
+constexpr int64_t kGivenDen = 100, kClipDen = 1000;
+bool isSmallRational(double x, int64_t maxDen = kGivenDen) { return Rational::approximate(x, maxDen).has_value(); }
+bool isSmallRational(const Vec3& v, int64_t maxDen = kGivenDen) {
+  return isSmallRational(v.x, maxDen) && isSmallRational(v.y, maxDen) && isSmallRational(v.z, maxDen);
+}
+bool isSmallRational(const Vec4& v, int64_t maxDen = kGivenDen) {
+  return isSmallRational(Vec3(v), maxDen) && isSmallRational(v.w, maxDen);
+}
 bool isSmallRational(const Mat4& m) {
   for (int c = 0; c < 4; ++c)
     if (!isSmallRational(m[c])) return false;
@@ -138,9 +145,9 @@ bool wellPosed(const Exercise& e) {
   if (!e.pointBehindEye && (!isSmallRational(s.point.npc) || !isSmallRational(s.point.dc))) return false;
   for (const auto& step : s.intersections)
     for (const ClipIntersection& c : step)
-      if (!isSmallRational(c.t) || !isSmallRational(c.vertex)) return false;
+      if (!isSmallRational(c.t, kClipDen) || !isSmallRational(c.vertex, kClipDen)) return false;
   for (const Vec3& p : s.clippedDc)
-    if (!isSmallRational(p)) return false;
+    if (!isSmallRational(p, kClipDen)) return false;
   return true;
 }
 

@@ -1,8 +1,9 @@
 // Exact fractions for the worked solutions of `vplab exercise` (issue 14): the pipeline computes in
 // double precision; where an exercise's inputs (small integers and halves, Pythagorean directions)
 // make a value a small rational, the solution prints it as that fraction. A value is shown as a
-// fraction only when a fraction with a small denominator reproduces the double to within 1e-9
-// (relative), else as a decimal with a stated number of places.
+// fraction only when a fraction with a small denominator reproduces the double to within 1e-11
+// (relative: the few roundings of an exact computation stay far below it, while a decimal that is no
+// such fraction hits one by chance with a probability of about 1e-5·|x|), else as a decimal with a stated number of places.
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -34,7 +35,7 @@ class Rational {
   /// The fraction with the smallest denominator ≤ maxDen within relTol·max(1, |x|) of x (best
   /// rational approximations by continued fractions), or nullopt when none is that close or x is
   /// not finite.
-  static std::optional<Rational> approximate(double x, int64_t maxDen = 1000, double relTol = 1e-9);
+  static std::optional<Rational> approximate(double x, int64_t maxDen = 1000, double relTol = 1e-11);
 
   /// "3", "-3/10".
   std::string text() const;

@@ -37,7 +37,9 @@ GradeReport numbersReport(const NumbersGrade& g, const std::string& student, con
   r.student = student;
   r.scene = scene;
   r.passed = g.passed();
-  r.header.push_back("tolerance: |student − reference| ≤ " + fixed(g.tolerance, 6) +
+  char tol[32];
+  std::snprintf(tol, sizeof tol, "%g", g.tolerance);
+  r.header.push_back("tolerance: |student − reference| ≤ " + std::string(tol) +
                      " · max(1, |reference|); integers, names and fates exactly; a clipped polygon may start at any vertex");
   // One case per vector or matrix, in the order of the student's file.
   std::vector<std::string> order;
