@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -24,16 +25,38 @@ struct UsageError : Error {
 };
 
 struct ExerciseArgs {
-  uint64_t seed = 1;
+  std::string seed = "1";
   std::string topic = "pipeline", projection = "perspective", lang = "en", out;
 };
 
 struct GradeArgs {
   std::string scene, student, junit, view = "camera", style = "flat", diff, backend = "auto";
-  double tolerance = 1e-3;
-  ImageThresholds thresholds;
+  // Numbers as text, converted here, so that a bad value is a usage error (exit 2) like the others.
+  std::string tolerance = "0.001", maxDiff = "48", meanDiff = "2", maxShare = "0.005";
   bool json = false;
 };
+
+double number(const std::string& option, const std::string& text, double lo, double hi) {
+  size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !(v >= lo && v <= hi))
+    throw UsageError(option + " \"" + text + "\": a number from " + format(lo) + " to " + format(hi) + " expected");
+  return v;
+}
+
+/// Arguments CLI11 did not recognise (the subcommands allow extras so that they end here, with exit 2).
+void noExtras(const CLI::App* cmd) {
+  const std::vector<std::string> extra = cmd->remaining();
+  if (extra.empty()) return;
+  std::string list;
+  for (const std::string& e : extra) list += (list.empty() ? "" : " ") + e;
+  throw UsageError("unexpected argument(s): " + list + " (see --help)");
+}
 
 Scene gradeScene(const std::string& path) {
   try {
@@ -67,11 +90,12 @@ void emit(const GradeReport& report, const GradeArgs& a) {
 
 int gradeNumbersCommand(const GradeArgs& a) {
   if (a.student.empty()) throw UsageError("grade numbers: --student FILE is required");
+  const double tolerance = number("--tolerance", a.tolerance, 0, 0.5);
   const Scene scene = gradeScene(a.scene);
   const std::string text = readAnswer(a.student);
   NumbersGrade grade;
   try {
-    grade = gradeNumbers(parseAnswer(text, a.student), a.student, scene, a.tolerance);
+    grade = gradeNumbers(parseAnswer(text, a.student), a.student, scene, tolerance);
   } catch (const Error& e) {
     throw UsageError(e.what());
   }
@@ -89,10 +113,12 @@ int gradeImageCommand(const GradeArgs& a) {
   if (!style) throw UsageError("--style \"" + a.style + "\": flat, shaded, wire, hidden-line or hidden-removed expected");
   const auto backend = backendFromString(a.backend);
   if (!backend) throw UsageError("--backend \"" + a.backend + "\": auto, egl or osmesa expected");
-  const ImageThresholds& t = a.thresholds;
-  if (t.maxDiff < 0 || t.maxDiff > 255) throw UsageError("--max-diff " + std::to_string(t.maxDiff) + ": 0 to 255 expected");
-  if (!(t.meanDiff >= 0 && t.meanDiff <= 255)) throw UsageError("--mean-diff: 0 to 255 expected");
-  if (!(t.maxShare >= 0 && t.maxShare <= 1)) throw UsageError("--max-share: 0 to 1 expected");
+  ImageThresholds t;
+  const double maxDiff = number("--max-diff", a.maxDiff, 0, 255);
+  if (maxDiff != std::floor(maxDiff)) throw UsageError("--max-diff \"" + a.maxDiff + "\": a whole number from 0 to 255 expected");
+  t.maxDiff = int(maxDiff);
+  t.meanDiff = number("--mean-diff", a.meanDiff, 0, 255);
+  t.maxShare = number("--max-share", a.maxShare, 0, 1);
   const Scene scene = gradeScene(a.scene);
   Image student;
   try {
@@ -118,7 +144,9 @@ int exerciseCommand(const ExerciseArgs& a) {
   const auto projection = projectionFromString(a.projection);
   if (!projection) throw UsageError("--projection \"" + a.projection + "\": perspective, parallel or oblique expected");
   if (a.lang != "en" && a.lang != "de") throw UsageError("--lang \"" + a.lang + "\": en or de expected");
-  const Exercise exercise = generateExercise({a.seed, *topic, *projection});
+  if (a.seed.empty() || a.seed.size() > 18 || a.seed.find_first_not_of("0123456789") != std::string::npos)
+    throw UsageError("--seed \"" + a.seed + "\": a whole number from 0 to 999999999999999999 expected");
+  const Exercise exercise = generateExercise({std::stoull(a.seed), *topic, *projection});
   writeExercise(exercise, a.lang == "de" ? Language::de : Language::en, a.out);
   std::cerr << "vplab exercise: wrote sheet.md, solution.md, sheet.tex, solution.tex, scene.json and the figures to "
             << a.out << "\n";
@@ -126,17 +154,20 @@ int exerciseCommand(const ExerciseArgs& a) {
 }
 
 /// Runs a command and ends the parse with its exit code (CLI::App::exit returns it).
+/// `failure`: the exit code of an error that is not the user's (exercise: 1; grade: 2, "could not
+/// grade", as 1 means "graded: wrong").
 template <class F>
-[[noreturn]] void finish(F&& run) {
+[[noreturn]] void finish(const CLI::App* cmd, int failure, F&& run) {
   int code = 0;
   try {
+    noExtras(cmd);
     code = run();
   } catch (const UsageError& e) {
     std::cerr << "vplab: error: " << e.what() << "\n";
     code = 2;
   } catch (const Error& e) {
     std::cerr << "vplab: error: " << e.what() << "\n";
-    code = 1;
+    code = failure;
   } catch (const std::exception& e) {
     std::cerr << "vplab: unexpected error: " << e.what() << "\n";
     code = 2;
@@ -162,19 +193,23 @@ void addCourseCommands(CLI::App& app) {
   exercise->add_option("--projection", ex->projection, "perspective (default), parallel or oblique");
   exercise->add_option("--lang", ex->lang, "en (default) or de");
   exercise->add_option("--out", ex->out, "The folder to write to (created; required)");
-  exercise->callback([ex] { finish([&] { return exerciseCommand(*ex); }); });
+  exercise->allow_extras();
+  exercise->callback([ex, exercise] { finish(exercise, 1, [&] { return exerciseCommand(*ex); }); });
 
   CLI::App* grade = app.add_subcommand(
       "grade", "Compare a student's numbers (grade numbers) or screenshot (grade image) with the reference and name "
                "the mistake. Exit status 0 passed, 1 wrong, 2 usage or input error");
-  grade->require_subcommand(1);
+  grade->callback([grade] {  // runs only when no subcommand ended the parse
+    finish(grade, 2, []() -> int { throw UsageError("grade: a subcommand is required: numbers or image"); });
+  });
   auto num = std::make_shared<GradeArgs>();
   CLI::App* numbers = grade->add_subcommand(
       "numbers", "Grade a student's numbers in the `vplab dump` format (any subset of it) value by value");
   addGradeOptions(numbers, *num);
   numbers->add_option("--tolerance", num->tolerance,
                       "A number is right when |student − reference| ≤ T · max(1, |reference|); default 0.001");
-  numbers->callback([num] { finish([&] { return gradeNumbersCommand(*num); }); });
+  numbers->allow_extras();
+  numbers->callback([num, numbers] { finish(numbers, 2, [&] { return gradeNumbersCommand(*num); }); });
 
   auto img = std::make_shared<GradeArgs>();
   CLI::App* image = grade->add_subcommand(
@@ -182,14 +217,15 @@ void addCourseCommands(CLI::App& app) {
   addGradeOptions(image, *img);
   image->add_option("--view", img->view, "camera (default), world or npc");
   image->add_option("--style", img->style, "flat (default), shaded, wire, hidden-line or hidden-removed");
-  image->add_option("--max-diff", img->thresholds.maxDiff,
+  image->add_option("--max-diff", img->maxDiff,
                     "A pixel is wrong when a channel differs by more than N (0..255, default 48)");
-  image->add_option("--mean-diff", img->thresholds.meanDiff,
+  image->add_option("--mean-diff", img->meanDiff,
                     "The mean channel difference may be at most M (default 2.0)");
-  image->add_option("--max-share", img->thresholds.maxShare, "At most this share of pixels may be wrong (default 0.005)");
+  image->add_option("--max-share", img->maxShare, "At most this share of pixels may be wrong (default 0.005)");
   image->add_option("--diff", img->diff, "Where to write the difference image (default: STUDENT.diff.png)");
   image->add_option("--backend", img->backend, "Headless OpenGL: auto (EGL, then OSMesa), egl or osmesa");
-  image->callback([img] { finish([&] { return gradeImageCommand(*img); }); });
+  image->allow_extras();
+  image->callback([img, image] { finish(image, 2, [&] { return gradeImageCommand(*img); }); });
 }
 
 }  // namespace vplab

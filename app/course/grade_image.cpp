@@ -41,8 +41,8 @@ ImageGrade gradeImage(ViewRenderer& renderer, const Scene& scene, const Image& s
   std::vector<Candidate> candidates;
   candidates.push_back({"upside-down", "the picture is upside down: y was not flipped (GL's window y points up, DC's down)",
                         "lecture notes 15.2.5; read-back rows must be flipped", flipped(g.reference, true)});
-  candidates.push_back({"mirrored", "the picture is mirrored left to right: x flipped (a left-handed U, or VRP − PRP for N)",
-                        "lecture notes 15.2.2: U = VUP × N", flipped(g.reference, false)});
+  candidates.push_back({"mirrored", "the picture is mirrored left to right: x flipped (U = N × VUP instead of VUP × N, or x_dc = W·(1 − x))",
+                        "lecture notes 15.2.2 (U = VUP × N) and 15.2.5 (x_dc = W·x)", flipped(g.reference, false)});
   if (view == ViewKind::camera && style == Style::flat) {
     PipelineOptions options;
     options.strategy = ClipStrategy::divideFirst;

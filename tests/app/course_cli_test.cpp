@@ -191,6 +191,9 @@ TEST_F(Course, ExerciseInGermanAndBadOptions) {
   r = vplab("exercise --lang fr --out x");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_THAT(r.err, HasSubstr("--lang \"fr\": en or de expected"));
+  r = vplab("exercise --seed -4 --out x");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("--seed \"-4\": a whole number"));
   r = vplab("exercise --seed 1");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_THAT(r.err, HasSubstr("--out DIR is required"));
@@ -281,6 +284,19 @@ TEST_F(Course, GradeNumbersInputErrorsExitWith2) {
   r = vplab("grade numbers");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_THAT(r.err, HasSubstr("--student FILE is required"));
+  // Usage errors are exit 2 too (not CLI11's own codes), with the value named.
+  r = vplab("grade numbers --student bad.json --bogus");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("unexpected argument(s): --bogus"));
+  r = vplab("grade numbers --student bad.json --tolerance lots");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("--tolerance \"lots\": a number from 0 to 0.5 expected"));
+  r = vplab("grade");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("a subcommand is required: numbers or image"));
+  r = vplab("grade image --student x.png --max-diff 300");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("--max-diff \"300\": a number from 0 to 255 expected"));
 }
 
 // ---------------------------------------------------------------- vplab grade image

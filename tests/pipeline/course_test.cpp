@@ -65,6 +65,9 @@ TEST(Rational, ApproximatesSmallFractionsOnly) {
   EXPECT_FALSE(Rational::approximate(kPi));
   EXPECT_FALSE(Rational::approximate(1.0 / 1009.0));  // denominator above 1000
   EXPECT_FALSE(Rational::approximate(std::nan("")));
+  // Regression: a decimal that lies within 1e-9 (relative) of a fraction by chance is no fraction.
+  // An oblique exercise printed the DC x 315.56349… as 39761/126.
+  EXPECT_FALSE(Rational::approximate(39761.0 / 126.0 + 1e-7));
   EXPECT_FALSE(Rational::approximate(INFINITY));
 }
 
