@@ -78,6 +78,7 @@ struct Walker {
   double tolerance;
   std::vector<GradedValue> values;
   std::vector<const Json*> referenceOf;  // per value: the reference leaf (for the models)
+  std::vector<const Json*> studentOf;    // per value: the student's leaf
   std::vector<std::vector<std::string>> pathKeys;  // per value: the path into the dump
 
   [[noreturn]] void fail(const std::string& path, const std::string& what) const {
@@ -106,6 +107,7 @@ struct Walker {
     }
     values.push_back({path, group, stage, same(s, r), s.dump(), r.dump()});
     referenceOf.push_back(&r);
+    studentOf.push_back(&s);
     pathKeys.push_back(std::move(keys));
   }
 
@@ -146,6 +148,7 @@ struct Walker {
         values.push_back({path, path, stage, false, std::to_string(s.size()) + " entries",
                           std::to_string(r.size()) + " entries"});
         referenceOf.push_back(nullptr);
+        studentOf.push_back(&s);
         pathKeys.push_back(keys);
         return;
       }
@@ -204,7 +207,7 @@ std::vector<std::string> predictedKeys(const Json& answer, const Json& reference
 NumbersGrade gradeNumbers(const Json& answer, std::string_view source, const Scene& scene, double tolerance) {
   if (!(tolerance >= 0 && tolerance < 1)) throw Error("the tolerance must lie in [0, 1), not " + std::to_string(tolerance));
   const Json reference = referenceDump(scene);
-  Walker w{std::string(source), tolerance, {}, {}, {}};
+  Walker w{std::string(source), tolerance, {}, {}, {}, {}};
   w.walk(answer, reference, "", "", 0, {}, "");
   NumbersGrade g;
   g.tolerance = tolerance;
@@ -243,8 +246,7 @@ NumbersGrade gradeNumbers(const Json& answer, std::string_view source, const Sce
         ++match.contradicted;
         continue;
       }
-      const Json student = Json::parse(g.values[i].student);
-      const bool agrees = w.same(student, *predicted);
+      const bool agrees = w.same(*w.studentOf[i], *predicted);
       differs = differs || !w.same(*predicted, *ref);
       if (!agrees) ++match.contradicted;
       else if (!g.values[i].right) ++match.explained;
