@@ -288,9 +288,11 @@ struct Writer {
                                      "Randkoordinate negativ ist): ") +
                                        "$" + outcodeBits(p.outcode) + "_2 = " + std::to_string(p.outcode) + "$."});
     d.push_back({Block::heading, L("5. Division by w and device mapping (15.2.5)", "5. Division durch w und Device Mapping (15.2.5)")});
+    d.push_back({Block::paragraph, L("$x_{DC} = W \\cdot x,\\ y_{DC} = H \\cdot (1 - y),\\ z_{DC} = z$: origin top left, y down.",
+                                     "$x_{DC} = W \\cdot x,\\ y_{DC} = H \\cdot (1 - y),\\ z_{DC} = z$: Ursprung oben links, y nach unten.")});
+    matrixPair(d, "\\mathit{dcFromNpc}", s.run.dcFromNpc);
     if (p.outcode == 0) {
       d.push_back({Block::math, "P_1^{NPC} = \\left(\\frac{x}{w},\\ \\frac{y}{w},\\ \\frac{z}{w}\\right) = " + vec(p.npc)});
-      matrixPair(d, "\\mathit{dcFromNpc}", s.run.dcFromNpc);
       d.push_back({Block::math, "P_1^{DC} = \\mathit{dcFromNpc} \\cdot P_1^{NPC} = " + vec(p.dc)});
     } else if (p.npcH.w < 0) {
       d.push_back({Block::paragraph,

@@ -163,9 +163,10 @@ TEST_F(Course, SolutionNumbersAreThoseOfVplabDump) {
     const std::string md = slurp(dir_ / "ex" / "solution.md");
     const auto matrices = matricesOf(md);
     const auto tuples = tuplesOf(md);
-    ASSERT_GE(matrices.size(), 6u);  // each stage matrix in both forms (dcFromNpc when P1 is inside)
+    ASSERT_EQ(matrices.size(), 8u);  // each stage matrix in both forms
     const Json& o = d["objects"][0];
-    for (const Json* m : {&d["matrices"]["vrc_from_wc"], &d["matrices"]["npc_from_vrc"], &o["wc_from_mc"]}) {
+    for (const Json* m : {&d["matrices"]["vrc_from_wc"], &d["matrices"]["npc_from_vrc"], &d["matrices"]["dc_from_npc"],
+                          &o["wc_from_mc"]}) {
       EXPECT_TRUE(contains(matrices, flat(*m))) << m->dump() << " (column form)";
       EXPECT_TRUE(contains(matrices, transposed(*m))) << m->dump() << " (the seed's row form)";
     }
