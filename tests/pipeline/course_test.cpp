@@ -124,6 +124,47 @@ TEST(Exercise, EveryTopicAndProjectionIsWellPosed) {
       }
 }
 
+// The fractions a solution prints are exact, not near misses: each stage's product, redone in
+// exact rational arithmetic from the printed matrix and point, gives the printed result.
+TEST(Exercise, PrintedFractionsAreExact) {
+  auto exact = [](double x) {
+    const auto r = Rational::approximate(x);
+    EXPECT_TRUE(r) << x;
+    return r.value_or(Rational(0));
+  };
+  auto product = [&](const Mat4& m, const Vec4& p) {
+    std::array<Rational, 4> out{};
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) out[size_t(r)] = out[size_t(r)] + exact(m[c][r]) * exact(p[c]);
+    return out;
+  };
+  size_t checked = 0;
+  for (Projection projection : {Projection::perspective, Projection::parallel})
+    for (uint64_t seed = 1; seed <= 6; ++seed) {
+      const Exercise e = generateExercise({seed, ExerciseTopic::pipeline, projection});
+      const ExerciseSolution s = solveExercise(e);
+      const PointStages& p = s.point;
+      const auto wc = product(s.wcFromMc, Vec4(p.mc, 1));
+      const auto vrc = product(s.run.vrcFromWc, Vec4(p.wc, 1));
+      const auto npcH = product(s.run.npcFromVrc, Vec4(p.vrc, 1));
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(wc[size_t(i)], exact(p.wc[i]));
+        EXPECT_EQ(vrc[size_t(i)], exact(p.vrc[i]));
+      }
+      for (int i = 0; i < 4; ++i) EXPECT_EQ(npcH[size_t(i)], exact(p.npcH[i]));
+      if (p.outcode == 0) {
+        // The division and the device mapping, exactly.
+        const Rational w = npcH[3];
+        const auto dc = product(s.run.dcFromNpc, Vec4(p.npc, 1));
+        EXPECT_EQ(exact(p.npc.x), npcH[0] / w);
+        EXPECT_EQ(exact(p.dc.x), dc[0]);
+        EXPECT_EQ(exact(p.dc.y), dc[1]);
+      }
+      ++checked;
+    }
+  EXPECT_EQ(checked, 12u);
+}
+
 TEST(Exercise, IntersectionsAreTheClippersOwnVertices) {
   const Exercise e = generateExercise({5, ExerciseTopic::clipping, Projection::perspective});
   const ExerciseSolution s = solveExercise(e);
