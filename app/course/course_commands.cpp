@@ -176,10 +176,13 @@ template <class F>
 }
 
 void addGradeOptions(CLI::App* cmd, GradeArgs& a) {
-  cmd->add_option("--scene", a.scene, "The assignment's scene file (JSON); default: the built-in lecture scene");
-  cmd->add_option("--student", a.student, "The student's answer file (required)");
+  cmd->add_option("--scene", a.scene, "The assignment's scene file (JSON); default: the built-in lecture scene")
+      ->type_name("FILE");
+  cmd->add_option("--student", a.student, "The student's answer file (required)")
+      ->type_name("FILE");
   cmd->add_flag("--json", a.json, "Print the report as JSON instead of text");
-  cmd->add_option("--junit", a.junit, "Also write the report as JUnit XML to FILE (for autograders)");
+  cmd->add_option("--junit", a.junit, "Also write the report as JUnit XML to FILE (for autograders)")
+      ->type_name("FILE");
 }
 
 }  // namespace
@@ -188,11 +191,16 @@ void addCourseCommands(CLI::App& app) {
   auto ex = std::make_shared<ExerciseArgs>();
   CLI::App* exercise = app.add_subcommand(
       "exercise", "Write an exercise sheet and its worked solution (Markdown and LaTeX, with figures) into --out DIR");
-  exercise->add_option("--seed", ex->seed, "The exercise's number: the same seed gives the same files");
-  exercise->add_option("--topic", ex->topic, "orientation, mapping, clipping or pipeline (the default: all stages)");
-  exercise->add_option("--projection", ex->projection, "perspective (default), parallel or oblique");
-  exercise->add_option("--lang", ex->lang, "en (default) or de");
-  exercise->add_option("--out", ex->out, "The folder to write to (created; required)");
+  exercise->add_option("--seed", ex->seed, "The exercise's number: the same seed gives the same files")
+      ->type_name("N");
+  exercise->add_option("--topic", ex->topic, "orientation, mapping, clipping or pipeline (the default: all stages)")
+      ->type_name("TOPIC");
+  exercise->add_option("--projection", ex->projection, "perspective (default), parallel or oblique")
+      ->type_name("PROJECTION");
+  exercise->add_option("--lang", ex->lang, "en (default) or de")
+      ->type_name("LANG");
+  exercise->add_option("--out", ex->out, "The folder to write to (created; required)")
+      ->type_name("DIR");
   exercise->allow_extras();
   exercise->callback([ex, exercise] { finish(exercise, 1, [&] { return exerciseCommand(*ex); }); });
 
@@ -207,7 +215,8 @@ void addCourseCommands(CLI::App& app) {
       "numbers", "Grade a student's numbers in the `vplab dump` format (any subset of it) value by value");
   addGradeOptions(numbers, *num);
   numbers->add_option("--tolerance", num->tolerance,
-                      "A number is right when |student − reference| ≤ T · max(1, |reference|); default 0.001");
+                      "A number is right when |student − reference| ≤ T · max(1, |reference|); default 0.001")
+      ->type_name("T");
   numbers->allow_extras();
   numbers->callback([num, numbers] { finish(numbers, 2, [&] { return gradeNumbersCommand(*num); }); });
 
@@ -215,15 +224,22 @@ void addCourseCommands(CLI::App& app) {
   CLI::App* image = grade->add_subcommand(
       "image", "Grade a student's screenshot (PNG) against the reference rendered headless at its size");
   addGradeOptions(image, *img);
-  image->add_option("--view", img->view, "camera (default), world or npc");
-  image->add_option("--style", img->style, "flat (default), shaded, wire, hidden-line or hidden-removed");
+  image->add_option("--view", img->view, "camera (default), world or npc")
+      ->type_name("VIEW");
+  image->add_option("--style", img->style, "flat (default), shaded, wire, hidden-line or hidden-removed")
+      ->type_name("STYLE");
   image->add_option("--max-diff", img->maxDiff,
-                    "A pixel is wrong when a channel differs by more than N (0..255, default 48)");
+                    "A pixel is wrong when a channel differs by more than N (0..255, default 48)")
+      ->type_name("N");
   image->add_option("--mean-diff", img->meanDiff,
-                    "The mean channel difference may be at most M (default 2.0)");
-  image->add_option("--max-share", img->maxShare, "At most this share of pixels may be wrong (default 0.005)");
-  image->add_option("--diff", img->diff, "Where to write the difference image (default: STUDENT.diff.png)");
-  image->add_option("--backend", img->backend, "Headless OpenGL: auto (EGL, then OSMesa), egl or osmesa");
+                    "The mean channel difference may be at most M (default 2.0)")
+      ->type_name("M");
+  image->add_option("--max-share", img->maxShare, "At most this share of pixels may be wrong (default 0.005)")
+      ->type_name("P");
+  image->add_option("--diff", img->diff, "Where to write the difference image (default: STUDENT.diff.png)")
+      ->type_name("FILE");
+  image->add_option("--backend", img->backend, "Headless OpenGL: auto (EGL, then OSMesa), egl or osmesa")
+      ->type_name("BACKEND");
   image->allow_extras();
   image->callback([img, image] { finish(image, 2, [&] { return gradeImageCommand(*img); }); });
 }
