@@ -99,7 +99,7 @@ SceneObject drawPolygon(Draw& d, const Camera& camera, bool behindEye) {
   const Vec3 axis = camera.prp - camera.vrp;
   Vec3 target = camera.vrp + Vec3(d.half(-1.5, 1.5), d.half(-1.5, 1.5), d.half(-1.5, 1.5));
   if (behindEye) target += axis * d.of({1.5, 2.0});
-  const Vec3 placed = transformAffine(wcFromMc(o.transform) * translation(Vec3(0)), o.vertices[0]);
+  const Vec3 placed = transformAffine(wcFromMc(o.transform), o.vertices[0]);  // R · S · P1 (no translation yet)
   const Vec3 t = target - placed;
   o.transform.translate = {std::round(2 * t.x) / 2, std::round(2 * t.y) / 2, std::round(2 * t.z) / 2};
   return o;

@@ -29,6 +29,13 @@ std::string xmlEscape(const std::string& s) {
   return out;
 }
 
+// A value's text as JSON: numbers and strings as they are, "5 entries" (a list of another length)
+// as a string.
+Json asJson(const std::string& text) {
+  Json j = Json::parse(text, nullptr, false);
+  return j.is_discarded() ? Json(text) : j;
+}
+
 }  // namespace
 
 GradeReport numbersReport(const NumbersGrade& g, const std::string& student, const std::string& scene) {
@@ -64,7 +71,7 @@ GradeReport numbersReport(const NumbersGrade& g, const std::string& student, con
     Json wrongValues = Json::array();
     for (const GradedValue& v : g.values)
       if (v.group == name && !v.right)
-        wrongValues.push_back({{"path", v.path}, {"student", Json::parse(v.student, nullptr, false)}, {"reference", Json::parse(v.reference, nullptr, false)}});
+        wrongValues.push_back({{"path", v.path}, {"student", asJson(v.student)}, {"reference", asJson(v.reference)}});
     groups.push_back({{"path", name}, {"values", total}, {"wrong", wrong}, {"wrong_values", wrongValues}});
     r.cases.push_back(c);
   }

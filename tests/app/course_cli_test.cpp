@@ -264,6 +264,23 @@ TEST_F(Course, GradeNumbersExitCodesAndReports) {
   EXPECT_EQ(report["passed"], false);
   EXPECT_EQ(report["mistake"]["key"], "y-not-flipped");
   EXPECT_EQ(report["first_departing_stage"]["stage"], 5);
+
+  // A clipped polygon with a vertex missing: wrong (not malformed), and the JSON report stays JSON.
+  Json shorter = Json::parse(slurp(dir_ / "right.json"));
+  Json& dc = shorter["objects"][0]["polygons"][0]["clipped_dc"];
+  ASSERT_GE(dc.size(), 3u);
+  dc.erase(dc.size() - 1);
+  std::ofstream(dir_ / "shorter.json") << shorter.dump();
+  r = vplab("grade numbers --scene " + scene + " --student shorter.json --json");
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  const Json shortReport = Json::parse(r.out);
+  EXPECT_EQ(shortReport["wrong"], 1);
+  EXPECT_EQ(shortReport["first_departing_stage"]["stage"], 5);
+  bool found = false;
+  for (const Json& g : shortReport["groups"])
+    for (const Json& v : g["wrong_values"])
+      found = found || (v["student"] == std::to_string(dc.size()) + " entries");
+  EXPECT_TRUE(found) << r.out.substr(0, 2000);
 }
 
 TEST_F(Course, GradeNumbersInputErrorsExitWith2) {
