@@ -8,6 +8,7 @@
 #include "pipeline/scene_io.h"
 
 #include <CLI/CLI.hpp>
+#include <stb_image.h>
 
 #include <cmath>
 #include <fstream>
@@ -18,6 +19,8 @@
 namespace vplab {
 
 namespace {
+
+constexpr int kMaxGradeSide = 8192;
 
 /// A usage or input error: exit status 2.
 struct UsageError : Error {
@@ -120,6 +123,11 @@ int gradeImageCommand(const GradeArgs& a) {
   t.meanDiff = number("--mean-diff", a.meanDiff, 0, 255);
   t.maxShare = number("--max-share", a.maxShare, 0, 1);
   const Scene scene = gradeScene(a.scene);
+  // The size from the PNG header first: a hostile file must not make us allocate (or render) gigabytes.
+  int width = 0, height = 0, channels = 0;
+  if (stbi_info(a.student.c_str(), &width, &height, &channels) && (width > kMaxGradeSide || height > kMaxGradeSide))
+    throw UsageError(a.student + ": " + std::to_string(width) + " × " + std::to_string(height) +
+                     " pixels; at most " + std::to_string(kMaxGradeSide) + " on each side are graded");
   Image student;
   try {
     student = readPng(a.student);

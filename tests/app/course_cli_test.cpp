@@ -367,6 +367,18 @@ TEST_F(Course, GradeImageNamesTheImageMistakes) {
   r = vplab("grade image --scene " + scene + " --student nothing.png");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_THAT(r.err, HasSubstr("nothing.png"));
+  // A PNG whose header claims 12000 × 12000 pixels (576 MB of RGBA, under stb_image's own limit of
+  // 1 GB): refused before anything is allocated or rendered.
+  {
+    std::string png = slurp(dir_ / "right.png");
+    ASSERT_GT(png.size(), 24u);
+    const unsigned char size[8] = {0, 0, 0x2e, 0xe0, 0, 0, 0x2e, 0xe0};  // IHDR width, height (big endian)
+    for (int i = 0; i < 8; ++i) png[size_t(16 + i)] = char(size[i]);
+    std::ofstream(dir_ / "huge.png", std::ios::binary) << png;
+  }
+  r = vplab("grade image --scene " + scene + " --student huge.png");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("huge.png: 12000 × 12000 pixels; at most 8192 on each side are graded"));
   r = vplab("grade image --scene " + scene + " --student right.png --view morph");
   EXPECT_EQ(r.exitCode, 2);
 }
