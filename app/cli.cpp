@@ -1,6 +1,7 @@
 #include "app/cli.h"
 
 #include "app/bench.h"
+#include "app/course/course_commands.h"
 #include "app/export/svg.h"
 #include "app/headless.h"
 #include "app/ui/headless_viewer.h"
@@ -226,6 +227,8 @@ int runCommandLine(int argc, char** argv) {
       ->check(CLI::Range(1, 100));
   benchCmd->add_option("--frames", bench.frames, "Frames per frame-time measurement")->check(CLI::Range(5, 10000));
   benchCmd->add_option("--only", benchOnly, "Comma-separated parts: pipeline, frames, startup, input");
+
+  addCourseCommands(app);  // exercise, grade (app/course/)
 
   try {
     app.parse(argc, argv);

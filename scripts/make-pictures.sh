@@ -18,4 +18,12 @@ mkdir -p "$out"
 for t in 0 1 2 2.5 3 4; do
   "$vplab" render --view morph --morph-t "$t" --size 320x240 --out "$out/morph-$t.png"
 done
+# For course staff: the first pages of an exercise sheet and its solution (pdflatex, pdftoppm).
+tmp="$(mktemp -d)"
+"$vplab" exercise --seed 3 --topic pipeline --out "$tmp/ex"
+for doc in sheet solution; do
+  (cd "$tmp/ex" && pdflatex -interaction=nonstopmode -halt-on-error "$doc.tex" >/dev/null)
+  pdftoppm -r 70 -png -f 1 -l 1 -singlefile "$tmp/ex/$doc.pdf" "$out/course-$doc"
+done
+rm -rf "$tmp"
 echo "pictures written to $out"

@@ -14,6 +14,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth x11-utils fonts-dejavu-core
 )
+# vplab exercise: the .tex sheets are compiled by the tests (pdflatex) and turned into pictures (pdftoppm)
+packages+=(texlive-latex-base texlive-latex-recommended poppler-utils)
 
 missing=()
 for p in "${packages[@]}"; do

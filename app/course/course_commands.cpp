@@ -1,0 +1,255 @@
+#include "app/course/course_commands.h"
+
+#include "app/course/exercise_writer.h"
+#include "app/course/grade_image.h"
+#include "app/course/grade_report.h"
+#include "app/headless.h"
+#include "pipeline/error.h"
+#include "pipeline/scene_io.h"
+
+#include <CLI/CLI.hpp>
+#include <stb_image.h>
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace vplab {
+
+namespace {
+
+constexpr int kMaxGradeSide = 8192;
+
+/// A usage or input error: exit status 2.
+struct UsageError : Error {
+  using Error::Error;
+};
+
+struct ExerciseArgs {
+  std::string seed = "1";
+  std::string topic = "pipeline", projection = "perspective", lang = "en", out;
+};
+
+struct GradeArgs {
+  std::string scene, student, junit, view = "camera", style = "flat", diff, backend = "auto";
+  // Numbers as text, converted here, so that a bad value is a usage error (exit 2) like the others.
+  std::string tolerance = "0.001", maxDiff = "48", meanDiff = "2", maxShare = "0.005";
+  bool json = false;
+};
+
+double number(const std::string& option, const std::string& text, double lo, double hi) {
+  size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !(v >= lo && v <= hi))
+    throw UsageError(option + " \"" + text + "\": a number from " + format(lo) + " to " + format(hi) + " expected");
+  return v;
+}
+
+/// Arguments CLI11 did not recognise (the subcommands allow extras so that they end here, with exit 2).
+void noExtras(const CLI::App* cmd) {
+  const std::vector<std::string> extra = cmd->remaining();
+  if (extra.empty()) return;
+  std::string list;
+  for (const std::string& e : extra) list += (list.empty() ? "" : " ") + e;
+  throw UsageError("unexpected argument(s): " + list + " (see --help)");
+}
+
+Scene gradeScene(const std::string& path) {
+  try {
+    return path.empty() ? defaultScene() : loadScene(path);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
+}
+
+std::string readAnswer(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UsageError(path + ": cannot open the student's file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  const std::string text = s.str();
+  if (text.size() > (64u << 20)) throw UsageError(path + ": " + std::to_string(text.size()) + " bytes; at most 64 MiB are read");
+  return text;
+}
+
+void emit(const GradeReport& report, const GradeArgs& a) {
+  if (a.json)
+    std::cout << report.json.dump(2) << "\n";
+  else
+    std::cout << reportText(report);
+  if (!a.junit.empty()) {
+    std::ofstream out(a.junit, std::ios::binary);
+    out << reportJunit(report);
+    if (!out) throw Error(a.junit + ": cannot write the JUnit report");
+  }
+}
+
+int gradeNumbersCommand(const GradeArgs& a) {
+  if (a.student.empty()) throw UsageError("grade numbers: --student FILE is required");
+  const double tolerance = number("--tolerance", a.tolerance, 0, 0.5);
+  const Scene scene = gradeScene(a.scene);
+  const std::string text = readAnswer(a.student);
+  NumbersGrade grade;
+  try {
+    grade = gradeNumbers(parseAnswer(text, a.student), a.student, scene, tolerance);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
+  const GradeReport report = numbersReport(grade, a.student, a.scene.empty() ? "(built-in default scene)" : a.scene);
+  emit(report, a);
+  return report.passed ? 0 : 1;
+}
+
+int gradeImageCommand(const GradeArgs& a) {
+  if (a.student.empty()) throw UsageError("grade image: --student FILE.png is required");
+  const auto view = viewKindFromString(a.view);
+  if (!view || *view == ViewKind::morph || *view == ViewKind::all)
+    throw UsageError("--view \"" + a.view + "\": camera, world or npc expected");
+  const auto style = styleFromString(a.style);
+  if (!style) throw UsageError("--style \"" + a.style + "\": flat, shaded, wire, hidden-line or hidden-removed expected");
+  const auto backend = backendFromString(a.backend);
+  if (!backend) throw UsageError("--backend \"" + a.backend + "\": auto, egl or osmesa expected");
+  ImageThresholds t;
+  const double maxDiff = number("--max-diff", a.maxDiff, 0, 255);
+  if (maxDiff != std::floor(maxDiff)) throw UsageError("--max-diff \"" + a.maxDiff + "\": a whole number from 0 to 255 expected");
+  t.maxDiff = int(maxDiff);
+  t.meanDiff = number("--mean-diff", a.meanDiff, 0, 255);
+  t.maxShare = number("--max-share", a.maxShare, 0, 1);
+  const Scene scene = gradeScene(a.scene);
+  // The size from the PNG header first: a hostile file must not make us allocate (or render) gigabytes.
+  int width = 0, height = 0, channels = 0;
+  if (stbi_info(a.student.c_str(), &width, &height, &channels) && (width > kMaxGradeSide || height > kMaxGradeSide))
+    throw UsageError(a.student + ": " + std::to_string(width) + " × " + std::to_string(height) +
+                     " pixels; at most " + std::to_string(kMaxGradeSide) + " on each side are graded");
+  Image student;
+  try {
+    student = readPng(a.student);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
+  auto context = createHeadlessContext(*backend, false);
+  ViewRenderer renderer(*context);
+  const ImageGrade grade = gradeImage(renderer, scene, student, *view, *style, t);
+  const std::string diff = a.diff.empty() ? a.student + ".diff.png" : a.diff;
+  if (!grade.comparison.sizeMismatch) writePng(grade.difference, diff);
+  const GradeReport report = imageReport(grade, a.student, a.scene.empty() ? "(built-in default scene)" : a.scene,
+                                         grade.comparison.sizeMismatch ? "" : diff);
+  emit(report, a);
+  return report.passed ? 0 : 1;
+}
+
+int exerciseCommand(const ExerciseArgs& a) {
+  if (a.out.empty()) throw UsageError("exercise: --out DIR is required");
+  const auto topic = exerciseTopicFromString(a.topic);
+  if (!topic) throw UsageError("--topic \"" + a.topic + "\": orientation, mapping, clipping or pipeline expected");
+  const auto projection = projectionFromString(a.projection);
+  if (!projection) throw UsageError("--projection \"" + a.projection + "\": perspective, parallel or oblique expected");
+  if (a.lang != "en" && a.lang != "de") throw UsageError("--lang \"" + a.lang + "\": en or de expected");
+  if (a.seed.empty() || a.seed.size() > 18 || a.seed.find_first_not_of("0123456789") != std::string::npos)
+    throw UsageError("--seed \"" + a.seed + "\": a whole number from 0 to 999999999999999999 expected");
+  const Exercise exercise = generateExercise({std::stoull(a.seed), *topic, *projection});
+  writeExercise(exercise, a.lang == "de" ? Language::de : Language::en, a.out);
+  std::cerr << "vplab exercise: wrote sheet.md, solution.md, sheet.tex, solution.tex, scene.json and the figures to "
+            << a.out << "\n";
+  return 0;
+}
+
+/// Runs a command and ends the parse with its exit code (CLI::App::exit returns it).
+/// `failure`: the exit code of an error that is not the user's (exercise: 1; grade: 2, "could not
+/// grade", as 1 means "graded: wrong").
+template <class F>
+[[noreturn]] void finish(const CLI::App* cmd, int failure, F&& run) {
+  int code = 0;
+  try {
+    noExtras(cmd);
+    code = run();
+  } catch (const UsageError& e) {
+    std::cerr << "vplab: error: " << e.what() << "\n";
+    code = 2;
+  } catch (const Error& e) {
+    std::cerr << "vplab: error: " << e.what() << "\n";
+    code = failure;
+  } catch (const std::exception& e) {
+    std::cerr << "vplab: unexpected error: " << e.what() << "\n";
+    code = 2;
+  }
+  throw CLI::RuntimeError(code);
+}
+
+void addGradeOptions(CLI::App* cmd, GradeArgs& a) {
+  cmd->add_option("--scene", a.scene, "The assignment's scene file (JSON); default: the built-in lecture scene")
+      ->type_name("FILE");
+  cmd->add_option("--student", a.student, "The student's answer file (required)")
+      ->type_name("FILE");
+  cmd->add_flag("--json", a.json, "Print the report as JSON instead of text");
+  cmd->add_option("--junit", a.junit, "Also write the report as JUnit XML to FILE (for autograders)")
+      ->type_name("FILE");
+}
+
+}  // namespace
+
+void addCourseCommands(CLI::App& app) {
+  auto ex = std::make_shared<ExerciseArgs>();
+  CLI::App* exercise = app.add_subcommand(
+      "exercise", "Write an exercise sheet and its worked solution (Markdown and LaTeX, with figures) into --out DIR");
+  exercise->add_option("--seed", ex->seed, "The exercise's number: the same seed gives the same files")
+      ->type_name("N");
+  exercise->add_option("--topic", ex->topic, "orientation, mapping, clipping or pipeline (the default: all stages)")
+      ->type_name("TOPIC");
+  exercise->add_option("--projection", ex->projection, "perspective (default), parallel or oblique")
+      ->type_name("PROJECTION");
+  exercise->add_option("--lang", ex->lang, "en (default) or de")
+      ->type_name("LANG");
+  exercise->add_option("--out", ex->out, "The folder to write to (created; required)")
+      ->type_name("DIR");
+  exercise->allow_extras();
+  exercise->callback([ex, exercise] { finish(exercise, 1, [&] { return exerciseCommand(*ex); }); });
+
+  CLI::App* grade = app.add_subcommand(
+      "grade", "Compare a student's numbers (grade numbers) or screenshot (grade image) with the reference and name "
+               "the mistake. Exit status 0 passed, 1 wrong, 2 usage or input error");
+  grade->callback([grade] {  // runs only when no subcommand ended the parse
+    finish(grade, 2, []() -> int { throw UsageError("grade: a subcommand is required: numbers or image"); });
+  });
+  auto num = std::make_shared<GradeArgs>();
+  CLI::App* numbers = grade->add_subcommand(
+      "numbers", "Grade a student's numbers in the `vplab dump` format (any subset of it) value by value");
+  addGradeOptions(numbers, *num);
+  numbers->add_option("--tolerance", num->tolerance,
+                      "A number is right when |student − reference| ≤ T · max(1, |reference|); default 0.001")
+      ->type_name("T");
+  numbers->allow_extras();
+  numbers->callback([num, numbers] { finish(numbers, 2, [&] { return gradeNumbersCommand(*num); }); });
+
+  auto img = std::make_shared<GradeArgs>();
+  CLI::App* image = grade->add_subcommand(
+      "image", "Grade a student's screenshot (PNG) against the reference rendered headless at its size");
+  addGradeOptions(image, *img);
+  image->add_option("--view", img->view, "camera (default), world or npc")
+      ->type_name("VIEW");
+  image->add_option("--style", img->style, "flat (default), shaded, wire, hidden-line or hidden-removed")
+      ->type_name("STYLE");
+  image->add_option("--max-diff", img->maxDiff,
+                    "A pixel is wrong when a channel differs by more than N (0..255, default 48)")
+      ->type_name("N");
+  image->add_option("--mean-diff", img->meanDiff,
+                    "The mean channel difference may be at most M (default 2.0)")
+      ->type_name("M");
+  image->add_option("--max-share", img->maxShare, "At most this share of pixels may be wrong (default 0.005)")
+      ->type_name("P");
+  image->add_option("--diff", img->diff, "Where to write the difference image (default: STUDENT.diff.png)")
+      ->type_name("FILE");
+  image->add_option("--backend", img->backend, "Headless OpenGL: auto (EGL, then OSMesa), egl or osmesa")
+      ->type_name("BACKEND");
+  image->allow_extras();
+  image->callback([img, image] { finish(image, 2, [&] { return gradeImageCommand(*img); }); });
+}
+
+}  // namespace vplab

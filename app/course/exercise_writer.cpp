@@ -1,0 +1,429 @@
+#include "app/course/exercise_writer.h"
+
+#include "app/export/svg.h"
+#include "app/headless.h"
+#include "pipeline/error.h"
+#include "pipeline/rational.h"
+#include "pipeline/scene_io.h"
+
+#include <fstream>
+
+namespace vplab {
+
+namespace {
+
+// ---- A small document model, written out as Markdown or as LaTeX ------------------------------
+
+struct Block {
+  enum Kind { title, heading, paragraph, math, figure, items } kind;
+  std::string text;                 // math: LaTeX; figure: the file's stem; others: text with $…$ math
+  std::vector<std::string> list;    // items
+};
+using Document = std::vector<Block>;
+
+std::string markdown(const Document& doc) {
+  std::string out;
+  for (const Block& b : doc) {
+    switch (b.kind) {
+      case Block::title: out += "# " + b.text + "\n\n"; break;
+      case Block::heading: out += "## " + b.text + "\n\n"; break;
+      case Block::paragraph: out += b.text + "\n\n"; break;
+      case Block::math: out += "$$\n" + b.text + "\n$$\n\n"; break;
+      case Block::figure: out += "![" + b.list.at(0) + "](" + b.text + ".svg)\n\n"; break;
+      case Block::items:
+        for (const std::string& item : b.list) out += "- " + item + "\n";
+        out += "\n";
+        break;
+    }
+  }
+  return out;
+}
+
+std::string latex(const Document& doc) {
+  std::string out =
+      "\\documentclass[a4paper,11pt]{article}\n"
+      "\\usepackage[utf8]{inputenc}\n"
+      "\\usepackage{amsmath,amssymb,graphicx}\n"
+      "\\usepackage[margin=2cm]{geometry}\n"
+      "\\setlength{\\parindent}{0pt}\\setlength{\\parskip}{0.6em}\n"
+      "\\begin{document}\n";
+  for (const Block& b : doc) {
+    switch (b.kind) {
+      case Block::title: out += "\\section*{" + b.text + "}\n\n"; break;
+      case Block::heading: out += "\\subsection*{" + b.text + "}\n\n"; break;
+      case Block::paragraph: out += b.text + "\n\n"; break;
+      case Block::math: out += "\\[\n" + b.text + "\n\\]\n\n"; break;
+      case Block::figure:
+        out += "\\begin{center}\n\\includegraphics[width=0.62\\textwidth]{" + b.text + ".png}\\\\\n" + b.list.at(0) +
+               "\n\\end{center}\n\n";
+        break;
+      case Block::items:
+        out += "\\begin{itemize}\n";
+        for (const std::string& item : b.list) out += "\\item " + item + "\n";
+        out += "\\end{itemize}\n\n";
+        break;
+    }
+  }
+  return out + "\\end{document}\n";
+}
+
+// ---- Numbers, vectors and matrices as LaTeX math -----------------------------------------------
+
+std::string num(double x) { return latexNumber(x); }
+
+std::string vec(std::initializer_list<double> xs) {
+  std::string s = "(";
+  for (double x : xs) s += (s.size() > 1 ? ",\\ " : "") + num(x);
+  return s + ")";
+}
+std::string vec(const Vec3& v) { return vec({v.x, v.y, v.z}); }
+std::string vec(const Vec4& v) { return vec({v.x, v.y, v.z, v.w}); }
+
+std::string mat(const Mat4& m) {
+  std::string s = "\\begin{pmatrix}";
+  for (const auto& r : rowsOf(m)) {
+    for (int c = 0; c < 4; ++c) s += (c ? " & " : " ") + num(r[size_t(c)]);
+    s += " \\\\";
+  }
+  return s + " \\end{pmatrix}";
+}
+
+// ---- The texts, in English and German ----------------------------------------------------------
+
+struct Writer {
+  const Exercise& e;
+  const ExerciseSolution& s;
+  Language lang;
+
+  std::string L(const std::string& en, const std::string& de) const { return lang == Language::de ? de : en; }
+  const Camera& cam() const { return e.scene.camera; }
+  bool perspective() const { return cam().projection == Projection::perspective; }
+  bool oblique() const { return cam().projection == Projection::oblique; }
+  bool shows(ExerciseTopic t) const { return e.spec.topic == ExerciseTopic::pipeline || e.spec.topic == t; }
+
+  std::string topicName() const {
+    switch (e.spec.topic) {
+      case ExerciseTopic::orientation: return L("View orientation", "View Orientation");
+      case ExerciseTopic::mapping: return L("View mapping", "View Mapping");
+      case ExerciseTopic::clipping: return L("Clipping in homogeneous coordinates", "Clipping in homogenen Koordinaten");
+      case ExerciseTopic::pipeline: return L("The viewing pipeline", "Die Viewing-Pipeline");
+    }
+    return "";
+  }
+  std::string projectionName() const {
+    switch (cam().projection) {
+      case Projection::perspective: return L("perspective", "perspektivisch");
+      case Projection::parallel: return L("parallel (orthographic)", "parallel (orthografisch)");
+      case Projection::oblique: return L("oblique parallel", "schiefe Parallelprojektion");
+    }
+    return "";
+  }
+
+  // Two matrices: the column form p' = M·p (the dump's) and the seed's row form p' = p·M^T.
+  void matrixPair(Document& d, const std::string& name, const Mat4& m) const {
+    d.push_back({Block::math, name + " = " + mat(m) + "\\qquad " + name + "^{T} = " + mat(glm::transpose(m))});
+    d.push_back({Block::paragraph,
+                 L("Left the column-vector form ($p' = M \\cdot p$, as the dump prints it); right the "
+                   "seed's row-vector form ($p' = p \\cdot M^T$), its transpose.",
+                   "Links die Form für Spaltenvektoren ($p' = M \\cdot p$, wie der Dump sie ausgibt); rechts "
+                   "die Form des Skripts für Zeilenvektoren ($p' = p \\cdot M^T$), ihre Transponierte.")});
+  }
+
+  std::string outcodeBits(Outcode c) const {
+    std::string bits;
+    for (int i = kPlaneCount - 1; i >= 0; --i) bits += (c >> i) & 1 ? '1' : '0';
+    return bits;
+  }
+
+  std::string planeLabel(int plane) const {
+    static const char* en[] = {"left", "right", "bottom", "top", "back", "front"};
+    static const char* de[] = {"links", "rechts", "unten", "oben", "hinten", "vorne"};
+    return lang == Language::de ? de[plane] : en[plane];
+  }
+  static std::string bcFormula(int plane) {
+    static const char* f[] = {"x", "w - x", "y", "w - y", "z", "w - z"};
+    return f[plane];
+  }
+
+  void givenBlocks(Document& d) const {
+    const Camera& c = cam();
+    d.push_back({Block::heading, L("Given", "Gegeben")});
+    std::vector<std::string> items = {
+        "VRP $= " + vec(c.vrp) + "$, PRP $= " + vec(c.prp) + "$, VUP $= " + vec(c.vup) + "$ " + L("(WC)", "(WC)"),
+        L("window", "View Window") + " $x_{min} = " + num(c.window.xmin) + ",\\ x_{max} = " + num(c.window.xmax) +
+            ",\\ y_{min} = " + num(c.window.ymin) + ",\\ y_{max} = " + num(c.window.ymax) + "$ " +
+            L("in the view plane (VRC)", "in der Bildebene (VRC)"),
+        L("front plane", "vordere Ebene") + " $F = " + num(c.front) + "$, " + L("back plane", "hintere Ebene") +
+            " $B = " + num(c.back) + "$ (VRC z)",
+        L("projection: ", "Projektion: ") + projectionName() +
+            (oblique() ? ", $d = " + num(c.oblique.d) + ",\\ \\varphi = " + num(c.oblique.phiDeg) + "^\\circ$" : ""),
+        L("device", "Ausgabegerät") + " $W \\times H = " + std::to_string(e.scene.device.width) + " \\times " +
+            std::to_string(e.scene.device.height) + "$ " + L("pixels, origin top left, y down", "Pixel, Ursprung oben links, y nach unten"),
+    };
+    const SceneObject& o = e.scene.objects[0];
+    std::string poly;
+    for (size_t i = 0; i < o.vertices.size(); ++i)
+      poly += (i ? ",\\ " : "") + std::string("P_") + std::to_string(i + 1) + " = " + vec(o.vertices[i]);
+    items.push_back(L("the polygon ", "das Polygon ") + "$" + poly + "$ " + L("in MC", "in Modellkoordinaten (MC)"));
+    std::string model = "\\mathit{wcFromMc} = ";
+    model += "T" + vec(o.transform.translate);
+    for (auto it = o.transform.rotations.rbegin(); it != o.transform.rotations.rend(); ++it)
+      model += " \\cdot R_{" + vec(it->axis) + "}(" + num(it->deg) + "^\\circ)";
+    model += " \\cdot S(" + num(o.transform.scale.x) + ")";
+    items.push_back(L("placed in WC by ", "in WC gesetzt durch ") + "$" + model + "$");
+    d.push_back({Block::items, "", items});
+    if (e.spec.topic == ExerciseTopic::mapping)
+      d.push_back({Block::paragraph, L("For the view mapping, $P_1$ in VRC is ", "Für das View Mapping ist $P_1$ in VRC ") +
+                                         "$" + vec(s.point.vrc) + "$."});
+    if (e.spec.topic == ExerciseTopic::clipping) {
+      std::string pts;
+      for (size_t i = 0; i < s.vertices.size(); ++i)
+        pts += (i ? ",\\ " : "") + std::string("P_") + std::to_string(i + 1) + " = " + vec(s.vertices[i].npcH);
+      d.push_back({Block::paragraph, L("The polygon in homogeneous NPC $(x, y, z, w)$ is ",
+                                       "Das Polygon in homogenen NPC $(x, y, z, w)$ ist ") + "$" + pts + "$."});
+    }
+  }
+
+  std::vector<std::string> tasks() const {
+    std::vector<std::string> t;
+    if (shows(ExerciseTopic::orientation)) {
+      t.push_back(L("Compute $\\mathit{wcFromMc}$ and $P_1$ in WC.", "Berechnen Sie $\\mathit{wcFromMc}$ und $P_1$ in WC."));
+      t.push_back(L("Compute $N$, $U$, $V$ and VPD, the matrix $\\mathit{vrcFromWc}$ and $P_1$ in VRC.",
+                    "Berechnen Sie $N$, $U$, $V$ und VPD, die Matrix $\\mathit{vrcFromWc}$ und $P_1$ in VRC."));
+    }
+    if (shows(ExerciseTopic::mapping)) {
+      t.push_back(L("Compute the view mapping $\\mathit{npcFromVrc}$ and $P_1$ in homogeneous NPC.",
+                    "Berechnen Sie das View Mapping $\\mathit{npcFromVrc}$ und $P_1$ in homogenen NPC."));
+      t.push_back(L("Give the boundary coordinates and the outcode of $P_1$; where it is inside, its NPC and DC.",
+                    "Geben Sie die Randkoordinaten und den Outcode von $P_1$ an; falls innen, seine NPC und DC."));
+    }
+    if (shows(ExerciseTopic::clipping))
+      t.push_back(L("Clip the polygon in homogeneous NPC with Sutherland–Hodgman, plane by plane "
+                    "(left, right, bottom, top, back, front): each edge's boundary values, $t$ and the new vertex. "
+                    "Then divide by $w$ and map the result to DC.",
+                    "Clippen Sie das Polygon in homogenen NPC mit Sutherland–Hodgman, Ebene für Ebene "
+                    "(links, rechts, unten, oben, hinten, vorne): Randwerte jeder Kante, $t$ und der neue Punkt. "
+                    "Dividieren Sie dann durch $w$ und bilden Sie das Ergebnis auf DC ab."));
+    return t;
+  }
+
+  Document sheet() const {
+    Document d;
+    d.push_back({Block::title, L("Exercise", "Übung") + " " + std::to_string(e.spec.seed) + ": " + topicName()});
+    givenBlocks(d);
+    d.push_back({Block::figure, "world", {L("The scene, the camera and its view volume (world view).",
+                                            "Szene, Kamera und Sichtvolumen (Weltansicht).")}});
+    d.push_back({Block::heading, L("Tasks", "Aufgaben")});
+    d.push_back({Block::items, "", tasks()});
+    d.push_back({Block::paragraph, L("Conventions (domain notes): column vectors; $N = (PRP - VRP)/|PRP - VRP|$; "
+                                     "front $\\to z = 1$, back $\\to z = 0$; inside when $0 \\le x, y, z \\le w$.",
+                                     "Konventionen: Spaltenvektoren; $N = (PRP - VRP)/|PRP - VRP|$; "
+                                     "vorne $\\to z = 1$, hinten $\\to z = 0$; innen, wenn $0 \\le x, y, z \\le w$.")});
+    return d;
+  }
+
+  void modeling(Document& d) const {
+    d.push_back({Block::heading, L("1. Modeling (lecture notes 15.2.1): MC to WC", "1. Modeling (Skript 15.2.1): MC nach WC")});
+    d.push_back({Block::paragraph, L("Scale first, then rotate, then translate: ", "Erst skalieren, dann drehen, dann verschieben: ") +
+                                       "$\\mathit{wcFromMc} = T \\cdot R \\cdot S$."});
+    matrixPair(d, "\\mathit{wcFromMc}", s.wcFromMc);
+    d.push_back({Block::math, "P_1^{WC} = \\mathit{wcFromMc} \\cdot " + vec(s.point.mc) + " = " + vec(s.point.wc)});
+  }
+
+  void orientation(Document& d) const {
+    const ViewFrame& f = s.run.frame;
+    const Camera& c = cam();
+    d.push_back({Block::heading, L("2. View orientation (15.2.2): WC to VRC", "2. View Orientation (15.2.2): WC nach VRC")});
+    const Vec3 cross = glm::cross(c.vup, f.n);
+    d.push_back({Block::math, "PRP - VRP = " + vec(c.prp - c.vrp) + ",\\quad VPD = |PRP - VRP| = " + num(f.vpd) +
+                                  ",\\quad N = \\frac{PRP - VRP}{VPD} = " + vec(f.n)});
+    d.push_back({Block::math, "VUP \\times N = " + vec(cross) + ",\\quad U = \\frac{VUP \\times N}{|VUP \\times N|} = " +
+                                  vec(f.u) + ",\\quad V = N \\times U = " + vec(f.v)});
+    d.push_back({Block::paragraph, L("$U$, $V$, $N$ as rows, after the translation by $-VRP$: ",
+                                     "$U$, $V$, $N$ als Zeilen, nach der Verschiebung um $-VRP$: ") +
+                                       "$\\mathit{vrcFromWc} = [U\\ 0;\\ V\\ 0;\\ N\\ 0;\\ 0\\ 0\\ 0\\ 1] \\cdot T(-VRP)$."});
+    matrixPair(d, "\\mathit{vrcFromWc}", s.run.vrcFromWc);
+    d.push_back({Block::math, "P_1^{VRC} = \\mathit{vrcFromWc} \\cdot P_1^{WC} = " + vec(s.point.vrc)});
+  }
+
+  void mapping(Document& d) const {
+    const ViewFrame& f = s.run.frame;
+    const Camera& c = cam();
+    const Mat4& m = s.run.npcFromVrc;
+    d.push_back({Block::heading, L("3. View mapping (14, 15.2.3–15.2.4): VRC to homogeneous NPC",
+                                   "3. View Mapping (14, 15.2.3–15.2.4): VRC nach homogenen NPC")});
+    if (perspective()) {
+      d.push_back({Block::math, "d = VPD = " + num(f.vpd) + ",\\quad d_{min} = VPD - F = " + num(f.dmin) +
+                                    ",\\quad d_{max} = VPD - B = " + num(f.dmax) +
+                                    ",\\quad k = \\frac{d_{min}}{d_{max} - d_{min}} = " + num(m[2][2])});
+      d.push_back({Block::paragraph,
+                   L("The shear into a regular pyramid and the scaling into the cube, folded into one matrix; "
+                     "$w' = z_e = VPD - z$ is the distance in front of the eye.",
+                     "Scherung in eine reguläre Pyramide und Skalierung in den Würfel, in einer Matrix; "
+                     "$w' = z_e = VPD - z$ ist der Abstand vor dem Auge.")});
+    } else {
+      if (oblique()) {
+        const double dc = c.oblique.d * std::cos(radians(c.oblique.phiDeg));
+        const double ds = c.oblique.d * std::sin(radians(c.oblique.phiDeg));
+        d.push_back({Block::math, "x_s = x + z \\cdot d\\cos\\varphi = x + " + num(dc) + "\\,z,\\quad y_s = y - z \\cdot "
+                                  "d\\sin\\varphi = y - " + num(ds) + "\\,z"});
+      }
+      d.push_back({Block::math, "x' = \\frac{x_s - x_{min}}{x_{max} - x_{min}},\\quad y' = \\frac{y_s - y_{min}}"
+                                "{y_{max} - y_{min}},\\quad z' = \\frac{z - B}{F - B},\\quad w' = 1"});
+    }
+    matrixPair(d, "\\mathit{npcFromVrc}", m);
+    d.push_back({Block::math, "P_1^{NPC_h} = \\mathit{npcFromVrc} \\cdot P_1^{VRC} = " + vec(s.point.npcH)});
+  }
+
+  void pointClipAndDevice(Document& d) const {
+    const PointStages& p = s.point;
+    d.push_back({Block::heading, L("4. Clipping test of $P_1$ (15.2.4, seed 002)", "4. Clipping-Test von $P_1$ (15.2.4, Seed 002)")});
+    std::string bc;
+    for (int i = 0; i < kPlaneCount; ++i)
+      bc += std::string(i ? ",\\ " : "") + "BC_" + std::to_string(i) + " = " + num(p.bc[size_t(i)]);
+    d.push_back({Block::math, bc});
+    d.push_back({Block::paragraph, L("Outcode (bits 5 … 0: front, back, top, bottom, right, left; a bit is set when its "
+                                     "boundary coordinate is negative): ",
+                                     "Outcode (Bits 5 … 0: vorne, hinten, oben, unten, rechts, links; gesetzt, wenn die "
+                                     "Randkoordinate negativ ist): ") +
+                                       "$" + outcodeBits(p.outcode) + "_2 = " + std::to_string(p.outcode) + "$."});
+    d.push_back({Block::heading, L("5. Division by w and device mapping (15.2.5)", "5. Division durch w und Device Mapping (15.2.5)")});
+    d.push_back({Block::paragraph, L("$x_{DC} = W \\cdot x,\\ y_{DC} = H \\cdot (1 - y),\\ z_{DC} = z$: origin top left, y down.",
+                                     "$x_{DC} = W \\cdot x,\\ y_{DC} = H \\cdot (1 - y),\\ z_{DC} = z$: Ursprung oben links, y nach unten.")});
+    matrixPair(d, "\\mathit{dcFromNpc}", s.run.dcFromNpc);
+    if (p.outcode == 0) {
+      d.push_back({Block::math, "P_1^{NPC} = \\left(\\frac{x}{w},\\ \\frac{y}{w},\\ \\frac{z}{w}\\right) = " + vec(p.npc)});
+      d.push_back({Block::math, "P_1^{DC} = \\mathit{dcFromNpc} \\cdot P_1^{NPC} = " + vec(p.dc)});
+    } else if (p.npcH.w < 0) {
+      d.push_back({Block::paragraph,
+                   L("$w = " + num(p.npcH.w) + " < 0$: $P_1$ lies behind the eye. It is clipped away before the "
+                     "division. Dividing first would give $" + vec(p.npc) + "$: $x/w$ and $y/w$ flip sign, and the "
+                     "point could land inside the cube (the divide-first mistake, seed 002).",
+                     "$w = " + num(p.npcH.w) + " < 0$: $P_1$ liegt hinter dem Auge und wird vor der Division "
+                     "weggeclippt. Zuerst zu dividieren ergäbe $" + vec(p.npc) + "$: $x/w$ und $y/w$ wechseln das "
+                     "Vorzeichen, der Punkt könnte im Würfel landen (der Fehler divide first, Seed 002).")});
+    } else {
+      d.push_back({Block::paragraph, L("$P_1$ lies outside the view volume: it is not mapped to DC.",
+                                       "$P_1$ liegt außerhalb des Sichtvolumens und wird nicht auf DC abgebildet.")});
+    }
+  }
+
+  void polygonClipping(Document& d) const {
+    d.push_back({Block::heading, L("6. Clipping the polygon (Sutherland–Hodgman in homogeneous coordinates)",
+                                   "6. Clipping des Polygons (Sutherland–Hodgman in homogenen Koordinaten)")});
+    std::vector<std::string> verts;
+    Outcode all = 0xff, any = 0;
+    for (size_t i = 0; i < s.vertices.size(); ++i) {
+      const PointStages& v = s.vertices[i];
+      all &= v.outcode, any |= v.outcode;
+      verts.push_back("$P_" + std::to_string(i + 1) + " = " + vec(v.npcH) + "$, outcode $" + outcodeBits(v.outcode) + "_2$");
+    }
+    d.push_back({Block::items, "", verts});
+    d.push_back({Block::paragraph, L("AND of the outcodes ", "UND der Outcodes ") + "$= " + outcodeBits(all) + "_2$, " +
+                                       L("OR ", "ODER ") + "$= " + outcodeBits(any) + "_2$: " +
+                                       L("neither trivially rejected nor accepted; clip against the planes whose bits are set. "
+                                         "Intersection at $t = BC(P_{in}) / (BC(P_{in}) - BC(P_{out}))$ from the inside vertex.",
+                                         "weder trivial verworfen noch akzeptiert; geclippt wird an den Ebenen der gesetzten Bits. "
+                                         "Schnittpunkt bei $t = BC(P_{in}) / (BC(P_{in}) - BC(P_{out}))$ vom inneren Punkt aus.")});
+    for (size_t k = 0; k < s.steps.size() && k < size_t(kPlaneCount); ++k) {
+      const ClipStep& step = s.steps[k];
+      const int plane = step.plane;
+      std::string head = L("Plane ", "Ebene ") + planeLabel(plane) + " ($BC_" + std::to_string(plane) + " = " +
+                         bcFormula(plane) + " \\ge 0$)";
+      if (step.skipped) {
+        d.push_back({Block::paragraph, "**" + head + "**: " + L("no vertex outside, nothing to do.", "kein Punkt außerhalb, nichts zu tun.")});
+        continue;
+      }
+      std::string bcs;
+      for (size_t i = 0; i < step.boundary.size(); ++i)
+        bcs += (i ? ",\\ " : "") + std::string("Q_") + std::to_string(i + 1) + ": " + num(step.boundary[i]);
+      d.push_back({Block::paragraph, "**" + head + "**: " + L("input ", "Eingabe ") + "$Q_1 \\ldots Q_" +
+                                         std::to_string(step.input.size()) + "$, " + L("boundary values ", "Randwerte ") + "$" + bcs + "$."});
+      std::vector<std::string> cuts;
+      for (const ClipIntersection& c : s.intersections[k])
+        cuts.push_back(L("edge ", "Kante ") + "$Q_" + std::to_string(c.inside + 1) + " Q_" + std::to_string(c.outside + 1) +
+                       "$: $t = " + num(c.t) + "$, " + L("new vertex ", "neuer Punkt ") + "$" + vec(c.vertex) + "$");
+      d.push_back({Block::items, "", cuts});
+      std::string out;
+      for (size_t i = 0; i < step.output.size(); ++i) out += (i ? ",\\ " : "") + vec(step.output[i].p);
+      d.push_back({Block::paragraph, L("Result: ", "Ergebnis: ") + (out.empty() ? L("nothing remains.", "nichts bleibt.") : "$" + out + "$")});
+    }
+    d.push_back({Block::paragraph, L("Divided by $w$ and mapped to DC, the clipped polygon is",
+                                     "Durch $w$ dividiert und auf DC abgebildet ist das geclippte Polygon")});
+    std::vector<std::string> dcs;
+    for (size_t i = 0; i < s.clippedDc.size(); ++i)
+      dcs.push_back("$" + vec(divideByW(s.clippedNpcH[i])) + " \\to " + vec(s.clippedDc[i]) + "$");
+    d.push_back({Block::items, "", dcs});
+  }
+
+  Document solution() const {
+    Document d;
+    d.push_back({Block::title, L("Solution", "Lösung") + " " + std::to_string(e.spec.seed) + ": " + topicName()});
+    d.push_back({Block::paragraph, L("Exact fractions where the values are small rationals, else decimals rounded to 4 places.",
+                                     "Exakte Brüche, wo die Werte kleine rationale Zahlen sind, sonst auf 4 Stellen gerundete Dezimalzahlen.")});
+    if (shows(ExerciseTopic::orientation)) {
+      modeling(d);
+      orientation(d);
+    }
+    if (shows(ExerciseTopic::mapping)) {
+      mapping(d);
+      pointClipAndDevice(d);
+    }
+    if (shows(ExerciseTopic::clipping)) polygonClipping(d);
+    d.push_back({Block::figure, "npc", {L("After view mapping, clipping and the division by w (NPC view).",
+                                          "Nach View Mapping, Clipping und Division durch w (NPC-Ansicht).")}});
+    return d;
+  }
+};
+
+// Markdown bold (**…**) has no LaTeX meaning: there it becomes \textbf.
+std::string boldToLatex(std::string s) {
+  for (size_t at; (at = s.find("**")) != std::string::npos;) {
+    const size_t end = s.find("**", at + 2);
+    if (end == std::string::npos) break;
+    s = s.substr(0, at) + "\\textbf{" + s.substr(at + 2, end - at - 2) + "}" + s.substr(end + 2);
+  }
+  return s;
+}
+
+void writeText(const std::string& text, const std::filesystem::path& file) {
+  std::ofstream out(file, std::ios::binary);
+  out << text;
+  if (!out) throw Error(file.string() + ": cannot write");
+}
+
+}  // namespace
+
+ExerciseDocuments exerciseDocuments(const Exercise& exercise, const ExerciseSolution& solution, Language lang) {
+  const Writer w{exercise, solution, lang};
+  const Document sheet = w.sheet(), sol = w.solution();
+  return {markdown(sheet), markdown(sol), boldToLatex(latex(sheet)), boldToLatex(latex(sol))};
+}
+
+void writeExercise(const Exercise& exercise, Language lang, const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw Error(dir.string() + ": cannot create the folder: " + ec.message());
+  const ExerciseSolution solution = solveExercise(exercise);
+  const ExerciseDocuments docs = exerciseDocuments(exercise, solution, lang);
+  writeText(docs.sheetMd, dir / "sheet.md");
+  writeText(docs.solutionMd, dir / "solution.md");
+  writeText(docs.sheetTex, dir / "sheet.tex");
+  writeText(docs.solutionTex, dir / "solution.tex");
+  writeText(sceneToJson(exercise.scene), dir / "scene.json");
+  // The figures: the world view for the sheet, the NPC view for the solution, as vector lines
+  // (hidden-line style, made on the CPU) and as the same drawing in PNG for LaTeX.
+  auto context = createHeadlessContext(Backend::automatic, false);
+  ViewRenderer renderer(*context);
+  for (const auto& [view, name] : {std::pair{ViewKind::world, "world"}, std::pair{ViewKind::npc, "npc"}}) {
+    RenderRequest request;
+    request.view = view;
+    request.style = Style::hiddenLine;
+    request.width = 640;
+    request.height = 480;
+    writeSvg(svgOfRequest(exercise.scene, request), dir / (std::string(name) + ".svg"));
+    writePng(renderImage(renderer, exercise.scene, request), dir / (std::string(name) + ".png"));
+  }
+}
+
+}  // namespace vplab

@@ -1,0 +1,79 @@
+// The exercises of `vplab exercise` (issue 14): a random but well-posed camera, point and polygon
+// for one topic of the lecture notes, and the worked solution's values, all taken from the
+// pipeline's own run (no second implementation of any stage).
+//
+// Well posed: VRP, PRP, VUP, the window, F and B are small integers and halves; PRP − VRP is a
+// Pythagorean direction so N, U, V and VPD are exact fractions; the polygon lies in MC's z = 0
+// plane (convex, counter-clockwise) and is placed by T · R · S with 90° rotations and scales 1, 2
+// or 1/2. The point P1 is the polygon's first vertex. For `clipping` and `pipeline` the polygon
+// crosses at least two planes of the view volume and something of it remains; in the perspective
+// "behind the eye" variant (odd seeds) P1 lies behind the eye (w < 0). Otherwise P1 is inside the
+// view volume. Except for the oblique projection's cos φ and sin φ, every value the solution shows
+// is a fraction with a denominator of at most 1000 (Rational::approximate).
+#pragma once
+#include "pipeline/clip_steps.h"
+#include "pipeline/pipeline.h"
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace vplab {
+
+enum class ExerciseTopic { orientation, mapping, clipping, pipeline };
+std::string_view toString(ExerciseTopic t);
+std::optional<ExerciseTopic> exerciseTopicFromString(std::string_view s);
+
+struct ExerciseSpec {
+  uint64_t seed = 1;
+  ExerciseTopic topic = ExerciseTopic::pipeline;
+  Projection projection = Projection::perspective;
+};
+
+struct Exercise {
+  ExerciseSpec spec;
+  Scene scene;                  // the camera, a 400 × 300 device, one polygon object "P"
+  bool pointBehindEye = false;  // the variant in which P1 lies behind the eye
+};
+
+/// The exercise of a seed: the same spec always gives the same exercise (a fixed 64-bit Mersenne
+/// twister and no library distributions). Throws vplab::Error if no well-posed exercise was found
+/// (which the tests show does not happen for any topic and projection over many seeds).
+Exercise generateExercise(const ExerciseSpec& spec);
+
+/// P1 through the stages (lecture notes 15.2): MC, WC, VRC, homogeneous NPC, its boundary
+/// coordinates and outcode (seed 002), NPC after the division and DC (meaningful when inside).
+struct PointStages {
+  Vec3 mc, wc, vrc;
+  Vec4 npcH;
+  Boundary bc{};
+  Outcode outcode = 0;
+  Vec3 npc, dc;
+};
+
+/// One intersection of a Sutherland–Hodgman pass: the edge from input vertex `from` (inside) to
+/// `to` (outside) or back, t measured from the inside endpoint (t = BC(in) / (BC(in) − BC(out)),
+/// the clipper's own rule), and the new vertex in homogeneous NPC as the clipper made it.
+struct ClipIntersection {
+  size_t inside = 0, outside = 0;  // indices into the step's input
+  double t = 0;
+  Vec4 vertex;
+};
+
+struct ExerciseSolution {
+  PipelineRun run;                 // the reference run of the exercise's scene
+  Mat4 wcFromMc{1.0};
+  PointStages point;
+  std::vector<PointStages> vertices;  // every polygon vertex (P1 first)
+  std::vector<ClipStep> steps;        // the clipper's passes over the polygon (clip_steps.h)
+  std::vector<std::vector<ClipIntersection>> intersections;  // per step
+  Fate fate = Fate::accepted;
+  std::vector<Vec4> clippedNpcH;   // the clipped polygon, homogeneous NPC (snapped, as the pipeline keeps it)
+  std::vector<Vec3> clippedDc;     // the same in DC, as the pipeline maps it
+};
+
+/// Runs the exercise's scene through the pipeline and collects what the solution shows.
+ExerciseSolution solveExercise(const Exercise& exercise);
+
+}  // namespace vplab

@@ -1,0 +1,387 @@
+// Issue 14 through the command line: `vplab exercise` (same seed, same bytes; every number of a
+// solution is the pipeline's: checked against `vplab dump` of the exercise's scene; the .tex files
+// compile with pdflatex and are turned into PNG pages to look at) and `vplab grade numbers|image`
+// (exit codes, the mistake named, --json, --junit, clear errors for malformed input).
+#include "app/image.h"
+#include "app/render/cpu_raster.h"
+#include "pipeline/scene_io.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <string>
+#include <vector>
+
+namespace vplab {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+using Json = nlohmann::json;
+
+std::string slurp(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string shellQuoted(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+struct Outcome {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+class Course : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("vplab-course-" + std::string(info->name()) + "-" + std::to_string(getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    if (!HasFailure()) fs::remove_all(dir_);
+    else std::cout << "left for inspection: " << dir_.string() << "\n";
+  }
+  Outcome sh(const std::string& command) {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string full = "cd " + shellQuoted(dir_.string()) + " && " + command + " >" + shellQuoted(out.string()) +
+                             " 2>" + shellQuoted(err.string());
+    const int status = std::system(full.c_str());
+    Outcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+    fs::remove(out);
+    fs::remove(err);
+    return r;
+  }
+  Outcome vplab(const std::string& args) { return sh(shellQuoted(VPLAB_EXE) + " " + args); }
+  fs::path dir_;
+};
+
+std::string asset(const char* name) { return std::string(VPLAB_ASSETS) + "/scenes/" + name; }
+
+// ---------------------------------------------------------------- vplab exercise
+
+TEST_F(Course, ExerciseTwiceWritesTheSameBytes) {
+  ASSERT_EQ(vplab("exercise --seed 7 --topic pipeline --out a").exitCode, 0);
+  ASSERT_EQ(vplab("exercise --seed 7 --topic pipeline --out b").exitCode, 0);
+  size_t files = 0;
+  for (const auto& e : fs::directory_iterator(dir_ / "a")) {
+    ++files;
+    EXPECT_EQ(slurp(e.path()), slurp(dir_ / "b" / e.path().filename())) << e.path().filename();
+  }
+  EXPECT_EQ(files, 9u);  // sheet and solution .md/.tex, scene.json, world and npc .svg/.png
+  ASSERT_EQ(vplab("exercise --seed 8 --topic pipeline --out c").exitCode, 0);
+  EXPECT_NE(slurp(dir_ / "a" / "sheet.md"), slurp(dir_ / "c" / "sheet.md"));
+}
+
+// The numbers of the LaTeX math: "3", "-\frac{3}{10}", "0.7071".
+double latexValue(std::string t) {
+  t.erase(std::remove(t.begin(), t.end(), ' '), t.end());
+  std::smatch m;
+  if (std::regex_match(t, m, std::regex(R"((-?)\\frac\{(\d+)\}\{(\d+)\})")))
+    return (m[1] == "-" ? -1.0 : 1.0) * std::stod(m[2]) / std::stod(m[3]);
+  return std::stod(t);
+}
+
+std::vector<std::vector<double>> matricesOf(const std::string& md) {
+  std::vector<std::vector<double>> out;
+  const std::regex re(R"(\\begin\{pmatrix\}(.*?)\\end\{pmatrix\})");
+  for (auto it = std::sregex_iterator(md.begin(), md.end(), re); it != std::sregex_iterator(); ++it) {
+    std::string body = (*it)[1];
+    std::vector<double> values;
+    body = std::regex_replace(body, std::regex(R"(\\\\)"), "&");
+    std::stringstream ss(body);
+    for (std::string cell; std::getline(ss, cell, '&');)
+      if (cell.find_first_not_of(' ') != std::string::npos) values.push_back(latexValue(cell));
+    out.push_back(values);
+  }
+  return out;
+}
+
+std::vector<std::vector<double>> tuplesOf(const std::string& md) {
+  std::vector<std::vector<double>> out;
+  const std::regex re(R"(\(((?:-?(?:\\frac\{\d+\}\{\d+\}|[0-9.]+),\\ )+-?(?:\\frac\{\d+\}\{\d+\}|[0-9.]+))\))");
+  for (auto it = std::sregex_iterator(md.begin(), md.end(), re); it != std::sregex_iterator(); ++it) {
+    std::string body = std::regex_replace(std::string((*it)[1]), std::regex(R"(,\\ )"), "|");
+    std::vector<double> values;
+    std::stringstream ss(body);
+    for (std::string cell; std::getline(ss, cell, '|');) values.push_back(latexValue(cell));
+    out.push_back(values);
+  }
+  return out;
+}
+
+bool contains(const std::vector<std::vector<double>>& lists, const std::vector<double>& wanted) {
+  for (const auto& l : lists) {
+    if (l.size() != wanted.size()) continue;
+    bool same = true;
+    for (size_t i = 0; i < l.size(); ++i) same = same && std::abs(l[i] - wanted[i]) <= 5e-5 * std::max(1.0, std::abs(wanted[i]));
+    if (same) return true;
+  }
+  return false;
+}
+
+std::vector<double> flat(const Json& j) {
+  std::vector<double> v;
+  if (j.is_number()) return {j.get<double>()};
+  for (const Json& e : j)
+    for (double x : flat(e)) v.push_back(x);
+  return v;
+}
+
+std::vector<double> transposed(const Json& m) {
+  std::vector<double> v;
+  for (size_t c = 0; c < 4; ++c)
+    for (size_t r = 0; r < 4; ++r) v.push_back(m[r][c].get<double>());
+  return v;
+}
+
+// Every matrix and every point of the solution is what `vplab dump` prints for the exercise's
+// scene (the 4-decimal rounding of irrational values is the only difference allowed: 5e-5).
+TEST_F(Course, SolutionNumbersAreThoseOfVplabDump) {
+  for (const std::string args : {"--seed 4 --topic pipeline", "--seed 3 --topic pipeline",
+                                 "--seed 2 --topic pipeline --projection oblique",
+                                 "--seed 5 --topic pipeline --projection parallel --lang de"}) {
+    SCOPED_TRACE(args);
+    fs::remove_all(dir_ / "ex");
+    ASSERT_EQ(vplab("exercise " + args + " --out ex").exitCode, 0);
+    const Outcome dump = vplab("dump --scene ex/scene.json");
+    ASSERT_EQ(dump.exitCode, 0) << dump.err;
+    const Json d = Json::parse(dump.out);
+    const std::string md = slurp(dir_ / "ex" / "solution.md");
+    const auto matrices = matricesOf(md);
+    const auto tuples = tuplesOf(md);
+    ASSERT_EQ(matrices.size(), 8u);  // each stage matrix in both forms
+    const Json& o = d["objects"][0];
+    for (const Json* m : {&d["matrices"]["vrc_from_wc"], &d["matrices"]["npc_from_vrc"], &d["matrices"]["dc_from_npc"],
+                          &o["wc_from_mc"]}) {
+      EXPECT_TRUE(contains(matrices, flat(*m))) << m->dump() << " (column form)";
+      EXPECT_TRUE(contains(matrices, transposed(*m))) << m->dump() << " (the seed's row form)";
+    }
+    const Json& p = o["polygons"][0];
+    for (const char* stage : {"mc", "wc", "vrc"})  // P1 through the stages
+      EXPECT_TRUE(contains(tuples, flat(p[stage][0]))) << stage << " " << p[stage][0].dump();
+    for (const Json& v : p["npc_h"]) EXPECT_TRUE(contains(tuples, flat(v))) << "npc_h " << v.dump();  // the polygon to clip
+    for (const Json& v : p["clipped_dc"]) EXPECT_TRUE(contains(tuples, flat(v))) << "clipped_dc " << v.dump();
+    EXPECT_TRUE(contains(tuples, flat(d["camera"]["n"])));
+    EXPECT_TRUE(contains(tuples, flat(d["camera"]["u"])));
+    EXPECT_TRUE(contains(tuples, flat(d["camera"]["v"])));
+    EXPECT_GE(p["clipped_dc"].size(), 3u);
+  }
+}
+
+TEST_F(Course, ExerciseInGermanAndBadOptions) {
+  ASSERT_EQ(vplab("exercise --seed 2 --topic clipping --lang de --out de").exitCode, 0);
+  EXPECT_THAT(slurp(dir_ / "de" / "solution.md"), HasSubstr("# Lösung 2: Clipping in homogenen Koordinaten"));
+  EXPECT_THAT(slurp(dir_ / "de" / "sheet.md"), HasSubstr("## Aufgaben"));
+  Outcome r = vplab("exercise --topic shading --out x");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("--topic \"shading\": orientation, mapping, clipping or pipeline expected"));
+  r = vplab("exercise --lang fr --out x");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("--lang \"fr\": en or de expected"));
+  r = vplab("exercise --seed -4 --out x");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("--seed \"-4\": a whole number"));
+  r = vplab("exercise --seed 1");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("--out DIR is required"));
+  EXPECT_FALSE(fs::exists(dir_ / "x"));
+}
+
+// pdflatex compiles a sheet and a solution of every topic; the first pages become PNGs in
+// build/tests/test-output/course/ to look at (and a page must not be blank).
+TEST_F(Course, TexCompilesWithPdflatexForEveryTopic) {
+  if (sh("command -v pdflatex && command -v pdftoppm").exitCode != 0)
+    GTEST_SKIP() << "pdflatex or pdftoppm not installed (scripts/setup.sh installs texlive-latex-base, "
+                    "texlive-latex-recommended and poppler-utils)";
+  const fs::path shots = fs::path(VPLAB_TEST_OUTPUT) / "course";
+  fs::create_directories(shots);
+  const std::vector<std::pair<std::string, std::string>> topics = {
+      {"orientation", "perspective"}, {"mapping", "oblique"}, {"clipping", "perspective"}, {"pipeline", "parallel"}};
+  for (const auto& [topic, projection] : topics) {
+    SCOPED_TRACE(topic);
+    const std::string out = topic;
+    ASSERT_EQ(vplab("exercise --seed 3 --topic " + topic + " --projection " + projection + " --lang " +
+                    (topic == "mapping" ? "de" : "en") + " --out " + out).exitCode, 0);
+    for (const char* doc : {"sheet", "solution"}) {
+      const Outcome tex = sh("cd " + out + " && pdflatex -interaction=nonstopmode -halt-on-error " + doc + ".tex");
+      ASSERT_EQ(tex.exitCode, 0) << tex.out.substr(tex.out.size() > 3000 ? tex.out.size() - 3000 : 0);
+      const std::string png = (shots / (topic + "-" + doc)).string();
+      ASSERT_EQ(sh("pdftoppm -r 50 -png -f 1 -l 1 -singlefile " + out + "/" + doc + ".pdf " + shellQuoted(png)).exitCode, 0);
+      const Image page = readPng(png + ".png");
+      size_t ink = 0;
+      for (const Rgba& p : page.pixels) ink += p.r < 128;
+      EXPECT_GT(ink, page.pixels.size() / 200) << "a page with text and a figure, not a blank one";
+    }
+  }
+}
+
+// ---------------------------------------------------------------- vplab grade numbers
+
+TEST_F(Course, GradeNumbersExitCodesAndReports) {
+  const std::string scene = shellQuoted(asset("behind-the-eye.json"));
+  const Outcome dump = vplab("dump --scene " + scene);
+  ASSERT_EQ(dump.exitCode, 0);
+  std::ofstream(dir_ / "right.json") << dump.out;
+  Outcome r = vplab("grade numbers --scene " + scene + " --student right.json --junit right.xml");
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_THAT(r.out, HasSubstr("PASSED"));
+  EXPECT_THAT(slurp(dir_ / "right.xml"), HasSubstr("failures=\"0\""));
+
+  // y not flipped in the device mapping: every clipped_dc y becomes H − y.
+  Json answer = Json::parse(slurp(dir_ / "right.json"));
+  const double h = answer["device"]["height"].get<double>();
+  answer["matrices"]["dc_from_npc"][1] = {0, h, 0, 0};
+  for (Json& o : answer["objects"])
+    for (Json& p : o["polygons"])
+      for (Json& v : p["clipped_dc"]) v[1] = h - v[1].get<double>();
+  std::ofstream(dir_ / "flipped.json") << answer.dump(1);
+  r = vplab("grade numbers --scene " + scene + " --student flipped.json --junit flipped.xml");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_THAT(r.out, HasSubstr("WRONG  /matrices/dc_from_npc: 2 of 16 values wrong"));
+  EXPECT_THAT(r.out, HasSubstr("stage 5, device mapping"));
+  EXPECT_THAT(r.out, HasSubstr("the mistake model \"y-not-flipped\""));
+  const std::string xml = slurp(dir_ / "flipped.xml");
+  EXPECT_THAT(xml, HasSubstr("<testsuite name=\"vplab grade numbers: flipped.json\""));
+  EXPECT_THAT(xml, HasSubstr("<failure message=\"2 of 16 values wrong\">"));
+
+  r = vplab("grade numbers --scene " + scene + " --student flipped.json --json");
+  EXPECT_EQ(r.exitCode, 1);
+  const Json report = Json::parse(r.out);
+  EXPECT_EQ(report["passed"], false);
+  EXPECT_EQ(report["mistake"]["key"], "y-not-flipped");
+  EXPECT_EQ(report["first_departing_stage"]["stage"], 5);
+
+  // A clipped polygon with a vertex missing: wrong (not malformed), and the JSON report stays JSON.
+  Json shorter = Json::parse(slurp(dir_ / "right.json"));
+  Json& dc = shorter["objects"][0]["polygons"][0]["clipped_dc"];
+  ASSERT_GE(dc.size(), 3u);
+  dc.erase(dc.size() - 1);
+  std::ofstream(dir_ / "shorter.json") << shorter.dump();
+  r = vplab("grade numbers --scene " + scene + " --student shorter.json --json");
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  const Json shortReport = Json::parse(r.out);
+  EXPECT_EQ(shortReport["wrong"], 1);
+  EXPECT_EQ(shortReport["first_departing_stage"]["stage"], 5);
+  bool found = false;
+  for (const Json& g : shortReport["groups"])
+    for (const Json& v : g["wrong_values"])
+      found = found || (v["student"] == std::to_string(dc.size()) + " entries");
+  EXPECT_TRUE(found) << r.out.substr(0, 2000);
+}
+
+TEST_F(Course, GradeNumbersInputErrorsExitWith2) {
+  std::ofstream(dir_ / "bad.json") << R"({"matrices": {"npc_from_vrc": [[1, 0, 0], [0, 1, 0]]}})";
+  Outcome r = vplab("grade numbers --student bad.json");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("bad.json: /matrices/npc_from_vrc: 2 rows where a 4 × 4 matrix"));
+  std::ofstream(dir_ / "row.json") << R"({"matrices": {"npc_from_vrc": [[1, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]}})";
+  r = vplab("grade numbers --student row.json");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("row.json: /matrices/npc_from_vrc/0: 3 numbers where 4 are expected"));
+  std::ofstream(dir_ / "broken.json") << "{\"camera\": ";
+  r = vplab("grade numbers --student broken.json");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("broken.json: line 1, column"));
+  r = vplab("grade numbers --student missing.json");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("missing.json: cannot open"));
+  r = vplab("grade numbers");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("--student FILE is required"));
+  // Usage errors are exit 2 too (not CLI11's own codes), with the value named.
+  r = vplab("grade numbers --student bad.json --bogus");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("unexpected argument(s): --bogus"));
+  r = vplab("grade numbers --student bad.json --tolerance lots");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("--tolerance \"lots\": a number from 0 to 0.5 expected"));
+  r = vplab("grade");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("a subcommand is required: numbers or image"));
+  r = vplab("grade image --student x.png --max-diff 300");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("--max-diff \"300\": a number from 0 to 255 expected"));
+}
+
+// ---------------------------------------------------------------- vplab grade image
+
+Image flip(const Image& src, bool vertically) {
+  Image out(src.width, src.height);
+  for (int y = 0; y < src.height; ++y)
+    for (int x = 0; x < src.width; ++x)
+      out.at(x, y) = vertically ? src.at(x, src.height - 1 - y) : src.at(src.width - 1 - x, y);
+  return out;
+}
+
+TEST_F(Course, GradeImageNamesTheImageMistakes) {
+  const std::string scenePath = asset("behind-the-eye.json");
+  const std::string scene = shellQuoted(scenePath);
+  ASSERT_EQ(vplab("render --scene " + scene + " --view camera --style flat --size 320x240 --out right.png").exitCode, 0);
+  Outcome r = vplab("grade image --scene " + scene + " --student right.png --junit right.xml");
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_TRUE(fs::exists(dir_ / "right.png.diff.png"));
+
+  const Image right = readPng(dir_ / "right.png");
+  // Noise within the thresholds: ±3 in every channel of every pixel.
+  Image noisy = right;
+  for (size_t i = 0; i < noisy.pixels.size(); ++i) {
+    const int d = int(i % 7) - 3;
+    noisy.pixels[i].r = uint8_t(std::clamp(int(noisy.pixels[i].r) + d, 0, 255));
+    noisy.pixels[i].g = uint8_t(std::clamp(int(noisy.pixels[i].g) - d, 0, 255));
+  }
+  writePng(noisy, dir_ / "noisy.png");
+  EXPECT_EQ(vplab("grade image --scene " + scene + " --student noisy.png").exitCode, 0);
+
+  writePng(flip(right, true), dir_ / "upside.png");
+  writePng(flip(right, false), dir_ / "mirrored.png");
+  Scene s = loadScene(scenePath);
+  s.device = {320, 240};
+  PipelineOptions options;
+  options.strategy = ClipStrategy::divideFirst;
+  writePng(rasterizeClippedPolygons(runPipeline(s, options), s.background, 320, 240), dir_ / "divide.png");
+  for (const auto& [file, key] : {std::pair{"upside.png", "upside-down"}, std::pair{"mirrored.png", "mirrored"},
+                                  std::pair{"divide.png", "divide-first"}}) {
+    SCOPED_TRACE(file);
+    r = vplab("grade image --scene " + scene + " --student " + file + " --json");
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    const Json report = Json::parse(r.out);
+    EXPECT_EQ(report["mistake"], key);
+    size_t matching = 0;
+    for (const Json& m : report["models"]) matching += m["matches"].get<bool>();
+    EXPECT_EQ(matching, 1u) << "recognised as this mistake and not as another";
+  }
+  r = vplab("grade image --scene " + scene + " --student nothing.png");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("nothing.png"));
+  // A PNG whose header claims 12000 × 12000 pixels (576 MB of RGBA, under stb_image's own limit of
+  // 1 GB): refused before anything is allocated or rendered.
+  {
+    std::string png = slurp(dir_ / "right.png");
+    ASSERT_GT(png.size(), 24u);
+    const unsigned char size[8] = {0, 0, 0x2e, 0xe0, 0, 0, 0x2e, 0xe0};  // IHDR width, height (big endian)
+    for (int i = 0; i < 8; ++i) png[size_t(16 + i)] = char(size[i]);
+    std::ofstream(dir_ / "huge.png", std::ios::binary) << png;
+  }
+  r = vplab("grade image --scene " + scene + " --student huge.png");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("huge.png: 12000 × 12000 pixels; at most 8192 on each side are graded"));
+  r = vplab("grade image --scene " + scene + " --student right.png --view morph");
+  EXPECT_EQ(r.exitCode, 2);
+}
+
+}  // namespace
+}  // namespace vplab
