@@ -53,15 +53,18 @@ ViewRenderer::ViewRenderer(GlContext& context, float textScale)
       gl_(context.gl()),
       meshes_(gl_),
       overlay_(gl_),
-      text_(std::make_unique<TextRenderer>(gl_, textScale)),
-      polygonVao_(gl::makeVertexArray(gl_)),
-      polygonVbo_(gl::makeBuffer(gl_)) {
-  gl_.BindVertexArray(polygonVao_.id());
-  gl_.BindBuffer(GL_ARRAY_BUFFER, polygonVbo_.id());
-  gl_.EnableVertexAttribArray(0);
-  gl_.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), nullptr);
-  gl_.EnableVertexAttribArray(1);
-  gl_.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), reinterpret_cast<void*>(sizeof(glm::vec3)));
+      text_(std::make_unique<TextRenderer>(gl_, textScale)) {
+  for (PolygonBuffer& b : polygonBuffers_) {
+    b.vao = gl::makeVertexArray(gl_);
+    b.vbo = gl::makeBuffer(gl_);
+    gl_.BindVertexArray(b.vao.id());
+    gl_.BindBuffer(GL_ARRAY_BUFFER, b.vbo.id());
+    gl_.EnableVertexAttribArray(0);
+    gl_.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), nullptr);
+    gl_.EnableVertexAttribArray(1);
+    gl_.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3),
+                            reinterpret_cast<void*>(sizeof(glm::vec3)));
+  }
   gl_.BindVertexArray(0);
   overlay_.setScale(textScale);  // lines and points grow with the text (lecture mode)
   ctx_.checkErrors("creating the view renderer");
@@ -193,14 +196,39 @@ void ViewRenderer::drawEdges(const Scene& scene, const ViewCamera& view, int wid
   overlay_.setUserPlanes({});
 }
 
-void ViewRenderer::drawPolygons(const std::vector<PolygonSet>& sets, const ViewCamera& view, const ObjectPass& pass) {
-  std::vector<glm::vec3> data;  // position, normal per corner, fan-triangulated
-  std::vector<std::pair<GLint, GLsizei>> ranges;
+void ViewRenderer::drawPolygons(const std::vector<PolygonSet>& sets, const ViewCamera& view, const ObjectPass& pass,
+                                PolygonSlot slot) {
+  // Fan triangulation: a polygon of n corners gives n − 2 triangles, three GPU vertices each.
+  std::vector<std::pair<GLint, GLsizei>> ranges;  // per set: first vertex, vertex count
+  GLsizei vertices = 0;
   for (const PolygonSet& set : sets) {
-    const GLint first = GLint(data.size() / 2);
+    const GLint first = vertices;
+    for (size_t k = 0; k < set.ends.size(); ++k) {
+      const uint32_t n = set.ends[k] - (k ? set.ends[k - 1] : 0);
+      if (n >= 3) vertices += GLsizei(3 * (n - 2));
+    }
+    ranges.push_back({first, vertices - first});
+  }
+  if (vertices == 0) return;
+
+  PolygonBuffer& buffer = polygonBuffers_[slot];
+  gl_.BindVertexArray(buffer.vao.id());
+  gl_.BindBuffer(GL_ARRAY_BUFFER, buffer.vbo.id());
+  const GLsizeiptr bytes = GLsizeiptr(vertices) * GLsizeiptr(2 * sizeof(glm::vec3));
+  // Storage grows by a quarter more than asked (a scene that grows a little does not reallocate
+  // every frame) and shrinks when a quarter of it would do.
+  if (bytes > buffer.capacity || bytes < buffer.capacity / 4) {
+    buffer.capacity = bytes + bytes / 4;
+    gl_.BufferData(GL_ARRAY_BUFFER, buffer.capacity, nullptr, GL_STREAM_DRAW);
+  }
+  auto* out = static_cast<glm::vec3*>(
+      gl_.MapBufferRange(GL_ARRAY_BUFFER, 0, bytes, GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_RANGE_BIT));
+  if (!out) throw Error("could not map the polygon buffer (" + std::to_string(bytes) + " bytes)");
+  for (const PolygonSet& set : sets) {
     for (size_t k = 0; k < set.ends.size(); ++k) {
       const uint32_t begin = k ? set.ends[k - 1] : 0;
       const std::span<const Vec3> poly(set.points.data() + begin, set.ends[k] - begin);
+      if (poly.size() < 3) continue;
       Vec3 n{0};  // Newell's normal
       for (size_t i = 0; i < poly.size(); ++i) {
         const Vec3 &p = poly[i], &q = poly[(i + 1) % poly.size()];
@@ -208,15 +236,20 @@ void ViewRenderer::drawPolygons(const std::vector<PolygonSet>& sets, const ViewC
       }
       const double len = glm::length(n);
       const glm::vec3 normal = len > 0 ? glm::vec3(n / len) : glm::vec3(0, 0, 1);
-      for (size_t i = 1; i + 1 < poly.size(); ++i)
-        for (size_t c : {size_t(0), i, i + 1}) data.insert(data.end(), {glm::vec3(poly[c]), normal});
+      const glm::vec3 corner0(poly[0]);
+      for (size_t i = 1; i + 1 < poly.size(); ++i) {
+        out[0] = corner0;
+        out[1] = normal;
+        out[2] = glm::vec3(poly[i]);
+        out[3] = normal;
+        out[4] = glm::vec3(poly[i + 1]);
+        out[5] = normal;
+        out += 6;
+      }
     }
-    ranges.push_back({first, GLsizei(data.size() / 2) - first});
   }
-  if (data.empty()) return;
-  gl_.BindVertexArray(polygonVao_.id());
-  gl_.BindBuffer(GL_ARRAY_BUFFER, polygonVbo_.id());
-  gl_.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(glm::vec3)), data.data(), GL_STREAM_DRAW);
+  gl_.UnmapBuffer(GL_ARRAY_BUFFER);
+
   scene_ = &sceneProgram(false, pass.shaded ? 1 : 0, false);
   scene_->use();
   scene_->set("wcFromMc", Mat4(1.0));
@@ -233,7 +266,6 @@ void ViewRenderer::drawPolygons(const std::vector<PolygonSet>& sets, const ViewC
   for (size_t i = 0; i < sets.size(); ++i) {
     if (ranges[i].second == 0) continue;
     scene_->set("color", sets[i].color);
-    gl_.BindVertexArray(polygonVao_.id());
     gl_.DrawArrays(GL_TRIANGLES, ranges[i].first, ranges[i].second);
   }
   gl_.BindVertexArray(0);

@@ -67,7 +67,11 @@ class ViewRenderer {
       ends.push_back(uint32_t(points.size()));
     }
   };
-  void drawPolygons(const std::vector<PolygonSet>& sets, const ViewCamera& view, const ObjectPass& pass);
+  /// `slot`: which of the streaming buffers below holds the data. Each pass of a frame that draws
+  /// CPU polygons uses its own, so filling one never waits for the rasterizer to finish another.
+  enum PolygonSlot { kNpcInside = 0, kNpcFaded, kMorph, kPolygonSlots };
+  void drawPolygons(const std::vector<PolygonSet>& sets, const ViewCamera& view, const ObjectPass& pass,
+                    PolygonSlot slot);
   void setLights(const Scene& scene, const ViewCamera& view);
   Image compose(const Image& camera, const Image& world, const Image& npc, int width, int height);
 
@@ -81,8 +85,17 @@ class ViewRenderer {
   GpuMeshCache meshes_;
   OverlayRenderer overlay_;
   std::unique_ptr<TextRenderer> text_;  // replaced by setScale
-  gl::VertexArray polygonVao_;  // CPU polygons (NPC view): position and normal per corner
-  gl::Buffer polygonVbo_;
+  /// CPU polygons (NPC and morph views): position and normal per corner, fan-triangulated. The
+  /// buffer keeps its storage from frame to frame and is written in place through glMapBufferRange:
+  /// the 1M-triangle mesh's 72 MB are neither copied twice nor allocated (page-faulted) anew.
+  struct PolygonBuffer {
+    gl::VertexArray vao;
+    gl::Buffer vbo;
+    GLsizeiptr capacity = 0;  // bytes of storage allocated for vbo
+  };
+  std::array<PolygonBuffer, kPolygonSlots> polygonBuffers_;
+  /// The NPC view's polygons, kept so their storage is reused from frame to frame.
+  std::vector<PolygonSet> npcInside_, npcFaded_;
 };
 
 }  // namespace vplab
