@@ -145,7 +145,8 @@ void ViewRenderer::drawObjects(const Scene& scene, const ViewCamera& view, const
   for (int i = 0; i < kMaxUserPlanes; ++i) (i < planes ? gl_.Enable : gl_.Disable)(GL_CLIP_DISTANCE0 + GLenum(i));
   scene_->set("alpha", pass.alpha);
   if (pass.shaded) setLights(scene, view);
-  for (const SceneObject& o : scene.objects) {
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const SceneObject& o = scene.objects[i];
     if (!o.visible || !o.mesh) continue;
     const Mat4 m = wcFromMc(o.transform);
     const GpuMesh& g = meshes_.get(o.mesh);
@@ -153,10 +154,98 @@ void ViewRenderer::drawObjects(const Scene& scene, const ViewCamera& view, const
     scene_->set("wcNormalFromMc", normalMatrix(m));
     scene_->set("color", o.color);
     gl_.BindVertexArray(g.faces.id());
-    gl_.DrawElements(GL_TRIANGLES, g.faceIndexCount, GL_UNSIGNED_INT, nullptr);
+    const VolumePart* part = pass.partitioned && pass.volumeMode != 0 && i < volumeParts_.size() && volumeParts_[i].valid
+                                 ? &volumeParts_[i]
+                                 : nullptr;
+    if (!part) {
+      gl_.DrawElements(GL_TRIANGLES, g.faceIndexCount, GL_UNSIGNED_INT, nullptr);
+      continue;
+    }
+    const size_t mode = size_t(pass.volumeMode - 1);
+    if (part->count[mode] == 0) continue;
+    gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, part->indices[mode].id());  // the VAO's, until restored below
+    gl_.DrawElements(GL_TRIANGLES, part->count[mode], GL_UNSIGNED_INT, nullptr);
+    gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.faceIndices.id());
   }
   gl_.BindVertexArray(0);
   for (int i = 0; i < planes; ++i) gl_.Disable(GL_CLIP_DISTANCE0 + GLenum(i));
+}
+
+void ViewRenderer::partitionByVolume(const Scene& scene, const PipelineRun& run) {
+  volumeParts_.resize(scene.objects.size());
+  for (VolumePart& p : volumeParts_) p.valid = false;
+  // Bits 0–5: the vertex lies outside plane i by the margin; bit 6: inside every plane by it.
+  constexpr uint8_t kInside = 1u << 6;
+  // The GPU's value of a boundary coordinate (float matrices, float MC positions, interpolated)
+  // differs from the CPU's double by far less than these margins: 1e-3 of the vertex's own
+  // coordinates, and 1e-5 of the largest value the float products can reach for this object (the
+  // float rounding of the products is about 1e-7 of that).
+  constexpr double kRelativeMargin = 1e-3, kProductMargin = 1e-5;
+  for (size_t k = 0; k < run.objects.size() && k < run.sceneIndex.size(); ++k) {
+    const ObjectRun& o = run.objects[k];
+    const size_t i = run.sceneIndex[k];
+    if (i >= scene.objects.size()) continue;
+    const SceneObject& so = scene.objects[i];
+    if (!so.visible || so.mesh != o.mesh || !o.mesh || o.npcH.size() != o.mesh->vertexCount() ||
+        o.fate.size() != o.mesh->faceCount() || wcFromMc(so.transform) != o.wcFromMc)
+      continue;  // not this scene's run of the object: drawn whole
+    const Mesh& mesh = *o.mesh;
+    double wcMax = 0;
+    for (const Vec3& c : bounds(mesh).corners()) {
+      const Vec3 wc = transformAffine(o.wcFromMc, c);
+      wcMax = std::max({wcMax, std::abs(wc.x), std::abs(wc.y), std::abs(wc.z)});
+    }
+    double rowMax = 0;
+    for (int r = 0; r < 4; ++r) {
+      double sum = 0;
+      for (int c = 0; c < 4; ++c) sum += std::abs(run.npcFromWc[c][r]);
+      rowMax = std::max(rowMax, sum);
+    }
+    const double productMargin = kProductMargin * rowMax * (wcMax + 1);
+
+    vertexSides_.resize(o.npcH.size());
+    for (size_t v = 0; v < o.npcH.size(); ++v) {
+      const Vec4& p = o.npcH[v];
+      const double margin =
+          std::max(kRelativeMargin * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) + std::abs(p.w)), productMargin);
+      const Boundary bc = boundaryCoordinates(p);
+      uint8_t sides = kInside;
+      for (int b = 0; b < kPlaneCount; ++b) {
+        if (bc[size_t(b)] < -margin) sides |= uint8_t(1u << b);
+        if (!(bc[size_t(b)] > margin)) sides &= uint8_t(~kInside);  // NaN: not inside either
+      }
+      vertexSides_[v] = sides;
+    }
+    // Face f's corners are the GPU vertices faceStart[f] … (GpuMesh), fanned from the first.
+    for (auto& list : partIndices_) list.clear();
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+      uint8_t all = 0xff;
+      for (uint32_t v : mesh.face(f)) all &= vertexSides_[v];
+      const bool outsideOnePlane = all & 0x3f, insideAll = all & kInside;
+      const uint32_t first = mesh.faceStart[f], n = mesh.faceStart[f + 1] - first;
+      for (size_t mode = 0; mode < 2; ++mode) {
+        if (mode == 0 ? outsideOnePlane : insideAll) continue;
+        for (uint32_t c = 1; c + 1 < n; ++c) partIndices_[mode].insert(partIndices_[mode].end(), {first, first + c, first + c + 1});
+      }
+    }
+    VolumePart& part = volumeParts_[i];
+    for (size_t mode = 0; mode < 2; ++mode) {
+      const std::vector<uint32_t>& list = partIndices_[mode];
+      part.count[mode] = GLsizei(list.size());
+      if (list.empty()) continue;
+      if (!part.indices[mode]) part.indices[mode] = gl::makeBuffer(gl_);
+      // Bound as an array buffer: the element binding belongs to whichever VAO is bound.
+      gl_.BindBuffer(GL_ARRAY_BUFFER, part.indices[mode].id());
+      const GLsizeiptr bytes = GLsizeiptr(list.size() * sizeof(uint32_t));
+      if (bytes > part.capacity[mode] || bytes < part.capacity[mode] / 4) {
+        part.capacity[mode] = bytes + bytes / 4;
+        gl_.BufferData(GL_ARRAY_BUFFER, part.capacity[mode], nullptr, GL_STREAM_DRAW);
+      }
+      gl_.BufferSubData(GL_ARRAY_BUFFER, 0, bytes, list.data());
+    }
+    gl_.BindBuffer(GL_ARRAY_BUFFER, 0);
+    part.valid = true;
+  }
 }
 
 // Wire: every edge. Hidden line (seed figures 16.1 and 16.3): the faces fill the depth buffer only,

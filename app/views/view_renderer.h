@@ -38,6 +38,16 @@ class ViewRenderer {
                int height);
 
   GlContext& context() { return ctx_; }
+  /// Whether the world view draws each of its two passes from the faces that can show in it
+  /// (partitionByVolume; on by default, used only without multisampling). Off: every face in both
+  /// passes, as the tests compare.
+  void setPartitionedWorld(bool on) { partitionedWorld_ = on; }
+  /// The triangles the last partitioned world view drew of scene object `i` in its inside and its
+  /// outside pass ({0, 0} when it was not partitioned).
+  std::array<size_t, 2> partitionedTriangles(size_t i) const {
+    if (i >= volumeParts_.size() || !volumeParts_[i].valid) return {0, 0};
+    return {size_t(volumeParts_[i].count[0]) / 3, size_t(volumeParts_[i].count[1]) / 3};
+  }
   /// Larger text, lines and points for a projector (lecture mode).
   void setScale(float scale);
 
@@ -48,7 +58,21 @@ class ViewRenderer {
     float alpha = 1.f;
     bool shaded = true;
     bool userPlanes = false;  // clip by the scene's user clip planes (gl_ClipDistance, seed 003)
+    /// With volumeMode ≠ 0: draw only the faces partitionByVolume kept for that mode.
+    bool partitioned = false;
   };
+  /// For the world view's two passes (inside the scene camera's view volume solid, outside faded):
+  /// which faces of each object can have a fragment in each pass. A face whose vertices all lie
+  /// outside one plane of the volume has none inside it; one whose vertices all lie inside has none
+  /// outside. Both by a margin far above the GPU's float rounding (of the matrices, the positions
+  /// and the interpolation), so the fragment shader's own test would discard every fragment of a
+  /// face left out: the picture is the same, and each pass draws about half the faces instead of all.
+  /// From `run`'s homogeneous NPC (the same npcFromWc the shader tests with); an object whose run is
+  /// not the scene's (a stale run after an invalid camera) is drawn whole in both passes.
+  /// Only without multisampling: with it, a fragment's inputs are evaluated at the pixel centre
+  /// even where the triangle covers only some samples, extrapolated beyond the face, where no
+  /// margin on the vertices bounds them.
+  void partitionByVolume(const Scene& scene, const PipelineRun& run);
   /// Binds the target, clears it to `background` and sets the state every view starts from.
   void beginView(gl::RenderTarget& target, const Vec3& background);
   void drawObjects(const Scene& scene, const ViewCamera& view, const ObjectPass& pass);
@@ -94,6 +118,18 @@ class ViewRenderer {
     GLsizeiptr capacity = 0;  // bytes of storage allocated for vbo
   };
   std::array<PolygonBuffer, kPolygonSlots> polygonBuffers_;
+  /// partitionByVolume's faces per scene object: triangle indices into the object's GpuMesh for
+  /// the inside pass (mode 1) and the outside pass (mode 2), in face order.
+  struct VolumePart {
+    bool valid = false;
+    std::array<gl::Buffer, 2> indices;
+    std::array<GLsizeiptr, 2> capacity{0, 0};
+    std::array<GLsizei, 2> count{0, 0};
+  };
+  std::vector<VolumePart> volumeParts_;
+  bool partitionedWorld_ = true;
+  std::array<std::vector<uint32_t>, 2> partIndices_;  // scratch, kept between frames
+  std::vector<uint8_t> vertexSides_;                  // scratch: per vertex, see partitionByVolume
   /// The NPC view's polygons, kept so their storage is reused from frame to frame.
   std::vector<PolygonSet> npcInside_, npcFaded_;
 };
