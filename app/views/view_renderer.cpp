@@ -217,26 +217,39 @@ void ViewRenderer::partitionByVolume(const Scene& scene, const PipelineRun& run)
       vertexSides_[v] = sides;
     }
     // Face f's corners are the GPU vertices faceStart[f] … (GpuMesh), fanned from the first.
-    for (auto& list : partIndices_) list.clear();
+    size_t capacity = 0;
+    for (size_t f = 0; f < mesh.faceCount(); ++f) capacity += 3 * (std::max<uint32_t>(mesh.face(f).size(), 2) - 2);
+    std::array<uint32_t*, 2> out{};
+    for (size_t mode = 0; mode < 2; ++mode) {
+      partIndices_[mode].resize(capacity);  // scratch: only what the loop writes is read
+      out[mode] = partIndices_[mode].data();
+    }
+    const uint8_t* sides = vertexSides_.data();
     for (size_t f = 0; f < mesh.faceCount(); ++f) {
+      const auto face = mesh.face(f);
       uint8_t all = 0xff;
-      for (uint32_t v : mesh.face(f)) all &= vertexSides_[v];
-      const bool outsideOnePlane = all & 0x3f, insideAll = all & kInside;
-      const uint32_t first = mesh.faceStart[f], n = mesh.faceStart[f + 1] - first;
+      for (uint32_t v : face) all &= sides[v];
+      const bool skip[2] = {(all & 0x3f) != 0, (all & kInside) != 0};  // outside one plane; inside all
+      const uint32_t first = mesh.faceStart[f], n = uint32_t(face.size());
       for (size_t mode = 0; mode < 2; ++mode) {
-        if (mode == 0 ? outsideOnePlane : insideAll) continue;
-        for (uint32_t c = 1; c + 1 < n; ++c) partIndices_[mode].insert(partIndices_[mode].end(), {first, first + c, first + c + 1});
+        if (skip[mode]) continue;
+        for (uint32_t c = 1; c + 1 < n; ++c) {
+          out[mode][0] = first;
+          out[mode][1] = first + c;
+          out[mode][2] = first + c + 1;
+          out[mode] += 3;
+        }
       }
     }
     VolumePart& part = volumeParts_[i];
     for (size_t mode = 0; mode < 2; ++mode) {
-      const std::vector<uint32_t>& list = partIndices_[mode];
-      part.count[mode] = GLsizei(list.size());
-      if (list.empty()) continue;
+      const std::vector<uint32_t>& list = partIndices_[mode];  // its first count[mode] entries
+      part.count[mode] = GLsizei(out[mode] - list.data());
+      if (part.count[mode] == 0) continue;
       if (!part.indices[mode]) part.indices[mode] = gl::makeBuffer(gl_);
       // Bound as an array buffer: the element binding belongs to whichever VAO is bound.
       gl_.BindBuffer(GL_ARRAY_BUFFER, part.indices[mode].id());
-      const GLsizeiptr bytes = GLsizeiptr(list.size() * sizeof(uint32_t));
+      const GLsizeiptr bytes = GLsizeiptr(part.count[mode]) * GLsizeiptr(sizeof(uint32_t));
       if (bytes > part.capacity[mode] || bytes < part.capacity[mode] / 4) {
         part.capacity[mode] = bytes + bytes / 4;
         gl_.BufferData(GL_ARRAY_BUFFER, part.capacity[mode], nullptr, GL_STREAM_DRAW);
