@@ -128,43 +128,67 @@ void ViewRenderer::drawObjects(const Scene& scene, const ViewCamera& view, const
     for (const UserClipPlane& p : scene.clipPlanes) planes += p.enabled;
   planes = std::min(planes, kMaxUserPlanes);
   const int lights = pass.shaded ? int(std::min<size_t>(std::max<size_t>(scene.lights.size(), 1), 4)) : 0;
-  scene_ = &sceneProgram(pass.volumeMode != 0, lights, planes > 0);
-  scene_->use();
-  scene_->set("vrcFromWc", view.vrcFromWc);
-  scene_->set("npcFromVrc", view.npcFromVrc);
-  scene_->set("glClipFromNpc", glClipFromNpc());
-  scene_->set("volumeMode", pass.volumeMode);
-  scene_->set("volumeNpcFromWc", pass.volumeNpcFromWc);
-  // The user clip planes in WC (seed 003), the same enabled planes the CPU pipeline clips with.
-  if (planes > 0) {
-    int k = 0;
-    for (const UserClipPlane& p : scene.clipPlanes)
-      if (p.enabled && k < planes) scene_->set(("userPlanesWc[" + std::to_string(k++) + "]").c_str(), glm::vec4(p.coefficients()));
-    scene_->set("userPlaneCount", planes);
-  }
+  const gl::Program& program = sceneProgram(pass.volumeMode != 0, lights, planes > 0);
+  // The partitioned inside pass draws each object's faces inside the volume by the margin first,
+  // with the program that has no fragment test: without a discard the renderer keeps its early
+  // depth test and does not shade what lies behind.
+  const gl::Program* early = pass.partitioned && pass.volumeMode == 1 ? &sceneProgram(false, lights, planes > 0) : nullptr;
+  auto configure = [&](const gl::Program& chosen) {
+    scene_ = &chosen;
+    scene_->use();
+    scene_->set("vrcFromWc", view.vrcFromWc);
+    scene_->set("npcFromVrc", view.npcFromVrc);
+    scene_->set("glClipFromNpc", glClipFromNpc());
+    scene_->set("volumeMode", pass.volumeMode);
+    scene_->set("volumeNpcFromWc", pass.volumeNpcFromWc);
+    // The user clip planes in WC (seed 003), the same enabled planes the CPU pipeline clips with.
+    if (planes > 0) {
+      int k = 0;
+      for (const UserClipPlane& p : scene.clipPlanes)
+        if (p.enabled && k < planes) scene_->set(("userPlanesWc[" + std::to_string(k++) + "]").c_str(), glm::vec4(p.coefficients()));
+      scene_->set("userPlaneCount", planes);
+    }
+    scene_->set("alpha", pass.alpha);
+    if (pass.shaded) setLights(scene, view);
+  };
+  if (early) configure(*early);
+  configure(program);
   for (int i = 0; i < kMaxUserPlanes; ++i) (i < planes ? gl_.Enable : gl_.Disable)(GL_CLIP_DISTANCE0 + GLenum(i));
-  scene_->set("alpha", pass.alpha);
-  if (pass.shaded) setLights(scene, view);
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
     if (!o.visible || !o.mesh) continue;
     const Mat4 m = wcFromMc(o.transform);
     const GpuMesh& g = meshes_.get(o.mesh);
-    scene_->set("wcFromMc", m);
-    scene_->set("wcNormalFromMc", normalMatrix(m));
-    scene_->set("color", o.color);
+    auto setObject = [&] {
+      scene_->set("wcFromMc", m);
+      scene_->set("wcNormalFromMc", normalMatrix(m));
+      scene_->set("color", o.color);
+    };
     gl_.BindVertexArray(g.faces.id());
     const VolumePart* part = pass.partitioned && pass.volumeMode != 0 && i < volumeParts_.size() && volumeParts_[i].valid
                                  ? &volumeParts_[i]
                                  : nullptr;
     if (!part) {
+      setObject();
       gl_.DrawElements(GL_TRIANGLES, g.faceIndexCount, GL_UNSIGNED_INT, nullptr);
       continue;
     }
-    const size_t mode = size_t(pass.volumeMode - 1);
-    if (part->count[mode] == 0) continue;
-    gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, part->indices[mode].id());  // the VAO's, until restored below
-    gl_.DrawElements(GL_TRIANGLES, part->count[mode], GL_UNSIGNED_INT, nullptr);
+    // The VAO's element buffer is the part's until restored below.
+    auto drawPart = [&](size_t list) {
+      if (part->count[list] == 0) return;
+      gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, part->indices[list].id());
+      gl_.DrawElements(GL_TRIANGLES, part->count[list], GL_UNSIGNED_INT, nullptr);
+    };
+    if (early && part->count[kInsideFaces] > 0) {
+      scene_ = early;
+      scene_->use();
+      setObject();
+      drawPart(kInsideFaces);
+      scene_ = &program;
+      scene_->use();
+    }
+    setObject();
+    drawPart(pass.volumeMode == 1 ? kInsidePass : kOutsidePass);
     gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.faceIndices.id());
   }
   gl_.BindVertexArray(0);
@@ -219,40 +243,42 @@ void ViewRenderer::partitionByVolume(const Scene& scene, const PipelineRun& run)
     // Face f's corners are the GPU vertices faceStart[f] … (GpuMesh), fanned from the first.
     size_t capacity = 0;
     for (size_t f = 0; f < mesh.faceCount(); ++f) capacity += 3 * (std::max<uint32_t>(mesh.face(f).size(), 2) - 2);
-    std::array<uint32_t*, 2> out{};
-    for (size_t mode = 0; mode < 2; ++mode) {
-      partIndices_[mode].resize(capacity);  // scratch: only what the loop writes is read
-      out[mode] = partIndices_[mode].data();
+    std::array<uint32_t*, kPartLists> out{};
+    for (size_t list = 0; list < kPartLists; ++list) {
+      partIndices_[list].resize(capacity);  // scratch: only what the loop writes is read
+      out[list] = partIndices_[list].data();
     }
     const uint8_t* sides = vertexSides_.data();
     for (size_t f = 0; f < mesh.faceCount(); ++f) {
       const auto face = mesh.face(f);
       uint8_t all = 0xff;
       for (uint32_t v : face) all &= sides[v];
-      const bool skip[2] = {(all & 0x3f) != 0, (all & kInside) != 0};  // outside one plane; inside all
+      const bool outsideOnePlane = all & 0x3f, insideAll = all & kInside;
       const uint32_t first = mesh.faceStart[f], n = uint32_t(face.size());
-      for (size_t mode = 0; mode < 2; ++mode) {
-        if (skip[mode]) continue;
+      auto add = [&](size_t list) {
         for (uint32_t c = 1; c + 1 < n; ++c) {
-          out[mode][0] = first;
-          out[mode][1] = first + c;
-          out[mode][2] = first + c + 1;
-          out[mode] += 3;
+          out[list][0] = first;
+          out[list][1] = first + c;
+          out[list][2] = first + c + 1;
+          out[list] += 3;
         }
-      }
+      };
+      if (insideAll) add(kInsideFaces);  // the inside pass without its fragment test
+      else if (!outsideOnePlane) add(kInsidePass);
+      if (!insideAll) add(kOutsidePass);
     }
     VolumePart& part = volumeParts_[i];
-    for (size_t mode = 0; mode < 2; ++mode) {
-      const std::vector<uint32_t>& list = partIndices_[mode];  // its first count[mode] entries
-      part.count[mode] = GLsizei(out[mode] - list.data());
-      if (part.count[mode] == 0) continue;
-      if (!part.indices[mode]) part.indices[mode] = gl::makeBuffer(gl_);
+    for (size_t l = 0; l < kPartLists; ++l) {
+      const std::vector<uint32_t>& list = partIndices_[l];  // its first count[l] entries
+      part.count[l] = GLsizei(out[l] - list.data());
+      if (part.count[l] == 0) continue;
+      if (!part.indices[l]) part.indices[l] = gl::makeBuffer(gl_);
       // Bound as an array buffer: the element binding belongs to whichever VAO is bound.
-      gl_.BindBuffer(GL_ARRAY_BUFFER, part.indices[mode].id());
-      const GLsizeiptr bytes = GLsizeiptr(part.count[mode]) * GLsizeiptr(sizeof(uint32_t));
-      if (bytes > part.capacity[mode] || bytes < part.capacity[mode] / 4) {
-        part.capacity[mode] = bytes + bytes / 4;
-        gl_.BufferData(GL_ARRAY_BUFFER, part.capacity[mode], nullptr, GL_STREAM_DRAW);
+      gl_.BindBuffer(GL_ARRAY_BUFFER, part.indices[l].id());
+      const GLsizeiptr bytes = GLsizeiptr(part.count[l]) * GLsizeiptr(sizeof(uint32_t));
+      if (bytes > part.capacity[l] || bytes < part.capacity[l] / 4) {
+        part.capacity[l] = bytes + bytes / 4;
+        gl_.BufferData(GL_ARRAY_BUFFER, part.capacity[l], nullptr, GL_STREAM_DRAW);
       }
       gl_.BufferSubData(GL_ARRAY_BUFFER, 0, bytes, list.data());
     }

@@ -46,7 +46,8 @@ class ViewRenderer {
   /// outside pass ({0, 0} when it was not partitioned).
   std::array<size_t, 2> partitionedTriangles(size_t i) const {
     if (i >= volumeParts_.size() || !volumeParts_[i].valid) return {0, 0};
-    return {size_t(volumeParts_[i].count[0]) / 3, size_t(volumeParts_[i].count[1]) / 3};
+    const VolumePart& p = volumeParts_[i];
+    return {size_t(p.count[kInsideFaces] + p.count[kInsidePass]) / 3, size_t(p.count[kOutsidePass]) / 3};
   }
   /// Larger text, lines and points for a projector (lecture mode).
   void setScale(float scale);
@@ -118,17 +119,19 @@ class ViewRenderer {
     GLsizeiptr capacity = 0;  // bytes of storage allocated for vbo
   };
   std::array<PolygonBuffer, kPolygonSlots> polygonBuffers_;
-  /// partitionByVolume's faces per scene object: triangle indices into the object's GpuMesh for
-  /// the inside pass (mode 1) and the outside pass (mode 2), in face order.
+  /// partitionByVolume's faces per scene object: triangle indices into the object's GpuMesh, in
+  /// face order: the inside pass's faces inside every plane by the margin (drawn first, without the
+  /// fragment test), its other faces, and the outside pass's faces.
+  enum PartList { kInsideFaces = 0, kInsidePass, kOutsidePass, kPartLists };
   struct VolumePart {
     bool valid = false;
-    std::array<gl::Buffer, 2> indices;
-    std::array<GLsizeiptr, 2> capacity{0, 0};
-    std::array<GLsizei, 2> count{0, 0};
+    std::array<gl::Buffer, kPartLists> indices;
+    std::array<GLsizeiptr, kPartLists> capacity{};
+    std::array<GLsizei, kPartLists> count{};
   };
   std::vector<VolumePart> volumeParts_;
   bool partitionedWorld_ = true;
-  std::array<std::vector<uint32_t>, 2> partIndices_;  // scratch, kept between frames
+  std::array<std::vector<uint32_t>, kPartLists> partIndices_;  // scratch, kept between frames
   std::vector<uint8_t> vertexSides_;                  // scratch: per vertex, see partitionByVolume
   /// The NPC view's polygons, kept so their storage is reused from frame to frame.
   std::vector<PolygonSet> npcInside_, npcFaded_;
