@@ -267,10 +267,13 @@ const char* verdict(const Json& j, const char* key) { return j.value(key, false)
 // Issue 11's four speed goals, each as its figure from this run against the goal.
 Json goals(const Json& report) {
   Json g = Json::array();
-  auto add = [&](std::string what, double figure, std::string unit, std::string relation, double goal) {
+  // `figureCpu`: the same ratio from CPU time (not waiting for a core: steadier on a busy machine).
+  auto add = [&](std::string what, double figure, std::string unit, std::string relation, double goal,
+                 double figureCpu = 0) {
     const bool met = relation == "<=" ? figure <= goal : figure >= goal;
     g.push_back({{"goal", std::move(what)}, {"figure", figure}, {"unit", std::move(unit)},
                  {"relation", std::move(relation)}, {"target", goal}, {"met", met}});
+    if (figureCpu > 0) g.back()["figure_from_cpu_time"] = figureCpu;
   };
   if (report.contains("input_to_frame"))
     add("input event to the updated frame, median", report["input_to_frame"].value("median_ms", 0.0), "ms", "<=",
@@ -282,11 +285,16 @@ Json goals(const Json& report) {
     for (const Json& v : f["per_view"])
       if (v.value("scene", "") == "mesh_1m_triangles" && v.value("view", "") != "camera")
         add("1M-triangle mesh: " + v.value("view", std::string()) + " view / camera view",
-            v.value("over_camera", 0.0), "ratio", "<=", kMeshViewOverCameraGoal);
+            v.value("over_camera", 0.0), "ratio", "<=", kMeshViewOverCameraGoal, v.value("over_camera_cpu", 0.0));
   }
-  if (report.contains("pipeline"))
-    add("CPU pipeline: full / floor (transform + outcode)", report["pipeline"]["ratios"].value("full_over_floor", 0.0),
-        "ratio", "<=", bench::BenchReport::kFullOverFloorTarget);
+  // One thread: its CPU time is what the pipeline costs; the wall time adds the waits for a core on
+  // a shared machine, which swing this ratio from 1.5 to 5 between runs (and ratios_cpu by ±0.2).
+  if (report.contains("pipeline")) {
+    add("CPU pipeline: full / floor (transform + outcode), CPU time",
+        report["pipeline"]["ratios_cpu"].value("full_over_floor", 0.0), "ratio", "<=",
+        bench::BenchReport::kFullOverFloorTarget);
+    g.back()["figure_from_wall_time"] = report["pipeline"]["ratios"].value("full_over_floor", 0.0);
+  }
   return g;
 }
 
@@ -300,9 +308,10 @@ void printHuman(const Json& j) {
               << p.value("repetitions", 0) << "):\n"
               << "  full " << ms(med.value("full_pipeline", 0.0)) << ", floor " << ms(med.value("floor_pass", 0.0))
               << ", textbook " << ms(med.value("textbook", 0.0)) << "\n"
-              << "  full / floor = " << fixed(ratio.value("full_over_floor", 0.0)) << " (target ≤ "
+              << "  full / floor = " << fixed(ratio.value("full_over_floor", 0.0)) << " by wall time, "
+              << fixed(p["ratios_cpu"].value("full_over_floor", 0.0)) << " by CPU time (target ≤ "
               << bench::BenchReport::kFullOverFloorTarget << ": " << verdict(target, "full_over_floor_met")
-              << "), textbook / full = " << ratio.value("textbook_over_full", 0.0)
+              << "), textbook / full = " << fixed(ratio.value("textbook_over_full", 0.0))
               << " (target ≥ 10: " << verdict(target, "textbook_over_full_met") << ")\n";
   }
   if (j.contains("frames")) {
@@ -329,10 +338,12 @@ void printHuman(const Json& j) {
   std::cout << "Goals (issue 11), from this run:\n";
   for (const Json& g : j["goals"]) {
     char line[200];
-    std::snprintf(line, sizeof line, "  %-55s %8.2f %-8s (goal %s %g): %s\n", g.value("goal", "").c_str(),
+    std::snprintf(line, sizeof line, "  %-55s %8.2f %-8s (goal %s %g): %s", g.value("goal", "").c_str(),
                   g.value("figure", 0.0), g.value("unit", "").c_str(), g.value("relation", "").c_str(),
                   g.value("target", 0.0), g.value("met", false) ? "met" : "NOT met");
     std::cout << line;
+    if (g.contains("figure_from_cpu_time")) std::cout << "; from CPU time " << fixed(g.value("figure_from_cpu_time", 0.0));
+    std::cout << "\n";
   }
 }
 

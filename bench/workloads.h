@@ -152,7 +152,7 @@ struct BenchReport {
   double textbookOverFull = 0;  // median textbook / median full (wall time)
   double fullOverFloorCpu = 0;  // the same from the CPU-time medians
   double textbookOverFullCpu = 0;
-  bool fullOverFloorMet = false;
+  bool fullOverFloorMet = false;  // judged by the CPU-time ratio: single-threaded, its CPU time is its cost
   bool textbookOverFullMet = false;
 
   CheckResult check;
