@@ -31,11 +31,14 @@ void addVanishingPoints(const PipelineRun& run, int sceneIndex, OverlayBatch& b,
   const glm::vec4 colors[3] = {theme::kU, theme::kV, theme::kN};
   const char* names[3] = {"x", "y", "z"};
   const Vec2 toPixels(double(width) / run.device.width, double(height) / run.device.height);
+  // The run's edge list when it clipped edges (the viewer's does), not a new one per axis and frame.
+  const std::vector<Edge> ownEdges = o->edges.empty() ? uniqueEdges(*o->mesh) : std::vector<Edge>{};
+  const std::vector<Edge>& edges = o->edges.empty() ? ownEdges : o->edges;
   for (int axis = 0; axis < 3; ++axis) {
     const VanishingPoint& vp = vps[size_t(axis)];
     if (!vp.finite) continue;
     const Vec3 target(vp.dc, 0.5);
-    for (const Edge& e : uniqueEdges(*o->mesh)) {
+    for (const Edge& e : edges) {
       const Vec3 d = o->wc(e.b) - o->wc(e.a);
       if (glm::length(glm::cross(glm::normalize(d), vp.directionWc)) > 1e-6) continue;  // not along this axis
       for (uint32_t v : {e.a, e.b}) {

@@ -83,7 +83,7 @@ void ViewRenderer::drawMorph(const Scene& /*scene*/, const PipelineRun& run, con
 
   const Orbit o = framed(s.morphing.orbit, all, double(w) / h);
   const ViewCamera view = viewCameraOf(observerCamera(o, double(w) / h));
-  drawPolygons(sets, view, {0, Mat4(1.0), 1.f, s.morph.style == Style::shaded});
+  drawPolygons(sets, view, {0, Mat4(1.0), 1.f, s.morph.style == Style::shaded}, kMorph);
   overlay_.draw(lines, view, w, h, OverlayDepth::xray);
 
   std::vector<TextLabel> labels;

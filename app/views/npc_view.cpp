@@ -51,14 +51,24 @@ void ViewRenderer::drawNpc(const Scene& /*scene*/, const PipelineRun& run, const
   const Style style = s.npc.style;
   const OverlaySettings& ov = s.overlays;
 
-  std::vector<PolygonSet> inside, faded;
+  // The polygons' storage is kept from frame to frame (npcInside_, npcFaded_).
+  std::vector<PolygonSet>& inside = npcInside_;
+  std::vector<PolygonSet>& faded = npcFaded_;
+  inside.resize(run.objects.size());
+  faded.resize(run.objects.size());
   OverlayBatch outlines, dashedOutlines, newEdges, fadedOutlines;
   ClipScratch scratch;
   std::set<std::array<double, 6>> drawnEdges;
   const bool outlined = !isFilled(style) || style == Style::hiddenLine;
   std::vector<Vec3> poly;  // reused: no allocation per polygon
-  for (const ObjectRun& o : run.objects) {
-    PolygonSet in{glm::vec3(o.color), {}, {}}, out{glm::vec3(o.color), {}, {}};
+  for (size_t k = 0; k < run.objects.size(); ++k) {
+    const ObjectRun& o = run.objects[k];
+    PolygonSet &in = inside[k], &out = faded[k];
+    for (PolygonSet* set : {&in, &out}) {
+      set->color = glm::vec3(o.color);
+      set->points.clear();
+      set->ends.clear();
+    }
     const glm::vec4 c(glm::vec3(o.color), 1.f);
     for (size_t f = 0; f < o.faceCount(); ++f) {
       const auto face = o.clippedFace(f);
@@ -88,15 +98,13 @@ void ViewRenderer::drawNpc(const Scene& /*scene*/, const PipelineRun& run, const
         }
       }
     }
-    inside.push_back(std::move(in));
-    faded.push_back(std::move(out));
   }
 
   const bool shaded = style == Style::shaded;
   if (isFilled(style)) {
-    drawPolygons(inside, view, {0, Mat4(1.0), 1.f, shaded});
+    drawPolygons(inside, view, {0, Mat4(1.0), 1.f, shaded}, kNpcInside);
   } else if (style != Style::wire) {
-    depthOnly([&] { drawPolygons(inside, view, {0, Mat4(1.0), 1.f, false}); });
+    depthOnly([&] { drawPolygons(inside, view, {0, Mat4(1.0), 1.f, false}, kNpcInside); });
   }
   const OverlayDepth depth = style == Style::wire ? OverlayDepth::ignore : OverlayDepth::test;
   overlay_.draw(outlines, view, w, h, depth);
@@ -112,7 +120,7 @@ void ViewRenderer::drawNpc(const Scene& /*scene*/, const PipelineRun& run, const
     gl_.Enable(GL_BLEND);
     gl_.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     gl_.DepthMask(GL_FALSE);
-    if (isFilled(style)) drawPolygons(faded, view, {0, Mat4(1.0), theme::kFadedAlpha, shaded});
+    if (isFilled(style)) drawPolygons(faded, view, {0, Mat4(1.0), theme::kFadedAlpha, shaded}, kNpcFaded);
     else overlay_.draw(fadedOutlines, view, w, h, depth);
     gl_.DepthMask(GL_TRUE);
     gl_.Disable(GL_BLEND);

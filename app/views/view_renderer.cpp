@@ -53,15 +53,18 @@ ViewRenderer::ViewRenderer(GlContext& context, float textScale)
       gl_(context.gl()),
       meshes_(gl_),
       overlay_(gl_),
-      text_(std::make_unique<TextRenderer>(gl_, textScale)),
-      polygonVao_(gl::makeVertexArray(gl_)),
-      polygonVbo_(gl::makeBuffer(gl_)) {
-  gl_.BindVertexArray(polygonVao_.id());
-  gl_.BindBuffer(GL_ARRAY_BUFFER, polygonVbo_.id());
-  gl_.EnableVertexAttribArray(0);
-  gl_.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), nullptr);
-  gl_.EnableVertexAttribArray(1);
-  gl_.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), reinterpret_cast<void*>(sizeof(glm::vec3)));
+      text_(std::make_unique<TextRenderer>(gl_, textScale)) {
+  for (PolygonBuffer& b : polygonBuffers_) {
+    b.vao = gl::makeVertexArray(gl_);
+    b.vbo = gl::makeBuffer(gl_);
+    gl_.BindVertexArray(b.vao.id());
+    gl_.BindBuffer(GL_ARRAY_BUFFER, b.vbo.id());
+    gl_.EnableVertexAttribArray(0);
+    gl_.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), nullptr);
+    gl_.EnableVertexAttribArray(1);
+    gl_.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3),
+                            reinterpret_cast<void*>(sizeof(glm::vec3)));
+  }
   gl_.BindVertexArray(0);
   overlay_.setScale(textScale);  // lines and points grow with the text (lecture mode)
   ctx_.checkErrors("creating the view renderer");
@@ -125,35 +128,163 @@ void ViewRenderer::drawObjects(const Scene& scene, const ViewCamera& view, const
     for (const UserClipPlane& p : scene.clipPlanes) planes += p.enabled;
   planes = std::min(planes, kMaxUserPlanes);
   const int lights = pass.shaded ? int(std::min<size_t>(std::max<size_t>(scene.lights.size(), 1), 4)) : 0;
-  scene_ = &sceneProgram(pass.volumeMode != 0, lights, planes > 0);
-  scene_->use();
-  scene_->set("vrcFromWc", view.vrcFromWc);
-  scene_->set("npcFromVrc", view.npcFromVrc);
-  scene_->set("glClipFromNpc", glClipFromNpc());
-  scene_->set("volumeMode", pass.volumeMode);
-  scene_->set("volumeNpcFromWc", pass.volumeNpcFromWc);
-  // The user clip planes in WC (seed 003), the same enabled planes the CPU pipeline clips with.
-  if (planes > 0) {
-    int k = 0;
-    for (const UserClipPlane& p : scene.clipPlanes)
-      if (p.enabled && k < planes) scene_->set(("userPlanesWc[" + std::to_string(k++) + "]").c_str(), glm::vec4(p.coefficients()));
-    scene_->set("userPlaneCount", planes);
-  }
+  const gl::Program& program = sceneProgram(pass.volumeMode != 0, lights, planes > 0);
+  // The partitioned inside pass draws each object's faces inside the volume by the margin first,
+  // with the program that has no fragment test: without a discard the renderer keeps its early
+  // depth test and does not shade what lies behind.
+  const gl::Program* early = pass.partitioned && pass.volumeMode == 1 ? &sceneProgram(false, lights, planes > 0) : nullptr;
+  auto configure = [&](const gl::Program& chosen) {
+    scene_ = &chosen;
+    scene_->use();
+    scene_->set("vrcFromWc", view.vrcFromWc);
+    scene_->set("npcFromVrc", view.npcFromVrc);
+    scene_->set("glClipFromNpc", glClipFromNpc());
+    scene_->set("volumeMode", pass.volumeMode);
+    scene_->set("volumeNpcFromWc", pass.volumeNpcFromWc);
+    // The user clip planes in WC (seed 003), the same enabled planes the CPU pipeline clips with.
+    if (planes > 0) {
+      int k = 0;
+      for (const UserClipPlane& p : scene.clipPlanes)
+        if (p.enabled && k < planes) scene_->set(("userPlanesWc[" + std::to_string(k++) + "]").c_str(), glm::vec4(p.coefficients()));
+      scene_->set("userPlaneCount", planes);
+    }
+    scene_->set("alpha", pass.alpha);
+    if (pass.shaded) setLights(scene, view);
+  };
+  if (early) configure(*early);
+  configure(program);
   for (int i = 0; i < kMaxUserPlanes; ++i) (i < planes ? gl_.Enable : gl_.Disable)(GL_CLIP_DISTANCE0 + GLenum(i));
-  scene_->set("alpha", pass.alpha);
-  if (pass.shaded) setLights(scene, view);
-  for (const SceneObject& o : scene.objects) {
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const SceneObject& o = scene.objects[i];
     if (!o.visible || !o.mesh) continue;
     const Mat4 m = wcFromMc(o.transform);
     const GpuMesh& g = meshes_.get(o.mesh);
-    scene_->set("wcFromMc", m);
-    scene_->set("wcNormalFromMc", normalMatrix(m));
-    scene_->set("color", o.color);
+    auto setObject = [&] {
+      scene_->set("wcFromMc", m);
+      scene_->set("wcNormalFromMc", normalMatrix(m));
+      scene_->set("color", o.color);
+    };
     gl_.BindVertexArray(g.faces.id());
-    gl_.DrawElements(GL_TRIANGLES, g.faceIndexCount, GL_UNSIGNED_INT, nullptr);
+    const VolumePart* part = pass.partitioned && pass.volumeMode != 0 && i < volumeParts_.size() && volumeParts_[i].valid
+                                 ? &volumeParts_[i]
+                                 : nullptr;
+    if (!part) {
+      setObject();
+      gl_.DrawElements(GL_TRIANGLES, g.faceIndexCount, GL_UNSIGNED_INT, nullptr);
+      continue;
+    }
+    // The VAO's element buffer is the part's until restored below.
+    auto drawPart = [&](size_t list) {
+      if (part->count[list] == 0) return;
+      gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, part->indices[list].id());
+      gl_.DrawElements(GL_TRIANGLES, part->count[list], GL_UNSIGNED_INT, nullptr);
+    };
+    if (early && part->count[kInsideFaces] > 0) {
+      scene_ = early;
+      scene_->use();
+      setObject();
+      drawPart(kInsideFaces);
+      scene_ = &program;
+      scene_->use();
+    }
+    setObject();
+    drawPart(pass.volumeMode == 1 ? kInsidePass : kOutsidePass);
+    gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.faceIndices.id());
   }
   gl_.BindVertexArray(0);
   for (int i = 0; i < planes; ++i) gl_.Disable(GL_CLIP_DISTANCE0 + GLenum(i));
+}
+
+void ViewRenderer::partitionByVolume(const Scene& scene, const PipelineRun& run) {
+  volumeParts_.resize(scene.objects.size());
+  for (VolumePart& p : volumeParts_) p.valid = false;
+  // Bits 0–5: the vertex lies outside plane i by the margin; bit 6: inside every plane by it.
+  constexpr uint8_t kInside = 1u << 6;
+  // The GPU's value of a boundary coordinate (float matrices, float MC positions, interpolated)
+  // differs from the CPU's double by far less than these margins: 1e-3 of the vertex's own
+  // coordinates, and 1e-5 of the largest value the float products can reach for this object (the
+  // float rounding of the products is about 1e-7 of that).
+  constexpr double kRelativeMargin = 1e-3, kProductMargin = 1e-5;
+  for (size_t k = 0; k < run.objects.size() && k < run.sceneIndex.size(); ++k) {
+    const ObjectRun& o = run.objects[k];
+    const size_t i = run.sceneIndex[k];
+    if (i >= scene.objects.size()) continue;
+    const SceneObject& so = scene.objects[i];
+    if (!so.visible || so.mesh != o.mesh || !o.mesh || o.npcH.size() != o.mesh->vertexCount() ||
+        o.fate.size() != o.mesh->faceCount() || wcFromMc(so.transform) != o.wcFromMc)
+      continue;  // not this scene's run of the object: drawn whole
+    const Mesh& mesh = *o.mesh;
+    double wcMax = 0;
+    for (const Vec3& c : bounds(mesh).corners()) {
+      const Vec3 wc = transformAffine(o.wcFromMc, c);
+      wcMax = std::max({wcMax, std::abs(wc.x), std::abs(wc.y), std::abs(wc.z)});
+    }
+    double rowMax = 0;
+    for (int r = 0; r < 4; ++r) {
+      double sum = 0;
+      for (int c = 0; c < 4; ++c) sum += std::abs(run.npcFromWc[c][r]);
+      rowMax = std::max(rowMax, sum);
+    }
+    const double productMargin = kProductMargin * rowMax * (wcMax + 1);
+
+    vertexSides_.resize(o.npcH.size());
+    for (size_t v = 0; v < o.npcH.size(); ++v) {
+      const Vec4& p = o.npcH[v];
+      const double margin =
+          std::max(kRelativeMargin * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) + std::abs(p.w)), productMargin);
+      const Boundary bc = boundaryCoordinates(p);
+      uint8_t sides = kInside;
+      for (int b = 0; b < kPlaneCount; ++b) {
+        if (bc[size_t(b)] < -margin) sides |= uint8_t(1u << b);
+        if (!(bc[size_t(b)] > margin)) sides &= uint8_t(~kInside);  // NaN: not inside either
+      }
+      vertexSides_[v] = sides;
+    }
+    // Face f's corners are the GPU vertices faceStart[f] … (GpuMesh), fanned from the first.
+    size_t capacity = 0;
+    for (size_t f = 0; f < mesh.faceCount(); ++f) capacity += 3 * (std::max<uint32_t>(mesh.face(f).size(), 2) - 2);
+    std::array<uint32_t*, kPartLists> out{};
+    for (size_t list = 0; list < kPartLists; ++list) {
+      partIndices_[list].resize(capacity);  // scratch: only what the loop writes is read
+      out[list] = partIndices_[list].data();
+    }
+    const uint8_t* sides = vertexSides_.data();
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+      const auto face = mesh.face(f);
+      uint8_t all = 0xff;
+      for (uint32_t v : face) all &= sides[v];
+      const bool outsideOnePlane = all & 0x3f, insideAll = all & kInside;
+      const uint32_t first = mesh.faceStart[f], n = uint32_t(face.size());
+      auto add = [&](size_t list) {
+        for (uint32_t c = 1; c + 1 < n; ++c) {
+          out[list][0] = first;
+          out[list][1] = first + c;
+          out[list][2] = first + c + 1;
+          out[list] += 3;
+        }
+      };
+      if (insideAll) add(kInsideFaces);  // the inside pass without its fragment test
+      else if (!outsideOnePlane) add(kInsidePass);
+      if (!insideAll) add(kOutsidePass);
+    }
+    VolumePart& part = volumeParts_[i];
+    for (size_t l = 0; l < kPartLists; ++l) {
+      const std::vector<uint32_t>& list = partIndices_[l];  // its first count[l] entries
+      part.count[l] = GLsizei(out[l] - list.data());
+      if (part.count[l] == 0) continue;
+      if (!part.indices[l]) part.indices[l] = gl::makeBuffer(gl_);
+      // Bound as an array buffer: the element binding belongs to whichever VAO is bound.
+      gl_.BindBuffer(GL_ARRAY_BUFFER, part.indices[l].id());
+      const GLsizeiptr bytes = GLsizeiptr(part.count[l]) * GLsizeiptr(sizeof(uint32_t));
+      if (bytes > part.capacity[l] || bytes < part.capacity[l] / 4) {
+        part.capacity[l] = bytes + bytes / 4;
+        gl_.BufferData(GL_ARRAY_BUFFER, part.capacity[l], nullptr, GL_STREAM_DRAW);
+      }
+      gl_.BufferSubData(GL_ARRAY_BUFFER, 0, bytes, list.data());
+    }
+    gl_.BindBuffer(GL_ARRAY_BUFFER, 0);
+    part.valid = true;
+  }
 }
 
 // Wire: every edge. Hidden line (seed figures 16.1 and 16.3): the faces fill the depth buffer only,
@@ -193,14 +324,39 @@ void ViewRenderer::drawEdges(const Scene& scene, const ViewCamera& view, int wid
   overlay_.setUserPlanes({});
 }
 
-void ViewRenderer::drawPolygons(const std::vector<PolygonSet>& sets, const ViewCamera& view, const ObjectPass& pass) {
-  std::vector<glm::vec3> data;  // position, normal per corner, fan-triangulated
-  std::vector<std::pair<GLint, GLsizei>> ranges;
+void ViewRenderer::drawPolygons(const std::vector<PolygonSet>& sets, const ViewCamera& view, const ObjectPass& pass,
+                                PolygonSlot slot) {
+  // Fan triangulation: a polygon of n corners gives n − 2 triangles, three GPU vertices each.
+  std::vector<std::pair<GLint, GLsizei>> ranges;  // per set: first vertex, vertex count
+  GLsizei vertices = 0;
   for (const PolygonSet& set : sets) {
-    const GLint first = GLint(data.size() / 2);
+    const GLint first = vertices;
+    for (size_t k = 0; k < set.ends.size(); ++k) {
+      const uint32_t n = set.ends[k] - (k ? set.ends[k - 1] : 0);
+      if (n >= 3) vertices += GLsizei(3 * (n - 2));
+    }
+    ranges.push_back({first, vertices - first});
+  }
+  if (vertices == 0) return;
+
+  PolygonBuffer& buffer = polygonBuffers_[slot];
+  gl_.BindVertexArray(buffer.vao.id());
+  gl_.BindBuffer(GL_ARRAY_BUFFER, buffer.vbo.id());
+  const GLsizeiptr bytes = GLsizeiptr(vertices) * GLsizeiptr(2 * sizeof(glm::vec3));
+  // Storage grows by a quarter more than asked (a scene that grows a little does not reallocate
+  // every frame) and shrinks when a quarter of it would do.
+  if (bytes > buffer.capacity || bytes < buffer.capacity / 4) {
+    buffer.capacity = bytes + bytes / 4;
+    gl_.BufferData(GL_ARRAY_BUFFER, buffer.capacity, nullptr, GL_STREAM_DRAW);
+  }
+  auto* out = static_cast<glm::vec3*>(
+      gl_.MapBufferRange(GL_ARRAY_BUFFER, 0, bytes, GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_RANGE_BIT));
+  if (!out) throw Error("could not map the polygon buffer (" + std::to_string(bytes) + " bytes)");
+  for (const PolygonSet& set : sets) {
     for (size_t k = 0; k < set.ends.size(); ++k) {
       const uint32_t begin = k ? set.ends[k - 1] : 0;
       const std::span<const Vec3> poly(set.points.data() + begin, set.ends[k] - begin);
+      if (poly.size() < 3) continue;
       Vec3 n{0};  // Newell's normal
       for (size_t i = 0; i < poly.size(); ++i) {
         const Vec3 &p = poly[i], &q = poly[(i + 1) % poly.size()];
@@ -208,15 +364,20 @@ void ViewRenderer::drawPolygons(const std::vector<PolygonSet>& sets, const ViewC
       }
       const double len = glm::length(n);
       const glm::vec3 normal = len > 0 ? glm::vec3(n / len) : glm::vec3(0, 0, 1);
-      for (size_t i = 1; i + 1 < poly.size(); ++i)
-        for (size_t c : {size_t(0), i, i + 1}) data.insert(data.end(), {glm::vec3(poly[c]), normal});
+      const glm::vec3 corner0(poly[0]);
+      for (size_t i = 1; i + 1 < poly.size(); ++i) {
+        out[0] = corner0;
+        out[1] = normal;
+        out[2] = glm::vec3(poly[i]);
+        out[3] = normal;
+        out[4] = glm::vec3(poly[i + 1]);
+        out[5] = normal;
+        out += 6;
+      }
     }
-    ranges.push_back({first, GLsizei(data.size() / 2) - first});
   }
-  if (data.empty()) return;
-  gl_.BindVertexArray(polygonVao_.id());
-  gl_.BindBuffer(GL_ARRAY_BUFFER, polygonVbo_.id());
-  gl_.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(glm::vec3)), data.data(), GL_STREAM_DRAW);
+  gl_.UnmapBuffer(GL_ARRAY_BUFFER);
+
   scene_ = &sceneProgram(false, pass.shaded ? 1 : 0, false);
   scene_->use();
   scene_->set("wcFromMc", Mat4(1.0));
@@ -233,7 +394,6 @@ void ViewRenderer::drawPolygons(const std::vector<PolygonSet>& sets, const ViewC
   for (size_t i = 0; i < sets.size(); ++i) {
     if (ranges[i].second == 0) continue;
     scene_->set("color", sets[i].color);
-    gl_.BindVertexArray(polygonVao_.id());
     gl_.DrawArrays(GL_TRIANGLES, ranges[i].first, ranges[i].second);
   }
   gl_.BindVertexArray(0);

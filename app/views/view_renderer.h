@@ -38,6 +38,17 @@ class ViewRenderer {
                int height);
 
   GlContext& context() { return ctx_; }
+  /// Whether the world view draws each of its two passes from the faces that can show in it
+  /// (partitionByVolume; on by default, used only without multisampling). Off: every face in both
+  /// passes, as the tests compare.
+  void setPartitionedWorld(bool on) { partitionedWorld_ = on; }
+  /// The triangles the last partitioned world view drew of scene object `i` in its inside and its
+  /// outside pass ({0, 0} when it was not partitioned).
+  std::array<size_t, 2> partitionedTriangles(size_t i) const {
+    if (i >= volumeParts_.size() || !volumeParts_[i].valid) return {0, 0};
+    const VolumePart& p = volumeParts_[i];
+    return {size_t(p.count[kInsideFaces] + p.count[kInsidePass]) / 3, size_t(p.count[kOutsidePass]) / 3};
+  }
   /// Larger text, lines and points for a projector (lecture mode).
   void setScale(float scale);
 
@@ -48,7 +59,21 @@ class ViewRenderer {
     float alpha = 1.f;
     bool shaded = true;
     bool userPlanes = false;  // clip by the scene's user clip planes (gl_ClipDistance, seed 003)
+    /// With volumeMode ≠ 0: draw only the faces partitionByVolume kept for that mode.
+    bool partitioned = false;
   };
+  /// For the world view's two passes (inside the scene camera's view volume solid, outside faded):
+  /// which faces of each object can have a fragment in each pass. A face whose vertices all lie
+  /// outside one plane of the volume has none inside it; one whose vertices all lie inside has none
+  /// outside. Both by a margin far above the GPU's float rounding (of the matrices, the positions
+  /// and the interpolation), so the fragment shader's own test would discard every fragment of a
+  /// face left out: the picture is the same, and each pass draws about half the faces instead of all.
+  /// From `run`'s homogeneous NPC (the same npcFromWc the shader tests with); an object whose run is
+  /// not the scene's (a stale run after an invalid camera) is drawn whole in both passes.
+  /// Only without multisampling: with it, a fragment's inputs are evaluated at the pixel centre
+  /// even where the triangle covers only some samples, extrapolated beyond the face, where no
+  /// margin on the vertices bounds them.
+  void partitionByVolume(const Scene& scene, const PipelineRun& run);
   /// Binds the target, clears it to `background` and sets the state every view starts from.
   void beginView(gl::RenderTarget& target, const Vec3& background);
   void drawObjects(const Scene& scene, const ViewCamera& view, const ObjectPass& pass);
@@ -67,7 +92,11 @@ class ViewRenderer {
       ends.push_back(uint32_t(points.size()));
     }
   };
-  void drawPolygons(const std::vector<PolygonSet>& sets, const ViewCamera& view, const ObjectPass& pass);
+  /// `slot`: which of the streaming buffers below holds the data. Each pass of a frame that draws
+  /// CPU polygons uses its own, so filling one never waits for the rasterizer to finish another.
+  enum PolygonSlot { kNpcInside = 0, kNpcFaded, kMorph, kPolygonSlots };
+  void drawPolygons(const std::vector<PolygonSet>& sets, const ViewCamera& view, const ObjectPass& pass,
+                    PolygonSlot slot);
   void setLights(const Scene& scene, const ViewCamera& view);
   Image compose(const Image& camera, const Image& world, const Image& npc, int width, int height);
 
@@ -81,8 +110,31 @@ class ViewRenderer {
   GpuMeshCache meshes_;
   OverlayRenderer overlay_;
   std::unique_ptr<TextRenderer> text_;  // replaced by setScale
-  gl::VertexArray polygonVao_;  // CPU polygons (NPC view): position and normal per corner
-  gl::Buffer polygonVbo_;
+  /// CPU polygons (NPC and morph views): position and normal per corner, fan-triangulated. The
+  /// buffer keeps its storage from frame to frame and is written in place through glMapBufferRange:
+  /// the 1M-triangle mesh's 72 MB are neither copied twice nor allocated (page-faulted) anew.
+  struct PolygonBuffer {
+    gl::VertexArray vao;
+    gl::Buffer vbo;
+    GLsizeiptr capacity = 0;  // bytes of storage allocated for vbo
+  };
+  std::array<PolygonBuffer, kPolygonSlots> polygonBuffers_;
+  /// partitionByVolume's faces per scene object: triangle indices into the object's GpuMesh, in
+  /// face order: the inside pass's faces inside every plane by the margin (drawn first, without the
+  /// fragment test), its other faces, and the outside pass's faces.
+  enum PartList { kInsideFaces = 0, kInsidePass, kOutsidePass, kPartLists };
+  struct VolumePart {
+    bool valid = false;
+    std::array<gl::Buffer, kPartLists> indices;
+    std::array<GLsizeiptr, kPartLists> capacity{};
+    std::array<GLsizei, kPartLists> count{};
+  };
+  std::vector<VolumePart> volumeParts_;
+  bool partitionedWorld_ = true;
+  std::array<std::vector<uint32_t>, kPartLists> partIndices_;  // scratch, kept between frames
+  std::vector<uint8_t> vertexSides_;                  // scratch: per vertex, see partitionByVolume
+  /// The NPC view's polygons, kept so their storage is reused from frame to frame.
+  std::vector<PolygonSet> npcInside_, npcFaded_;
 };
 
 }  // namespace vplab

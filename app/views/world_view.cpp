@@ -53,12 +53,14 @@ void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const F
   // The objects: inside the view volume solid, outside faded. The fragment shader splits them by
   // the scene camera's boundary coordinates (seed 002), exactly where the CPU clipper cuts.
   if (isFilled(style)) {
-    drawObjects(scene, view, {1, run.npcFromWc, 1.f, shaded, true});
+    const bool partitioned = partitionedWorld_ && target.samples() == 1;
+    if (partitioned) partitionByVolume(scene, run);
+    drawObjects(scene, view, {1, run.npcFromWc, 1.f, shaded, true, partitioned});
     if (ov.fadeOutside) {
       gl_.Enable(GL_BLEND);
       gl_.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
       gl_.DepthMask(GL_FALSE);
-      drawObjects(scene, view, {2, run.npcFromWc, theme::kFadedAlpha, shaded});
+      drawObjects(scene, view, {2, run.npcFromWc, theme::kFadedAlpha, shaded, false, partitioned});
       gl_.DepthMask(GL_TRUE);
       gl_.Disable(GL_BLEND);
     }
