@@ -1,0 +1,57 @@
+// Opening a scene without freezing the window: the file is read and its meshes tessellated on a
+// worker thread while the viewer keeps drawing (a progress bar with Cancel). A 1M-triangle OBJ
+// takes seconds to load; the UI stays live all the while.
+//
+// Cancel returns at once and keeps the open scene. The reader (pipeline/scene_io.h) cannot be
+// interrupted, so a cancelled load runs on to its end in the background and its result is
+// dropped; the loader joins it on destruction.
+#pragma once
+
+#include "pipeline/scene.h"
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+#include <variant>
+#include <vector>
+
+namespace vplab {
+
+class SceneLoader {
+ public:
+  SceneLoader() = default;
+  ~SceneLoader();
+  SceneLoader(const SceneLoader&) = delete;
+  SceneLoader& operator=(const SceneLoader&) = delete;
+
+  /// Starts reading `file` (a load already running is cancelled).
+  void start(std::filesystem::path file);
+  /// Drops the running load; the open scene stays.
+  void cancel();
+  bool busy() const { return job_ != nullptr; }
+  const std::filesystem::path& file() const;
+  /// Seconds since the running load started.
+  double elapsed() const;
+
+  /// The finished load, once: the scene, or the error message naming the file. Empty while busy or idle.
+  std::optional<std::variant<Scene, std::string>> poll();
+
+ private:
+  struct Job {
+    std::filesystem::path file;
+    std::chrono::steady_clock::time_point started;
+    std::atomic<bool> done{false};
+    std::optional<Scene> scene;  // written by the worker before `done`
+    std::string error;
+    std::thread worker;
+  };
+  std::unique_ptr<Job> job_;
+  std::vector<std::unique_ptr<Job>> abandoned_;  // cancelled, still running: joined when done
+  void reap();
+};
+
+}  // namespace vplab
