@@ -5,6 +5,8 @@
 
 namespace vplab {
 
+SceneLoader::SceneLoader() : reader_([](const std::filesystem::path& f) { return loadScene(f); }) {}
+
 SceneLoader::~SceneLoader() {
   cancel();
   for (auto& j : abandoned_) j->worker.join();
@@ -16,9 +18,9 @@ void SceneLoader::start(std::filesystem::path file) {
   job->file = std::move(file);
   job->started = std::chrono::steady_clock::now();
   Job* j = job.get();  // owned by job_ or abandoned_ until the worker has been joined
-  j->worker = std::thread([j] {
+  j->worker = std::thread([j, reader = reader_] {
     try {
-      j->scene = loadScene(j->file);
+      j->scene = reader(j->file);
     } catch (const std::exception& e) {  // vplab::Error names the file; anything else gets named here
       j->error = dynamic_cast<const Error*>(&e) ? e.what() : j->file.string() + ": " + e.what();
     }

@@ -12,6 +12,7 @@
 #include <atomic>
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -23,7 +24,12 @@ namespace vplab {
 
 class SceneLoader {
  public:
-  SceneLoader() = default;
+  /// Reads a scene file (loadScene; tests give one they control). Runs on the worker thread.
+  using Reader = std::function<Scene(const std::filesystem::path&)>;
+
+  SceneLoader();
+  /// For loads started from now on.
+  void setReader(Reader reader) { reader_ = std::move(reader); }
   ~SceneLoader();
   SceneLoader(const SceneLoader&) = delete;
   SceneLoader& operator=(const SceneLoader&) = delete;
@@ -49,6 +55,7 @@ class SceneLoader {
     std::string error;
     std::thread worker;
   };
+  Reader reader_;
   std::unique_ptr<Job> job_;
   std::vector<std::unique_ptr<Job>> abandoned_;  // cancelled, still running: joined when done
   void reap();

@@ -325,11 +325,14 @@ void Viewer::helpWindow() {
 
 void Viewer::menuBar() {
   if (!ImGui::BeginMainMenuBar()) return;
-  if (ImGui::BeginMenu("File")) {
+  const bool fileMenu = ImGui::BeginMenu("File");
+  ui::recordRect(s_, "menu.file");
+  if (fileMenu) {
+    if (ImGui::MenuItem("New (default lecture scene)", "Ctrl+N")) unlessUnsaved([this] { startDocument(defaultScene()); });
+    ui::recordRect(s_, "menu.new");
     if (ImGui::MenuItem("Open scene…", "Ctrl+O"))
       dialog_.open("Open a scene", FileDialog::Mode::open, {".json"}, s_.doc.path(),
                    [this](const std::filesystem::path& f) { unlessUnsaved([this, f] { openScene(f); }); });
-    if (ImGui::MenuItem("New (default lecture scene)", "Ctrl+N")) unlessUnsaved([this] { startDocument(defaultScene()); });
     if (ImGui::MenuItem("Save", "Ctrl+S")) saveScene(s_.doc.path());
     if (ImGui::MenuItem("Save as…", "Ctrl+Shift+S")) saveAs();
     if (ImGui::BeginMenu("Presets", !s_.presets.empty())) {
@@ -497,6 +500,7 @@ void Viewer::discardDialog() {
     if (pendingReplace_) pendingReplace_();
     pendingReplace_ = nullptr;
   }
+  ui::recordRect(s_, "discard.confirm");
   ImGui::SameLine();
   if (ImGui::Button("Keep editing")) {
     ImGui::CloseCurrentPopup();

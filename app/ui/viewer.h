@@ -54,6 +54,7 @@ class Viewer {
   /// scene, with a progress bar and Cancel, until it has loaded.
   void openScene(const std::filesystem::path& file);
   const SceneLoader& loader() const { return loader_; }
+  SceneLoader& loader() { return loader_; }
   /// Cancel of the loading bar.
   void cancelLoading();
 
