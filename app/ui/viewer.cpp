@@ -124,7 +124,17 @@ void Viewer::setStatus(std::string message, bool error) {
 
 // ---------------------------------------------------------------- 2 the frame
 
+// Runs the CPU pipeline when its input changed: frames drawn for hover and ImGui's settling (the
+// window draws only on input) cost no pipeline run, which on a million triangles takes longer
+// than the frame.
 void Viewer::runPipeline() {
+  const PipelineOptions& o = s_.pipeline;
+  const bool same = ranOnce_ && s_.doc.shown() == ranScene_ && o.strategy == ranOptions_.strategy &&
+                    o.boundingBoxTest == ranOptions_.boundingBoxTest && o.clipEdges == ranOptions_.clipEdges;
+  if (same) return;
+  ranOnce_ = true;
+  ranScene_ = s_.doc.shown();  // shares the meshes: a cheap copy
+  ranOptions_ = o;
   try {
     vplab::runPipeline(s_.doc.shown(), s_.pipeline, s_.run);
     s_.runError.clear();
@@ -136,7 +146,7 @@ void Viewer::runPipeline() {
 void Viewer::makeCurrent() { ImGui::SetCurrentContext(imgui_); }
 
 double Viewer::wakeIn() const {
-  if (settleFrames_ > 0 || s_.morphPlaying || loader_.busy() || askRecovery_) return 0;
+  if (settleFrames_ > 0 || s_.morphPlaying || loader_.busy() || askRecovery_ || s_.animateUntil > imgui_->Time) return 0;
   double wake = 1e9;
   // ImGui 1.86 blinks the text cursor (on 0.8 s, off 0.4 s): a few frames a second while typing.
   if (imgui_->IO.WantTextInput) wake = 0.2;

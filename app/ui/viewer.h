@@ -129,6 +129,9 @@ class Viewer {
   std::function<void()> pendingReplace_;  // waiting for "discard the unsaved changes?"
   bool askDiscard_ = false;
   unsigned lastActive_ = 0;  // the ImGui item active in the previous frame
+  Scene ranScene_;                // the input of s_.run (runPipeline runs only when it changes)
+  PipelineOptions ranOptions_;
+  bool ranOnce_ = false;
   int settleFrames_ = 2;     // frames still to draw without input (wakeIn)
   SceneLoader loader_;
   std::unique_ptr<Autosave> autosave_;

@@ -115,6 +115,28 @@ TEST(Document, OpeningAPresetAfterEditsStartsACleanDocumentWithDefaultViewSettin
   EXPECT_EQ(v->state().doc.path(), preset("parallel.json"));
 }
 
+// ---------------------------------------------------------------- idle (item 10)
+
+// The window's event wait sleeps for wakeIn() (tests/app/window/idle_and_recovery.sh measures the
+// CPU): long when nothing happens, zero while something moves.
+TEST(Idle, TheViewerAsksForFramesOnlyWhileSomethingMoves) {
+  auto v = makeViewer();
+  v->frames(3);
+  EXPECT_GE(v->viewer().wakeIn(), 60.0) << "idle: no frame needed";
+  v->viewer().requestFrames(2);
+  EXPECT_EQ(v->viewer().wakeIn(), 0.0);
+  v->frames(2);
+  EXPECT_GE(v->viewer().wakeIn(), 60.0) << "settled after the frames asked for";
+  v->state().morphPlaying = true;
+  EXPECT_EQ(v->viewer().wakeIn(), 0.0) << "the stage morph plays";
+  v->state().morphPlaying = false;
+  v->viewer().makeCurrent();
+  v->state().animateUntil = ImGui::GetTime() + 0.5;
+  EXPECT_EQ(v->viewer().wakeIn(), 0.0) << "a timed notice is showing";
+  v->frames(40);
+  EXPECT_GE(v->viewer().wakeIn(), 60.0) << "the notice's time is over";
+}
+
 // ---------------------------------------------------------------- loading on a worker thread (item 11)
 
 /// A reader that waits until the test opens its gate: the load lasts exactly as long as the test
