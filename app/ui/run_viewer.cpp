@@ -1,8 +1,8 @@
 // The window's event loop. It sleeps in glfwWaitEventsTimeout until input arrives or the viewer
 // asks for a frame (Viewer::wakeIn: an animation, ImGui settling after a change, the text cursor,
 // the next autosave), so an idle window uses no CPU. Input goes through an InputQueue (one button
-// or key transition per frame: no click is lost). SIGTERM and SIGINT write the recovery file of
-// unsaved changes before the viewer ends.
+// or key transition per frame: no click is lost). SIGTERM, SIGINT and SIGHUP (the terminal closed)
+// write the recovery file of unsaved changes before the viewer ends.
 #include "app/ui/run_viewer.h"
 
 #include "app/context/context_glfw.h"
@@ -115,10 +115,12 @@ class EndSignals {
     sa.sa_flags = SA_RESTART;
     ::sigaction(SIGTERM, &sa, &oldTerm_);
     ::sigaction(SIGINT, &sa, &oldInt_);
+    ::sigaction(SIGHUP, &sa, &oldHup_);
   }
   ~EndSignals() {
     ::sigaction(SIGTERM, &oldTerm_, nullptr);
     ::sigaction(SIGINT, &oldInt_, nullptr);
+    ::sigaction(SIGHUP, &oldHup_, nullptr);
     gWakeFd.store(-1);
     if (watcher_.joinable()) {
       const char byte = 'q';
@@ -135,7 +137,7 @@ class EndSignals {
  private:
   int fds_[2] = {-1, -1};
   std::thread watcher_;
-  struct sigaction oldTerm_ {}, oldInt_ {};
+  struct sigaction oldTerm_ {}, oldInt_ {}, oldHup_ {};
 };
 
 std::string screenshotName() {
@@ -177,7 +179,7 @@ int runViewerWindow(ViewerLaunch launch) {
     else glfwWaitEventsTimeout(std::min(wait, kLongestWait));
     if (const int sig = signals.received()) {
       const std::filesystem::path kept = viewer.writeRecoveryNow();
-      std::cerr << "vplab: ended by " << (sig == SIGTERM ? "SIGTERM" : "SIGINT");
+      std::cerr << "vplab: ended by " << (sig == SIGTERM ? "SIGTERM" : sig == SIGINT ? "SIGINT" : "SIGHUP");
       if (!kept.empty()) std::cerr << "; the unsaved changes are kept in " << kept.string() << " and offered at the next start";
       std::cerr << "\n";
       report();

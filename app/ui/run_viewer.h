@@ -17,7 +17,7 @@ struct ViewerLaunch {
   bool reportFrames = false;        // print the number of frames drawn when the viewer ends (tests)
 };
 
-/// Runs until the window is closed (0), or a signal ends it (128 + SIGTERM or SIGINT, after writing
+/// Runs until the window is closed (0), or a signal ends it (128 + SIGTERM, SIGINT or SIGHUP, after writing
 /// the recovery file of unsaved changes). Throws vplab::Error when no window can be opened.
 int runViewerWindow(ViewerLaunch launch);
 

@@ -211,7 +211,13 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   lastActive_ = active;
   const bool editing = active != 0 || s_.drag.kind == Drag::Kind::handle;
   s_.doc.endFrame(editing);
-  if (autosave_) autosave_->update(s_.doc, ImGui::GetTime());
+  if (autosave_) {
+    autosave_->update(s_.doc, ImGui::GetTime());
+    if (autosave_->error() != autosaveError_) {  // say it once, not every frame
+      autosaveError_ = autosave_->error();
+      if (!autosaveError_.empty()) setStatus(autosaveError_, true);
+    }
+  }
 
   const GladGLContext& gl = ctx_.gl();
   gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);

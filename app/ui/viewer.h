@@ -135,6 +135,7 @@ class Viewer {
   int settleFrames_ = 2;     // frames still to draw without input (wakeIn)
   SceneLoader loader_;
   std::unique_ptr<Autosave> autosave_;
+  std::string autosaveError_;  // the last one shown
   std::optional<Recovery> recovery_;
   bool askRecovery_ = false;
 };

@@ -376,6 +376,19 @@ TEST(Autosave, ARecoveryFileOfAnEndedProcessIsOfferedAndRecovered) {
   EXPECT_TRUE(fs::exists(v->viewer().autosave()->file())) << "this session keeps the changes at once";
 }
 
+TEST(Autosave, AFailureIsShownNotSwallowed) {
+  TempDir dir;
+  const fs::path notADirectory = dir.path / "file";
+  std::ofstream(notADirectory) << "x";
+  auto v = makeViewer();
+  v->viewer().enableAutosave(notADirectory / "vplab", 0);
+  v->key(keys::kP);
+  v->frames(2);
+  EXPECT_TRUE(v->state().statusIsError);
+  EXPECT_THAT(v->state().status, HasSubstr("autosave failed"));
+  EXPECT_THAT(v->state().status, HasSubstr(notADirectory.string()));
+}
+
 TEST(Autosave, TheFileOfARunningSessionIsNotOffered) {
   TempDir dir;
   Document doc(defaultScene());
