@@ -13,16 +13,28 @@ SceneLoader::~SceneLoader() {
 }
 
 void SceneLoader::start(std::filesystem::path file) {
+  run(file, [reader = reader_, file](Loaded& out) { out.scene = reader(file); });
+}
+
+void SceneLoader::startObject(SceneObject object, std::filesystem::path baseDir) {
+  const std::filesystem::path file = object.file;
+  run(file, [object = std::move(object), baseDir = std::move(baseDir)](Loaded& out) mutable {
+    buildMesh(object, baseDir);
+    out.object = std::move(object);
+  });
+}
+
+void SceneLoader::run(std::filesystem::path file, std::function<void(Loaded&)> work) {
   cancel();
   auto job = std::make_unique<Job>();
   job->file = std::move(file);
   job->started = std::chrono::steady_clock::now();
   Job* j = job.get();  // owned by job_ or abandoned_ until the worker has been joined
-  j->worker = std::thread([j, reader = reader_] {
+  j->worker = std::thread([j, work = std::move(work)] {
     try {
-      j->scene = reader(j->file);
+      work(j->result);
     } catch (const std::exception& e) {  // vplab::Error names the file; anything else gets named here
-      j->error = dynamic_cast<const Error*>(&e) ? e.what() : j->file.string() + ": " + e.what();
+      j->result.error = dynamic_cast<const Error*>(&e) ? e.what() : j->file.string() + ": " + e.what();
     }
     j->done.store(true, std::memory_order_release);
   });
@@ -55,13 +67,12 @@ double SceneLoader::elapsed() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - job_->started).count();
 }
 
-std::optional<std::variant<Scene, std::string>> SceneLoader::poll() {
+std::optional<SceneLoader::Loaded> SceneLoader::poll() {
   reap();
   if (!job_ || !job_->done.load(std::memory_order_acquire)) return std::nullopt;
   job_->worker.join();
   std::unique_ptr<Job> job = std::move(job_);
-  if (job->scene) return std::variant<Scene, std::string>(std::in_place_index<0>, std::move(*job->scene));
-  return std::variant<Scene, std::string>(std::in_place_index<1>, std::move(job->error));
+  return std::move(job->result);
 }
 
 }  // namespace vplab

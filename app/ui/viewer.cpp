@@ -158,14 +158,25 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   ImGui::SetCurrentContext(imgui_);
   if (s_.uiScale != uiScale_) applyUiScale(s_.uiScale);  // the font atlas is locked during a frame
   if (settleFrames_ > 0) --settleFrames_;
+  if (s_.objectToLoad) {  // "+ OBJ mesh…" of the scene panel
+    const std::filesystem::path& path = s_.doc.scene().path;
+    loader_.startObject(std::move(*s_.objectToLoad), path.empty() ? std::filesystem::path() : path.parent_path());
+    s_.objectToLoad.reset();
+  }
   if (auto loaded = loader_.poll()) {
-    if (Scene* scene = std::get_if<Scene>(&*loaded)) {
-      const std::string file = scene->path.string();
-      startDocument(std::move(*scene));
+    if (loaded->scene) {
+      const std::string file = loaded->scene->path.string();
+      startDocument(std::move(*loaded->scene));
       setStatus("opened " + file, false);
+    } else if (loaded->object) {  // one undo step, recorded at the end of this frame
+      Scene& scene = s_.doc.scene();
+      setStatus("added " + loaded->object->file, false);
+      scene.objects.push_back(std::move(*loaded->object));
+      s_.selectedObject = int(scene.objects.size()) - 1;
     } else {
-      setStatus(std::get<std::string>(*loaded), true);  // the open scene stays
+      setStatus(loaded->error, true);  // the open scene stays
     }
+    requestFrames(2);
   }
   const Scene atFrameStart = s_.doc.scene();
   const unsigned generation = s_.doc.generation();
@@ -563,7 +574,7 @@ void Viewer::loadingWindow() {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowSize(ImVec2(420 * uiScale_, 0), ImGuiCond_Always);
-  ImGui::Begin("Opening a scene", nullptr,
+  ImGui::Begin("Loading", nullptr,
                ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
   ImGui::TextWrapped("Reading and tessellating %s", loader_.file().filename().string().c_str());
   // The reader reports no fraction: the bar sweeps to show the work goes on, the time counts.

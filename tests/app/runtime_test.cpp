@@ -202,6 +202,25 @@ TEST(Loading, CancelKeepsTheOpenScene) {
   EXPECT_THAT(v->state().status, HasSubstr("cancelled"));
 }
 
+TEST(Loading, AnObjMeshFromTheScenePanelIsAddedAsOneUndoStep) {
+  auto v = makeViewer();
+  const size_t before = v->state().doc.scene().objects.size();
+  SceneObject o;
+  o.shape = Shape::mesh;
+  o.name = "house";
+  o.file = (fs::path(VPLAB_ASSETS) / "meshes" / "house.obj").string();
+  v->state().objectToLoad = o;  // what "+ OBJ mesh…" does
+  v->frame();
+  EXPECT_TRUE(v->viewer().loader().busy() || v->state().doc.scene().objects.size() == before + 1);
+  framesWhileLoading(*v);
+  ASSERT_EQ(v->state().doc.scene().objects.size(), before + 1);
+  EXPECT_GT(v->state().doc.scene().objects.back().mesh->faceCount(), 0u);
+  EXPECT_EQ(v->state().selectedObject, int(before));
+  EXPECT_TRUE(v->state().doc.dirty());
+  v->key(keys::kZ, /*ctrl=*/true);
+  EXPECT_EQ(v->state().doc.scene().objects.size(), before);
+}
+
 TEST(Loading, AnUnreadableFileIsAnErrorAndTheSceneStays) {
   TempDir dir;
   const fs::path bad = dir.path / "bad.json";
