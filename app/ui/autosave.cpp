@@ -20,7 +20,8 @@ namespace vplab {
 namespace {
 
 constexpr double kNever = 1e9;
-constexpr std::uintmax_t kMaxRecoveryBytes = 512ull << 20;  // as large as a scene file may be
+// Scenes are small (meshes stay in their OBJ files); this bounds what a start reads at worst.
+constexpr std::uintmax_t kMaxRecoveryBytes = 64ull << 20;
 
 std::string localTime() {
   const std::time_t now = std::time(nullptr);

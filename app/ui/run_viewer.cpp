@@ -147,6 +147,9 @@ std::string screenshotName() {
   return buf;
 }
 
+/// The event loop; returns the exit status.
+int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignals& signals, const ViewerLaunch& launch);
+
 }  // namespace
 
 int runViewerWindow(ViewerLaunch launch) {
@@ -166,6 +169,17 @@ int runViewerWindow(ViewerLaunch launch) {
     }
     viewer.enableAutosave(stateDir, kAutosaveDelay);
   }
+  try {
+    return loop(window, viewer, input, signals, launch);
+  } catch (...) {
+    viewer.writeRecoveryNow();  // an unexpected error ends the viewer: keep the work first
+    throw;
+  }
+}
+
+namespace {
+
+int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignals& signals, const ViewerLaunch& launch) {
   // Smoke tests and scripted screenshots (--quit-after-frames) draw every frame, as fast as vsync.
   const bool continuous = launch.quitAfterFrames > 0;
   std::string shownTitle;
@@ -215,5 +229,7 @@ int runViewerWindow(ViewerLaunch launch) {
   report();
   return 0;
 }
+
+}  // namespace
 
 }  // namespace vplab
