@@ -1,7 +1,5 @@
 #include "app/ui/atomic_file.h"
 
-#include "pipeline/error.h"
-
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -10,6 +8,8 @@
 #include <cstring>
 #include <string>
 #include <vector>
+
+#include "pipeline/error.h"
 
 namespace vplab {
 

@@ -1,11 +1,5 @@
 #include "app/ui/autosave.h"
 
-#include "app/ui/atomic_file.h"
-#include "pipeline/error.h"
-#include "pipeline/scene_io.h"
-
-#include <nlohmann/json.hpp>
-
 #include <signal.h>
 #include <unistd.h>
 
@@ -13,7 +7,12 @@
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
+
+#include "app/ui/atomic_file.h"
+#include "pipeline/error.h"
+#include "pipeline/scene_io.h"
 
 namespace vplab {
 
@@ -45,7 +44,8 @@ std::string readText(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file, ec)) throw Error(file.string() + ": not a regular file");
   const auto size = std::filesystem::file_size(file, ec);
   if (ec || size > kMaxRecoveryBytes)
-    throw Error(file.string() + ": " + (ec ? ec.message() : "larger than " + std::to_string(kMaxRecoveryBytes) + " bytes"));
+    throw Error(file.string() + ": " +
+                (ec ? ec.message() : "larger than " + std::to_string(kMaxRecoveryBytes) + " bytes"));
   std::ifstream in(file, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
@@ -56,8 +56,10 @@ std::string readText(const std::filesystem::path& file) {
 }  // namespace
 
 std::filesystem::path Autosave::defaultDirectory() {
-  if (const char* state = std::getenv("XDG_STATE_HOME"); state && *state == '/') return std::filesystem::path(state) / "vplab";
-  if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".local/state/vplab";
+  if (const char* state = std::getenv("XDG_STATE_HOME"); state && *state == '/')
+    return std::filesystem::path(state) / "vplab";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return std::filesystem::path(home) / ".local/state/vplab";
   return {};
 }
 
@@ -82,7 +84,9 @@ void Autosave::update(const Document& doc, double now) {
   if (pending_ && now - changedAt_ >= delay_) write(doc);
 }
 
-double Autosave::dueIn(double now) const { return pending_ ? std::max(0.0, changedAt_ + delay_ - now) : kNever; }
+double Autosave::dueIn(double now) const {
+  return pending_ ? std::max(0.0, changedAt_ + delay_ - now) : kNever;
+}
 
 bool Autosave::writeNow(const Document& doc) {
   if (file_.empty()) return false;
@@ -123,7 +127,8 @@ std::optional<Recovery> Autosave::find(const std::filesystem::path& directory) {
     const std::string name = entry.path().filename().string();
     if (name.rfind("recovery-", 0) != 0 || entry.path().extension() != ".json") continue;
     const std::string digits = name.substr(9, name.size() - 9 - 5);
-    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9)
+      continue;
     if (vplabRunning(std::stol(digits))) continue;
     std::error_code e;
     const auto time = entry.last_write_time(e);
@@ -144,7 +149,8 @@ Scene Autosave::load(const Recovery& recovery) {
   const std::string source = recovery.file.string();
   try {
     const auto j = nlohmann::json::parse(readText(recovery.file));
-    const std::filesystem::path baseDir = recovery.scenePath.empty() ? std::filesystem::path() : recovery.scenePath.parent_path();
+    const std::filesystem::path baseDir =
+        recovery.scenePath.empty() ? std::filesystem::path() : recovery.scenePath.parent_path();
     Scene scene = parseScene(j.at("scene").dump(2), source + ": /scene", baseDir);
     scene.path = recovery.scenePath;
     return scene;

@@ -10,11 +10,11 @@
 // relative to scene_path's directory, as when the scene itself is opened.
 #pragma once
 
-#include "app/ui/document.h"
-
 #include <filesystem>
 #include <optional>
 #include <string>
+
+#include "app/ui/document.h"
 
 namespace vplab {
 
@@ -61,10 +61,10 @@ class Autosave {
 
   std::filesystem::path directory_, file_;
   double delay_;
-  unsigned savedRevision_ = 0;    // the revision in the file (0: none written)
-  unsigned seenRevision_ = 0;     // the revision update() saw last
-  double changedAt_ = 0;          // when seenRevision_ was first seen
-  bool pending_ = false;          // a dirty revision not yet written
+  unsigned savedRevision_ = 0;  // the revision in the file (0: none written)
+  unsigned seenRevision_ = 0;   // the revision update() saw last
+  double changedAt_ = 0;        // when seenRevision_ was first seen
+  bool pending_ = false;        // a dirty revision not yet written
   std::string error_;
 };
 

@@ -46,7 +46,9 @@ void InputQueue::feed(ImGuiIO& io) {
   io.KeyAlt = alt_;
   io.KeySuper = super_;
 
-  auto held = [this](int code) { return std::find(keysHeld_.begin(), keysHeld_.end(), code) != keysHeld_.end(); };
+  auto held = [this](int code) {
+    return std::find(keysHeld_.begin(), keysHeld_.end(), code) != keysHeld_.end();
+  };
   bool transition = false;  // a button or key changed in this frame
   while (!events_.empty()) {
     const Event& e = events_.front();

@@ -7,8 +7,6 @@
 // dropped; the loader joins it on destruction.
 #pragma once
 
-#include "pipeline/scene.h"
-
 #include <atomic>
 #include <chrono>
 #include <filesystem>
@@ -18,6 +16,8 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "pipeline/scene.h"
 
 namespace vplab {
 

@@ -3,21 +3,10 @@
 // no click, saving is atomic and never overwrites a bundled scene, autosave and crash recovery.
 // The real window's idle CPU and SIGTERM recovery are tested under Xvfb
 // (tests/app/window/idle_and_recovery.sh).
-#include "app/ui/atomic_file.h"
-#include "app/ui/autosave.h"
-#include "app/ui/headless_viewer.h"
-#include "app/ui/input_queue.h"
-#include "app/ui/keys.h"
-#include "pipeline/error.h"
-#include "pipeline/scene_io.h"
-#include "tests/app/gl_test_support.h"
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-
 #include <imgui.h>
 #include <imgui_internal.h>
-
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -26,6 +15,15 @@
 #include <fstream>
 #include <future>
 #include <sstream>
+
+#include "app/ui/atomic_file.h"
+#include "app/ui/autosave.h"
+#include "app/ui/headless_viewer.h"
+#include "app/ui/input_queue.h"
+#include "app/ui/keys.h"
+#include "pipeline/error.h"
+#include "pipeline/scene_io.h"
+#include "tests/app/gl_test_support.h"
 
 namespace vplab {
 namespace {
@@ -99,7 +97,7 @@ TEST(Document, NewFromTheMenuIsCleanWithNoUndoIntoThePreviousScene) {
 
 TEST(Document, OpeningAPresetAfterEditsStartsACleanDocumentWithDefaultViewSettings) {
   auto v = makeViewer();
-  v->key(keys::kP);   // an edit: the next projection
+  v->key(keys::kP);           // an edit: the next projection
   v->key(keys::kDigit1 + 3);  // hidden-line in every view: a choice for this scene only
   ASSERT_TRUE(v->state().doc.dirty());
   ASSERT_TRUE(v->state().doc.canUndo());
@@ -319,7 +317,8 @@ TEST(AtomicSave, KeepsTheModeOfTheFileItReplaces) {
   fs::permissions(file, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
   writeFileAtomically(file, "new");
   EXPECT_EQ(readFile(file), "new");
-  EXPECT_EQ(fs::status(file).permissions(), fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  EXPECT_EQ(fs::status(file).permissions(),
+            fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
 }
 
 TEST(Save, ABundledSceneIsNeverOverwrittenSaveAsksForACopy) {
