@@ -135,6 +135,7 @@ void Viewer::runPipeline() {
   ranOnce_ = true;
   ranScene_ = s_.doc.shown();  // shares the meshes: a cheap copy
   ranOptions_ = o;
+  ++runRevision_;
   try {
     vplab::runPipeline(s_.doc.shown(), s_.pipeline, s_.run);
     s_.runError.clear();

@@ -13,6 +13,7 @@
 #include "app/views/view_renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <functional>
 #include <memory>
 
@@ -47,6 +48,8 @@ class Viewer {
   /// while a field is edited, the next autosave; a large number when idle. The window's event wait
   /// uses it as its timeout (README "The viewer": an idle window uses no CPU).
   double wakeIn() const;
+  /// How many times a view was drawn (not reused from its last image): tests check hover frames cost none.
+  unsigned viewsDrawn() const { return viewsDrawn_; }
   /// Asks for `n` more frames (something changed that ImGui shows only after it laid it out again).
   void requestFrames(int n) { settleFrames_ = std::max(settleFrames_, n); }
 
@@ -112,8 +115,10 @@ class Viewer {
   void morphWindow();
   void lectureWindow();
   void stepHighlight();
-  /// Draws a view into its target for an image of `size` screen units; returns the texture.
+  /// Draws a view into its target for an image of `size` screen units; returns the texture. Reuses
+  /// the last image while nothing it shows changed.
   GLuint drawView(ViewKind kind, ImVec2 size);
+  GLuint drawViewNow(ViewKind kind, int w, int h);
 
   GlContext& ctx_;
   ImGuiContext* imgui_ = nullptr;
@@ -129,6 +134,22 @@ class Viewer {
   std::function<void()> pendingReplace_;  // waiting for "discard the unsaved changes?"
   bool askDiscard_ = false;
   unsigned lastActive_ = 0;  // the ImGui item active in the previous frame
+  /// What a view's image was drawn from: equal stamps give equal images.
+  struct ViewStamp {
+    Scene scene;
+    unsigned runRevision = 0;
+    FrameSettings frame;
+    int width = 0, height = 0, samples = 0;
+    float uiScale = 0;
+    bool operator==(const ViewStamp&) const = default;
+  };
+  struct ViewCache {
+    ViewStamp stamp;
+    GLuint texture = 0;
+  };
+  std::array<ViewCache, 5> viewCache_;  // by ViewKind
+  unsigned runRevision_ = 0;            // counts the runs of the CPU pipeline
+  unsigned viewsDrawn_ = 0;
   Scene ranScene_;                // the input of s_.run (runPipeline runs only when it changes)
   PipelineOptions ranOptions_;
   bool ranOnce_ = false;

@@ -135,6 +135,26 @@ TEST(Idle, TheViewerAsksForFramesOnlyWhileSomethingMoves) {
   EXPECT_GE(v->viewer().wakeIn(), 60.0) << "the notice's time is over";
 }
 
+// A frame drawn for hover or ImGui's settling reuses the views' images (a view of a million
+// triangles takes seconds on llvmpipe); anything the views show draws them again.
+TEST(Idle, FramesWithoutChangesReuseTheViewsImages) {
+  auto v = makeViewer();
+  const unsigned settled = v->viewer().viewsDrawn();
+  const auto [cx, cy] = v->centreOf("view.camera");
+  v->mouseMove(cx, cy);  // hovering over a view
+  v->frames(3);
+  v->mouseMove(100, 300);  // and over the panels
+  v->frames(3);
+  EXPECT_EQ(v->viewer().viewsDrawn(), settled);
+  const Image before = v->image();
+  v->key(keys::kDigit1 + 2);  // wireframe in every view
+  EXPECT_GE(v->viewer().viewsDrawn(), settled + 3) << "camera, world and NPC views drawn again";
+  EXPECT_GT(test::differingPixels(before, v->image()), 1000u);
+  const unsigned styled = v->viewer().viewsDrawn();
+  v->key(keys::kP);  // the camera changes
+  EXPECT_GE(v->viewer().viewsDrawn(), styled + 3);
+}
+
 // ---------------------------------------------------------------- loading on a worker thread (item 11)
 
 /// A reader that waits until the test opens its gate: the load lasts exactly as long as the test
