@@ -189,6 +189,9 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
   };
   for (;;) {
     const double wait = continuous || input.changed || !input.queue.empty() ? 0 : viewer.wakeIn();
+    // wakeIn() counts from the last frame's time, which stands still while no frame is drawn: the
+    // timer's end is kept here in real time (the next autosave, the text cursor's blink).
+    const double timerEnd = glfwGetTime() + std::min(wait, kLongestWait);
     if (wait <= 0) glfwPollEvents();
     else glfwWaitEventsTimeout(std::min(wait, kLongestWait));
     if (const int sig = signals.received()) {
@@ -206,7 +209,7 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
     }
     if (input.changed || !input.queue.empty()) viewer.requestFrames(kSettleFrames);
     input.changed = false;
-    if (!continuous && viewer.wakeIn() > 0) continue;  // woken for nothing that shows
+    if (!continuous && viewer.wakeIn() > 0 && glfwGetTime() < timerEnd) continue;  // woken for nothing that shows
 
     viewer.makeCurrent();
     ImGui_ImplGlfw_NewFrame();

@@ -19,7 +19,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <variant>
 
 namespace vplab {
 
@@ -540,6 +539,7 @@ void Viewer::discardDialog() {
 // ---------------------------------------------------------------- 5 files: open, save, autosave and recovery
 
 void Viewer::startDocument(Scene scene, bool dirty) {
+  loader_.cancel();  // an OBJ still loading for the previous document must not land in this one
   s_.doc.replace(std::move(scene), dirty);
   s_.probe.reset();
   s_.selectedObject = 0;

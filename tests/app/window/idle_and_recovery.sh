@@ -4,8 +4,9 @@
 #     from /proc/PID/stat; README "The viewer");
 #  2. it did draw: F12 writes a screenshot of the window, which must be a real picture, and a key
 #     (P: next projection) is handled, which needs frames drawn after the idle period;
-#  3. SIGTERM with unsaved changes writes the recovery file to $XDG_STATE_HOME/vplab and ends with
-#     status 143; the next start offers to recover it.
+#  3. an unsaved change is autosaved to $XDG_STATE_HOME/vplab within a few seconds although the
+#     window is idle; SIGTERM writes the latest one and ends with status 143; the next start offers
+#     to recover it.
 # Usage: idle_and_recovery.sh VPLAB
 set -euo pipefail
 vplab=$(realpath "$1")
@@ -43,9 +44,12 @@ shot=$(ls vplab-*.png 2>/dev/null | head -1) || true
 size=$(stat -c %s "$shot")
 (( size > 20000 )) || fail "the screenshot $shot has only $size bytes: blank?"
 xdotool key p
-sleep 1
 
-# 3. SIGTERM keeps the unsaved change.
+# 3. The autosave wakes the idle window 3 s after the change; SIGTERM writes the latest state.
+for _ in $(seq 60); do ls "$XDG_STATE_HOME"/vplab/recovery-*.json >/dev/null 2>&1 && break; sleep 0.1; done
+ls "$XDG_STATE_HOME"/vplab/recovery-*.json >/dev/null 2>&1 || fail "no autosave within 6 s of a change"
+xdotool key p  # oblique: unsaved again, only SIGTERM can write it now
+sleep 0.5
 kill -TERM $pid
 status=0; wait $pid || status=$?
 unset pid
@@ -53,7 +57,7 @@ unset pid
 grep -q "unsaved changes are kept in" err1 || fail "SIGTERM did not write the recovery file"
 recovery=$(ls "$XDG_STATE_HOME"/vplab/recovery-*.json 2>/dev/null | head -1) || true
 [ -n "$recovery" ] || fail "no recovery file in $XDG_STATE_HOME/vplab"
-grep -q '"projection": "parallel"' "$recovery" || fail "the recovery file lacks the change (P: parallel)"
+grep -q '"projection": "oblique"' "$recovery" || fail "the recovery file lacks the last change (P twice: oblique)"
 frames=$(sed -n 's/^vplab: \([0-9]*\) frames drawn$/\1/p' err1)
 echo "frames drawn in ~15 s: $frames"
 # drawn: the first frames, the screenshot's and the key's; a window that redraws continuously
