@@ -105,6 +105,7 @@ struct ViewerOptions {
   std::string screenshot;
   float uiScale = 1.f;
   bool glDebug = false;
+  bool reportFrames = false;
 };
 
 // Without a display the viewer cannot open: say so, and leave what can be made headless instead.
@@ -136,6 +137,7 @@ int runViewer(const ViewerOptions& v) {
   launch.quitAfterFrames = v.quitAfterFrames;
   launch.screenshotOnQuit = v.screenshot;
   launch.uiScale = v.uiScale;
+  launch.reportFrames = v.reportFrames;
 #ifndef NDEBUG
   launch.glDebug = true;
 #else
@@ -170,6 +172,7 @@ int runCommandLine(int argc, char** argv) {
   app.add_option("--ui-scale", viewer.uiScale, "Scale fonts and handles (1.5 or 2 for a projector)")
       ->check(CLI::Range(0.5f, 4.f));
   app.add_flag("--gl-debug", viewer.glDebug, "Turn on KHR_debug and fail on any OpenGL error");
+  app.add_flag("--report-frames", viewer.reportFrames, "Print how many frames the window drew when it ends (tests)");
 
   DumpOptions dump;
   CLI::App* dumpCmd = app.add_subcommand("dump", "Run the CPU pipeline and print every stage's results as JSON");

@@ -12,7 +12,7 @@ packages=(
   libegl-dev libgl-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
   nlohmann-json3-dev libtinyobjloader-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth x11-utils fonts-dejavu-core
+  xvfb xauth x11-utils xdotool fonts-dejavu-core
 )
 # vplab exercise: the .tex sheets are compiled by the tests (pdflatex) and turned into pictures (pdftoppm)
 packages+=(texlive-latex-base texlive-latex-recommended poppler-utils)

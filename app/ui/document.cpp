@@ -1,5 +1,6 @@
 #include "app/ui/document.h"
 
+#include "app/ui/atomic_file.h"
 #include "pipeline/scene_io.h"
 
 namespace vplab {
@@ -23,6 +24,7 @@ void Document::endFrame(bool editInProgress) {
   redo_.clear();
   stable_ = scene_;
   dirty_ = true;
+  ++revision_;
 }
 
 void Document::recordStep(const Scene& before) {
@@ -32,6 +34,7 @@ void Document::recordStep(const Scene& before) {
   redo_.clear();
   stable_ = before;
   dirty_ = true;
+  ++revision_;
 }
 
 void Document::undo() {
@@ -41,6 +44,7 @@ void Document::undo() {
   undo_.pop_back();
   stable_ = scene_;
   dirty_ = true;
+  ++revision_;
   refreshShown();
 }
 
@@ -51,25 +55,29 @@ void Document::redo() {
   redo_.pop_back();
   stable_ = scene_;
   dirty_ = true;
+  ++revision_;
   refreshShown();
 }
 
-void Document::replace(Scene scene) {
+void Document::replace(Scene scene, bool dirty) {
   scene_ = std::move(scene);
   stable_ = scene_;
   shown_ = scene_;
   undo_.clear();
   redo_.clear();
-  dirty_ = false;
+  dirty_ = dirty;
+  ++generation_;
+  ++revision_;
   refreshShown();
 }
 
 void Document::save(const std::filesystem::path& file) {
-  saveScene(scene_, file);
+  writeFileAtomically(file, sceneToJson(scene_));
   scene_.path = file;
   stable_.path = file;
   shown_.path = file;
   dirty_ = false;
+  ++revision_;
 }
 
 }  // namespace vplab

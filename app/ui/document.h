@@ -38,10 +38,18 @@ class Document {
 
   bool dirty() const { return dirty_; }
   const std::filesystem::path& path() const { return scene_.path; }
-  /// Replaces the scene (open, preset). Clears the history.
-  void replace(Scene scene);
-  /// Writes the scene; on success it is no longer dirty. Throws vplab::Error.
+  /// Replaces the scene (open, preset, New, a recovered autosave): a new document with an empty
+  /// history, clean unless `dirty` (a recovered scene still has its unsaved changes).
+  void replace(Scene scene, bool dirty = false);
+  /// Writes the scene atomically (app/ui/atomic_file.h); on success it is no longer dirty. Throws
+  /// vplab::Error and leaves the file as it was.
   void save(const std::filesystem::path& file);
+
+  /// Counts replace(): a frame that began with another document must not record an undo step
+  /// between the two scenes.
+  unsigned generation() const { return generation_; }
+  /// Counts every recorded change (edit steps, undo, redo, replace, save): the autosave compares it.
+  unsigned revision() const { return revision_; }
 
  private:
   void refreshShown();
@@ -52,6 +60,7 @@ class Document {
   std::string error_;
   std::vector<Scene> undo_, redo_;
   bool dirty_ = false;
+  unsigned generation_ = 0, revision_ = 0;
   static constexpr size_t kMaxHistory = 500;
 };
 

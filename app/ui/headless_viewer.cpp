@@ -20,6 +20,7 @@ void HeadlessViewer::frame() {
   io.DisplaySize = ImVec2(float(width_), float(height_));
   io.DisplayFramebufferScale = ImVec2(1, 1);
   io.DeltaTime = 1.f / 60.f;
+  if (inputQueued_) input_.feed(io);
   viewer_.frame(target_.framebuffer(), width_, height_);
   io.MouseWheel = 0;
 }

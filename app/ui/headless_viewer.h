@@ -2,6 +2,7 @@
 // ImGui. `vplab render --view ui`, the UI tests and the input-to-frame benchmark use it.
 #pragma once
 
+#include "app/ui/input_queue.h"
 #include "app/ui/viewer.h"
 
 namespace vplab {
@@ -26,6 +27,13 @@ class HeadlessViewer {
   void drag(double fromX, double fromY, double toX, double toY, int button = 0, int steps = 8);
   /// A click without motion.
   void click(double x, double y, int button = 0);
+  /// Input as the window delivers it: events queued between frames (a press and its release may
+  /// arrive before the same frame). Once used, each frame() feeds ImGui from this queue, as the
+  /// window does, instead of the direct calls above.
+  InputQueue& input() {
+    inputQueued_ = true;
+    return input_;
+  }
 
   Viewer& viewer() { return viewer_; }
   ViewerState& state() { return viewer_.state(); }
@@ -37,6 +45,8 @@ class HeadlessViewer {
   Viewer viewer_;
   gl::RenderTarget target_;
   int width_, height_;
+  InputQueue input_;
+  bool inputQueued_ = false;
 };
 
 }  // namespace vplab

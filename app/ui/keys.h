@@ -11,6 +11,7 @@ inline constexpr int kF12 = 301;
 inline constexpr int kDigit1 = '1';  // '1'..'5' are consecutive
 inline constexpr int kB = 'B';
 inline constexpr int kC = 'C';
+inline constexpr int kN = 'N';
 inline constexpr int kO = 'O';
 inline constexpr int kP = 'P';
 inline constexpr int kQ = 'Q';

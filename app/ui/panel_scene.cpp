@@ -22,6 +22,10 @@ void addObject(ViewerState& s, Shape shape, std::string file = {}) {
   o.color = {0.75, 0.75, 0.78};
   if (shape == Shape::polygon) o.vertices = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
   o.transform.translate = scene.camera.vrp;  // where the camera looks
+  if (shape == Shape::mesh) {  // read on the viewer's worker thread (app/ui/loader.h)
+    s.objectToLoad = std::move(o);
+    return;
+  }
   try {
     buildMesh(o, scene.path.empty() ? std::filesystem::path{} : scene.path.parent_path());
   } catch (const Error& e) {

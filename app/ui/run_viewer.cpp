@@ -1,7 +1,13 @@
+// The window's event loop. It sleeps in glfwWaitEventsTimeout until input arrives or the viewer
+// asks for a frame (Viewer::wakeIn: an animation, ImGui settling after a change, the text cursor,
+// the next autosave), so an idle window uses no CPU. Input goes through an InputQueue (one button
+// or key transition per frame: no click is lost). SIGTERM, SIGINT and SIGHUP (the terminal closed)
+// write the recovery file of unsaved changes before the viewer ends.
 #include "app/ui/run_viewer.h"
 
 #include "app/context/context_glfw.h"
 #include "app/gl/render_target.h"
+#include "app/ui/input_queue.h"
 #include "app/ui/viewer.h"
 
 #define GLFW_INCLUDE_NONE
@@ -9,18 +15,129 @@
 #include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 
-#include <chrono>
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
 #include <ctime>
+#include <iostream>
+#include <thread>
 
 namespace vplab {
 
 namespace {
 
+constexpr double kAutosaveDelay = 3.0;  // seconds after the last change
+constexpr double kLongestWait = 60.0;   // glfwWaitEventsTimeout needs a finite timeout
+constexpr int kSettleFrames = 3;        // ImGui shows the effect of input (hover, popups) over ~2 frames
+
 // ImGui's GLFW backend is set up after the viewer made the ImGui context and shut down before the
-// viewer destroys it.
+// viewer destroys it. Its own callbacks stay off: WindowInput queues the input instead.
 struct GlfwBackend {
-  explicit GlfwBackend(GLFWwindow* w) { ImGui_ImplGlfw_InitForOpenGL(w, true); }
+  explicit GlfwBackend(GLFWwindow* w) { ImGui_ImplGlfw_InitForOpenGL(w, false); }
   ~GlfwBackend() { ImGui_ImplGlfw_Shutdown(); }
+};
+
+/// The window's input callbacks feed a queue; `changed` says something arrived (input, a resize, an
+/// expose) since the loop last looked.
+struct WindowInput {
+  InputQueue queue;
+  bool changed = true;
+  GLFWwindow* window;
+
+  explicit WindowInput(GLFWwindow* handle) : window(handle) {
+    GLFWwindow* const h = handle;
+    glfwSetWindowUserPointer(h, this);
+    glfwSetCursorPosCallback(h, [](GLFWwindow* w, double x, double y) { of(w).queue.mouseMove(x, y); });
+    glfwSetCursorEnterCallback(h, [](GLFWwindow* w, int entered) {
+      if (!entered) of(w).queue.mouseMove(-1e30, -1e30);  // ImGui: no mouse over the window
+      of(w).changed = true;
+    });
+    glfwSetMouseButtonCallback(h, [](GLFWwindow* w, int button, int action, int) {
+      of(w).queue.mouseButton(button, action == GLFW_PRESS);
+    });
+    glfwSetScrollCallback(h, [](GLFWwindow* w, double dx, double dy) { of(w).queue.wheel(dx, dy); });
+    glfwSetKeyCallback(h, [](GLFWwindow* w, int key, int, int action, int) {
+      if (action != GLFW_REPEAT) of(w).queue.key(key, action == GLFW_PRESS);
+      else of(w).changed = true;  // ImGui repeats held keys itself, given frames
+    });
+    glfwSetCharCallback(h, [](GLFWwindow* w, unsigned c) { of(w).queue.character(c); });
+    glfwSetWindowFocusCallback(h, [](GLFWwindow* w, int focused) {
+      if (!focused) of(w).queue.focusLost();
+      of(w).changed = true;
+    });
+    glfwSetWindowRefreshCallback(h, [](GLFWwindow* w) { of(w).changed = true; });
+    glfwSetFramebufferSizeCallback(h, [](GLFWwindow* w, int, int) { of(w).changed = true; });
+  }
+  ~WindowInput() { glfwSetWindowUserPointer(window, nullptr); }
+  static WindowInput& of(GLFWwindow* w) { return *static_cast<WindowInput*>(glfwGetWindowUserPointer(w)); }
+};
+
+// The only process-wide state: a signal handler can reach nothing else. The handler does only
+// async-signal-safe things (an atomic store, write(2)); a watcher thread turns the byte on the
+// pipe into glfwPostEmptyEvent (thread-safe in GLFW), which wakes the event wait at once.
+std::atomic<int> gSignal{0};
+std::atomic<int> gWakeFd{-1};
+static_assert(std::atomic<int>::is_always_lock_free);
+
+extern "C" void onEndSignal(int sig) {
+  const int saved = errno;
+  gSignal.store(sig);
+  const int fd = gWakeFd.load();
+  if (fd >= 0) {
+    const char byte = 's';
+    [[maybe_unused]] const ssize_t n = ::write(fd, &byte, 1);
+  }
+  errno = saved;
+}
+
+class EndSignals {
+ public:
+  EndSignals() {
+    if (::pipe2(fds_, O_CLOEXEC) != 0) fds_[0] = fds_[1] = -1;
+    gSignal.store(0);
+    gWakeFd.store(fds_[1]);
+    if (fds_[0] >= 0)
+      watcher_ = std::thread([fd = fds_[0]] {
+        for (char byte = 0;;) {
+          const ssize_t n = ::read(fd, &byte, 1);
+          if (n < 0 && errno == EINTR) continue;
+          if (n <= 0 || byte == 'q') return;
+          glfwPostEmptyEvent();
+        }
+      });
+    struct sigaction sa {};
+    sa.sa_handler = onEndSignal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESTART;
+    ::sigaction(SIGTERM, &sa, &oldTerm_);
+    ::sigaction(SIGINT, &sa, &oldInt_);
+    ::sigaction(SIGHUP, &sa, &oldHup_);
+  }
+  ~EndSignals() {
+    ::sigaction(SIGTERM, &oldTerm_, nullptr);
+    ::sigaction(SIGINT, &oldInt_, nullptr);
+    ::sigaction(SIGHUP, &oldHup_, nullptr);
+    gWakeFd.store(-1);
+    if (watcher_.joinable()) {
+      const char byte = 'q';
+      [[maybe_unused]] const ssize_t n = ::write(fds_[1], &byte, 1);
+      watcher_.join();
+    }
+    for (int fd : fds_)
+      if (fd >= 0) ::close(fd);
+  }
+  EndSignals(const EndSignals&) = delete;
+  EndSignals& operator=(const EndSignals&) = delete;
+  int received() const { return gSignal.load(); }
+
+ private:
+  int fds_[2] = {-1, -1};
+  std::thread watcher_;
+  struct sigaction oldTerm_ {}, oldInt_ {}, oldHup_ {};
 };
 
 std::string screenshotName() {
@@ -30,6 +147,9 @@ std::string screenshotName() {
   return buf;
 }
 
+/// The event loop; returns the exit status.
+int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignals& signals, const ViewerLaunch& launch);
+
 }  // namespace
 
 int runViewerWindow(ViewerLaunch launch) {
@@ -37,18 +157,68 @@ int runViewerWindow(ViewerLaunch launch) {
   GlfwWindow window(launch.width, launch.height, title, launch.glDebug);
   Viewer viewer(window, std::move(launch.scene), launch.uiScale);
   GlfwBackend backend(window.handle());
+  WindowInput input(window.handle());
+  EndSignals signals;
+  const std::filesystem::path stateDir = Autosave::defaultDirectory();
+  if (!stateDir.empty()) {
+    if (auto recovery = Autosave::find(stateDir)) {
+      std::cerr << "vplab: " << recovery->file.string() << " holds unsaved changes of "
+                << (recovery->scenePath.empty() ? std::string("the default lecture scene") : recovery->scenePath.string())
+                << " from a session that did not end normally; the viewer offers to recover them\n";
+      viewer.offerRecovery(*recovery);
+    }
+    viewer.enableAutosave(stateDir, kAutosaveDelay);
+  }
+  try {
+    return loop(window, viewer, input, signals, launch);
+  } catch (...) {
+    viewer.writeRecoveryNow();  // an unexpected error ends the viewer: keep the work first
+    throw;
+  }
+}
+
+namespace {
+
+int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignals& signals, const ViewerLaunch& launch) {
+  // Smoke tests and scripted screenshots (--quit-after-frames) draw every frame, as fast as vsync.
+  const bool continuous = launch.quitAfterFrames > 0;
   std::string shownTitle;
-  for (int frame = 1;; ++frame) {
-    glfwPollEvents();
+  int frames = 0;
+  auto report = [&] {
+    if (launch.reportFrames) std::cerr << "vplab: " << frames << " frames drawn\n";
+  };
+  for (;;) {
+    const double wait = continuous || input.changed || !input.queue.empty() ? 0 : viewer.wakeIn();
+    // wakeIn() counts from the last frame's time, which stands still while no frame is drawn: the
+    // timer's end is kept here in real time (the next autosave, the text cursor's blink).
+    const double timerEnd = glfwGetTime() + std::min(wait, kLongestWait);
+    if (wait <= 0) glfwPollEvents();
+    else glfwWaitEventsTimeout(std::min(wait, kLongestWait));
+    if (const int sig = signals.received()) {
+      const std::filesystem::path kept = viewer.writeRecoveryNow();
+      std::cerr << "vplab: ended by " << (sig == SIGTERM ? "SIGTERM" : sig == SIGINT ? "SIGINT" : "SIGHUP");
+      if (!kept.empty()) std::cerr << "; the unsaved changes are kept in " << kept.string() << " and offered at the next start";
+      std::cerr << "\n";
+      report();
+      return 128 + sig;
+    }
     if (window.shouldClose()) {
       viewer.requestQuit();  // asks first when the scene has unsaved changes
       window.setShouldClose(false);
+      input.changed = true;
     }
+    if (input.changed || !input.queue.empty()) viewer.requestFrames(kSettleFrames);
+    input.changed = false;
+    if (!continuous && viewer.wakeIn() > 0 && glfwGetTime() < timerEnd) continue;  // woken for nothing that shows
+
+    viewer.makeCurrent();
     ImGui_ImplGlfw_NewFrame();
+    input.queue.feed(ImGui::GetIO());
     int w = 0, h = 0;
     window.framebufferSize(w, h);
     if (w > 0 && h > 0) viewer.frame(0, w, h);
-    const bool last = viewer.shouldQuit() || (launch.quitAfterFrames > 0 && frame >= launch.quitAfterFrames);
+    ++frames;
+    const bool last = viewer.shouldQuit() || (launch.quitAfterFrames > 0 && frames >= launch.quitAfterFrames);
     if (viewer.screenshotRequested() || (last && !launch.screenshotOnQuit.empty())) {
       const std::string file = viewer.screenshotRequested() ? screenshotName() : launch.screenshotOnQuit;
       writePng(gl::readPixels(window.gl(), 0, w, h), file);
@@ -58,7 +228,11 @@ int runViewerWindow(ViewerLaunch launch) {
     if (viewer.title() != shownTitle) window.setTitle(shownTitle = viewer.title());
     if (last) break;
   }
+  viewer.endSession();
+  report();
   return 0;
 }
+
+}  // namespace
 
 }  // namespace vplab

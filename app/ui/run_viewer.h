@@ -14,9 +14,11 @@ struct ViewerLaunch {
   int quitAfterFrames = 0;          // > 0: quit by itself after that many frames (smoke tests)
   std::string screenshotOnQuit;     // a PNG of the whole window written when quitting
   bool glDebug = false;
+  bool reportFrames = false;        // print the number of frames drawn when the viewer ends (tests)
 };
 
-/// Runs until the window is closed. Throws vplab::Error when no window can be opened.
+/// Runs until the window is closed (0), or a signal ends it (128 + SIGTERM, SIGINT or SIGHUP, after writing
+/// the recovery file of unsaved changes). Throws vplab::Error when no window can be opened.
 int runViewerWindow(ViewerLaunch launch);
 
 }  // namespace vplab

@@ -54,9 +54,22 @@ bool clicked() {
 
 // ---------------------------------------------------------------- 2 drawing a view
 
+// A view is drawn again only when what it shows changed: the window draws frames for any input
+// (hover, ImGui settling), and a view of a million triangles takes seconds on a software renderer.
 GLuint Viewer::drawView(ViewKind kind, ImVec2 size) {
   const ImVec2 fb = ImGui::GetIO().DisplayFramebufferScale;
   const int w = std::max(8, int(size.x * fb.x)), h = std::max(8, int(size.y * fb.y));
+  ViewStamp stamp{s_.doc.shown(), runRevision_, s_.frame, w, h, s_.antialias ? 4 : 1, uiScale_};
+  ViewCache& cached = viewCache_[size_t(kind)];
+  if (cached.texture == 0 || !(cached.stamp == stamp)) {
+    cached.texture = drawViewNow(kind, w, h);
+    ++viewsDrawn_;
+    cached.stamp = std::move(stamp);
+  }
+  return cached.texture;
+}
+
+GLuint Viewer::drawViewNow(ViewKind kind, int w, int h) {
   const Scene& scene = s_.doc.shown();
   const int samples = s_.antialias ? 4 : 1;
   switch (kind) {

@@ -1,7 +1,8 @@
 // Index: 1 construction (ImGui context, fonts, style)  2 the frame  3 layout and windows
-//        4 menus, shortcuts and dialogs  5 files
+//        4 menus, shortcuts and dialogs  5 files: open, save, autosave and recovery
 #include "app/ui/viewer.h"
 
+#include "app/assets.h"
 #include "app/export/svg.h"
 #include "app/ui/keys.h"
 #include "app/ui/layout.h"
@@ -15,6 +16,8 @@
 #include <imgui_internal.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 namespace vplab {
@@ -42,6 +45,13 @@ void setUpStyle(float scale) {
   style.WindowBorderSize = 1;
   style.ItemSpacing = ImVec2(7, 5);
   style.ScaleAllSizes(scale);
+}
+
+/// Where "save a copy" of a bundled scene starts: its name in the working directory.
+std::filesystem::path copyName(const std::filesystem::path& bundled) {
+  std::error_code ec;
+  const std::filesystem::path cwd = std::filesystem::current_path(ec);
+  return cwd / (bundled.empty() ? std::filesystem::path("lecture-scene.json") : bundled.filename());
 }
 
 }  // namespace
@@ -113,7 +123,18 @@ void Viewer::setStatus(std::string message, bool error) {
 
 // ---------------------------------------------------------------- 2 the frame
 
+// Runs the CPU pipeline when its input changed: frames drawn for hover and ImGui's settling (the
+// window draws only on input) cost no pipeline run, which on a million triangles takes longer
+// than the frame.
 void Viewer::runPipeline() {
+  const PipelineOptions& o = s_.pipeline;
+  const bool same = ranOnce_ && s_.doc.shown() == ranScene_ && o.strategy == ranOptions_.strategy &&
+                    o.boundingBoxTest == ranOptions_.boundingBoxTest && o.clipEdges == ranOptions_.clipEdges;
+  if (same) return;
+  ranOnce_ = true;
+  ranScene_ = s_.doc.shown();  // shares the meshes: a cheap copy
+  ranOptions_ = o;
+  ++runRevision_;
   try {
     vplab::runPipeline(s_.doc.shown(), s_.pipeline, s_.run);
     s_.runError.clear();
@@ -124,10 +145,41 @@ void Viewer::runPipeline() {
 
 void Viewer::makeCurrent() { ImGui::SetCurrentContext(imgui_); }
 
+double Viewer::wakeIn() const {
+  if (settleFrames_ > 0 || s_.morphPlaying || loader_.busy() || askRecovery_ || s_.animateUntil > imgui_->Time) return 0;
+  double wake = 1e9;
+  // ImGui 1.86 blinks the text cursor (on 0.8 s, off 0.4 s): a few frames a second while typing.
+  if (imgui_->IO.WantTextInput) wake = 0.2;
+  if (autosave_) wake = std::min(wake, autosave_->dueIn(imgui_->Time));
+  return wake;
+}
+
 void Viewer::frame(GLuint framebuffer, int width, int height) {
   ImGui::SetCurrentContext(imgui_);
   if (s_.uiScale != uiScale_) applyUiScale(s_.uiScale);  // the font atlas is locked during a frame
+  if (settleFrames_ > 0) --settleFrames_;
+  if (s_.objectToLoad) {  // "+ OBJ mesh…" of the scene panel
+    const std::filesystem::path& path = s_.doc.scene().path;
+    loader_.startObject(std::move(*s_.objectToLoad), path.empty() ? std::filesystem::path() : path.parent_path());
+    s_.objectToLoad.reset();
+  }
+  if (auto loaded = loader_.poll()) {
+    if (loaded->scene) {
+      const std::string file = loaded->scene->path.string();
+      startDocument(std::move(*loaded->scene));
+      setStatus("opened " + file, false);
+    } else if (loaded->object) {  // one undo step, recorded at the end of this frame
+      Scene& scene = s_.doc.scene();
+      setStatus("added " + loaded->object->file, false);
+      scene.objects.push_back(std::move(*loaded->object));
+      s_.selectedObject = int(scene.objects.size()) - 1;
+    } else {
+      setStatus(loaded->error, true);  // the open scene stays
+    }
+    requestFrames(2);
+  }
   const Scene atFrameStart = s_.doc.scene();
+  const unsigned generation = s_.doc.generation();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui::NewFrame();
   if (s_.morphPlaying) {
@@ -153,6 +205,8 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
     morphWindow();
   }
   helpWindow();
+  loadingWindow();
+  recoveryDialog();
   quitDialog();
   discardDialog();
   dialog_.draw();
@@ -161,11 +215,20 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
 
   // Going straight from one field into the next keeps some item active in every frame: the change
   // of the active item ends one undo step and begins the next.
+  // A document started in this frame (opened, New) begins with an empty history: the scene at
+  // the frame's start belongs to the previous document.
   const ImGuiID active = ImGui::GetActiveID();
-  if (active != lastActive_ && lastActive_ != 0) s_.doc.recordStep(atFrameStart);
+  if (active != lastActive_ && lastActive_ != 0 && s_.doc.generation() == generation) s_.doc.recordStep(atFrameStart);
   lastActive_ = active;
   const bool editing = active != 0 || s_.drag.kind == Drag::Kind::handle;
   s_.doc.endFrame(editing);
+  if (autosave_) {
+    autosave_->update(s_.doc, ImGui::GetTime());
+    if (autosave_->error() != autosaveError_) {  // say it once, not every frame
+      autosaveError_ = autosave_->error();
+      if (!autosaveError_.empty()) setStatus(autosaveError_, true);
+    }
+  }
 
   const GladGLContext& gl = ctx_.gl();
   gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
@@ -257,8 +320,9 @@ void Viewer::helpWindow() {
     ImGui::TextUnformatted("Keys");
     const char* keys[][2] = {{"Ctrl+Z", "undo"},
                              {"Ctrl+Y, Ctrl+Shift+Z", "redo"},
+                             {"Ctrl+N", "new: the default lecture scene"},
                              {"Ctrl+O", "open a scene"},
-                             {"Ctrl+S / Ctrl+Shift+S", "save / save as"},
+                             {"Ctrl+S / Ctrl+Shift+S", "save (a bundled scene: as a copy) / save as"},
                              {"Ctrl+Q", "quit (asks when the scene has unsaved changes)"},
                              {"1 … 5", "style of every view: flat, shaded, wire, hidden-line, hidden removed"},
                              {"P", "next projection: perspective, parallel, oblique"},
@@ -288,14 +352,16 @@ void Viewer::helpWindow() {
 
 void Viewer::menuBar() {
   if (!ImGui::BeginMainMenuBar()) return;
-  if (ImGui::BeginMenu("File")) {
+  const bool fileMenu = ImGui::BeginMenu("File");
+  ui::recordRect(s_, "menu.file");
+  if (fileMenu) {
+    if (ImGui::MenuItem("New (default lecture scene)", "Ctrl+N")) unlessUnsaved([this] { startDocument(defaultScene()); });
+    ui::recordRect(s_, "menu.new");
     if (ImGui::MenuItem("Open scene…", "Ctrl+O"))
       dialog_.open("Open a scene", FileDialog::Mode::open, {".json"}, s_.doc.path(),
                    [this](const std::filesystem::path& f) { unlessUnsaved([this, f] { openScene(f); }); });
     if (ImGui::MenuItem("Save", "Ctrl+S")) saveScene(s_.doc.path());
-    if (ImGui::MenuItem("Save as…", "Ctrl+Shift+S"))
-      dialog_.open("Save the scene", FileDialog::Mode::save, {".json"}, s_.doc.path(),
-                   [this](const std::filesystem::path& f) { saveScene(f); });
+    if (ImGui::MenuItem("Save as…", "Ctrl+Shift+S")) saveAs();
     if (ImGui::BeginMenu("Presets", !s_.presets.empty())) {
       for (const SceneFileInfo& p : s_.presets)
         if (ImGui::MenuItem(p.title.c_str())) {
@@ -304,12 +370,6 @@ void Viewer::menuBar() {
         }
       ImGui::EndMenu();
     }
-    if (ImGui::MenuItem("Default lecture scene"))
-      unlessUnsaved([this] {
-        s_.doc.replace(defaultScene());
-        s_.probe.reset();
-        s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
-      });
     ImGui::Separator();
     if (ImGui::BeginMenu("Export a view")) {
       exportMenu();
@@ -340,12 +400,10 @@ void Viewer::shortcuts() {
     else if (pressed(keys::kZ)) s_.doc.undo();
     if (pressed(keys::kY)) s_.doc.redo();
     if (pressed(keys::kS)) {
-      if (io.KeyShift || s_.doc.path().empty())
-        dialog_.open("Save the scene", FileDialog::Mode::save, {".json"}, s_.doc.path(),
-                     [this](const std::filesystem::path& f) { saveScene(f); });
-      else
-        saveScene(s_.doc.path());
+      if (io.KeyShift) saveAs();
+      else saveScene(s_.doc.path());
     }
+    if (pressed(keys::kN)) unlessUnsaved([this] { startDocument(defaultScene()); });
     if (pressed(keys::kO))
       dialog_.open("Open a scene", FileDialog::Mode::open, {".json"}, s_.doc.path(),
                    [this](const std::filesystem::path& f) { unlessUnsaved([this, f] { openScene(f); }); });
@@ -381,9 +439,9 @@ void Viewer::quitDialog() {
   ImGui::Text("The scene has unsaved changes. Save them before quitting?");
   if (ImGui::Button("Save")) {
     ImGui::CloseCurrentPopup();
-    if (s_.doc.path().empty()) {
+    if (s_.doc.path().empty() || isBundled(s_.doc.path())) {
       s_.quitRequested = false;
-      dialog_.open("Save the scene", FileDialog::Mode::save, {".json"}, {}, [this](const std::filesystem::path& f) {
+      dialog_.open("Save a copy of the scene", FileDialog::Mode::save, {".json"}, copyName(s_.doc.path()), [this](const std::filesystem::path& f) {
         saveScene(f);
         if (!s_.doc.dirty()) s_.quitConfirmed = true;
       });
@@ -469,6 +527,7 @@ void Viewer::discardDialog() {
     if (pendingReplace_) pendingReplace_();
     pendingReplace_ = nullptr;
   }
+  ui::recordRect(s_, "discard.confirm");
   ImGui::SameLine();
   if (ImGui::Button("Keep editing")) {
     ImGui::CloseCurrentPopup();
@@ -477,25 +536,82 @@ void Viewer::discardDialog() {
   ImGui::EndPopup();
 }
 
-// ---------------------------------------------------------------- 5 files
+// ---------------------------------------------------------------- 5 files: open, save, autosave and recovery
+
+void Viewer::startDocument(Scene scene, bool dirty) {
+  loader_.cancel();  // an OBJ still loading for the previous document must not land in this one
+  s_.doc.replace(std::move(scene), dirty);
+  s_.probe.reset();
+  s_.selectedObject = 0;
+  s_.stepThrough = {};
+  s_.drag = {};
+  s_.morphPlaying = false;
+  // The view settings of a fresh start (see the constructor); the user's UI scale, aspect lock and
+  // antialiasing are preferences, not choices for a scene, and stay.
+  s_.frame = FrameSettings{};
+  s_.frame.camera.style = Style::shaded;
+  s_.pipeline = ViewerState(Scene{}).pipeline;
+  s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
+  runPipeline();
+  requestFrames(2);
+}
 
 void Viewer::openScene(const std::filesystem::path& file) {
-  try {
-    Scene scene = loadScene(file);  // throws before anything changes: the current scene is kept
-    s_.doc.replace(std::move(scene));
-    s_.probe.reset();
-    s_.selectedObject = 0;
-    s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
-    setStatus("opened " + file.string(), false);
-  } catch (const Error& e) {
-    setStatus(e.what(), true);
-  }
+  loader_.start(file);
+  setStatus("opening " + file.string() + " …", false);
+  requestFrames(2);
+}
+
+void Viewer::cancelLoading() {
+  if (!loader_.busy()) return;
+  setStatus("opening " + loader_.file().string() + " cancelled; the open scene stays", false);
+  loader_.cancel();
+  requestFrames(2);
+}
+
+// A small window over the views while a scene loads: the views stay live underneath.
+void Viewer::loadingWindow() {
+  if (!loader_.busy()) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(420 * uiScale_, 0), ImGuiCond_Always);
+  ImGui::Begin("Loading", nullptr,
+               ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::TextWrapped("Reading and tessellating %s", loader_.file().filename().string().c_str());
+  // The reader reports no fraction: the bar sweeps to show the work goes on, the time counts.
+  const double t = loader_.elapsed();
+  char label[32];
+  std::snprintf(label, sizeof label, "%.1f s", t);
+  ImGui::ProgressBar(float(std::fmod(t, 1.5) / 1.5), ImVec2(-1, 0), label);
+  if (ImGui::Button("Cancel")) cancelLoading();
+  ui::recordRect(s_, "load.cancel");
+  ImGui::End();
+}
+
+bool Viewer::isBundled(const std::filesystem::path& file) const {
+  if (file.empty()) return true;  // the built-in default scene
+  std::error_code ec;
+  for (const SceneFileInfo& p : s_.presets)
+    if (std::filesystem::equivalent(p.file, file, ec)) return true;
+  const std::filesystem::path assets = assetsDirectory();
+  if (assets.empty()) return false;
+  const auto dir = std::filesystem::weakly_canonical(assets / "scenes", ec);
+  const auto parent = std::filesystem::weakly_canonical(file, ec).parent_path();
+  return !ec && parent == dir;
+}
+
+void Viewer::saveAs() {
+  dialog_.open("Save the scene", FileDialog::Mode::save, {".json"}, isBundled(s_.doc.path()) ? copyName(s_.doc.path()) : s_.doc.path(),
+               [this](const std::filesystem::path& f) { saveScene(f); });
 }
 
 void Viewer::saveScene(const std::filesystem::path& file) {
-  if (file.empty()) {
-    dialog_.open("Save the scene", FileDialog::Mode::save, {".json"}, {},
-                 [this](const std::filesystem::path& f) { saveScene(f); });
+  if (file.empty() || isBundled(file)) {  // never over a scene shipped with vplab: save a copy
+    dialog_.open("Save a copy of the scene", FileDialog::Mode::save, {".json"}, copyName(file),
+                 [this](const std::filesystem::path& f) {
+                   if (isBundled(f)) setStatus(f.string() + " is a scene shipped with vplab: save the copy elsewhere", true);
+                   else saveScene(f);
+                 });
     return;
   }
   try {
@@ -504,6 +620,56 @@ void Viewer::saveScene(const std::filesystem::path& file) {
   } catch (const Error& e) {
     setStatus(e.what(), true);
   }
+}
+
+void Viewer::enableAutosave(const std::filesystem::path& directory, double delaySeconds) {
+  autosave_ = std::make_unique<Autosave>(directory, delaySeconds);
+}
+
+std::filesystem::path Viewer::writeRecoveryNow() {
+  if (!autosave_ || !autosave_->writeNow(s_.doc)) return {};
+  return autosave_->file();
+}
+
+void Viewer::endSession() {
+  if (autosave_) autosave_->removeFile();
+}
+
+void Viewer::offerRecovery(Recovery recovery) {
+  recovery_ = std::move(recovery);
+  askRecovery_ = true;
+}
+
+void Viewer::recoveryDialog() {
+  if (askRecovery_) {
+    ImGui::OpenPopup("Recover unsaved changes?");
+    askRecovery_ = false;
+  }
+  if (!ImGui::BeginPopupModal("Recover unsaved changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  const std::string scene = recovery_->scenePath.empty() ? "the default lecture scene" : recovery_->scenePath.string();
+  ImGui::Text("vplab did not end normally. Unsaved changes of %s", scene.c_str());
+  ImGui::Text("were kept at %s (%s).", recovery_->savedAt.c_str(), recovery_->file.string().c_str());
+  if (ImGui::Button("Recover them")) {
+    ImGui::CloseCurrentPopup();
+    try {
+      startDocument(Autosave::load(*recovery_), /*dirty=*/true);
+      Autosave::discard(*recovery_);  // this session's autosave keeps them from now on
+      if (autosave_) autosave_->writeNow(s_.doc);
+      setStatus("recovered the unsaved changes of " + scene, false);
+    } catch (const Error& e) {
+      setStatus(e.what(), true);  // the file stays for another try
+    }
+    recovery_.reset();
+  }
+  ui::recordRect(s_, "recovery.recover");
+  ImGui::SameLine();
+  if (ImGui::Button("Discard them")) {
+    ImGui::CloseCurrentPopup();
+    Autosave::discard(*recovery_);
+    recovery_.reset();
+  }
+  ui::recordRect(s_, "recovery.discard");
+  ImGui::EndPopup();
 }
 
 }  // namespace vplab

@@ -6,10 +6,14 @@
 
 #include "app/context/context.h"
 #include "app/gl/render_target.h"
+#include "app/ui/autosave.h"
 #include "app/ui/file_dialog.h"
+#include "app/ui/loader.h"
 #include "app/ui/viewer_state.h"
 #include "app/views/view_renderer.h"
 
+#include <algorithm>
+#include <array>
 #include <functional>
 #include <memory>
 
@@ -39,6 +43,40 @@ class Viewer {
   /// The window title: "vplab — scene.json *" (the star: unsaved changes).
   std::string title() const;
 
+  /// Seconds until the viewer needs its next frame while no input arrives: 0 while something moves
+  /// (the stage morph plays, a scene loads, ImGui settles after a change), the text cursor's blink
+  /// while a field is edited, the next autosave; a large number when idle. The window's event wait
+  /// uses it as its timeout (README "The viewer": an idle window uses no CPU).
+  double wakeIn() const;
+  /// How many times a view was drawn (not reused from its last image): tests check hover frames cost none.
+  unsigned viewsDrawn() const { return viewsDrawn_; }
+  /// Asks for `n` more frames (something changed that ImGui shows only after it laid it out again).
+  void requestFrames(int n) { settleFrames_ = std::max(settleFrames_, n); }
+
+  /// Opens a scene file on a worker thread (File > Open, presets); the views keep drawing the open
+  /// scene, with a progress bar and Cancel, until it has loaded.
+  void openScene(const std::filesystem::path& file);
+  const SceneLoader& loader() const { return loader_; }
+  SceneLoader& loader() { return loader_; }
+  /// Cancel of the loading bar.
+  void cancelLoading();
+
+  /// Turns on autosave into `directory` (Autosave::defaultDirectory() in the window).
+  void enableAutosave(const std::filesystem::path& directory, double delaySeconds);
+  const Autosave* autosave() const { return autosave_.get(); }
+  /// Asked to end by a signal: writes the recovery file if there are unsaved changes. Returns it, or
+  /// an empty path when nothing needed saving.
+  std::filesystem::path writeRecoveryNow();
+  /// A normal end (quit): this session leaves no recovery file.
+  void endSession();
+  /// At start: an earlier session left unsaved changes; a dialog offers to recover them.
+  void offerRecovery(Recovery recovery);
+  bool recoveryOffered() const { return recovery_.has_value(); }
+
+  /// Whether `file` is one of the scenes shipped with vplab (assets/scenes/): Save never writes there.
+  bool isBundled(const std::filesystem::path& file) const;
+  const FileDialog& fileDialog() const { return dialog_; }
+
   /// Written by F12 into the working directory; the runner reads the window back.
   bool screenshotRequested() const { return screenshotRequested_; }
   void screenshotTaken(const std::string& file);
@@ -56,8 +94,14 @@ class Viewer {
   void discardDialog();
   void exportMenu();
   void runPipeline();
-  void openScene(const std::filesystem::path& file);
+  /// A new document (opened, preset, New, recovered): clean unless recovered, no undo history, and
+  /// the view settings of a fresh start (a style chosen for the old scene, e.g. hidden-line, may be
+  /// far too slow for the new one; README "The viewer").
+  void startDocument(Scene scene, bool dirty = false);
   void saveScene(const std::filesystem::path& file);
+  void saveAs();
+  void loadingWindow();
+  void recoveryDialog();
   void setStatus(std::string message, bool error);
   std::optional<Vec3> probePositionOf(ViewKind view) const;
   void orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const ViewCamera& observer, int w, int h, Vec2 mouse);
@@ -71,8 +115,10 @@ class Viewer {
   void morphWindow();
   void lectureWindow();
   void stepHighlight();
-  /// Draws a view into its target for an image of `size` screen units; returns the texture.
+  /// Draws a view into its target for an image of `size` screen units; returns the texture. Reuses
+  /// the last image while nothing it shows changed.
   GLuint drawView(ViewKind kind, ImVec2 size);
+  GLuint drawViewNow(ViewKind kind, int w, int h);
 
   GlContext& ctx_;
   ImGuiContext* imgui_ = nullptr;
@@ -88,6 +134,31 @@ class Viewer {
   std::function<void()> pendingReplace_;  // waiting for "discard the unsaved changes?"
   bool askDiscard_ = false;
   unsigned lastActive_ = 0;  // the ImGui item active in the previous frame
+  /// What a view's image was drawn from: equal stamps give equal images.
+  struct ViewStamp {
+    Scene scene;
+    unsigned runRevision = 0;
+    FrameSettings frame;
+    int width = 0, height = 0, samples = 0;
+    float uiScale = 0;
+    bool operator==(const ViewStamp&) const = default;
+  };
+  struct ViewCache {
+    ViewStamp stamp;
+    GLuint texture = 0;
+  };
+  std::array<ViewCache, 5> viewCache_;  // by ViewKind
+  unsigned runRevision_ = 0;            // counts the runs of the CPU pipeline
+  unsigned viewsDrawn_ = 0;
+  Scene ranScene_;                // the input of s_.run (runPipeline runs only when it changes)
+  PipelineOptions ranOptions_;
+  bool ranOnce_ = false;
+  int settleFrames_ = 2;     // frames still to draw without input (wakeIn)
+  SceneLoader loader_;
+  std::unique_ptr<Autosave> autosave_;
+  std::string autosaveError_;  // the last one shown
+  std::optional<Recovery> recovery_;
+  bool askRecovery_ = false;
 };
 
 }  // namespace vplab

@@ -71,7 +71,11 @@ struct ViewerState {
   ViewKind lectureView = ViewKind::world;
   float uiScale = 1.f;          // fonts and handles; applied at the start of the next frame
   std::vector<SceneFileInfo> presets;  // assets/scenes/, for the presets menu
+  std::optional<SceneObject> objectToLoad;  // an OBJ mesh object to add: its mesh is built on a worker thread
 
+  // The window draws only on input (run_viewer.cpp): a panel showing something timed (a fading
+  // notice) keeps frames coming until this ImGui time (ImGui::GetTime()).
+  double animateUntil = 0;
   std::string status;           // the last message (saved, loaded, an error)
   bool statusIsError = false;
 

@@ -14,6 +14,7 @@ struct Orbit {
   double pitchDeg = 22;   // above the xz plane, limited to ±89°
   double distance = 12;   // eye to target
   double fovDeg = 40;     // vertical field of view
+  bool operator==(const Orbit&) const = default;
 };
 
 /// VRP = target, PRP on the orbit, VUP = +y, the window filling the field of view in the view plane

@@ -40,11 +40,13 @@ struct OverlaySettings {
   bool cpuPolygons = false;  // camera: the CPU clipper's DC polygons over the GPU image
   bool difference = false;   // camera: where the GPU image and the CPU raster differ
   bool vanishingPoints = false;  // camera: the selected object's vanishing points and lines (seed 14.2)
+  bool operator==(const OverlaySettings&) const = default;
 };
 
 struct ViewSettings {
   Style style = Style::shaded;
   Orbit orbit;  // world and NPC views only
+  bool operator==(const ViewSettings&) const = default;
 };
 
 /// Interactive marks: the probed vertex in each view's space and the world view's camera handles.
@@ -54,6 +56,7 @@ struct Highlights {
     Vec3 wc;
     std::string name;
     bool hot;  // under the mouse or being dragged
+    bool operator==(const HandleMark&) const = default;
   };
   std::vector<HandleMark> handles;
   /// The clipping step-through: the polygon after the current step (NPC), which of its vertices
@@ -62,9 +65,11 @@ struct Highlights {
     std::vector<Vec3> polygonNpc;
     std::vector<bool> created;
     int plane = -1;
+    bool operator==(const Step&) const = default;
   };
   std::optional<Step> step;
   int vanishingObject = -1;  // scene index of the object whose vanishing points are drawn
+  bool operator==(const Highlights&) const = default;
 };
 
 /// The stage morph (pipeline/stage_morph.h): t from 0 (MC) to 4 (DC), and the observer's angles
@@ -72,6 +77,7 @@ struct Highlights {
 struct MorphSettings {
   double t = 0;
   Orbit orbit{{0, 0, 0}, 30, 22, 10, 40};
+  bool operator==(const MorphSettings&) const = default;
 };
 
 struct FrameSettings {
@@ -82,6 +88,8 @@ struct FrameSettings {
   MorphSettings morphing;
   OverlaySettings overlays;
   Highlights highlights;
+  // Equal settings draw equal views (the viewer reuses a view's last image, app/ui/view_windows.cpp).
+  bool operator==(const FrameSettings&) const = default;
 };
 
 }  // namespace vplab

@@ -1,0 +1,455 @@
+// The viewer's runtime and document lifecycle (issue 11 items 2, 11, 13; issue 10 "no lost work"):
+// new documents start clean, scenes load on a worker thread while frames go on, queued input loses
+// no click, saving is atomic and never overwrites a bundled scene, autosave and crash recovery.
+// The real window's idle CPU and SIGTERM recovery are tested under Xvfb
+// (tests/app/window/idle_and_recovery.sh).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <imgui.h>
+#include <imgui_internal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <fstream>
+#include <future>
+#include <sstream>
+
+#include "app/ui/atomic_file.h"
+#include "app/ui/autosave.h"
+#include "app/ui/headless_viewer.h"
+#include "app/ui/input_queue.h"
+#include "app/ui/keys.h"
+#include "pipeline/error.h"
+#include "pipeline/scene_io.h"
+#include "tests/app/gl_test_support.h"
+
+namespace vplab {
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+constexpr int kWidth = 1280, kHeight = 720;
+
+std::unique_ptr<HeadlessViewer> makeViewer(Scene scene = defaultScene()) {
+  auto v = std::make_unique<HeadlessViewer>(*test::egl().context, std::move(scene), kWidth, kHeight);
+  v->frames(3);
+  return v;
+}
+
+std::string readFile(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// A fresh directory under the system's temporary directory, removed at the end of the test.
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::string pattern = (fs::temp_directory_path() / "vplab-runtime-XXXXXX").string();
+    path = ::mkdtemp(pattern.data());
+  }
+  ~TempDir() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+};
+
+fs::path preset(const char* name) { return fs::path(VPLAB_ASSETS) / "scenes" / name; }
+
+/// Frames until the loader is idle (at most `limit`); returns how many ended with the load still
+/// running (a loader that blocked the frame would finish within the first).
+int framesWhileLoading(HeadlessViewer& v, int limit = 3000) {
+  int n = 0;
+  for (int i = 0; i < limit && v.viewer().loader().busy(); ++i) {
+    v.frame();
+    if (v.viewer().loader().busy()) ++n;
+  }
+  v.frames(2);
+  return n;
+}
+
+void clickId(HeadlessViewer& v, const std::string& id) {
+  const auto [x, y] = v.centreOf(id);
+  v.click(x, y);
+}
+
+// ---------------------------------------------------------------- new documents (issue 11 item 2)
+
+TEST(Document, NewFromTheMenuIsCleanWithNoUndoIntoThePreviousScene) {
+  auto v = makeViewer();
+  v->key(keys::kP);  // an unsaved edit: New asks before discarding it
+  ASSERT_TRUE(v->state().doc.dirty());
+  clickId(*v, "menu.file");
+  v->frames(2);
+  clickId(*v, "menu.new");
+  v->frames(2);
+  clickId(*v, "discard.confirm");
+  v->frames(2);
+  EXPECT_EQ(v->state().doc.scene().camera.projection, Projection::perspective);
+  EXPECT_FALSE(v->state().doc.dirty());
+  EXPECT_FALSE(v->state().doc.canUndo());
+  EXPECT_THAT(v->viewer().title(), ::testing::Not(HasSubstr("*")));
+}
+
+TEST(Document, OpeningAPresetAfterEditsStartsACleanDocumentWithDefaultViewSettings) {
+  auto v = makeViewer();
+  v->key(keys::kP);           // an edit: the next projection
+  v->key(keys::kDigit1 + 3);  // hidden-line in every view: a choice for this scene only
+  ASSERT_TRUE(v->state().doc.dirty());
+  ASSERT_TRUE(v->state().doc.canUndo());
+  v->viewer().openScene(preset("parallel.json"));
+  framesWhileLoading(*v);
+  EXPECT_EQ(v->state().doc.path(), preset("parallel.json"));
+  EXPECT_FALSE(v->state().doc.dirty());
+  EXPECT_FALSE(v->state().doc.canUndo());
+  EXPECT_THAT(v->viewer().title(), ::testing::Not(HasSubstr("*")));
+  EXPECT_EQ(v->state().frame.world.style, FrameSettings{}.world.style);
+  v->key(keys::kZ, /*ctrl=*/true);  // undo has nothing to go back to
+  EXPECT_EQ(v->state().doc.scene().camera.projection, Projection::parallel);
+  EXPECT_EQ(v->state().doc.path(), preset("parallel.json"));
+}
+
+// ---------------------------------------------------------------- idle (item 10)
+
+// The window's event wait sleeps for wakeIn() (tests/app/window/idle_and_recovery.sh measures the
+// CPU): long when nothing happens, zero while something moves.
+TEST(Idle, TheViewerAsksForFramesOnlyWhileSomethingMoves) {
+  auto v = makeViewer();
+  v->frames(3);
+  EXPECT_GE(v->viewer().wakeIn(), 60.0) << "idle: no frame needed";
+  v->viewer().requestFrames(2);
+  EXPECT_EQ(v->viewer().wakeIn(), 0.0);
+  v->frames(2);
+  EXPECT_GE(v->viewer().wakeIn(), 60.0) << "settled after the frames asked for";
+  v->state().morphPlaying = true;
+  EXPECT_EQ(v->viewer().wakeIn(), 0.0) << "the stage morph plays";
+  v->state().morphPlaying = false;
+  v->viewer().makeCurrent();
+  v->state().animateUntil = ImGui::GetTime() + 0.5;
+  EXPECT_EQ(v->viewer().wakeIn(), 0.0) << "a timed notice is showing";
+  v->frames(40);
+  EXPECT_GE(v->viewer().wakeIn(), 60.0) << "the notice's time is over";
+}
+
+// A frame drawn for hover or ImGui's settling reuses the views' images (a view of a million
+// triangles takes seconds on llvmpipe); anything the views show draws them again.
+TEST(Idle, FramesWithoutChangesReuseTheViewsImages) {
+  auto v = makeViewer();
+  const unsigned settled = v->viewer().viewsDrawn();
+  const auto [cx, cy] = v->centreOf("view.camera");
+  v->mouseMove(cx, cy);  // hovering over a view
+  v->frames(3);
+  v->mouseMove(100, 300);  // and over the panels
+  v->frames(3);
+  EXPECT_EQ(v->viewer().viewsDrawn(), settled);
+  const Image before = v->image();
+  v->key(keys::kDigit1 + 2);  // wireframe in every view
+  EXPECT_GE(v->viewer().viewsDrawn(), settled + 3) << "camera, world and NPC views drawn again";
+  EXPECT_GT(test::differingPixels(before, v->image()), 1000u);
+  const unsigned styled = v->viewer().viewsDrawn();
+  v->key(keys::kP);  // the camera changes
+  EXPECT_GE(v->viewer().viewsDrawn(), styled + 3);
+}
+
+// ---------------------------------------------------------------- loading on a worker thread (item 11)
+
+/// A reader that waits until the test opens its gate: the load lasts exactly as long as the test
+/// wants, whatever the machine's speed.
+struct GatedReader {
+  std::shared_ptr<std::promise<void>> gate = std::make_shared<std::promise<void>>();
+  std::shared_future<void> opened = gate->get_future().share();
+  SceneLoader::Reader reader() const {
+    return [opened = opened](const fs::path& f) {
+      opened.wait();
+      return loadScene(f);
+    };
+  }
+  void open() const { gate->set_value(); }
+};
+
+TEST(Loading, FramesGoOnWhileASceneLoadsAndItArrivesClean) {
+  auto v = makeViewer();
+  GatedReader gated;
+  v->viewer().loader().setReader(gated.reader());
+  v->viewer().openScene(preset("parallel.json"));
+  v->frames(20);  // each returns while the worker is still reading
+  EXPECT_TRUE(v->viewer().loader().busy());
+  EXPECT_TRUE(v->state().doc.path().empty()) << "the open scene stays until the new one is there";
+  EXPECT_THAT(v->state().rects, ::testing::Contains(::testing::Key("load.cancel"))) << "no progress window";
+  gated.open();
+  framesWhileLoading(*v);
+  EXPECT_EQ(v->state().doc.path(), preset("parallel.json"));
+  EXPECT_FALSE(v->state().doc.dirty());
+  EXPECT_FALSE(v->state().doc.canUndo());
+}
+
+TEST(Loading, TheBundledLargeMeshLoadsWithoutBlockingFrames) {
+  auto v = makeViewer();
+  v->viewer().openScene(preset("large-mesh.json"));
+  // Tessellating n = 1024 (half a million polygons) takes ~0.2 s, a frame of the settled default
+  // scene a few milliseconds (its views are reused; 14 frames measured): a loader that blocked the
+  // frame would end within the first one.
+  EXPECT_GE(framesWhileLoading(*v), 3);
+  EXPECT_EQ(v->state().doc.path(), preset("large-mesh.json"));
+  EXPECT_GT(v->state().doc.shown().objects.at(0).mesh->faceCount(), 500000u);
+}
+
+TEST(Loading, CancelKeepsTheOpenScene) {
+  auto v = makeViewer();
+  v->key(keys::kP);  // unsaved work that Cancel must keep
+  const Scene before = v->state().doc.scene();
+  GatedReader gated;
+  v->viewer().loader().setReader(gated.reader());
+  v->viewer().openScene(preset("parallel.json"));
+  v->frames(2);  // the loading window lays itself out
+  ASSERT_TRUE(v->viewer().loader().busy());
+  // A quick click (pointer there, press and release at once) on Cancel.
+  const auto [x, y] = v->centreOf("load.cancel");
+  v->input().mouseMove(x, y);
+  v->input().mouseButton(0, true);
+  v->input().mouseButton(0, false);
+  v->frames(2);
+  EXPECT_FALSE(v->viewer().loader().busy());
+  gated.open();  // the abandoned read ends; its scene must not arrive
+  v->frames(5);
+  EXPECT_TRUE(v->state().doc.scene() == before);
+  EXPECT_TRUE(v->state().doc.dirty());
+  EXPECT_THAT(v->state().status, HasSubstr("cancelled"));
+}
+
+TEST(Loading, AnObjMeshFromTheScenePanelIsAddedAsOneUndoStep) {
+  auto v = makeViewer();
+  const size_t before = v->state().doc.scene().objects.size();
+  SceneObject o;
+  o.shape = Shape::mesh;
+  o.name = "house";
+  o.file = (fs::path(VPLAB_ASSETS) / "meshes" / "house.obj").string();
+  v->state().objectToLoad = o;  // what "+ OBJ mesh…" does
+  v->frame();
+  EXPECT_TRUE(v->viewer().loader().busy() || v->state().doc.scene().objects.size() == before + 1);
+  framesWhileLoading(*v);
+  ASSERT_EQ(v->state().doc.scene().objects.size(), before + 1);
+  EXPECT_GT(v->state().doc.scene().objects.back().mesh->faceCount(), 0u);
+  EXPECT_EQ(v->state().selectedObject, int(before));
+  EXPECT_TRUE(v->state().doc.dirty());
+  v->key(keys::kZ, /*ctrl=*/true);
+  EXPECT_EQ(v->state().doc.scene().objects.size(), before);
+}
+
+TEST(Loading, AnUnreadableFileIsAnErrorAndTheSceneStays) {
+  TempDir dir;
+  const fs::path bad = dir.path / "bad.json";
+  std::ofstream(bad) << "{ \"camera\": 3 }";
+  auto v = makeViewer();
+  v->viewer().openScene(bad);
+  framesWhileLoading(*v);
+  EXPECT_TRUE(v->state().statusIsError);
+  EXPECT_THAT(v->state().status, HasSubstr("bad.json"));
+  EXPECT_TRUE(v->state().doc.path().empty());
+}
+
+// ---------------------------------------------------------------- input queue (item 13)
+
+TEST(InputQueue, APressAndReleaseInOneFrameAreSeenInTwo) {
+  ImGuiContext* ctx = ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  InputQueue q;
+  q.mouseMove(10, 20);
+  q.mouseButton(0, true);
+  q.mouseButton(0, false);
+  q.key(keys::kP, true);
+  q.key(keys::kP, false);
+  q.feed(io);
+  EXPECT_EQ(io.MousePos.x, 10.f);
+  EXPECT_TRUE(io.MouseDown[0]);
+  EXPECT_FALSE(io.KeysDown[keys::kP]);
+  q.feed(io);
+  EXPECT_FALSE(io.MouseDown[0]);
+  q.feed(io);
+  EXPECT_TRUE(io.KeysDown[keys::kP]);
+  q.feed(io);
+  EXPECT_FALSE(io.KeysDown[keys::kP]);
+  EXPECT_TRUE(q.empty());
+  ImGui::DestroyContext(ctx);
+}
+
+TEST(InputQueue, AFastClickOnTheFileMenuOpensIt) {
+  auto v = makeViewer();
+  const auto [x, y] = v->centreOf("menu.file");
+  v->input().mouseMove(x, y);
+  v->frame();
+  v->input().mouseButton(0, true);  // press and release before the same frame
+  v->input().mouseButton(0, false);
+  v->frames(3);
+  v->viewer().makeCurrent();
+  EXPECT_NE(ImGui::FindWindowByName("##Menu_00"), nullptr);
+  EXPECT_TRUE(ImGui::FindWindowByName("##Menu_00") && ImGui::FindWindowByName("##Menu_00")->Active);
+}
+
+TEST(InputQueue, AFastKeyStrokeIsNotLost) {
+  auto v = makeViewer();
+  ASSERT_EQ(v->state().doc.scene().camera.projection, Projection::perspective);
+  v->input().key(keys::kP, true);
+  v->input().key(keys::kP, false);
+  v->frames(3);
+  EXPECT_EQ(v->state().doc.scene().camera.projection, Projection::parallel);
+}
+
+// ---------------------------------------------------------------- saving (issue 10 item 6)
+
+TEST(AtomicSave, AFailedWriteLeavesTheOldFileWhole) {
+  TempDir dir;
+  const fs::path file = dir.path / "scene.json";
+  const std::string old = sceneToJson(defaultScene());
+  writeFileAtomically(file, old);
+  ASSERT_EQ(readFile(file), old);
+  // The disk fills up half-way: the file-size limit makes write(2) fail with EFBIG (SIGXFSZ ignored).
+  const std::string big(200000, 'x');
+  rlimit saved{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &saved), 0);
+  const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit small = saved;
+  small.rlim_cur = 100000;
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string message;
+  try {
+    writeFileAtomically(file, big);
+  } catch (const Error& e) {
+    message = e.what();
+  }
+  ::setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, oldHandler);
+  EXPECT_THAT(message, HasSubstr("scene.json"));
+  EXPECT_THAT(message, HasSubstr("unchanged"));
+  EXPECT_EQ(readFile(file), old);
+  size_t files = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir.path)) ++files;
+  EXPECT_EQ(files, 1u) << "a temporary file was left behind";
+}
+
+TEST(AtomicSave, KeepsTheModeOfTheFileItReplaces) {
+  TempDir dir;
+  const fs::path file = dir.path / "scene.json";
+  std::ofstream(file) << "old";
+  fs::permissions(file, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  writeFileAtomically(file, "new");
+  EXPECT_EQ(readFile(file), "new");
+  EXPECT_EQ(fs::status(file).permissions(),
+            fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+}
+
+TEST(Save, ABundledSceneIsNeverOverwrittenSaveAsksForACopy) {
+  const fs::path file = preset("perspective.json");
+  const std::string original = readFile(file);
+  auto v = makeViewer(loadScene(file));
+  v->key(keys::kP);
+  ASSERT_TRUE(v->state().doc.dirty());
+  v->key(keys::kS, /*ctrl=*/true);
+  EXPECT_TRUE(v->viewer().fileDialog().isOpen());
+  EXPECT_TRUE(v->state().doc.dirty());
+  EXPECT_EQ(readFile(file), original);
+  EXPECT_TRUE(v->viewer().isBundled(file));
+  EXPECT_TRUE(v->viewer().isBundled({}));  // the built-in default scene
+  EXPECT_FALSE(v->viewer().isBundled(fs::temp_directory_path() / "mine.json"));
+}
+
+// ---------------------------------------------------------------- autosave and recovery
+
+TEST(Autosave, WritesAfterTheDelayAndRemovesTheFileWhenSaved) {
+  TempDir dir;
+  auto v = makeViewer();
+  v->viewer().enableAutosave(dir.path / "state", 0.1);  // 6 frames of 1/60 s
+  const fs::path file = v->viewer().autosave()->file();
+  v->frames(10);
+  EXPECT_FALSE(fs::exists(file)) << "nothing changed, nothing to save";
+  v->key(keys::kP);
+  EXPECT_FALSE(fs::exists(file)) << "written before the delay";
+  EXPECT_GT(v->viewer().wakeIn(), 0.0);
+  EXPECT_LE(v->viewer().wakeIn(), 0.1) << "the event wait must wake for the autosave";
+  v->frames(10);
+  ASSERT_TRUE(fs::exists(file));
+  EXPECT_THAT(readFile(file), HasSubstr("\"projection\": \"parallel\""));
+  // Saving makes the document clean: its recovery file goes.
+  v->state().doc.save(dir.path / "mine.json");
+  v->frames(2);
+  EXPECT_FALSE(fs::exists(file));
+}
+
+TEST(Autosave, ARecoveryFileOfAnEndedProcessIsOfferedAndRecovered) {
+  TempDir dir;
+  const fs::path state = dir.path / "state";
+  // A session in a child process autosaves an edited scene and ends without cleaning up (a crash).
+  const pid_t child = ::fork();
+  if (child == 0) {
+    Scene s = loadScene(preset("perspective.json"));
+    Document doc(s);
+    doc.scene().camera.front = 0.75;
+    doc.endFrame(false);
+    Autosave a(state, 0);
+    a.writeNow(doc);
+    ::_exit(a.error().empty() ? 0 : 1);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+
+  const std::optional<Recovery> r = Autosave::find(state);
+  ASSERT_TRUE(r.has_value());
+  EXPECT_EQ(r->scenePath, preset("perspective.json"));
+
+  auto v = makeViewer();
+  v->viewer().enableAutosave(state, 3);
+  v->viewer().offerRecovery(*r);
+  v->frames(3);
+  clickId(*v, "recovery.recover");
+  v->frames(2);
+  EXPECT_EQ(v->state().doc.scene().camera.front, 0.75);
+  EXPECT_EQ(v->state().doc.path(), preset("perspective.json"));
+  EXPECT_TRUE(v->state().doc.dirty()) << "recovered changes are still unsaved";
+  EXPECT_FALSE(v->state().doc.canUndo());
+  EXPECT_FALSE(fs::exists(r->file)) << "the old session's file is taken over";
+  EXPECT_TRUE(fs::exists(v->viewer().autosave()->file())) << "this session keeps the changes at once";
+}
+
+TEST(Autosave, AFailureIsShownNotSwallowed) {
+  TempDir dir;
+  const fs::path notADirectory = dir.path / "file";
+  std::ofstream(notADirectory) << "x";
+  auto v = makeViewer();
+  v->viewer().enableAutosave(notADirectory / "vplab", 0);
+  v->key(keys::kP);
+  v->frames(2);
+  EXPECT_TRUE(v->state().statusIsError);
+  EXPECT_THAT(v->state().status, HasSubstr("autosave failed"));
+  EXPECT_THAT(v->state().status, HasSubstr(notADirectory.string()));
+}
+
+TEST(Autosave, TheFileOfARunningSessionIsNotOffered) {
+  TempDir dir;
+  Document doc(defaultScene());
+  doc.scene().camera.front = 0.5;
+  doc.endFrame(false);
+  Autosave a(dir.path, 0);
+  ASSERT_TRUE(a.writeNow(doc));
+  EXPECT_FALSE(Autosave::find(dir.path).has_value());  // our own process runs
+}
+
+TEST(Autosave, DefaultDirectoryFollowsXdgStateHome) {
+  const char* old = std::getenv("XDG_STATE_HOME");
+  const std::string keep = old ? old : "";
+  ::setenv("XDG_STATE_HOME", "/tmp/xdg-state", 1);
+  EXPECT_EQ(Autosave::defaultDirectory(), fs::path("/tmp/xdg-state/vplab"));
+  ::unsetenv("XDG_STATE_HOME");
+  if (const char* home = std::getenv("HOME")) {
+    EXPECT_EQ(Autosave::defaultDirectory(), fs::path(home) / ".local/state/vplab");
+  }
+  if (old) ::setenv("XDG_STATE_HOME", keep.c_str(), 1);
+}
+
+}  // namespace
+}  // namespace vplab
