@@ -89,6 +89,12 @@ int runRender(const RenderOptions& r) {
     // The whole window, panels included, as `vplab` shows it (1280 × 720 unless --size says).
     HeadlessViewer viewer(*context, scene, request.width > 0 ? request.width : 1280,
                           request.height > 0 ? request.height : 720, r.uiScale);
+    // What the viewer shows for the same options (its keys 1 … 5 and C set the same).
+    viewer.state().pipeline.strategy = request.pipeline.strategy;
+    if (r.styleGiven) {
+      FrameSettings& f = viewer.state().frame;
+      f.camera.style = f.world.style = f.npc.style = request.style;
+    }
     viewer.frames(3);
     writePng(viewer.image(), out);
     return 0;

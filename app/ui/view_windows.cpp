@@ -189,7 +189,9 @@ void Viewer::cameraWindowContents() {
   const GLuint texture = drawView(ViewKind::camera, size);
   if (demo) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
-    ImGui::Image(textureId(divideFirstTexture()), size);
+    // Uploaded bottom row first, like the views' textures: flipped the same way.
+    ImGui::Image(textureId(divideFirstTexture()), size, ImVec2(0, 1), ImVec2(1, 0));
+    ui::recordRect(s_, "view.divideFirst");
     ImGui::GetWindowDrawList()->AddText(at + ImVec2(6, 4), IM_COL32(255, 120, 110, 255), "divide first, then clip (wrong)");
     ImGui::SameLine();
   } else {
