@@ -38,6 +38,21 @@ bool viewImage(const char* id, GLuint texture, ImVec2 size) {
   return ImGui::IsItemHovered();
 }
 
+// A caption in the top-left corner of an image `width` wide, on a dark background: the longest of
+// `texts` that fits.
+void caption(ImVec2 at, float width, ImU32 color, std::initializer_list<const char*> texts) {
+  const char* text = *(texts.end() - 1);
+  for (const char* t : texts)
+    if (ImGui::CalcTextSize(t).x + 12 <= width) {
+      text = t;
+      break;
+    }
+  const ImVec2 size = ImGui::CalcTextSize(text);
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->AddRectFilled(at + ImVec2(2, 2), at + ImVec2(10, 6) + size, IM_COL32(0, 0, 0, 170), 3.f);
+  dl->AddText(at + ImVec2(6, 4), color, text);
+}
+
 Vec2 mouseIn(ImVec2 itemMin, ImVec2 scale) {
   const ImVec2 m = ImGui::GetIO().MousePos;
   return {(m.x - itemMin.x) * scale.x, (m.y - itemMin.y) * scale.y};
@@ -192,7 +207,7 @@ void Viewer::cameraWindowContents() {
     // Uploaded bottom row first, like the views' textures: flipped the same way.
     ImGui::Image(textureId(divideFirstTexture()), size, ImVec2(0, 1), ImVec2(1, 0));
     ui::recordRect(s_, "view.divideFirst");
-    ImGui::GetWindowDrawList()->AddText(at + ImVec2(6, 4), IM_COL32(255, 120, 110, 255), "divide first, then clip (wrong)");
+    caption(at, size.x, IM_COL32(255, 120, 110, 255), {"divide first, then clip (wrong)", "divide first (wrong)", "wrong"});
     ImGui::SameLine();
   } else {
     ImGui::SetCursorPos(ImGui::GetCursorPos() + (avail - size) * 0.5f);
@@ -201,7 +216,7 @@ void Viewer::cameraWindowContents() {
   const bool hovered = viewImage("camera", texture, size);
   ui::recordRect(s_, "view.camera");
   if (demo) {
-    ImGui::GetWindowDrawList()->AddText(at + ImVec2(6, 4), IM_COL32(140, 230, 140, 255), "clip, then divide (right)");
+    caption(at, size.x, IM_COL32(140, 230, 140, 255), {"clip, then divide (right)", "clip first (right)", "right"});
     ui::errorText("Dividing by w first flips x/w and y/w of every point behind the eye (w < 0), so an edge that "
                   "reaches behind the eye wraps around through infinity. Clipping at z ≤ w first cuts it before w "
                   "reaches 0 (seeds 002, 003).");
@@ -213,6 +228,7 @@ void Viewer::cameraWindowContents() {
     const Vec2 dc = mouse * Vec2(device.width / size.x, device.height / size.y);
     if (const auto face = pickFace(s_.run, dc)) {
       s_.stepThrough = {true, int(face->first), int(face->second), 0};
+      s_.showStepThrough = true;  // the Lecture tab's step-through comes forward
     }
     return;
   }
@@ -326,7 +342,9 @@ void Viewer::worldInteraction(bool hovered, const ViewCamera& observer, int w, i
     s_.drag = {Drag::Kind::handle, ViewKind::world, s_.hovered};
   if (s_.drag.kind == Drag::Kind::handle) {
     const ImVec2 d = ImGui::GetIO().MouseDelta;
-    if (d.x != 0 || d.y != 0) dragHandle(s_.doc.scene().camera, s_.run, s_.drag.handle, observer, h, Vec2(d.x, d.y));
+    if (d.x != 0 || d.y != 0)
+      dragHandle(s_.doc.scene().camera, s_.run, s_.drag.handle, observer, h, Vec2(d.x, d.y),
+                 s_.keepAspect ? std::optional(s_.doc.scene().device.aspect()) : std::nullopt);
     return;
   }
   orbitInteraction(hovered, ViewKind::world, s_.frame.world.orbit, observer, w, h, mouse);

@@ -15,7 +15,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
+#include <set>
 #include <string>
+#include <vector>
 
 namespace vplab {
 namespace {
@@ -95,6 +98,112 @@ TEST(UiLecture, RenderUiShowsWhatTheViewerShowsForTheSameOptions) {
   ASSERT_EQ(cli.width, viewer.width);
   EXPECT_GT(test::differingPixels(before, viewer), 1000u) << "the strategy changes the window";
   EXPECT_LT(meanDifference(cli, viewer), 0.5);
+}
+
+}  // namespace
+}  // namespace vplab
+
+namespace vplab {
+namespace {
+
+// ---------------------------------------------------------------- item 6: nothing cut off
+
+/// Glyphs of the UI font drawn across the clip rectangle of their window, column or child (text cut
+/// off at the side), and ellipses ImGui put in for a shortened tab or header: "window: where".
+std::vector<std::string> clippedText() {
+  std::vector<std::string> problems;
+  const ImDrawData* data = ImGui::GetDrawData();
+  const ImGuiIO& io = ImGui::GetIO();
+  // A glyph's vertex has one of its glyph's texture corners (other shapes use the white pixel or
+  // the baked lines).
+  std::set<std::pair<float, float>> corners;
+  for (const ImFontGlyph& g : ImGui::GetFont()->Glyphs)
+    for (float u : {g.U0, g.U1})
+      for (float v : {g.V0, g.V1}) corners.insert({u, v});
+  const ImFontGlyph* ellipsis = ImGui::GetFont()->FindGlyphNoFallback(0x2026);
+  for (int l = 0; l < data->CmdListsCount; ++l) {
+    const ImDrawList* list = data->CmdLists[l];
+    const std::string owner = list->_OwnerName ? list->_OwnerName : "?";
+    for (const ImDrawCmd& cmd : list->CmdBuffer) {
+      if (cmd.UserCallback || cmd.TextureId != io.Fonts->TexID) continue;
+      for (unsigned i = 0; i < cmd.ElemCount; ++i) {
+        const ImDrawVert& v = list->VtxBuffer[list->IdxBuffer[cmd.IdxOffset + i] + cmd.VtxOffset];
+        if (!corners.count({v.uv.x, v.uv.y})) continue;  // a shape, not a glyph
+        char where[96];
+        std::snprintf(where, sizeof where, " at (%.0f, %.0f)", v.pos.x, v.pos.y);
+        if (v.pos.x < cmd.ClipRect.x - 0.5f || v.pos.x > cmd.ClipRect.z + 0.5f) {
+          problems.push_back(owner + ": text cut off" + where);
+          break;  // one per command is enough
+        }
+        if (ellipsis && v.uv.x == ellipsis->U0 && v.uv.y == ellipsis->V0) {
+          problems.push_back(owner + ": text shortened to \"…\"" + where);
+          break;
+        }
+      }
+    }
+  }
+  return problems;
+}
+
+/// The world view's labels (TextRenderer's placed rectangles) that overlap another.
+int overlappingLabels(const std::vector<glm::vec4>& r) {
+  int n = 0;
+  for (size_t i = 0; i < r.size(); ++i)
+    for (size_t j = i + 1; j < r.size(); ++j)
+      n += r[i].x < r[j].z && r[j].x < r[i].z && r[i].y < r[j].w && r[j].y < r[i].w;
+  return n;
+}
+
+struct Shown {
+  const char* what;
+  std::function<void(HeadlessViewer&)> show;
+};
+
+// Every panel and tab at 1280 × 720 and UI scale 1, 1.6 and 2: no text cut off at the side of its
+// window, column or child window, no name shortened with "…". The pictures are left in the test
+// output directory to look at.
+TEST(UiLecture, NoTextIsCutOffAtAnyScale) {
+  auto clickTab = [](HeadlessViewer& v, const std::string& id) {
+    const auto [x, y] = v.centreOf(id);
+    v.click(x, y);
+    v.frames(2);
+  };
+  std::vector<Shown> shown;
+  for (const char* tab : {"Camera", "Scene", "Clipping", "Display", "Lecture"})
+    shown.push_back({tab, [=](HeadlessViewer& v) { clickTab(v, std::string("tab.controls.") + tab); }});
+  for (const char* tab : {"Vertex probe", "Matrices", "Depth"})
+    shown.push_back({tab, [=](HeadlessViewer& v) { clickTab(v, std::string("tab.inspect.") + tab); }});
+  shown.push_back({"oblique camera", [&](HeadlessViewer& v) {
+                     clickTab(v, "tab.controls.Camera");
+                     v.state().doc.scene().camera.projection = Projection::oblique;
+                     v.frames(2);
+                   }});
+  shown.push_back({"probe and step-through", [&](HeadlessViewer& v) {
+                     v.state().probe = Probe{0, 0};
+                     v.state().stepThrough = {true, 2, 0, 3};
+                     v.state().frame.overlays.vanishingPoints = true;
+                     v.frames(2);
+                     clickTab(v, "tab.controls.Lecture");
+                   }});
+  shown.push_back({"divide first", [&](HeadlessViewer& v) {
+                     v.state().pipeline.strategy = ClipStrategy::divideFirst;
+                     v.frames(2);
+                   }});
+  shown.push_back({"help", [&](HeadlessViewer& v) { v.key(keys::kF1); }});
+  for (float scale : {1.f, 1.6f, 2.f}) {
+    auto v = makeViewer(defaultScene(), scale);
+    for (const Shown& s : shown) {
+      SCOPED_TRACE(std::string(s.what) + " at UI scale " + std::to_string(scale));
+      s.show(*v);
+      const std::vector<std::string> problems = clippedText();
+      char name[128];
+      std::snprintf(name, sizeof name, "ui-%.1f-%s.png", scale, s.what);
+      writePng(v->image(), test::outputDir() / name);
+      std::string list;
+      for (size_t i = 0; i < std::min<size_t>(problems.size(), 6); ++i) list += "\n  " + problems[i];
+      EXPECT_TRUE(problems.empty()) << problems.size() << " places:" << list;
+    }
+  }
 }
 
 }  // namespace
