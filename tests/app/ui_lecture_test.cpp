@@ -208,3 +208,157 @@ TEST(UiLecture, NoTextIsCutOffAtAnyScale) {
 
 }  // namespace
 }  // namespace vplab
+
+#include "app/ui/picking.h"
+#include "app/ui/vanishing_text.h"
+#include "pipeline/scene_io.h"
+
+namespace vplab {
+namespace {
+
+// ---------------------------------------------------------------- item 3: typed values
+
+/// Ctrl+click on a one-field drag makes it a text field; the characters come one frame each.
+void typeSlowly(HeadlessViewer& v, const char* id, const char* text) {
+  const auto [x, y] = v.centreOf(id);
+  ImGui::GetIO().KeyCtrl = true;
+  v.click(x - 20, y);
+  ImGui::GetIO().KeyCtrl = false;
+  for (const char* c = text; *c; ++c) {
+    const char one[2] = {*c, 0};
+    ImGui::GetIO().AddInputCharactersUTF8(one);
+    v.frames(1);
+  }
+}
+
+TEST(UiLecture, TypedValuesApplyWhenTheFieldLosesFocus) {
+  auto v = makeViewer();
+  ASSERT_EQ(v->state().doc.scene().camera.front, 3.0);
+  typeSlowly(*v, "camera.front", "2.5");
+  EXPECT_EQ(v->state().doc.scene().camera.front, 3.0) << "applied while typing";
+  EXPECT_FALSE(v->state().doc.canUndo());
+  const ImGuiWindow* controls = ImGui::FindWindowByName("Controls");  // its bottom is empty
+  ASSERT_NE(controls, nullptr);
+  v->click(controls->Pos.x + 20, controls->Pos.y + controls->Size.y - 20);  // the field loses focus
+  EXPECT_EQ(v->state().doc.scene().camera.front, 2.5);
+  v->key(keys::kZ, true);
+  EXPECT_EQ(v->state().doc.scene().camera.front, 3.0) << "one undo step for the typed value";
+}
+
+// The window-edge handles honour "keep the aspect ratio" as the fields do.
+TEST(UiLecture, WindowEdgeHandlesKeepTheAspectRatio) {
+  const Scene scene = defaultScene();
+  const PipelineRun run = runPipeline(scene);
+  const ViewCamera observer = viewCameraOf(observerCamera(defaultWorldOrbit(scene, 1.6), 1.6));
+  const double aspect = scene.device.aspect();
+  for (Handle h : {Handle::windowLeft, Handle::windowRight, Handle::windowBottom, Handle::windowTop}) {
+    Camera kept = scene.camera, free = scene.camera;
+    dragHandle(kept, run, h, observer, 400, Vec2(25, -18), aspect);
+    dragHandle(free, run, h, observer, 400, Vec2(25, -18));
+    EXPECT_NE(free.window, scene.camera.window);
+    EXPECT_NEAR(kept.window.width() / kept.window.height(), aspect, 1e-12);
+    EXPECT_GT(std::abs(free.window.width() / free.window.height() - aspect), 1e-3) << "without: free";
+  }
+}
+
+// ---------------------------------------------------------------- item 4: vanishing points
+
+// For every bundled scene and object: an axis is called parallel to the view plane exactly when
+// its VRC z component is 0, a parallel or oblique projection names no vanishing point, and the
+// vanishing-N scenes show N.
+TEST(UiLecture, VanishingTextFollowsTheGeometryInEveryBundledScene) {
+  int scenes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(VPLAB_ASSETS) / "scenes")) {
+    if (entry.path().extension() != ".json" || entry.path().stem() == "large-mesh") continue;
+    SCOPED_TRACE(entry.path().filename().string());
+    const Scene scene = loadScene(entry.path());
+    const PipelineRun run = runPipeline(scene);
+    ++scenes;
+    for (const ObjectRun& o : run.objects) {
+      const VanishingText t = vanishingText(run, o);
+      int points = 0;
+      for (int a = 0; a < 3; ++a) {
+        const Vec3 axisVrc = Vec3(run.vrcFromWc * o.wcFromMc * Vec4(a == 0, a == 1, a == 2, 0));
+        const bool parallel = std::abs(axisVrc.z) <= 1e-9 * glm::length(axisVrc);
+        EXPECT_EQ(t.axes[size_t(a)].find("parallel to the view plane") != std::string::npos &&
+                      t.axes[size_t(a)].find("not parallel") == std::string::npos,
+                  parallel)
+            << t.axes[size_t(a)];
+        points += t.axes[size_t(a)].find("meet at DC") != std::string::npos;
+        if (scene.camera.projection != Projection::perspective)
+          EXPECT_EQ(t.axes[size_t(a)].find("meet"), std::string::npos) << t.axes[size_t(a)];
+      }
+      const std::string stem = entry.path().stem().string();
+      if (stem.rfind("vanishing-", 0) == 0 && o.name == run.objects.front().name)
+        EXPECT_EQ(points, stem.back() - '0') << t.headline;
+    }
+  }
+  EXPECT_GE(scenes, 10);
+}
+
+TEST(UiLecture, CavalierZAxisIsNotParallelToTheViewPlane) {
+  const Scene scene = loadScene(std::filesystem::path(VPLAB_ASSETS) / "scenes" / "oblique-cavalier.json");
+  const PipelineRun run = runPipeline(scene);
+  ASSERT_FALSE(run.objects.empty());
+  const VanishingText t = vanishingText(run, run.objects.front());
+  EXPECT_NE(t.axes[2].find("not parallel to the view plane"), std::string::npos) << t.axes[2];
+  EXPECT_NE(t.headline.find("oblique"), std::string::npos) << t.headline;
+}
+
+// ---------------------------------------------------------------- items 7, 9: copies and tabs
+
+TEST(UiLecture, CopyingALatexMatrixSaysSoAndPastesAsDisplayMath) {
+  auto v = makeViewer();
+  const auto [tx, ty] = v->centreOf("tab.inspect.Matrices");
+  v->click(tx, ty);
+  v->frames(2);
+  const auto [x, y] = v->centreOf("copy.wcFromMc.latex");
+  v->click(x, y);
+  v->frames(1);
+  EXPECT_EQ(v->state().copied.id, "copy.wcFromMc.latex");
+  const char* clip = ImGui::GetClipboardText();
+  const std::string text = clip ? clip : "";
+  EXPECT_NE(text.find("\\[\n\\begin{bmatrix}"), std::string::npos) << text;
+}
+
+TEST(UiLecture, ClickingAVertexShowsTheProbeAndShiftClickTheStepThrough) {
+  auto v = makeViewer();
+  const auto [tx, ty] = v->centreOf("tab.inspect.Matrices");
+  v->click(tx, ty);
+  v->frames(2);
+  ASSERT_EQ(v->state().inspectTab, ViewerState::matricesTab);
+  // A vertex of the run, where the camera view draws it.
+  const PipelineRun& run = v->state().run;
+  const ImVec4 r = v->state().rects.at("view.camera");
+  const Device& d = run.device;
+  std::optional<std::pair<double, double>> at;
+  for (size_t k = 0; k < run.objects.size() && !at; ++k)
+    for (uint32_t i = 0; i < run.objects[k].vertexCount() && !at; ++i)
+      if (const auto dc = probePosition(run, Probe{run.sceneIndex[k], i}, ViewKind::camera))
+        if (dc->x > 40 && dc->x < d.width - 40 && dc->y > 40 && dc->y < d.height - 40)
+          at = std::pair(r.x + dc->x * r.z / d.width, r.y + dc->y * r.w / d.height);
+  ASSERT_TRUE(at);
+  v->click(at->first, at->second);
+  v->frames(1);
+  ASSERT_TRUE(v->state().probe);
+  EXPECT_EQ(v->state().inspectTab, ViewerState::probeTab);
+
+  ASSERT_EQ(v->state().controlsTab, ViewerState::cameraTab);
+  const auto [cx, cy] = v->centreOf("view.camera");
+  ImGui::GetIO().KeyShift = true;
+  v->click(cx, cy);
+  ImGui::GetIO().KeyShift = false;
+  v->frames(1);
+  ASSERT_TRUE(v->state().stepThrough.active);
+  EXPECT_EQ(v->state().controlsTab, ViewerState::lectureTab);
+  // Back is greyed at the start: a click on it changes nothing.
+  const auto [bx, by] = v->centreOf("step.back");
+  v->click(bx, by);
+  EXPECT_EQ(v->state().stepThrough.step, 0);
+  const auto [nx, ny] = v->centreOf("step.next");
+  v->click(nx, ny);
+  EXPECT_EQ(v->state().stepThrough.step, 1);
+}
+
+}  // namespace
+}  // namespace vplab
