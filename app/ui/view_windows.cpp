@@ -16,6 +16,8 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include <functional>
+
 namespace vplab {
 
 // ---------------------------------------------------------------- 1 helpers
@@ -295,13 +297,33 @@ void Viewer::lectureWindow() {
       if (kind == ViewKind::morph) morphInteraction(hovered);
     }
     const Scene& scene = s_.doc.scene();
-    ImGui::SetCursorPos(ImVec2(14, 10));
-    ImGui::PushTextWrapPos(size.x * 0.6f);
-    if (!scene.title.empty()) ImGui::TextColored(ImVec4(1.f, 0.86f, 0.45f, 1.f), "%s", scene.title.c_str());
-    if (!scene.caption.empty()) ImGui::TextWrapped("%s", scene.caption.c_str());
-    ImGui::PopTextWrapPos();
-    ImGui::SetCursorPos(ImVec2(14, size.y - ImGui::GetTextLineHeightWithSpacing() - 6));
-    ImGui::TextDisabled("lecture mode — F11 or Esc returns to the panels");
+    // The title and caption on a dark panel (drawn behind them afterwards, in a lower channel), so
+    // they read over any scene.
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const float pad = 8 * uiScale_;
+    auto panelBehind = [&](const std::function<void()>& text) {
+      dl->ChannelsSplit(2);
+      dl->ChannelsSetCurrent(1);
+      ImGui::BeginGroup();
+      text();
+      ImGui::EndGroup();
+      dl->ChannelsSetCurrent(0);
+      dl->AddRectFilled(ImGui::GetItemRectMin() - ImVec2(pad, pad * 0.6f), ImGui::GetItemRectMax() + ImVec2(pad, pad * 0.6f),
+                        IM_COL32(10, 11, 15, 200), 4.f * uiScale_);
+      dl->ChannelsMerge();
+      ui::recordRect(s_, "lecture.caption");
+    };
+    if (!scene.title.empty() || !scene.caption.empty()) {
+      ImGui::SetCursorPos(ImVec2(14, 10) * uiScale_);
+      panelBehind([&] {
+        ImGui::PushTextWrapPos(size.x * 0.6f);
+        if (!scene.title.empty()) ImGui::TextColored(ImVec4(1.f, 0.86f, 0.45f, 1.f), "%s", scene.title.c_str());
+        if (!scene.caption.empty()) ImGui::TextWrapped("%s", scene.caption.c_str());
+        ImGui::PopTextWrapPos();
+      });
+    }
+    ImGui::SetCursorPos(ImVec2(14 * uiScale_, size.y - ImGui::GetTextLineHeightWithSpacing() - 6 * uiScale_));
+    panelBehind([] { ImGui::TextDisabled("lecture mode — F11 or Esc returns to the panels"); });
   }
   ImGui::End();
   ImGui::PopStyleVar(2);

@@ -38,6 +38,8 @@ class ViewRenderer {
                int height);
 
   GlContext& context() { return ctx_; }
+  /// Where the last view drawn put its labels (x0, y0, x1, y1, pixels), for the tests.
+  const std::vector<glm::vec4>& labelsPlaced() const { return text_->placed(); }
   /// Larger text, lines and points for a projector (lecture mode).
   void setScale(float scale);
 

@@ -362,3 +362,70 @@ TEST(UiLecture, ClickingAVertexShowsTheProbeAndShiftClickTheStepThrough) {
 
 }  // namespace
 }  // namespace vplab
+
+#include "app/headless.h"
+
+namespace vplab {
+namespace {
+
+// The world view's labels of the default scene (front, VUP, V, VRP, the window's, PRP's…) at UI
+// scale 1, 1.6 and 2, at the size the viewer shows it at 1280 × 720: no two overlap, and none
+// covers a labelled point's marker (PRP's label sat on PRP's marker).
+TEST(UiLecture, WorldViewLabelsDoNotOverlap) {
+  ViewRenderer& renderer = *test::egl().renderer;
+  const Scene scene = defaultScene();
+  for (float scale : {1.f, 1.6f, 2.f}) {
+    SCOPED_TRACE(scale);
+    renderer.setScale(scale);
+    RenderRequest request;
+    request.view = ViewKind::world;
+    request.style = Style::shaded;
+    request.width = 518;
+    request.height = 370;
+    const Image image = renderImage(renderer, scene, request);
+    const std::vector<glm::vec4> labels = renderer.labelsPlaced();
+    EXPECT_GE(labels.size(), 8u);
+    EXPECT_EQ(overlappingLabels(labels), 0);
+    // PRP's marker: where the observer sees PRP.
+    const PipelineRun run = runPipeline(scene);
+    const ViewCamera observer = viewCameraOf(observerCamera(defaultWorldOrbit(scene, 518.0 / 370), 518.0 / 370));
+    const Projected prp = projectToPixels(observer, scene.camera.prp, 518, 370);
+    ASSERT_TRUE(prp.visible);
+    for (const glm::vec4& r : labels)
+      EXPECT_FALSE(prp.pixel.x > r.x - 3 && prp.pixel.x < r.z + 3 && prp.pixel.y > r.y - 3 && prp.pixel.y < r.w + 3)
+          << "a label on PRP's marker";
+    char name[64];
+    std::snprintf(name, sizeof name, "world-labels-%.1f.png", scale);
+    writePng(image, test::outputDir() / name);
+  }
+  renderer.setScale(1.f);
+}
+
+}  // namespace
+}  // namespace vplab
+
+namespace vplab {
+namespace {
+
+// Lecture mode's title and caption sit on a dark panel: over a white scene they stay readable
+// (the caption's rectangle is mostly dark, not the white behind it).
+TEST(UiLecture, LectureCaptionHasABackground) {
+  Scene scene = defaultScene();
+  scene.background = Vec3(1, 1, 1);
+  scene.device.width = kWidth;  // the camera view fills the window, under the caption
+  scene.device.height = kHeight;
+  auto v = makeViewer(scene);
+  v->state().lectureView = ViewKind::camera;
+  v->key(keys::kF11);
+  v->frames(2);
+  ASSERT_TRUE(v->state().lectureMode);
+  const Image caption = cropRect(v->image(), v->state().rects.at("lecture.caption"));
+  ASSERT_GT(caption.pixels.size(), 1000u);
+  double luminance = 0;
+  for (const Rgba& p : caption.pixels) luminance += 0.2126 * p.r + 0.7152 * p.g + 0.0722 * p.b;
+  luminance /= double(caption.pixels.size());
+  EXPECT_LT(luminance, 110.0) << "the caption is on the white scene without a panel";
+}
+
+}  // namespace
+}  // namespace vplab
