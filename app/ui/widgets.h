@@ -8,6 +8,7 @@
 
 #include <initializer_list>
 #include <string>
+#include <string_view>
 
 namespace vplab::ui {
 
@@ -27,6 +28,9 @@ bool checkbox(const char* label, bool* v);
 bool radio(const char* label, int* v, int value);
 /// SameLine() when a button labelled `nextButton` still fits on the line, else the next line.
 void sameLineIfFits(const char* nextButton);
+/// Shows a tab by its lower-case name: camera, scene, clipping, display, lecture (the controls) or
+/// probe, matrices, depth (the inspector). False for another name.
+bool selectTab(ViewerState& s, std::string_view name);
 /// A tooltip on the last item: the English explanation, then the German one of the lecture notes.
 void tooltip(const char* english, const char* german);
 /// A (?) marker with a tooltip.

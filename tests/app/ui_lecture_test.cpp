@@ -429,3 +429,26 @@ TEST(UiLecture, LectureCaptionHasABackground) {
 
 }  // namespace
 }  // namespace vplab
+
+namespace vplab {
+namespace {
+
+// `vplab render --view ui --tab NAME` shows that tab as a click on it does in the viewer.
+TEST(UiLecture, RenderUiShowsTheTabAsked) {
+  const std::filesystem::path out = test::outputDir() / "render-ui-tab-matrices.png";
+  const std::string command = std::string(VPLAB_EXE) + " render --view ui --tab lecture --tab matrices --out " + out.string();
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  auto v = makeViewer();
+  for (const char* tab : {"tab.controls.Lecture", "tab.inspect.Matrices"}) {
+    const auto [x, y] = v->centreOf(tab);
+    v->click(x, y);
+  }
+  v->mouseMove(-1, -1);  // nothing hovered, as in the command line's frames
+  v->frames(3);
+  EXPECT_LT(meanDifference(readPng(out), v->image()), 0.5);
+  const std::string bad = std::string(VPLAB_EXE) + " render --view ui --tab nowhere --out /dev/null 2>/dev/null";
+  EXPECT_NE(std::system(bad.c_str()), 0);
+}
+
+}  // namespace
+}  // namespace vplab
