@@ -140,6 +140,7 @@ void stepThroughSection(ViewerState& s) {
     ImGui::Indent();
     ImGui::TextWrapped("%s (homogeneous NPC)", vecText(p).c_str());
     ImGui::Unindent();
+    recordRect(s, ("step.new." + std::to_string(k)).c_str());
   }
 }
 
@@ -194,12 +195,15 @@ void depthPanel(ViewerState& s) {
   const ViewFrame& f = s.run.frame;
   const float line = ImGui::GetTextLineHeight();
   // The legend above the plot, off the curves.
+  ImGui::BeginGroup();
   ImGui::TextColored(ImVec4(0.55f, 0.86f, 1.f, 1.f), "— NPC z");
   if (ImGui::CalcTextSize("— NPC z    - - GL window depth = 1 − z").x <= ImGui::GetContentRegionAvail().x)
     ImGui::SameLine(0, line);
   ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.78f, 0.35f, 1.f));
   ImGui::TextWrapped("- - GL window depth = 1 − z");
   ImGui::PopStyleColor();
+  ImGui::EndGroup();
+  recordRect(s, "depth.legend");
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const float width = std::max(line * 10, ImGui::GetContentRegionAvail().x);
   // At least ten lines of text high, so the curves read at any UI scale.
@@ -264,6 +268,7 @@ void depthPanel(ViewerState& s) {
     const float nameX = x1 + 6 + nameWidth <= p1.x ? x1 + 6 : std::max(origin.x, x0 - 6 - nameWidth);
     dl->AddText(ImVec2(nameX, row.y), text, o.name.c_str());
     ImGui::Dummy(ImVec2(width, line));
+    recordRect(s, ("depth.bar." + o.name).c_str());
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("%s: VRC z from %s to %s", o.name.c_str(), num(lo).c_str(), num(hi).c_str());
   }

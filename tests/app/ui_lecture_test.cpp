@@ -452,3 +452,54 @@ TEST(UiLecture, RenderUiShowsTheTabAsked) {
 
 }  // namespace
 }  // namespace vplab
+
+namespace vplab {
+namespace {
+
+// The depth plot's legend lies above the plot (off the curves), and each visible object has a
+// named depth bar below it.
+TEST(UiLecture, DepthPlotLegendIsOffTheCurvesAndTheBarsAreNamed) {
+  auto v = makeViewer();
+  const auto [x, y] = v->centreOf("tab.inspect.Depth");
+  v->click(x, y);
+  v->frames(2);
+  const ImVec4 legend = v->state().rects.at("depth.legend"), plot = v->state().rects.at("depth.plot");
+  EXPECT_LE(legend.y + legend.w, plot.y + 1) << "the legend overlaps the plot";
+  for (const ObjectRun& o : v->state().run.objects)
+    EXPECT_EQ(v->state().rects.count("depth.bar." + o.name), 1u) << o.name;
+}
+
+// The step-through lists the coordinates of the vertices a pass creates: the tetrahedron of the
+// default scene crosses the window's edges, so some pass over one of its clipped faces creates some.
+TEST(UiLecture, StepThroughListsTheNewVertices) {
+  auto v = makeViewer();
+  const PipelineRun& run = v->state().run;
+  std::optional<std::pair<int, int>> clipped;
+  for (size_t k = 0; k < run.objects.size() && !clipped; ++k)
+    for (size_t f = 0; f < run.objects[k].faceCount() && !clipped; ++f)
+      if (run.objects[k].fate[f] == Fate::clipped) clipped = std::pair(int(run.sceneIndex[k]), int(f));
+  ASSERT_TRUE(clipped);
+  v->state().controlsTab = ViewerState::lectureTab;
+  v->state().stepThrough = {true, clipped->first, clipped->second, 0};
+  v->frames(2);
+  bool listed = false;
+  for (int step = 1; step <= 6 && !listed; ++step) {
+    const auto [x, y] = v->centreOf("step.next");
+    v->click(x, y);
+    for (const auto& [id, rect] : v->state().rects) listed |= id.rfind("step.new.", 0) == 0 && rect.z > 0;
+  }
+  EXPECT_TRUE(listed);
+  // At the last pass "next" is greyed: a click changes nothing.
+  for (int i = 0; i < 8 && v->state().stepThrough.step < 6; ++i) {
+    const auto [x, y] = v->centreOf("step.next");
+    v->click(x, y);
+  }
+  const int last = v->state().stepThrough.step;
+  ASSERT_EQ(last, 6) << "the six planes of the view volume";
+  const auto [x, y] = v->centreOf("step.next");
+  v->click(x, y);
+  EXPECT_EQ(v->state().stepThrough.step, last);
+}
+
+}  // namespace
+}  // namespace vplab
