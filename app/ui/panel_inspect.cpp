@@ -134,24 +134,18 @@ void probePanel(ViewerState& s) {
   const Outcode code = outcodeOf(bc);
   section("boundary coordinates (inside when ≥ 0)");
   const double bcScale = magnitudeOf({bc[0], bc[1], bc[2], bc[3], bc[4], bc[5], h.w});
-  if (ImGui::BeginTable("bc", 3, ImGuiTableFlags_RowBg)) {
-    ImGui::TableSetupColumn("form", ImGuiTableColumnFlags_WidthFixed);
-    ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthFixed);
-    ImGui::TableSetupColumn("plane", ImGuiTableColumnFlags_WidthStretch);
-    static constexpr const char* kForms[] = {"BC0 = x", "BC1 = w − x", "BC2 = y", "BC3 = w − y", "BC4 = z", "BC5 = w − z"};
-    for (int i = 0; i < kPlaneCount; ++i) {
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(kForms[i]);
-      ImGui::TableNextColumn();
-      ImGui::TextColored(bc[i] < 0 ? ImVec4(1, 0.4f, 0.35f, 1) : ImVec4(0.55f, 0.9f, 0.5f, 1), "%s",
-                         num(bc[i], bcScale, 5).c_str());
-      ImGui::TableNextColumn();
-      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-      ImGui::TextWrapped("%s (%s)", std::string(planeName(i)).c_str(), std::string(planeInequality(i)).c_str());
-      ImGui::PopStyleColor();
-    }
-    ImGui::EndTable();
+  // One line per plane (wrapping in a narrow inspector): the form, its value, the plane.
+  static constexpr const char* kForms[] = {"BC0 = x", "BC1 = w − x", "BC2 = y", "BC3 = w − y", "BC4 = z", "BC5 = w − z"};
+  for (int i = 0; i < kPlaneCount; ++i) {
+    ImGui::TextUnformatted(kForms[i]);
+    const std::string value = num(bc[i], bcScale, 5);
+    sameLineIfFits(value.c_str(), false);
+    ImGui::TextColored(bc[i] < 0 ? ImVec4(1, 0.4f, 0.35f, 1) : ImVec4(0.55f, 0.9f, 0.5f, 1), "%s", value.c_str());
+    const std::string plane = std::string(planeName(i)) + " (" + std::string(planeInequality(i)) + ")";
+    sameLineIfFits(plane.c_str(), false);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", plane.c_str());
+    ImGui::PopStyleColor();
   }
   std::string bits, names;
   for (int i = kPlaneCount - 1; i >= 0; --i) bits += (code >> i & 1) ? '1' : '0';

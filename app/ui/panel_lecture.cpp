@@ -32,6 +32,7 @@ void morphSection(ViewerState& s) {
           "Die Szene wandert durch die Stufen der Viewing Pipeline; die Division durch w ist ein eigener Schritt.");
   if (!s.showMorph) return;
   float t = float(s.frame.morphing.t);
+  fitLabel("t");
   if (ImGui::SliderFloat("t", &t, 0.f, 4.f, "%.2f")) s.frame.morphing.t = t;
   recordRect(s, "morph.t");
   if (ImGui::Button(s.morphPlaying ? "pause" : "play")) {
@@ -48,6 +49,7 @@ void morphSection(ViewerState& s) {
   }
   ImGui::NewLine();
   float speed = float(s.morphSpeed);
+  fitLabel("speed (stages/s)");
   if (ImGui::SliderFloat("speed (stages/s)", &speed, 0.1f, 2.f, "%.2f")) s.morphSpeed = speed;
 }
 
@@ -67,6 +69,7 @@ void stepThroughSection(ViewerState& s) {
   const Scene& scene = s.doc.shown();
   if (scene.objects.empty()) return;
   st.object = std::clamp(st.object, 0, int(scene.objects.size()) - 1);
+  fitLabel("object");
   if (ImGui::BeginCombo("object", scene.objects[size_t(st.object)].name.c_str())) {
     for (int i = 0; i < int(scene.objects.size()); ++i)
       if (ImGui::Selectable(scene.objects[size_t(i)].name.c_str(), i == st.object)) st.object = i;
@@ -78,6 +81,7 @@ void stepThroughSection(ViewerState& s) {
     return;
   }
   st.face = std::clamp(st.face, 0, int(o->faceCount()) - 1);
+  fitLabel("polygon");
   ImGui::SliderInt("polygon", &st.face, 0, int(o->faceCount()) - 1);
   ImGui::TextDisabled("its fate: %s", std::string(toString(o->fate[size_t(st.face)])).c_str());
   const std::vector<ClipStep> steps = clipSteps(s.run, *o, size_t(st.face));
@@ -162,6 +166,7 @@ void vanishingSection(ViewerState& s) {
 
 void lectureModeSection(ViewerState& s) {
   float scale = s.uiScale;
+  fitLabel("UI scale");
   if (ImGui::SliderFloat("UI scale", &scale, 0.8f, 2.5f, "%.2f")) s.uiScale = scale;
   tooltip("Larger fonts, labels and handles for a projector.", "Größere Schrift und Griffe für den Beamer.");
   const char* names[] = {"world", "camera", "NPC", "stage morph"};
@@ -169,6 +174,7 @@ void lectureModeSection(ViewerState& s) {
   int current = 0;
   for (int i = 0; i < 4; ++i)
     if (kinds[i] == s.lectureView) current = i;
+  fitLabel("full-screen view");
   if (ImGui::Combo("full-screen view", &current, names, 4)) s.lectureView = kinds[current];
   if (ImGui::Button("lecture mode (F11)")) s.lectureMode = true;
   tooltip("One view fills the window, without panels; F11 or Esc returns.", "Eine Ansicht füllt das Fenster; F11 oder Esc beendet.");
@@ -272,23 +278,15 @@ void depthPanel(ViewerState& s) {
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("%s: VRC z from %s to %s", o.name.c_str(), num(lo).c_str(), num(hi).c_str());
   }
+  // The smallest VRC step a depth buffer resolves, as sentences (they wrap; a table would not fit
+  // a narrow inspector at a large UI scale).
   ImGui::TextWrapped("Smallest VRC step a depth buffer resolves:");
-  if (ImGui::BeginTable("resolution", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-    ImGui::TableSetupColumn("bits");
-    ImGui::TableSetupColumn("at F");
-    ImGui::TableSetupColumn("half way");
-    ImGui::TableSetupColumn("at B");
-    ImGui::TableHeadersRow();
-    for (int bits : {16, 24}) {
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      ImGui::Text("%d bit", bits);
-      for (double z : {c.front, (c.front + c.back) / 2, c.back}) {
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(num(depthResolution(c, f, z, bits), 0, 3).c_str());
-      }
-    }
-    ImGui::EndTable();
+  for (int bits : {16, 24}) {
+    ImGui::Bullet();
+    ImGui::TextWrapped("%d bit: %s at F, %s half way, %s at B", bits,
+                       num(depthResolution(c, f, c.front, bits), 0, 3).c_str(),
+                       num(depthResolution(c, f, (c.front + c.back) / 2, bits), 0, 3).c_str(),
+                       num(depthResolution(c, f, c.back, bits), 0, 3).c_str());
   }
 }
 

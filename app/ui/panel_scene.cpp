@@ -70,14 +70,17 @@ void transformEditor(ViewerState& s, SceneObject& o) {
 }
 
 void objectEditor(ViewerState& s, SceneObject& o) {
+  fitLabel("name");
   ImGui::InputText("name", &o.name);
   checkbox("visible", &o.visible);
   ImGui::SameLine();
   glm::vec3 color(o.color);  // ColorEdit3 edits floats; the scene's colours are doubles
+  fitLabel("colour");
   if (ImGui::ColorEdit3("colour", &color.x, ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_Float))
     o.color = Vec3(color);
   if (o.shape == Shape::cylinder || o.shape == Shape::sphere) {
     int n = o.segments;
+    fitLabel("segments");
     if (ImGui::SliderInt("segments", &n, o.shape == Shape::sphere ? 4 : 3, 128)) {
       if (o.shape == Shape::sphere) n += n % 2;
       SceneObject rebuilt = o;

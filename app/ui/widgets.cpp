@@ -60,7 +60,14 @@ bool editInPlace(ViewerState& s, double* value, const std::function<bool(double*
 
 }  // namespace
 
+void fitLabel(const char* label) {
+  const float labelWidth = ImGui::CalcTextSize(label, nullptr, true).x;
+  const float spacing = labelWidth > 0 ? ImGui::GetStyle().ItemInnerSpacing.x : 0.f;
+  ImGui::SetNextItemWidth(std::max(ImGui::GetFontSize() * 4, ImGui::GetContentRegionAvail().x - labelWidth - spacing));
+}
+
 bool dragVec3(ViewerState& s, const char* label, const char* id, Vec3& v, float speed) {
+  fitLabel(label);
   ImGui::PushID(id);
   const bool changed = editInPlace<3>(s, &v.x, [&](double* p) {
     return ImGui::DragScalarN(label, ImGuiDataType_Double, p, 3, speed, nullptr, nullptr, "%.3f");
@@ -73,6 +80,7 @@ bool dragVec3(ViewerState& s, const char* label, const char* id, Vec3& v, float 
 bool dragDouble(ViewerState& s, const char* label, const char* id, double& v, float speed, double min, double max,
                 const char* format) {
   const bool bounded = min < max;
+  fitLabel(label);
   ImGui::PushID(id);
   const bool changed = editInPlace<1>(s, &v, [&](double* p) {
     return ImGui::DragScalar(label, ImGuiDataType_Double, p, speed, bounded ? &min : nullptr, bounded ? &max : nullptr,
@@ -154,10 +162,10 @@ bool radio(const char* label, int* v, int value) {
   return changed;
 }
 
-void sameLineIfFits(const char* nextButton) {
+void sameLineIfFits(const char* next, bool button) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float previousEnd = ImGui::GetItemRectMax().x;
-  const float width = ImGui::CalcTextSize(nextButton, nullptr, true).x + style.FramePadding.x * 2;
+  const float width = ImGui::CalcTextSize(next, nullptr, true).x + (button ? style.FramePadding.x * 2 : 0.f);
   const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
   if (previousEnd + style.ItemSpacing.x + width <= right) ImGui::SameLine();
 }
@@ -201,7 +209,9 @@ void errorText(const std::string& text) {
 void section(const char* title) {
   ImGui::Spacing();
   ImGui::Separator();
-  ImGui::TextDisabled("%s", title);
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", title);
+  ImGui::PopStyleColor();
 }
 
 std::string vecText(const Vec3& v) { return formatVector(v, 4); }

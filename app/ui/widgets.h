@@ -26,11 +26,14 @@ void tabRow(ViewerState& s, const char* id, std::initializer_list<const char*> n
 /// label toggles, as ImGui's does). The last item afterwards is the label (for tooltips).
 bool checkbox(const char* label, bool* v);
 bool radio(const char* label, int* v, int value);
-/// SameLine() when a button labelled `nextButton` still fits on the line, else the next line.
-void sameLineIfFits(const char* nextButton);
+/// SameLine() when a button labelled `next` (or, with button = false, the text `next`) still fits
+/// on the line, else the next line.
+void sameLineIfFits(const char* next, bool button = true);
 /// Shows a tab by its lower-case name: camera, scene, clipping, display, lecture (the controls) or
 /// probe, matrices, depth (the inspector). False for another name.
 bool selectTab(ViewerState& s, std::string_view name);
+/// Makes the next widget narrow enough for its label (after "##", nothing) to fit beside it.
+void fitLabel(const char* label);
 /// A tooltip on the last item: the English explanation, then the German one of the lecture notes.
 void tooltip(const char* english, const char* german);
 /// A (?) marker with a tooltip.

@@ -195,7 +195,30 @@ TEST(UiLecture, NoTextIsCutOffAtAnyScale) {
     for (const Shown& s : shown) {
       SCOPED_TRACE(std::string(s.what) + " at UI scale " + std::to_string(scale));
       s.show(*v);
-      const std::vector<std::string> problems = clippedText();
+      // Every scrolled panel from top to bottom: ImGui draws only what is in view.
+      std::vector<std::string> problems = clippedText();
+      for (int page = 0; page < 30; ++page) {
+        std::vector<std::pair<ImGuiWindow*, float>> before;
+        for (ImGuiWindow* w : ImGui::GetCurrentContext()->Windows)
+          if (w->Active && w->ScrollMax.y > 0 && w->Scroll.y < w->ScrollMax.y - 0.5f) {
+            before.emplace_back(w, w->Scroll.y);
+            ImGui::SetScrollY(w, w->Scroll.y + w->InnerRect.GetHeight() * 0.8f);
+          }
+        if (before.empty()) break;
+        v->frames(2);
+        bool moved = false;
+        for (const auto& [w, y] : before) moved |= w->Scroll.y != y;
+        if (!moved) break;
+        const std::vector<std::string> more = clippedText();
+        if (!more.empty()) {  // the page to look at
+          char file[160];
+          std::snprintf(file, sizeof file, "ui-%.1f-%s-page-%d.png", scale, s.what, page + 1);
+          writePng(v->image(), test::outputDir() / file);
+        }
+        for (const std::string& p : more) problems.push_back(p);
+      }
+      if (std::string(s.what) == "Depth")  // the plot at least ten lines high at every scale
+        EXPECT_GE(v->state().rects.at("depth.plot").w, 10 * ImGui::GetTextLineHeight());
       char name[128];
       std::snprintf(name, sizeof name, "ui-%.1f-%s.png", scale, s.what);
       writePng(v->image(), test::outputDir() / name);
