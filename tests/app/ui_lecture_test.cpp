@@ -590,3 +590,27 @@ TEST(UiLecture, NpcCubeFaceDoesNotZFightWithTheScene) {
 
 }  // namespace
 }  // namespace vplab
+
+namespace vplab {
+namespace {
+
+// The inspector's tabs stay where they are while the matrices scroll under them.
+TEST(UiLecture, InspectTabsStayWhileThePanelScrolls) {
+  auto v = makeViewer();
+  const auto [x, y] = v->centreOf("tab.inspect.Matrices");
+  v->click(x, y);
+  v->frames(2);
+  const ImVec4 before = v->state().rects.at("tab.inspect.Matrices");
+  const ImVec4 firstCopy = v->state().rects.at("copy.wcFromMc.text");
+  v->mouseMove(firstCopy.x + 5, firstCopy.y + 5);
+  for (int i = 0; i < 6; ++i) {  // the wheel over the panel
+    v->wheel(-3);
+    v->frames(1);
+  }
+  v->frames(1);
+  EXPECT_LT(v->state().rects.at("copy.wcFromMc.text").y, firstCopy.y - 20) << "the panel did not scroll";
+  EXPECT_EQ(v->state().rects.at("tab.inspect.Matrices").y, before.y);
+}
+
+}  // namespace
+}  // namespace vplab
