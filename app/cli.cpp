@@ -6,6 +6,7 @@
 #include "app/headless.h"
 #include "app/ui/headless_viewer.h"
 #include "app/ui/run_viewer.h"
+#include "app/ui/widgets.h"
 #include "pipeline/dump.h"
 #include "pipeline/error.h"
 #include "pipeline/scene_io.h"
@@ -52,6 +53,7 @@ struct RenderOptions {
   double morphT = 0;
   bool glDebug = false;
   bool styleGiven = false;
+  std::vector<std::string> tabs;  // --view ui: the panels' tabs to show
 };
 
 std::pair<int, int> parseSize(const std::string& s) {
@@ -90,6 +92,13 @@ int runRender(const RenderOptions& r) {
     // The whole window, panels included, as `vplab` shows it (1280 × 720 unless --size says).
     HeadlessViewer viewer(*context, scene, request.width > 0 ? request.width : 1280,
                           request.height > 0 ? request.height : 720, r.uiScale);
+    // What the viewer shows for the same options (its keys 1 … 5 and C set the same).
+    viewer.state().pipeline.strategy = request.pipeline.strategy;
+    if (r.styleGiven) {
+      FrameSettings& f = viewer.state().frame;
+      f.camera.style = f.world.style = f.npc.style = request.style;
+    }
+    for (const std::string& tab : r.tabs) ui::selectTab(viewer.state(), tab);
     viewer.frames(3);
     writePng(viewer.image(), out);
     return 0;
@@ -218,6 +227,9 @@ int runCommandLine(int argc, char** argv) {
   renderCmd->add_flag("--gl-debug", render.glDebug, "Turn on KHR_debug and fail on any OpenGL error");
   renderCmd->add_option("--ui-scale", render.uiScale, "With --view ui: scale fonts and handles")
       ->check(CLI::Range(0.5f, 4.f));
+  renderCmd->add_option("--tab", render.tabs, "With --view ui: show this tab (repeatable): camera, scene, clipping, "
+                                              "display, lecture (controls) or probe, matrices, depth (inspector)")
+      ->check(CLI::IsMember({"camera", "scene", "clipping", "display", "lecture", "probe", "matrices", "depth"}));
 
   BenchOptions bench;
   std::string benchOnly;

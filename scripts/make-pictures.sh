@@ -5,7 +5,12 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 vplab="${VPLAB:-$root/build/vplab}"
 out="$root/docs/images"
 mkdir -p "$out"
-"$vplab" render --view ui --out "$out/viewer.png"
+# The whole viewer at a projector's 1280 × 720: as it opens, at UI scale 1.6 with the Lecture tab and
+# the matrices, and with the divide-first comparison beside the depth plot.
+"$vplab" render --view ui --size 1280x720 --out "$out/viewer.png"
+"$vplab" render --view ui --size 1280x720 --ui-scale 1.6 --tab lecture --tab matrices --out "$out/viewer-lecture.png"
+"$vplab" render --view ui --size 1280x720 --strategy divide-first --tab clipping --tab depth \
+  --out "$out/viewer-divide-first.png"
 "$vplab" render --view all --style shaded --size 480x360 --out "$out/all-shaded.png"
 "$vplab" render --view all --style hidden-line --size 480x360 --out "$out/all-hidden-line.png"
 "$vplab" render --scene "$root/assets/scenes/behind-the-eye.json" --view all --style shaded --size 480x360 \

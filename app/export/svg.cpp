@@ -4,6 +4,7 @@
 // Each view is rebuilt here from the same inputs its GPU drawing uses (views/*_view.cpp), step by
 // step in the same order, but into SVG elements instead of GL draw calls; the comments name the
 // GPU code each part mirrors.
+#include "app/number_text.h"
 #include "app/export/svg.h"
 
 #include "app/headless.h"
@@ -125,6 +126,7 @@ struct Fonts {
   ImFont* label = nullptr;
   ImFont* title = nullptr;
   bool dejaVu = false;
+  float scale = 1.f;  // the text scale (TextRenderer's)
 
   ImFont* font(TextSize size) const { return size == TextSize::title ? title : label; }
   Vec2 measure(const std::string& text, TextSize size) const {
@@ -141,6 +143,7 @@ struct Fonts {
 // Built for each export (a few milliseconds), so no font cache outlives it.
 std::unique_ptr<Fonts> makeFonts(float scale) {
   auto f = std::make_unique<Fonts>();
+  f->scale = scale;
   if (std::filesystem::exists(kFontFile)) {
     f->label = f->atlas->AddFontFromFileTTF(kFontFile, 15.f * scale, nullptr, kGlyphRanges);
     f->title = f->atlas->AddFontFromFileTTF(kFontFile, 20.f * scale, nullptr, kGlyphRanges);
@@ -169,44 +172,11 @@ struct PlacedLabel {
 std::vector<PlacedLabel> placeLabels(const std::vector<TextLabel>& labels, const Fonts& fonts, int width,
                                      int height) {
   std::vector<PlacedLabel> out;
-  std::vector<glm::dvec4> placed;  // x0, y0, x1, y1
-  for (const TextLabel& l : labels) {
-    // In float, as text.cpp: anchor, round, then clamp to [2, view − size − 2].
-    const glm::vec2 fsize(fonts.measure(l.text, l.size));
-    glm::vec2 origin(l.pixel);
-    switch (l.anchor) {
-      case Anchor::topLeft:
-        break;
-      case Anchor::center:
-        origin -= fsize * 0.5f;
-        break;
-      case Anchor::left:
-        origin.y -= fsize.y * 0.5f;
-        break;
-      case Anchor::bottomLeft:
-        origin.y -= fsize.y;
-        break;
-      case Anchor::topCenter:
-        origin.x -= fsize.x * 0.5f;
-        break;
-    }
-    const Vec2 wanted(glm::clamp(glm::round(origin), glm::vec2(2.f),
-                                 glm::max(glm::vec2(2.f), glm::vec2(width, height) - fsize - 2.f)));
-    auto overlaps = [&](const Vec2& o) {
-      for (const glm::dvec4& r : placed)
-        if (o.x < r.z && o.x + fsize.x > r.x && o.y < r.w && o.y + fsize.y > r.y) return true;
-      return false;
-    };
-    Vec2 at = wanted;
-    if (l.avoid && overlaps(wanted))
-      for (float step : {0.6f, -0.6f, 1.1f, -1.1f})
-        if (!overlaps(wanted + Vec2(0, step * fsize.y))) {
-          at = wanted + Vec2(0, step * fsize.y);
-          break;
-        }
-    placed.emplace_back(at.x, at.y, at.x + fsize.x, at.y + fsize.y);
-    out.push_back({at, l.text, l.color, l.size, l.shadow});
-  }
+  const std::vector<glm::vec2> at = vplab::placeLabels(
+      labels, [&](const TextLabel& l) { return Vec2(fonts.measure(l.text, l.size)); }, width, height,
+      7.f * fonts.scale);
+  for (size_t i = 0; i < labels.size(); ++i)
+    out.push_back({Vec2(at[i]), labels[i].text, labels[i].color, labels[i].size, labels[i].shadow});
   return out;
 }
 
@@ -478,6 +448,7 @@ class Drawing {
  public:
   Drawing(int width, int height, const glm::vec3& background, const Fonts& fonts, double scale)
       : width_(width), height_(height), background_(background), fonts_(&fonts), scale_(scale) {}
+  double scale() const { return scale_; }
 
   void line(const Stroke& s, const Px& a, const Px& b, double along) {
     if (!(distance2d(a, b) > 1e-6)) return;
@@ -715,7 +686,8 @@ void vanishingPointOverlay(Drawing& d, const Canvas& dc, const PipelineRun& run,
     const Vec2 at = vp.dc * toPixels;
     const bool inside = at.x >= 0 && at.y >= 0 && at.x <= dc.width && at.y <= dc.height;
     char text[96];
-    std::snprintf(text, sizeof text, "VP %s (%.0f, %.0f)%s", names[axis], vp.dc.x, vp.dc.y,
+    std::snprintf(text, sizeof text, "VP %s (%s, %s)%s", names[axis], formatNumber(std::round(vp.dc.x), {10}).c_str(),
+                  formatNumber(std::round(vp.dc.y), {10}).c_str(),
                   inside ? "" : " outside");
     labels.push_back({glm::clamp(at, Vec2(4), Vec2(dc.width - 4, dc.height - 4)) + Vec2(8, -8), text,
                       colors[axis], TextSize::label, Anchor::left});
@@ -881,7 +853,9 @@ void worldView(Drawing& d, const Scene& scene, const PipelineRun& run, const Fra
   auto label = [&](const Vec3& p, const std::string& text, const glm::vec4& color, Vec2 offset = {8, 0}) {
     if (!ov.labels) return;
     const Projected q = projectToPixels(view, p, w, h);
-    if (q.visible) labels.push_back({q.pixel + offset, text, color, TextSize::label, Anchor::left});
+    if (q.visible)  // as world_view.cpp: the offset grows with the text, the label names its point
+      labels.push_back({q.pixel + offset * d.scale(), text, color, TextSize::label, Anchor::left, true, true,
+                        q.pixel});
   };
   if (ov.newEdges) {
     const Stroke st = stroke("new-edge", theme::kNewEdge, theme::kLineWidth + 0.5);

@@ -25,6 +25,7 @@ TextRenderer::TextRenderer(const GladGLContext& gl, float scale)
       texture_(gl::makeTexture(gl)),
       vao_(gl::makeVertexArray(gl)),
       vbo_(gl::makeBuffer(gl)) {
+  scale_ = scale;
   for (const char* file : kFontFiles) {
     if (!std::filesystem::exists(file)) continue;
     label_ = atlas_->AddFontFromFileTTF(file, 15.f * scale, nullptr, kGlyphRanges);
@@ -59,6 +60,61 @@ TextRenderer::TextRenderer(const GladGLContext& gl, float scale)
 }
 
 TextRenderer::~TextRenderer() = default;
+
+std::vector<glm::vec2> placeLabels(const std::vector<TextLabel>& labels,
+                                   const std::function<Vec2(const TextLabel&)>& measure, int width, int height,
+                                   float markerClearPx) {
+  std::vector<glm::vec2> out;
+  std::vector<glm::vec4> placed;  // x0, y0, x1, y1 of the labels so far
+  std::vector<glm::vec2> markers;
+  for (const TextLabel& l : labels)
+    if (l.marker) markers.emplace_back(*l.marker);
+  for (const TextLabel& l : labels) {
+    const glm::vec2 size(measure(l));
+    glm::vec2 anchored(l.pixel);
+    switch (l.anchor) {
+      case Anchor::topLeft: break;
+      case Anchor::center: anchored -= size * 0.5f; break;
+      case Anchor::left: anchored.y -= size.y * 0.5f; break;
+      case Anchor::bottomLeft: anchored.y -= size.y; break;
+      case Anchor::topCenter: anchored.x -= size.x * 0.5f; break;
+    }
+    const glm::vec2 lo(2.f), hi = glm::max(glm::vec2(2.f), glm::vec2(width, height) - size - 2.f);
+    const glm::vec2 wanted = glm::clamp(glm::round(anchored), lo, hi);
+    auto overlaps = [&](glm::vec2 o) {
+      for (const glm::vec4& r : placed)
+        if (o.x < r.z && o.x + size.x > r.x && o.y < r.w && o.y + size.y > r.y) return true;
+      for (const glm::vec2& m : markers)
+        if (o.x < m.x + markerClearPx && o.x + size.x > m.x - markerClearPx && o.y < m.y + markerClearPx &&
+            o.y + size.y > m.y - markerClearPx)
+          return true;
+      return false;
+    };
+    // Greedy: the wanted place, else near it (up or down by up to two lines, then the same on the
+    // other side of its marker), so a label never strays far from its point; when all overlap,
+    // the wanted place after all.
+    std::vector<glm::vec2> candidates{wanted};
+    const float steps[] = {0.6f, -0.6f, 1.1f, -1.1f, 1.7f, -1.7f, 2.3f, -2.3f};
+    for (float step : steps) candidates.push_back(wanted + glm::vec2(0, step * size.y));
+    if (l.marker) {
+      const glm::vec2 mirrored(2 * float(l.marker->x) - wanted.x - size.x, wanted.y);  // the same gap, left
+      candidates.push_back(mirrored);
+      for (float step : steps) candidates.push_back(mirrored + glm::vec2(0, step * size.y));
+    }
+    glm::vec2 origin = wanted;
+    if (l.avoid)
+      for (const glm::vec2& c : candidates) {
+        const glm::vec2 clamped = glm::round(glm::clamp(c, lo, hi));
+        if (!overlaps(clamped)) {
+          origin = clamped;
+          break;
+        }
+      }
+    placed.emplace_back(origin.x, origin.y, origin.x + size.x, origin.y + size.y);
+    out.push_back(origin);
+  }
+  return out;
+}
 
 const ImFont* TextRenderer::font(TextSize size) const { return size == TextSize::title ? title_ : label_; }
 
@@ -104,26 +160,14 @@ void TextRenderer::appendText(const TextLabel& label, const glm::vec2& origin, c
 void TextRenderer::draw(const std::vector<TextLabel>& labels, int width, int height) {
   if (labels.empty()) return;
   std::vector<float> vertices;
-  std::vector<glm::vec4> placed;  // x0, y0, x1, y1 of the labels so far
-  for (const TextLabel& l : labels) {
+  const std::vector<glm::vec2> origins =
+      placeLabels(labels, [this](const TextLabel& l) { return measure(l.text, l.size); }, width, height, 7.f * scale_);
+  placed_.clear();
+  for (size_t i = 0; i < labels.size(); ++i) {
+    const TextLabel& l = labels[i];
+    const glm::vec2 origin = origins[i];
     const glm::vec2 size(measure(l.text, l.size));
-    const glm::vec2 wanted = glm::clamp(topLeft(l), glm::vec2(2.f),
-                                        glm::max(glm::vec2(2.f), glm::vec2(width, height) - size - 2.f));
-    auto overlaps = [&](glm::vec2 o) {
-      for (const glm::vec4& r : placed)
-        if (o.x < r.z && o.x + size.x > r.x && o.y < r.w && o.y + size.y > r.y) return true;
-      return false;
-    };
-    // Greedy placement: the wanted place, else half a line or a line below or above it, so a
-    // label never strays far from its point; when all overlap, the wanted place after all.
-    glm::vec2 origin = wanted;
-    if (l.avoid && overlaps(wanted))
-      for (float step : {0.6f, -0.6f, 1.1f, -1.1f})
-        if (!overlaps(wanted + glm::vec2(0, step * size.y))) {
-          origin = wanted + glm::vec2(0, step * size.y);
-          break;
-        }
-    placed.emplace_back(origin.x, origin.y, origin.x + size.x, origin.y + size.y);
+    placed_.emplace_back(origin.x, origin.y, origin.x + size.x, origin.y + size.y);
     if (l.shadow) {
       const glm::vec4 dark(0.f, 0.f, 0.f, 0.75f * l.color.a);
       for (const glm::vec2 o : {glm::vec2(-1, 0), glm::vec2(1, 0), glm::vec2(0, -1), glm::vec2(0, 1)})

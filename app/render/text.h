@@ -9,7 +9,9 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,8 +30,17 @@ struct TextLabel {
   TextSize size = TextSize::label;
   Anchor anchor = Anchor::left;
   bool shadow = true;  // a dark outline keeps labels readable on any background
-  bool avoid = true;   // moved down, line by line, when it would overlap a label placed before it
+  bool avoid = true;   // moved near its place when it would overlap a label placed before it or a marker
+  /// The point the label names (a drawn marker, pixels): no label may cover it.
+  std::optional<Vec2> marker;
 };
+
+/// Where each label goes (its top-left corner, pixels): anchored, rounded, clamped to the width ×
+/// height view, and moved near its place when it would overlap a label placed before it or come
+/// within `markerClearPx` of any label's marker. TextRenderer::draw and the SVG export share it.
+std::vector<glm::vec2> placeLabels(const std::vector<TextLabel>& labels,
+                                   const std::function<Vec2(const TextLabel&)>& measure, int width, int height,
+                                   float markerClearPx);
 
 class TextRenderer {
  public:
@@ -40,6 +51,9 @@ class TextRenderer {
   void draw(const std::vector<TextLabel>& labels, int width, int height);
   /// Width and height in pixels of a text at a size.
   Vec2 measure(const std::string& text, TextSize size) const;
+  float scale() const { return scale_; }
+  /// Where the last draw put each label: x0, y0, x1, y1 in pixels (for the tests).
+  const std::vector<glm::vec4>& placed() const { return placed_; }
 
  private:
   glm::vec2 topLeft(const TextLabel& label) const;
@@ -48,6 +62,8 @@ class TextRenderer {
   const ImFont* font(TextSize size) const;
 
   const GladGLContext* gl_;
+  float scale_ = 1.f;
+  std::vector<glm::vec4> placed_;
   std::unique_ptr<ImFontAtlas> atlas_;
   ImFont* label_ = nullptr;
   ImFont* title_ = nullptr;

@@ -1,23 +1,29 @@
 #include "app/ui/matrix_text.h"
 
+#include "app/number_text.h"
+
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace vplab {
 
-namespace {
-
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v == 0 ? 0.0 : v);  // no "-0"
-  return buf;
+double largestEntry(const Mat4& m) {
+  double largest = 0;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (std::isfinite(m[c][r])) largest = std::max(largest, std::abs(m[c][r]));
+  return largest;
 }
-
-}  // namespace
 
 std::string matrixText(const Mat4& m, std::string_view name, MatrixFormat format, bool seedForm) {
   const Mat4 shown = seedForm ? glm::transpose(m) : m;
   const std::string title = std::string(name) + (seedForm ? " (seed's row-vector form, p' = p · M)" : " (p' = M · p)");
   const auto rows = rowsOf(shown);
+  const NumberFormat plain{6, largestEntry(m)};
+  NumberFormat latex = plain;
+  latex.latex = true;
+  auto number = [&](double v) { return formatNumber(v, format == MatrixFormat::latex ? latex : plain); };
   std::string out;
   switch (format) {
     case MatrixFormat::plain:
@@ -35,13 +41,14 @@ std::string matrixText(const Mat4& m, std::string_view name, MatrixFormat format
         out += "| " + number(r[0]) + " | " + number(r[1]) + " | " + number(r[2]) + " | " + number(r[3]) + " |\n";
       return out;
     case MatrixFormat::latex:
-      out = "% " + title + "\n\\begin{pmatrix}\n";
+      // Display math, ready to paste into a document that loads amsmath (bmatrix).
+      out = "% " + title + " (needs \\usepackage{amsmath})\n\\[\n\\begin{bmatrix}\n";
       for (size_t i = 0; i < rows.size(); ++i) {
         const auto& r = rows[i];
         out += "  " + number(r[0]) + " & " + number(r[1]) + " & " + number(r[2]) + " & " + number(r[3]) +
                (i + 1 < rows.size() ? " \\\\\n" : "\n");
       }
-      return out + "\\end{pmatrix}\n";
+      return out + "\\end{bmatrix}\n\\]\n";
   }
   return out;
 }

@@ -11,6 +11,10 @@ namespace vplab {
 
 enum class MatrixFormat { plain, markdown, latex };
 
+/// The largest magnitude among a matrix's finite entries (what its noise is measured against).
+double largestEntry(const Mat4& m);
+
+/// The LaTeX form is display math (`\[ \begin{bmatrix} … \end{bmatrix} \]`, amsmath), ready to paste.
 std::string matrixText(const Mat4& m, std::string_view name, MatrixFormat format, bool seedForm);
 
 }  // namespace vplab

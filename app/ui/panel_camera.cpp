@@ -1,36 +1,24 @@
 // The camera panel: the synthetic camera's parameters (seed 15.1–15.2) and what follows from them.
 #include "app/ui/panels.h"
+#include "app/ui/picking.h"
 #include "app/ui/widgets.h"
 
 namespace vplab::ui {
 
 namespace {
 
-// Keeps the window's aspect ratio at the device's: the other axis follows, about its centre.
-void keepAspect(ViewWindow& w, double aspect, bool xChanged) {
-  if (xChanged) {
-    const double cy = (w.ymin + w.ymax) / 2, half = w.width() / aspect / 2;
-    w.ymin = cy - half;
-    w.ymax = cy + half;
-  } else {
-    const double cx = (w.xmin + w.xmax) / 2, half = w.height() * aspect / 2;
-    w.xmin = cx - half;
-    w.xmax = cx + half;
-  }
-}
-
 void derived(const ViewerState& s) {
   const ViewFrame& f = s.run.frame;
   ImGui::TextDisabled("derived");
-  ImGui::Text("U = %s", vecText(f.u).c_str());
+  ImGui::TextWrapped("U = %s", vecText(f.u).c_str());
   tooltip("U = normalize(VUP × N): the view plane's x axis.", "U = VUP × N normiert: x-Achse der Bildebene.");
-  ImGui::Text("V = %s", vecText(f.v).c_str());
+  ImGui::TextWrapped("V = %s", vecText(f.v).c_str());
   tooltip("V = N × U: the view plane's y axis, VUP projected into the view plane.",
           "V = N × U: y-Achse der Bildebene, der in die Bildebene projizierte VUP.");
-  ImGui::Text("N = %s", vecText(f.n).c_str());
+  ImGui::TextWrapped("N = %s", vecText(f.n).c_str());
   tooltip("N = normalize(PRP − VRP): the view plane normal; the eye lies on +N.",
           "N = (PRP − VRP) normiert: Normale der Bildebene; das Auge liegt auf +N.");
-  ImGui::Text("VPD = %.4g   dmin = %.4g   dmax = %.4g", f.vpd, f.dmin, f.dmax);
+  ImGui::TextWrapped("VPD = %s   dmin = %s   dmax = %s", num(f.vpd).c_str(), num(f.dmin).c_str(), num(f.dmax).c_str());
   tooltip("VPD = |PRP − VRP|, the view plane distance. dmin = VPD − F and dmax = VPD − B: the distances "
           "of the front and back planes from the eye.",
           "VPD: Abstand der Bildebene vom Augenpunkt. dmin, dmax: Abstände von Front- und Backplane.");
@@ -57,8 +45,8 @@ void cameraPanel(ViewerState& s) {
   xChanged |= dragDouble(s, "xmax", "camera.xmax", w.xmax);
   bool yChanged = dragDouble(s, "ymin", "camera.ymin", w.ymin);
   yChanged |= dragDouble(s, "ymax", "camera.ymax", w.ymax);
-  if (ImGui::Checkbox("keep the device's aspect ratio", &s.keepAspect) && s.keepAspect) xChanged = true;
-  if (s.keepAspect && (xChanged || yChanged) && w.width() > 0 && w.height() > 0) keepAspect(w, aspect, xChanged);
+  if (checkbox("keep the device's aspect ratio", &s.keepAspect) && s.keepAspect) xChanged = true;
+  if (s.keepAspect && (xChanged || yChanged)) keepWindowAspect(w, aspect, xChanged);
   tooltip("The window's width : height stays the device's W : H, so nothing is stretched.",
           "Das Seitenverhältnis des Fensters bleibt das des Geräts.");
 
@@ -71,11 +59,11 @@ void cameraPanel(ViewerState& s) {
 
   section("projection");
   int p = int(c.projection);
-  ImGui::RadioButton("perspective", &p, int(Projection::perspective));
+  radio("perspective", &p, int(Projection::perspective));
   ImGui::SameLine();
-  ImGui::RadioButton("parallel", &p, int(Projection::parallel));
+  radio("parallel", &p, int(Projection::parallel));
   ImGui::SameLine();
-  ImGui::RadioButton("oblique", &p, int(Projection::oblique));
+  radio("oblique", &p, int(Projection::oblique));
   c.projection = Projection(p);
   if (c.projection == Projection::oblique) {
     dragDouble(s, "d", "camera.oblique.d", c.oblique.d, 0.01f, 0.0, 4.0);
@@ -84,7 +72,7 @@ void cameraPanel(ViewerState& s) {
     dragDouble(s, "phi (deg)", "camera.oblique.phi", c.oblique.phiDeg, 0.5f, -180.0, 180.0, "%.1f");
     tooltip("φ: the angle under which depth is drawn in the view plane.", "φ: Winkel der Tiefenachse in der Bildebene.");
     if (ImGui::Button("cavalier (d = 1, φ = 35°)")) c.oblique = kCavalier;
-    ImGui::SameLine();
+    sameLineIfFits("cabinet (d = 0.5, φ = 50°)");
     if (ImGui::Button("cabinet (d = 0.5, φ = 50°)")) c.oblique = kCabinet;
   }
   ImGui::Separator();

@@ -3,6 +3,8 @@
 #include "app/ui/panels.h"
 #include "app/ui/widgets.h"
 
+#include <algorithm>
+
 namespace vplab::ui {
 
 namespace {
@@ -10,7 +12,7 @@ namespace {
 void statRow(const char* name, uint64_t value) {
   ImGui::TableNextRow();
   ImGui::TableNextColumn();
-  ImGui::TextUnformatted(name);
+  ImGui::TextWrapped("%s", name);
   ImGui::TableNextColumn();
   ImGui::Text("%llu", static_cast<unsigned long long>(value));
 }
@@ -18,6 +20,10 @@ void statRow(const char* name, uint64_t value) {
 bool styleCombo(const char* label, Style& style) {
   int current = int(style);
   const char* names[] = {"flat", "shaded", "wire", "hidden-line (dashed)", "hidden-line (removed)"};
+  // The combo leaves room for its label, which cannot wrap.
+  ImGui::SetNextItemWidth(std::max(ImGui::GetFontSize() * 5, ImGui::GetContentRegionAvail().x -
+                                                                  ImGui::CalcTextSize(label).x -
+                                                                  ImGui::GetStyle().ItemInnerSpacing.x));
   const bool changed = ImGui::Combo(label, &current, names, IM_ARRAYSIZE(names));
   style = Style(current);
   return changed;
@@ -27,12 +33,12 @@ bool styleCombo(const char* label, Style& style) {
 
 void clippingPanel(ViewerState& s) {
   int strategy = int(s.pipeline.strategy);
-  ImGui::RadioButton("homogeneous NPC (Blinn)", &strategy, int(ClipStrategy::npc));
+  radio("homogeneous NPC (Blinn)", &strategy, int(ClipStrategy::npc));
   tooltip("Clip against the unit cube in homogeneous coordinates, 0 ≤ x, y, z ≤ w, then divide (seed 002).",
           "Clipping im NPC in homogenen Koordinaten, dann Division durch w.");
-  ImGui::RadioButton("the six frustum planes in WC", &strategy, int(ClipStrategy::wc));
+  radio("the six frustum planes in WC", &strategy, int(ClipStrategy::wc));
   tooltip("Clip in WC against the plane equations of the view volume (seed 15.3.1).", "Clipping im WC (15.3.1).");
-  ImGui::RadioButton("divide first, then clip — WRONG on purpose", &strategy, int(ClipStrategy::divideFirst));
+  radio("divide first, then clip — WRONG on purpose", &strategy, int(ClipStrategy::divideFirst));
   tooltip("Divides by w before clipping: for points behind the eye (w < 0) x/w and y/w flip sign, so edges "
           "reaching behind the eye wrap around through infinity.",
           "Erst dividieren, dann clippen: hinter dem Auge kehren x/w und y/w ihr Vorzeichen um.");
@@ -40,13 +46,15 @@ void clippingPanel(ViewerState& s) {
   if (!isCorrect(s.pipeline.strategy))
     errorText("Wrong on purpose: after the division a point behind the eye has x/w and y/w of flipped sign, so "
               "an edge reaching behind the eye wraps around through infinity.");
-  ImGui::Checkbox("bounding-box test per object (15.3.4)", &s.pipeline.boundingBoxTest);
+  checkbox("bounding-box test per object (15.3.4)", &s.pipeline.boundingBoxTest);
   tooltip("One test of an object's bounding box decides all its polygons when the box is wholly inside "
           "or wholly outside the view volume.",
           "Umgebungsclipping: ein Test des umgebenden Quaders entscheidet für alle Polygone.");
 
   const PipelineStats& st = s.run.stats;
   if (ImGui::BeginTable("stats", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+    ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableSetupColumn("count", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("00000000").x);
     statRow("vertices transformed", st.verticesTransformed);
     statRow("vertices classified", st.verticesClassified);
     statRow("polygons", st.polygons);
@@ -66,7 +74,9 @@ void clippingPanel(ViewerState& s) {
     statRow("comparisons", st.operations.comparisons);
     ImGui::EndTable();
   }
-  ImGui::TextDisabled("Operation counts follow the seed's cost model (15.3.3).");
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("Operation counts follow the seed's cost model (15.3.3).");
+  ImGui::PopStyleColor();
 }
 
 void displayPanel(ViewerState& s) {
@@ -75,26 +85,26 @@ void displayPanel(ViewerState& s) {
   styleCombo("NPC view", s.frame.npc.style);
   OverlaySettings& o = s.frame.overlays;
   section("world view");
-  ImGui::Checkbox("view volume", &o.frustum);
+  checkbox("view volume", &o.frustum);
   ImGui::SameLine();
-  ImGui::Checkbox("window", &o.viewPlane);
+  checkbox("window", &o.viewPlane);
   ImGui::SameLine();
-  ImGui::Checkbox("camera axes", &o.cameraAxes);
+  checkbox("camera axes", &o.cameraAxes);
   section("world and NPC views");
-  ImGui::Checkbox("fade what is outside", &o.fadeOutside);
+  checkbox("fade what is outside", &o.fadeOutside);
   ImGui::SameLine();
-  ImGui::Checkbox("highlight new edges", &o.newEdges);
-  ImGui::Checkbox("unit cube", &o.cube);
+  checkbox("highlight new edges", &o.newEdges);
+  checkbox("unit cube", &o.cube);
   ImGui::SameLine();
-  ImGui::Checkbox("labels", &o.labels);
+  checkbox("labels", &o.labels);
   section("camera view");
-  ImGui::Checkbox("CPU clipped polygons", &o.cpuPolygons);
+  checkbox("CPU clipped polygons", &o.cpuPolygons);
   tooltip("The CPU clipper's polygons in DC, outlined over the GPU's image.", "Die Polygone des CPU-Clippers im DC.");
   ImGui::SameLine();
-  ImGui::Checkbox("difference to the CPU", &o.difference);
+  checkbox("difference to the CPU", &o.difference);
   tooltip("Where the GPU's image differs from the CPU's polygons filled (magenta).",
           "Wo das Bild der GPU von den gefüllten CPU-Polygonen abweicht.");
-  ImGui::Checkbox("antialiasing (4× multisampling)", &s.antialias);
+  checkbox("antialiasing (4× multisampling)", &s.antialias);
   tooltip("Smooth edges in the world, NPC and morph views. On a software renderer (Mesa llvmpipe) it costs "
           "more than all the drawing, so it starts off there.",
           "Kantenglättung; auf einem Software-Renderer teuer, daher dort zunächst aus.");

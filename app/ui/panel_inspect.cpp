@@ -1,11 +1,14 @@
 // The matrices panel (each stage's 4 × 4 matrix and the composite, live) and the vertex probe
 // (one vertex through every stage: MC, WC, VRC, homogeneous NPC, NPC, DC, its boundary coordinates
 // and outcode; seed 15.2, seed 002).
+#include "app/number_text.h"
 #include "app/ui/matrix_text.h"
 #include "app/ui/panels.h"
 #include "app/ui/widgets.h"
 
 #include "pipeline/clipping.h"
+
+#include <algorithm>
 
 namespace vplab::ui {
 
@@ -13,27 +16,54 @@ namespace {
 
 void matrixTable(ViewerState& s, const char* name, const char* id, const Mat4& m, const char* explanation) {
   ImGui::PushID(id);
-  ImGui::TextUnformatted(name);
-  ImGui::SameLine();
-  ImGui::TextDisabled("%s", explanation);
+  ImGui::TextWrapped("%s", name);
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", explanation);
+  ImGui::PopStyleColor();
   const Mat4 shown = s.seedForm ? glm::transpose(m) : m;
+  const double scale = largestEntry(m);
+  std::string cells[4][4];
+  float widest = 0;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) {
+      cells[r][c] = num(shown[c][r], scale);
+      widest = std::max(widest, ImGui::CalcTextSize(cells[r][c].c_str()).x);
+    }
+  // Four columns of the widest entry; in a narrow inspector (a large UI scale) the table's text is
+  // made smaller rather than cut off.
+  const float needed = 4 * (widest + ImGui::GetStyle().CellPadding.x * 2 + 2);
+  const float fontScale = std::clamp(ImGui::GetContentRegionAvail().x / needed, 0.5f, 1.f);
+  ImGui::SetWindowFontScale(fontScale);
   if (ImGui::BeginTable("m", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchSame)) {
     for (int r = 0; r < 4; ++r) {
       ImGui::TableNextRow();
       for (int c = 0; c < 4; ++c) {
         ImGui::TableNextColumn();
-        const double v = shown[c][r];
-        ImGui::Text("%.4g", v == 0 ? 0.0 : v);
+        ImGui::TextUnformatted(cells[r][c].c_str());
       }
     }
     ImGui::EndTable();
   }
-  if (ImGui::SmallButton("copy text")) ImGui::SetClipboardText(matrixText(m, name, MatrixFormat::plain, s.seedForm).c_str());
-  ImGui::SameLine();
-  if (ImGui::SmallButton("copy Markdown"))
-    ImGui::SetClipboardText(matrixText(m, name, MatrixFormat::markdown, s.seedForm).c_str());
-  ImGui::SameLine();
-  if (ImGui::SmallButton("copy LaTeX")) ImGui::SetClipboardText(matrixText(m, name, MatrixFormat::latex, s.seedForm).c_str());
+  ImGui::SetWindowFontScale(1.f);
+  // The buttons wrap onto the next line when the inspector is narrow (a large UI scale).
+  const std::string base = std::string("copy.") + id;
+  const std::string ids[] = {base + ".text", base + ".markdown", base + ".latex"};
+  const char* labels[] = {"copy text", "copy Markdown", "copy LaTeX"};
+  const MatrixFormat formats[] = {MatrixFormat::plain, MatrixFormat::markdown, MatrixFormat::latex};
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float x = 0;
+  for (int i = 0; i < 3; ++i) {
+    const float w = ImGui::CalcTextSize(labels[i]).x + style.FramePadding.x * 2;
+    if (i > 0 && x + style.ItemSpacing.x + w <= ImGui::GetContentRegionAvail().x) {
+      ImGui::SameLine();
+      x += style.ItemSpacing.x;
+    } else {
+      x = 0;
+    }
+    copyButton(s, labels[i], ids[i].c_str(), matrixText(m, name, formats[i], s.seedForm));
+    x += w;
+  }
+  for (const std::string& i : ids) copiedNotice(s, i.c_str());
   ImGui::PopID();
   ImGui::Spacing();
 }
@@ -41,7 +71,7 @@ void matrixTable(ViewerState& s, const char* name, const char* id, const Mat4& m
 }  // namespace
 
 void matricesPanel(ViewerState& s) {
-  ImGui::Checkbox("the seed's row-vector form (p' = p · M, transposed)", &s.seedForm);
+  checkbox("the seed's row-vector form (p' = p · M, transposed)", &s.seedForm);
   tooltip("The project computes with column vectors (p' = M · p, as GLM). The lecture notes write points as "
           "row vectors; their matrices are the transposes.",
           "Die Vorlesung schreibt Punkte als Zeilenvektoren; ihre Matrizen sind die transponierten.");
@@ -79,51 +109,49 @@ void probePanel(ViewerState& s) {
   const uint32_t v = s.probe->vertex;
   const Vec4 h = o->npcH[v];
   ImGui::Text("%s, vertex %u", o->name.c_str(), v);
+  ImGui::SameLine();
   if (ImGui::SmallButton("clear")) s.probe.reset();
-  if (ImGui::BeginTable("stages", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-    auto row = [](const char* space, const std::string& value) {
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(space);
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(value.c_str());
-    };
-    row("MC", vecText(o->mesh->positions[v]));
-    row("WC", vecText(o->wc(v)));
-    row("VRC", vecText(o->vrc(v)));
-    row("NPC (homogeneous)", vecText(h));
-    if (h.w > 0) {
-      const Vec3 npc = Vec3(h) / h.w;
-      row("NPC (÷ w)", vecText(npc));
-      row("DC", vecText(Vec3(run.dcFromNpc * Vec4(npc, 1.0))));
-    } else {
-      row("NPC (÷ w)", "w ≤ 0: behind the eye, no image point");
-      row("DC", "—");
-    }
-    ImGui::EndTable();
+  // Each space's name, then its coordinates beside it, wrapped at the window's edge.
+  auto row = [](const char* space, const std::string& value) {
+    ImGui::TextDisabled("%s", space);
+    ImGui::SameLine();
+    ImGui::TextWrapped("%s", value.c_str());
+  };
+  row("MC", vecText(o->mesh->positions[v]));
+  row("WC", vecText(o->wc(v)));
+  row("VRC", vecText(o->vrc(v)));
+  row("NPC (homogeneous)", vecText(h));
+  if (h.w > 0) {
+    const Vec3 npc = Vec3(h) / h.w;
+    row("NPC (÷ w)", vecText(npc));
+    row("DC", vecText(Vec3(run.dcFromNpc * Vec4(npc, 1.0))));
+  } else {
+    row("NPC (÷ w)", "w ≤ 0: behind the eye, no image point");
+    row("DC", "—");
   }
   // Blinn's boundary coordinates of the homogeneous point, whatever the strategy (seed 002).
   const Boundary bc = boundaryCoordinates(h);
   const Outcode code = outcodeOf(bc);
   section("boundary coordinates (inside when ≥ 0)");
-  if (ImGui::BeginTable("bc", 3, ImGuiTableFlags_RowBg)) {
-    static constexpr const char* kForms[] = {"BC0 = x", "BC1 = w − x", "BC2 = y", "BC3 = w − y", "BC4 = z", "BC5 = w − z"};
-    for (int i = 0; i < kPlaneCount; ++i) {
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(kForms[i]);
-      ImGui::TableNextColumn();
-      ImGui::TextColored(bc[i] < 0 ? ImVec4(1, 0.4f, 0.35f, 1) : ImVec4(0.55f, 0.9f, 0.5f, 1), "%.5g", bc[i]);
-      ImGui::TableNextColumn();
-      ImGui::TextDisabled("%s (%s)", std::string(planeName(i)).c_str(), std::string(planeInequality(i)).c_str());
-    }
-    ImGui::EndTable();
+  const double bcScale = magnitudeOf({bc[0], bc[1], bc[2], bc[3], bc[4], bc[5], h.w});
+  // One line per plane (wrapping in a narrow inspector): the form, its value, the plane.
+  static constexpr const char* kForms[] = {"BC0 = x", "BC1 = w − x", "BC2 = y", "BC3 = w − y", "BC4 = z", "BC5 = w − z"};
+  for (int i = 0; i < kPlaneCount; ++i) {
+    ImGui::TextUnformatted(kForms[i]);
+    const std::string value = num(bc[i], bcScale, 5);
+    sameLineIfFits(value.c_str(), false);
+    ImGui::TextColored(bc[i] < 0 ? ImVec4(1, 0.4f, 0.35f, 1) : ImVec4(0.55f, 0.9f, 0.5f, 1), "%s", value.c_str());
+    const std::string plane = std::string(planeName(i)) + " (" + std::string(planeInequality(i)) + ")";
+    sameLineIfFits(plane.c_str(), false);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", plane.c_str());
+    ImGui::PopStyleColor();
   }
   std::string bits, names;
   for (int i = kPlaneCount - 1; i >= 0; --i) bits += (code >> i & 1) ? '1' : '0';
   for (int i = 0; i < kPlaneCount; ++i)
     if (code >> i & 1) names += (names.empty() ? "" : ", ") + std::string(planeName(i));
-  ImGui::Text("outcode %s  %s", bits.c_str(), code ? ("outside: " + names).c_str() : "inside");
+  ImGui::TextWrapped("outcode %s  %s", bits.c_str(), code ? ("outside: " + names).c_str() : "inside");
 }
 
 }  // namespace vplab::ui

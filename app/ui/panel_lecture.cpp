@@ -3,9 +3,11 @@
 // depth plot (seed 15.2.4) in the inspector.
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include "app/ui/panels.h"
+#include "app/ui/vanishing_text.h"
 #include "app/ui/widgets.h"
 
 #include "pipeline/clip_steps.h"
+#include "pipeline/clipping.h"
 #include "pipeline/vanishing_points.h"
 #include "pipeline/view_mapping.h"
 
@@ -24,12 +26,13 @@ const ObjectRun* runOf(const ViewerState& s, int sceneIndex) {
 }
 
 void morphSection(ViewerState& s) {
-  ImGui::Checkbox("show the stage morph", &s.showMorph);
+  checkbox("show the stage morph", &s.showMorph);
   tooltip("One view moves the visible scene from MC through WC, VRC and homogeneous NPC to NPC and DC; "
           "the division by w is its own step (2.5 → 3).",
           "Die Szene wandert durch die Stufen der Viewing Pipeline; die Division durch w ist ein eigener Schritt.");
   if (!s.showMorph) return;
   float t = float(s.frame.morphing.t);
+  fitLabel("t");
   if (ImGui::SliderFloat("t", &t, 0.f, 4.f, "%.2f")) s.frame.morphing.t = t;
   recordRect(s, "morph.t");
   if (ImGui::Button(s.morphPlaying ? "pause" : "play")) {
@@ -46,12 +49,18 @@ void morphSection(ViewerState& s) {
   }
   ImGui::NewLine();
   float speed = float(s.morphSpeed);
+  fitLabel("speed (stages/s)");
   if (ImGui::SliderFloat("speed (stages/s)", &speed, 0.1f, 2.f, "%.2f")) s.morphSpeed = speed;
 }
 
 void stepThroughSection(ViewerState& s) {
   StepThrough& st = s.stepThrough;
-  ImGui::Checkbox("step through the clipping of a polygon", &st.active);
+  if (s.showStepThrough) {  // Shift+click in the camera view chose a polygon: show it
+    ImGui::SetScrollHereY(0.f);
+    s.showStepThrough = false;
+  }
+  checkbox("step through the clipping of a polygon", &st.active);
+  recordRect(s, "step.active");
   tooltip("Sutherland–Hodgman one plane at a time in homogeneous NPC: each vertex's boundary coordinate for "
           "the plane, and the vertices each pass creates (seed 002). Shift+click a polygon in the camera view "
           "to choose it.",
@@ -60,6 +69,7 @@ void stepThroughSection(ViewerState& s) {
   const Scene& scene = s.doc.shown();
   if (scene.objects.empty()) return;
   st.object = std::clamp(st.object, 0, int(scene.objects.size()) - 1);
+  fitLabel("object");
   if (ImGui::BeginCombo("object", scene.objects[size_t(st.object)].name.c_str())) {
     for (int i = 0; i < int(scene.objects.size()); ++i)
       if (ImGui::Selectable(scene.objects[size_t(i)].name.c_str(), i == st.object)) st.object = i;
@@ -71,17 +81,24 @@ void stepThroughSection(ViewerState& s) {
     return;
   }
   st.face = std::clamp(st.face, 0, int(o->faceCount()) - 1);
+  fitLabel("polygon");
   ImGui::SliderInt("polygon", &st.face, 0, int(o->faceCount()) - 1);
-  ImGui::SameLine();
-  ImGui::TextDisabled("%s", std::string(toString(o->fate[size_t(st.face)])).c_str());
+  ImGui::TextDisabled("its fate: %s", std::string(toString(o->fate[size_t(st.face)])).c_str());
   const std::vector<ClipStep> steps = clipSteps(s.run, *o, size_t(st.face));
   const int last = int(steps.size());
   st.step = std::clamp(st.step, 0, last);
-  if (ImGui::Button("< back") && st.step > 0) --st.step;
+  ImGui::BeginDisabled(st.step == 0);  // nothing before the first plane
+  if (ImGui::Button("< back")) --st.step;
+  ImGui::EndDisabled();
+  recordRect(s, "step.back");
   ImGui::SameLine();
-  if (ImGui::Button("next >") && st.step < last) ++st.step;
+  ImGui::BeginDisabled(st.step == last);  // nothing after the last
+  if (ImGui::Button("next >")) ++st.step;
+  ImGui::EndDisabled();
+  recordRect(s, "step.next");
   ImGui::SameLine();
-  ImGui::SliderInt("##step", &st.step, 0, last);
+  ImGui::SetNextItemWidth(std::max(ImGui::GetFontSize() * 4, ImGui::GetContentRegionAvail().x));
+  ImGui::SliderInt("##step", &st.step, 0, last, "pass %d");
   recordRect(s, "step.slider");
 
   if (st.step == 0) {
@@ -89,13 +106,19 @@ void stepThroughSection(ViewerState& s) {
     return;
   }
   const ClipStep& step = steps[size_t(st.step - 1)];
-  ImGui::Text("pass %d: %s plane, keep %s", st.step, std::string(planeName(step.plane)).c_str(),
-              std::string(planeInequality(step.plane)).c_str());
-  if (step.skipped) ImGui::TextDisabled("no vertex outside this plane: the pass changes nothing");
-  if (ImGui::BeginTable("bc", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+  ImGui::TextWrapped("pass %d of %d: %s plane, keep %s", st.step, last, std::string(planeName(step.plane)).c_str(),
+                     std::string(planeInequality(step.plane)).c_str());
+  if (step.skipped) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("no vertex outside this plane: the pass changes nothing");
+    ImGui::PopStyleColor();
+  }
+  double scale = 0;
+  for (double b : step.boundary) scale = std::max(scale, std::abs(b));
+  if (ImGui::BeginTable("bc", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit)) {
     ImGui::TableSetupColumn("vertex");
     ImGui::TableSetupColumn("boundary coordinate");
-    ImGui::TableSetupColumn("");
+    ImGui::TableSetupColumn("side");
     ImGui::TableHeadersRow();
     for (size_t i = 0; i < step.input.size(); ++i) {
       ImGui::TableNextRow();
@@ -103,35 +126,47 @@ void stepThroughSection(ViewerState& s) {
       ImGui::Text("%zu", i);
       ImGui::TableNextColumn();
       const double b = step.boundary[i];
-      ImGui::TextColored(b < 0 ? ImVec4(1, 0.4f, 0.35f, 1) : ImVec4(0.55f, 0.9f, 0.5f, 1), "%.5g", b);
+      ImGui::TextColored(b < 0 ? ImVec4(1, 0.4f, 0.35f, 1) : ImVec4(0.55f, 0.9f, 0.5f, 1), "%s", num(b, scale, 5).c_str());
       ImGui::TableNextColumn();
       ImGui::TextDisabled("%s", b < 0 ? "outside" : "inside");
     }
     ImGui::EndTable();
   }
   const long created = std::count(step.created.begin(), step.created.end(), true);
-  ImGui::Text("%zu vertices in, %zu out, %ld new (yellow in the views)", step.input.size(), step.output.size(), created);
+  ImGui::TextWrapped("%zu vertices in, %zu out, %ld new (yellow in the views)", step.input.size(), step.output.size(),
+                     created);
+  // The new vertices where the polygon's edges cross the plane, snapped onto it as they are drawn.
+  for (size_t k = 0; k < step.output.size(); ++k) {
+    if (!step.created[k]) continue;
+    Vec4 p = step.output[k].p;
+    snapToPlanes(p, step.output[k].onPlanes);
+    ImGui::BulletText("new vertex %zu:", k);
+    ImGui::Indent();
+    ImGui::TextWrapped("%s (homogeneous NPC)", vecText(p).c_str());
+    ImGui::Unindent();
+    recordRect(s, ("step.new." + std::to_string(k)).c_str());
+  }
 }
 
 void vanishingSection(ViewerState& s) {
-  ImGui::Checkbox("vanishing points of the selected object", &s.frame.overlays.vanishingPoints);
+  checkbox("vanishing points of the selected object", &s.frame.overlays.vanishingPoints);
   tooltip("In a perspective projection, edges parallel to an axis that is not parallel to the view plane meet "
           "in one image point (seed 14.2): one, two or three of them.",
           "Fluchtpunkte: parallele Kanten treffen sich im Bild in einem Punkt (14.2).");
   if (!s.frame.overlays.vanishingPoints) return;
   const ObjectRun* o = runOf(s, s.selectedObject);
   if (!o) return;
-  const auto vps = vanishingPoints(s.run, o->wcFromMc);
-  ImGui::Text("%s: %d-point perspective", o->name.c_str(), vanishingPointCount(vps));
-  const char* axes[] = {"x", "y", "z"};
-  for (int i = 0; i < 3; ++i) {
-    if (vps[size_t(i)].finite) ImGui::BulletText("%s axis: DC (%.1f, %.1f)", axes[i], vps[size_t(i)].dc.x, vps[size_t(i)].dc.y);
-    else ImGui::BulletText("%s axis: parallel to the view plane, no vanishing point", axes[i]);
+  const VanishingText t = vanishingText(s.run, *o);
+  ImGui::TextWrapped("%s", t.headline.c_str());
+  for (const std::string& axis : t.axes) {
+    ImGui::Bullet();
+    ImGui::TextWrapped("%s", axis.c_str());
   }
 }
 
 void lectureModeSection(ViewerState& s) {
   float scale = s.uiScale;
+  fitLabel("UI scale");
   if (ImGui::SliderFloat("UI scale", &scale, 0.8f, 2.5f, "%.2f")) s.uiScale = scale;
   tooltip("Larger fonts, labels and handles for a projector.", "Größere Schrift und Griffe für den Beamer.");
   const char* names[] = {"world", "camera", "NPC", "stage morph"};
@@ -139,6 +174,7 @@ void lectureModeSection(ViewerState& s) {
   int current = 0;
   for (int i = 0; i < 4; ++i)
     if (kinds[i] == s.lectureView) current = i;
+  fitLabel("full-screen view");
   if (ImGui::Combo("full-screen view", &current, names, 4)) s.lectureView = kinds[current];
   if (ImGui::Button("lecture mode (F11)")) s.lectureMode = true;
   tooltip("One view fills the window, without panels; F11 or Esc returns.", "Eine Ansicht füllt das Fenster; F11 oder Esc beendet.");
@@ -163,34 +199,30 @@ void lecturePanel(ViewerState& s) {
 void depthPanel(ViewerState& s) {
   const Camera& c = s.run.camera;
   const ViewFrame& f = s.run.frame;
+  const float line = ImGui::GetTextLineHeight();
+  // The legend above the plot, off the curves.
+  ImGui::BeginGroup();
+  ImGui::TextColored(ImVec4(0.55f, 0.86f, 1.f, 1.f), "— NPC z");
+  if (ImGui::CalcTextSize("— NPC z    - - GL window depth = 1 − z").x <= ImGui::GetContentRegionAvail().x)
+    ImGui::SameLine(0, line);
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.78f, 0.35f, 1.f));
+  ImGui::TextWrapped("- - GL window depth = 1 − z");
+  ImGui::PopStyleColor();
+  ImGui::EndGroup();
+  recordRect(s, "depth.legend");
   const ImVec2 origin = ImGui::GetCursorScreenPos();
-  const float width = std::max(160.f, ImGui::GetContentRegionAvail().x);
-  const float height = std::clamp(ImGui::GetContentRegionAvail().y - 120.f, 120.f, 320.f);
-  const float pad = 34.f;
+  const float width = std::max(line * 10, ImGui::GetContentRegionAvail().x);
+  // At least ten lines of text high, so the curves read at any UI scale.
+  const float height = std::clamp(ImGui::GetContentRegionAvail().y - line * 9, line * 10, line * 22);
+  const float pad = ImGui::CalcTextSize("0.5").x + 8;
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  const ImVec2 p0 = origin + ImVec2(pad, 8), p1 = origin + ImVec2(width - 8, height - pad);
+  const ImVec2 p0 = origin + ImVec2(pad, line * 0.5f), p1 = origin + ImVec2(width - 8, height);
   auto at = [&](double vrcZ, double depth) {  // x: VRC z from B (left) to F (right); y: 0..1 upwards
     const float x = p0.x + float((vrcZ - c.back) / (c.front - c.back)) * (p1.x - p0.x);
     return ImVec2(x, p1.y - float(depth) * (p1.y - p0.y));
   };
   const ImU32 grid = IM_COL32(90, 95, 110, 255), text = IM_COL32(200, 205, 215, 255);
   dl->AddRect(p0, p1, grid);
-  // The objects' depth ranges (VRC z of their vertices), as bands along the axis.
-  float band = p1.y + 4;
-  for (const ObjectRun& o : s.run.objects) {
-    if (o.vertexCount() == 0) continue;
-    double lo = 1e300, hi = -1e300;
-    for (uint32_t v = 0; v < o.vertexCount(); ++v) {
-      const double z = o.vrc(v).z;
-      lo = std::min(lo, z);
-      hi = std::max(hi, z);
-    }
-    lo = std::clamp(lo, c.back, c.front);
-    hi = std::clamp(hi, c.back, c.front);
-    const ImU32 col = ImGui::ColorConvertFloat4ToU32(ImVec4(float(o.color.r), float(o.color.g), float(o.color.b), 0.9f));
-    dl->AddRectFilled(ImVec2(at(lo, 0).x, band), ImVec2(std::max(at(hi, 0).x, at(lo, 0).x + 2), band + 4), col);
-    band += 5;
-  }
   // Equal VRC steps and their NPC depth: the ticks crowd at the back plane.
   for (int i = 0; i <= 10; ++i) {
     const double z = c.back + (c.front - c.back) * i / 10.0;
@@ -198,7 +230,7 @@ void depthPanel(ViewerState& s) {
     dl->AddLine(ImVec2(at(z, 0).x, p1.y), at(z, d), IM_COL32(90, 95, 110, 120));
     dl->AddLine(ImVec2(p0.x, at(z, d).y), at(z, d), IM_COL32(120, 200, 230, 110));
   }
-  // NPC z (solid) and GL's window depth 1 − z (dashed look: dotted polyline).
+  // NPC z (solid) and GL's window depth 1 − z (dashed).
   ImVec2 prev = at(c.back, npcDepthOfVrcZ(c, f, c.back)), prevGl = at(c.back, 1 - npcDepthOfVrcZ(c, f, c.back));
   for (int i = 1; i <= 120; ++i) {
     const double z = c.back + (c.front - c.back) * i / 120.0;
@@ -208,34 +240,53 @@ void depthPanel(ViewerState& s) {
     prev = p;
     prevGl = q;
   }
-  dl->AddText(p0 + ImVec2(4, 2), IM_COL32(140, 220, 255, 255), "NPC z");
-  dl->AddText(p0 + ImVec2(4, 18), IM_COL32(255, 200, 90, 255), "GL window depth = 1 − z");
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "B = %.3g", c.back);
-  dl->AddText(ImVec2(p0.x, p1.y + band - p1.y + 2), text, buf);
-  std::snprintf(buf, sizeof buf, "F = %.3g", c.front);
-  dl->AddText(ImVec2(p1.x - ImGui::CalcTextSize(buf).x, p1.y + band - p1.y + 2), text, buf);
-  dl->AddText(ImVec2(origin.x, p0.y), text, "1");
-  dl->AddText(ImVec2(origin.x, p1.y - 14), text, "0");
-  ImGui::Dummy(ImVec2(width, height + float(s.run.objects.size()) * 5 + 8));
+  dl->AddText(ImVec2(origin.x, p0.y - line * 0.5f), text, "1");
+  dl->AddText(ImVec2(origin.x, p1.y - line * 0.5f), text, "0");
+  ImGui::Dummy(ImVec2(width, height + 2));
   recordRect(s, "depth.plot");
-  ImGui::TextDisabled("VRC z (the eye is at z = VPD = %.3g, beyond F)", f.vpd);
-  if (ImGui::BeginTable("resolution", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-    ImGui::TableSetupColumn("depth buffer");
-    ImGui::TableSetupColumn("at F");
-    ImGui::TableSetupColumn("half way");
-    ImGui::TableSetupColumn("at B");
-    ImGui::TableHeadersRow();
-    for (int bits : {16, 24}) {
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      ImGui::Text("%d bit: smallest VRC step", bits);
-      for (double z : {c.front, (c.front + c.back) / 2, c.back}) {
-        ImGui::TableNextColumn();
-        ImGui::Text("%.3g", depthResolution(c, f, z, bits));
-      }
+  // The axis: B at the left, F at the right.
+  const std::string b = "B = " + num(c.back), fr = "F = " + num(c.front);
+  ImGui::SetCursorScreenPos(ImVec2(p0.x, ImGui::GetCursorScreenPos().y));
+  ImGui::TextUnformatted(b.c_str());
+  ImGui::SameLine(0, 0);
+  ImGui::SetCursorScreenPos(ImVec2(std::max(ImGui::GetCursorScreenPos().x + line, p1.x - ImGui::CalcTextSize(fr.c_str()).x),
+                                   ImGui::GetCursorScreenPos().y));
+  ImGui::TextUnformatted(fr.c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("VRC z (the eye is at z = VPD = %s, beyond F)", num(f.vpd).c_str());
+  ImGui::PopStyleColor();
+  // The objects' depth ranges (VRC z of their vertices), one named bar each along the same axis.
+  for (const ObjectRun& o : s.run.objects) {
+    if (o.vertexCount() == 0) continue;
+    double lo = 1e300, hi = -1e300;
+    for (uint32_t v = 0; v < o.vertexCount(); ++v) {
+      const double z = o.vrc(v).z;
+      lo = std::min(lo, z);
+      hi = std::max(hi, z);
     }
-    ImGui::EndTable();
+    const double shownLo = std::clamp(lo, c.back, c.front), shownHi = std::clamp(hi, c.back, c.front);
+    const ImVec2 row = ImGui::GetCursorScreenPos();
+    const float x0 = at(shownLo, 0).x, x1 = std::max(at(shownHi, 0).x, x0 + 2);
+    const ImU32 col = ImGui::ColorConvertFloat4ToU32(ImVec4(float(o.color.r), float(o.color.g), float(o.color.b), 0.9f));
+    dl->AddRectFilled(ImVec2(x0, row.y + line * 0.25f), ImVec2(x1, row.y + line * 0.75f), col);
+    // The name beside the bar, on whichever side has room.
+    const float nameWidth = ImGui::CalcTextSize(o.name.c_str()).x;
+    const float nameX = x1 + 6 + nameWidth <= p1.x ? x1 + 6 : std::max(origin.x, x0 - 6 - nameWidth);
+    dl->AddText(ImVec2(nameX, row.y), text, o.name.c_str());
+    ImGui::Dummy(ImVec2(width, line));
+    recordRect(s, ("depth.bar." + o.name).c_str());
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("%s: VRC z from %s to %s", o.name.c_str(), num(lo).c_str(), num(hi).c_str());
+  }
+  // The smallest VRC step a depth buffer resolves, as sentences (they wrap; a table would not fit
+  // a narrow inspector at a large UI scale).
+  ImGui::TextWrapped("Smallest VRC step a depth buffer resolves:");
+  for (int bits : {16, 24}) {
+    ImGui::Bullet();
+    ImGui::TextWrapped("%d bit: %s at F, %s half way, %s at B", bits,
+                       num(depthResolution(c, f, c.front, bits), 0, 3).c_str(),
+                       num(depthResolution(c, f, (c.front + c.back) / 2, bits), 0, 3).c_str(),
+                       num(depthResolution(c, f, c.back, bits), 0, 3).c_str());
   }
 }
 

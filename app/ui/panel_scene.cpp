@@ -59,7 +59,7 @@ void transformEditor(ViewerState& s, SceneObject& o) {
     dragVec3(s, "axis", "object.rotation.axis", r.axis, 0.01f);
     dragDouble(s, "deg", "object.rotation.deg", r.deg, 0.5f, 0, 0, "%.1f");
     bool through = r.through.has_value();
-    if (ImGui::Checkbox("axis through a point", &through)) r.through = through ? std::optional<Vec3>(t.translate) : std::nullopt;
+    if (checkbox("axis through a point", &through)) r.through = through ? std::optional<Vec3>(t.translate) : std::nullopt;
     tooltip("Rotate about the line through this point (seed 13.3: translate, rotate, translate back).",
             "Drehung um eine Achse durch einen Punkt (13.3).");
     if (r.through) dragVec3(s, "through", "object.rotation.through", *r.through);
@@ -74,14 +74,17 @@ void transformEditor(ViewerState& s, SceneObject& o) {
 }
 
 void objectEditor(ViewerState& s, SceneObject& o) {
+  fitLabel("name");
   ImGui::InputText("name", &o.name);
-  ImGui::Checkbox("visible", &o.visible);
+  checkbox("visible", &o.visible);
   ImGui::SameLine();
   glm::vec3 color(o.color);  // ColorEdit3 edits floats; the scene's colours are doubles
+  fitLabel("colour");
   if (ImGui::ColorEdit3("colour", &color.x, ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_Float))
     o.color = Vec3(color);
   if (o.shape == Shape::cylinder || o.shape == Shape::sphere) {
     int n = o.segments;
+    fitLabel("segments");
     if (ImGui::SliderInt("segments", &n, o.shape == Shape::sphere ? 4 : 3, 128)) {
       if (o.shape == Shape::sphere) n += n % 2;
       SceneObject rebuilt = o;
@@ -101,7 +104,7 @@ void clipPlanesEditor(ViewerState& s) {
   for (size_t i = 0; i < planes.size(); ++i) {
     ImGui::PushID(int(i) + 1000);
     UserClipPlane& p = planes[i];
-    ImGui::Checkbox("##on", &p.enabled);
+    checkbox("##on", &p.enabled);
     ImGui::SameLine();
     ImGui::Text("plane %zu", i + 1);
     ImGui::SameLine();
@@ -136,15 +139,15 @@ void scenePanel(ViewerState& s, FileDialog& dialog) {
     ImGui::EndListBox();
   }
   if (ImGui::Button("+ cube")) addObject(s, Shape::cube);
-  ImGui::SameLine();
+  sameLineIfFits("+ tetrahedron");
   if (ImGui::Button("+ tetrahedron")) addObject(s, Shape::tetrahedron);
-  ImGui::SameLine();
+  sameLineIfFits("+ cylinder");
   if (ImGui::Button("+ cylinder")) addObject(s, Shape::cylinder);
   if (ImGui::Button("+ sphere")) addObject(s, Shape::sphere);
-  ImGui::SameLine();
+  sameLineIfFits("+ polygon");
   if (ImGui::Button("+ polygon")) addObject(s, Shape::polygon);
-  ImGui::SameLine();
-  if (ImGui::Button("+ OBJ mesh…"))
+  sameLineIfFits("+ OBJ mesh file");
+  if (ImGui::Button("+ OBJ mesh file"))
     dialog.open("Load an OBJ mesh", FileDialog::Mode::open, {".obj"}, scene.path.parent_path(),
                 [&s](const std::filesystem::path& file) {
                   // Relative to the scene file where there is one, as the scene format expects.

@@ -151,7 +151,21 @@ std::optional<std::pair<size_t, size_t>> pickFace(const PipelineRun& run, Vec2 d
   return best;
 }
 
-void dragHandle(Camera& camera, const PipelineRun& run, Handle h, const ViewCamera& observer, int height, Vec2 deltaPx) {
+void keepWindowAspect(ViewWindow& w, double aspect, bool xChanged) {
+  if (!(w.width() > 0 && w.height() > 0 && aspect > 0)) return;
+  if (xChanged) {
+    const double cy = (w.ymin + w.ymax) / 2, half = w.width() / aspect / 2;
+    w.ymin = cy - half;
+    w.ymax = cy + half;
+  } else {
+    const double cx = (w.xmin + w.xmax) / 2, half = w.height() * aspect / 2;
+    w.xmin = cx - half;
+    w.xmax = cx + half;
+  }
+}
+
+void dragHandle(Camera& camera, const PipelineRun& run, Handle h, const ViewCamera& observer, int height, Vec2 deltaPx,
+                std::optional<double> aspect) {
   const Vec3 at = handlePosition(run, h);
   const double scale = wcPerPixel(observer, at, height);
   const Mat4 wcFromObserver = glm::inverse(observer.vrcFromWc);
@@ -169,6 +183,9 @@ void dragHandle(Camera& camera, const PipelineRun& run, Handle h, const ViewCame
     case Handle::back: camera.back += glm::dot(motion, f.n); break;
     case Handle::none: break;
   }
+  const bool x = h == Handle::windowLeft || h == Handle::windowRight;
+  const bool y = h == Handle::windowBottom || h == Handle::windowTop;
+  if (aspect && (x || y)) keepWindowAspect(camera.window, *aspect, x);
 }
 
 }  // namespace vplab

@@ -33,7 +33,13 @@ std::optional<std::pair<size_t, size_t>> pickFace(const PipelineRun& run, Vec2 d
 
 /// Moves a handle by a mouse motion of (dx, dy) pixels in the world view, changing the camera:
 /// VRP and PRP move parallel to the observer's view plane; window edges along U or V; the front
-/// and back planes along N.
-void dragHandle(Camera& camera, const PipelineRun& run, Handle h, const ViewCamera& observer, int height, Vec2 deltaPx);
+/// and back planes along N. With `aspect` (the device's W : H, "keep the aspect ratio"), a dragged
+/// window edge takes the other axis along, as the panel's fields do (keepWindowAspect).
+void dragHandle(Camera& camera, const PipelineRun& run, Handle h, const ViewCamera& observer, int height, Vec2 deltaPx,
+                std::optional<double> aspect = std::nullopt);
+
+/// Gives the window the aspect ratio width : height = `aspect`: after x changed, the y extent
+/// follows about its centre, else the x extent. Nothing changes for an empty or inverted window.
+void keepWindowAspect(ViewWindow& w, double aspect, bool xChanged);
 
 }  // namespace vplab

@@ -16,6 +16,8 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include <functional>
+
 namespace vplab {
 
 // ---------------------------------------------------------------- 1 helpers
@@ -36,6 +38,21 @@ bool viewImage(const char* id, GLuint texture, ImVec2 size) {
                              ImGuiButtonFlags_MouseButtonMiddle);
   ImGui::GetWindowDrawList()->AddImage(textureId(texture), at, at + size, ImVec2(0, 1), ImVec2(1, 0));
   return ImGui::IsItemHovered();
+}
+
+// A caption in the top-left corner of an image `width` wide, on a dark background: the longest of
+// `texts` that fits.
+void caption(ImVec2 at, float width, ImU32 color, std::initializer_list<const char*> texts) {
+  const char* text = *(texts.end() - 1);
+  for (const char* t : texts)
+    if (ImGui::CalcTextSize(t).x + 12 <= width) {
+      text = t;
+      break;
+    }
+  const ImVec2 size = ImGui::CalcTextSize(text);
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->AddRectFilled(at + ImVec2(2, 2), at + ImVec2(10, 6) + size, IM_COL32(0, 0, 0, 170), 3.f);
+  dl->AddText(at + ImVec2(6, 4), color, text);
 }
 
 Vec2 mouseIn(ImVec2 itemMin, ImVec2 scale) {
@@ -202,8 +219,10 @@ void Viewer::cameraWindowContents() {
   const GLuint texture = drawView(ViewKind::camera, size);
   if (demo) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
-    ImGui::Image(textureId(divideFirstTexture()), size);
-    ImGui::GetWindowDrawList()->AddText(at + ImVec2(6, 4), IM_COL32(255, 120, 110, 255), "divide first, then clip (wrong)");
+    // Uploaded bottom row first, like the views' textures: flipped the same way.
+    ImGui::Image(textureId(divideFirstTexture()), size, ImVec2(0, 1), ImVec2(1, 0));
+    ui::recordRect(s_, "view.divideFirst");
+    caption(at, size.x, IM_COL32(255, 120, 110, 255), {"divide first, then clip (wrong)", "divide first (wrong)", "wrong"});
     ImGui::SameLine();
   } else {
     ImGui::SetCursorPos(ImGui::GetCursorPos() + (avail - size) * 0.5f);
@@ -212,7 +231,7 @@ void Viewer::cameraWindowContents() {
   const bool hovered = viewImage("camera", texture, size);
   ui::recordRect(s_, "view.camera");
   if (demo) {
-    ImGui::GetWindowDrawList()->AddText(at + ImVec2(6, 4), IM_COL32(140, 230, 140, 255), "clip, then divide (right)");
+    caption(at, size.x, IM_COL32(140, 230, 140, 255), {"clip, then divide (right)", "clip first (right)", "right"});
     ui::errorText("Dividing by w first flips x/w and y/w of every point behind the eye (w < 0), so an edge that "
                   "reaches behind the eye wraps around through infinity. Clipping at z ≤ w first cuts it before w "
                   "reaches 0 (seeds 002, 003).");
@@ -224,6 +243,7 @@ void Viewer::cameraWindowContents() {
     const Vec2 dc = mouse * Vec2(device.width / size.x, device.height / size.y);
     if (const auto face = pickFace(s_.run, dc)) {
       s_.stepThrough = {true, int(face->first), int(face->second), 0};
+      s_.showStepThrough = true;  // the Lecture tab's step-through comes forward
     }
     return;
   }
@@ -290,13 +310,33 @@ void Viewer::lectureWindow() {
       if (kind == ViewKind::morph) morphInteraction(hovered);
     }
     const Scene& scene = s_.doc.scene();
-    ImGui::SetCursorPos(ImVec2(14, 10));
-    ImGui::PushTextWrapPos(size.x * 0.6f);
-    if (!scene.title.empty()) ImGui::TextColored(ImVec4(1.f, 0.86f, 0.45f, 1.f), "%s", scene.title.c_str());
-    if (!scene.caption.empty()) ImGui::TextWrapped("%s", scene.caption.c_str());
-    ImGui::PopTextWrapPos();
-    ImGui::SetCursorPos(ImVec2(14, size.y - ImGui::GetTextLineHeightWithSpacing() - 6));
-    ImGui::TextDisabled("lecture mode — F11 or Esc returns to the panels");
+    // The title and caption on a dark panel (drawn behind them afterwards, in a lower channel), so
+    // they read over any scene.
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const float pad = 8 * uiScale_;
+    auto panelBehind = [&](const std::function<void()>& text) {
+      dl->ChannelsSplit(2);
+      dl->ChannelsSetCurrent(1);
+      ImGui::BeginGroup();
+      text();
+      ImGui::EndGroup();
+      dl->ChannelsSetCurrent(0);
+      dl->AddRectFilled(ImGui::GetItemRectMin() - ImVec2(pad, pad * 0.6f), ImGui::GetItemRectMax() + ImVec2(pad, pad * 0.6f),
+                        IM_COL32(10, 11, 15, 200), 4.f * uiScale_);
+      dl->ChannelsMerge();
+      ui::recordRect(s_, "lecture.caption");
+    };
+    if (!scene.title.empty() || !scene.caption.empty()) {
+      ImGui::SetCursorPos(ImVec2(14, 10) * uiScale_);
+      panelBehind([&] {
+        ImGui::PushTextWrapPos(size.x * 0.6f);
+        if (!scene.title.empty()) ImGui::TextColored(ImVec4(1.f, 0.86f, 0.45f, 1.f), "%s", scene.title.c_str());
+        if (!scene.caption.empty()) ImGui::TextWrapped("%s", scene.caption.c_str());
+        ImGui::PopTextWrapPos();
+      });
+    }
+    ImGui::SetCursorPos(ImVec2(14 * uiScale_, size.y - ImGui::GetTextLineHeightWithSpacing() - 6 * uiScale_));
+    panelBehind([] { ImGui::TextDisabled("lecture mode — F11 or Esc returns to the panels"); });
   }
   ImGui::End();
   ImGui::PopStyleVar(2);
@@ -337,7 +377,9 @@ void Viewer::worldInteraction(bool hovered, const ViewCamera& observer, int w, i
     s_.drag = {Drag::Kind::handle, ViewKind::world, s_.hovered};
   if (s_.drag.kind == Drag::Kind::handle) {
     const ImVec2 d = ImGui::GetIO().MouseDelta;
-    if (d.x != 0 || d.y != 0) dragHandle(s_.doc.scene().camera, s_.run, s_.drag.handle, observer, h, Vec2(d.x, d.y));
+    if (d.x != 0 || d.y != 0)
+      dragHandle(s_.doc.scene().camera, s_.run, s_.drag.handle, observer, h, Vec2(d.x, d.y),
+                 s_.keepAspect ? std::optional(s_.doc.scene().device.aspect()) : std::nullopt);
     return;
   }
   orbitInteraction(hovered, ViewKind::world, s_.frame.world.orbit, observer, w, h, mouse);

@@ -253,29 +253,24 @@ void Viewer::controlsWindow() {
     if (!scene.caption.empty()) ImGui::TextWrapped("%s", scene.caption.c_str());
     ImGui::Spacing();
   }
-  if (ImGui::BeginTabBar("panels")) {
-    if (ImGui::BeginTabItem("Camera")) {
-      ui::cameraPanel(s_);
-      ImGui::EndTabItem();
+  // The tabs stay in place while their panel scrolls; the status line stays below.
+  if (s_.showStepThrough) s_.controlsTab = ViewerState::lectureTab;
+  ui::tabRow(s_, "controls", {"Camera", "Scene", "Clipping", "Display", "Lecture"}, s_.controlsTab);
+  const float wrap = ImGui::GetContentRegionAvail().x;
+  float footer = 0;
+  for (const std::string* text : {&s_.status, &s_.runError})
+    if (!text->empty())
+      footer += ImGui::CalcTextSize(text->c_str(), nullptr, false, wrap).y + ImGui::GetStyle().ItemSpacing.y * 2 + 1;
+  if (ImGui::BeginChild("panel", ImVec2(0, -footer))) {
+    switch (s_.controlsTab) {
+      case ViewerState::cameraTab: ui::cameraPanel(s_); break;
+      case ViewerState::sceneTab: ui::scenePanel(s_, dialog_); break;
+      case ViewerState::clippingTab: ui::clippingPanel(s_); break;
+      case ViewerState::displayTab: ui::displayPanel(s_); break;
+      default: ui::lecturePanel(s_); break;
     }
-    if (ImGui::BeginTabItem("Scene")) {
-      ui::scenePanel(s_, dialog_);
-      ImGui::EndTabItem();
-    }
-    if (ImGui::BeginTabItem("Clipping")) {
-      ui::clippingPanel(s_);
-      ImGui::EndTabItem();
-    }
-    if (ImGui::BeginTabItem("Display")) {
-      ui::displayPanel(s_);
-      ImGui::EndTabItem();
-    }
-    if (ImGui::BeginTabItem("Lecture")) {
-      ui::lecturePanel(s_);
-      ImGui::EndTabItem();
-    }
-    ImGui::EndTabBar();
   }
+  ImGui::EndChild();
   if (!s_.status.empty()) {
     ImGui::Separator();
     if (s_.statusIsError) ui::errorText(s_.status);
@@ -289,33 +284,36 @@ void Viewer::inspectWindow() {
   const ui::Layout l = ui::computeLayout(ImGui::GetIO().DisplaySize, ImGui::GetFrameHeight(), uiScale_);
   ui::placeNext(l.inspect, relayout_);
   ImGui::Begin("Inspect", nullptr, ImGuiWindowFlags_NoCollapse);
-  if (ImGui::BeginTabBar("inspect")) {
-    if (ImGui::BeginTabItem("Vertex probe")) {
-      ui::probePanel(s_);
-      ImGui::EndTabItem();
+  // A new probe (a vertex clicked in a view) brings the probe forward; the tabs stay in place while
+  // the panel scrolls.
+  if (s_.probe && s_.probe != s_.probeShown) s_.inspectTab = ViewerState::probeTab;
+  s_.probeShown = s_.probe;
+  ui::tabRow(s_, "inspect", {"Vertex probe", "Matrices", "Depth"}, s_.inspectTab);
+  if (ImGui::BeginChild("panel")) {
+    switch (s_.inspectTab) {
+      case ViewerState::probeTab: ui::probePanel(s_); break;
+      case ViewerState::matricesTab: ui::matricesPanel(s_); break;
+      default: ui::depthPanel(s_); break;
     }
-    if (ImGui::BeginTabItem("Matrices")) {
-      ui::matricesPanel(s_);
-      ImGui::EndTabItem();
-    }
-    if (ImGui::BeginTabItem("Depth")) {
-      ui::depthPanel(s_);
-      ImGui::EndTabItem();
-    }
-    ImGui::EndTabBar();
   }
+  ImGui::EndChild();
   ImGui::End();
 }
 
 void Viewer::helpWindow() {
   if (!s_.showHelp) return;
-  ImGui::SetNextWindowSize(ImVec2(520, 480) * uiScale_, ImGuiCond_FirstUseEver);
+  // Fits the display at any UI scale; the text wraps inside.
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowSize(ImMin(ImVec2(560, 520) * uiScale_, display * 0.9f), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowPos(ImGui::GetIO().DisplaySize * 0.5f, ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
   if (ImGui::Begin("Help (F1)", &s_.showHelp)) {
     ImGui::TextUnformatted("Mouse");
-    ImGui::BulletText("world and NPC views: left-drag orbits, right- or middle-drag pans, the wheel zooms");
-    ImGui::BulletText("world view: drag the handles (VRP, PRP, the window's edges, front and back planes)");
-    ImGui::BulletText("any view: click a vertex to probe it through the pipeline");
+    for (const char* line : {"world and NPC views: left-drag orbits, right- or middle-drag pans, the wheel zooms",
+                             "world view: drag the handles (VRP, PRP, the window's edges, front and back planes)",
+                             "any view: click a vertex to probe it through the pipeline"}) {
+      ImGui::Bullet();
+      ImGui::TextWrapped("%s", line);
+    }
     ImGui::Spacing();
     ImGui::TextUnformatted("Keys");
     const char* keys[][2] = {{"Ctrl+Z", "undo"},
@@ -324,7 +322,7 @@ void Viewer::helpWindow() {
                              {"Ctrl+O", "open a scene"},
                              {"Ctrl+S / Ctrl+Shift+S", "save (a bundled scene: as a copy) / save as"},
                              {"Ctrl+Q", "quit (asks when the scene has unsaved changes)"},
-                             {"1 … 5", "style of every view: flat, shaded, wire, hidden-line, hidden removed"},
+                             {"1 to 5", "style of every view: flat, shaded, wire, hidden-line, hidden removed"},
                              {"P", "next projection: perspective, parallel, oblique"},
                              {"C", "next clipping strategy: NPC, WC, divide first (wrong)"},
                              {"B", "bounding-box test on or off"},
@@ -340,7 +338,7 @@ void Viewer::helpWindow() {
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(k[0]);
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(k[1]);
+        ImGui::TextWrapped("%s", k[1]);
       }
       ImGui::EndTable();
     }

@@ -9,6 +9,7 @@
 
 #include <imgui.h>
 
+#include <array>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -76,6 +77,22 @@ struct ViewerState {
   // The window draws only on input (run_viewer.cpp): a panel showing something timed (a fading
   // notice) keeps frames coming until this ImGui time (ImGui::GetTime()).
   double animateUntil = 0;
+  struct Typing {
+    ImGuiID id = 0;             // the drag field whose text is being typed (0: none)
+    ImGuiID field = 0;          // which of its components
+    std::array<double, 4> values{};  // its values so far, applied when it loses focus
+  } typing;
+  struct Copied {
+    std::string id;             // the copy button that copied last
+    double at = 0;              // when (ImGui time, s)
+  } copied;
+  std::optional<Probe> probeShown;  // the probe the inspector showed last frame (a new one brings its tab forward)
+  enum ControlsTab { cameraTab, sceneTab, clippingTab, displayTab, lectureTab };
+  enum InspectTab { probeTab, matricesTab, depthTab };
+  int controlsTab = cameraTab;
+  int inspectTab = probeTab;
+  bool showStepThrough = false; // bring the Lecture tab's step-through forward (Shift+click in the camera view)
+
   std::string status;           // the last message (saved, loaded, an error)
   bool statusIsError = false;
 

@@ -1,6 +1,13 @@
 #include "app/ui/widgets.h"
 
+#include "app/number_text.h"
+
+#include <imgui_internal.h>
+
+#include <algorithm>
+#include <array>
 #include <cstdio>
+#include <functional>
 
 namespace vplab::ui {
 
@@ -9,8 +16,63 @@ void recordRect(ViewerState& s, const char* id) {
   s.rects[id] = ImVec4(a.x, a.y, b.x - a.x, b.y - a.y);
 }
 
+namespace {
+
+// ImGui's drag fields become text fields on Ctrl+click or double-click, and then write the value
+// parsed from the text at every keystroke: typing "10" would apply F = 1 first (another camera, maybe
+// an invalid one, and an undo step). The field works on a copy instead; while its text is being
+// typed, the copy is kept in s.typing and applied once, when the field loses focus (Enter, Tab or a
+// click elsewhere); Esc drops it. Dragging writes through at once, as before.
+template <int N>
+bool editInPlace(ViewerState& s, double* value, const std::function<bool(double*)>& widget) {
+  std::array<double, N> copy;
+  std::copy_n(value, N, copy.begin());
+  const ImGuiID group = ImGui::GetID("##typing");  // this field's identity (within the panel's ID stack)
+  if (s.typing.id == group) std::copy_n(s.typing.values.begin(), N, copy.begin());
+  ImGui::BeginGroup();
+  const bool changed = widget(copy.data());
+  ImGui::EndGroup();
+  const ImGuiContext& g = *ImGui::GetCurrentContext();
+  const bool typing = ImGui::IsItemActive() && g.TempInputId != 0 && g.TempInputId == g.ActiveId;
+  if (typing) {
+    // Ctrl+click from one component's text straight into another's: the first is finished.
+    const bool otherField = s.typing.id == group && s.typing.field != g.ActiveId;
+    if (changed || s.typing.id != group || otherField) {
+      s.typing.id = group;
+      s.typing.field = g.ActiveId;
+      std::copy_n(copy.begin(), N, s.typing.values.begin());
+    }
+    if (!otherField) return false;
+    const bool differs = !std::equal(copy.begin(), copy.end(), value);
+    std::copy_n(copy.begin(), N, value);
+    return differs;
+  }
+  if (s.typing.id == group) {  // the text field closed: commit, unless Esc cancelled it
+    s.typing.id = 0;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) return false;
+    const bool differs = !std::equal(copy.begin(), copy.end(), value);
+    std::copy_n(copy.begin(), N, value);
+    return differs;
+  }
+  if (changed) std::copy_n(copy.begin(), N, value);
+  return changed;
+}
+
+}  // namespace
+
+void fitLabel(const char* label) {
+  const float labelWidth = ImGui::CalcTextSize(label, nullptr, true).x;
+  const float spacing = labelWidth > 0 ? ImGui::GetStyle().ItemInnerSpacing.x : 0.f;
+  ImGui::SetNextItemWidth(std::max(ImGui::GetFontSize() * 4, ImGui::GetContentRegionAvail().x - labelWidth - spacing));
+}
+
 bool dragVec3(ViewerState& s, const char* label, const char* id, Vec3& v, float speed) {
-  const bool changed = ImGui::DragScalarN(label, ImGuiDataType_Double, &v.x, 3, speed, nullptr, nullptr, "%.3f");
+  fitLabel(label);
+  ImGui::PushID(id);
+  const bool changed = editInPlace<3>(s, &v.x, [&](double* p) {
+    return ImGui::DragScalarN(label, ImGuiDataType_Double, p, 3, speed, nullptr, nullptr, "%.3f");
+  });
+  ImGui::PopID();
   recordRect(s, id);
   return changed;
 }
@@ -18,10 +80,108 @@ bool dragVec3(ViewerState& s, const char* label, const char* id, Vec3& v, float 
 bool dragDouble(ViewerState& s, const char* label, const char* id, double& v, float speed, double min, double max,
                 const char* format) {
   const bool bounded = min < max;
-  const bool changed = ImGui::DragScalar(label, ImGuiDataType_Double, &v, speed, bounded ? &min : nullptr,
-                                         bounded ? &max : nullptr, format);
+  fitLabel(label);
+  ImGui::PushID(id);
+  const bool changed = editInPlace<1>(s, &v, [&](double* p) {
+    return ImGui::DragScalar(label, ImGuiDataType_Double, p, speed, bounded ? &min : nullptr, bounded ? &max : nullptr,
+                             format);
+  });
+  ImGui::PopID();
   recordRect(s, id);
   return changed;
+}
+
+void tabRow(ViewerState& s, const char* id, std::initializer_list<const char*> names, int& current) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  ImGui::PushID(id);
+  ImGui::PushStyleVar(ImGuiStyleVar_FrameRounding, style.TabRounding);
+  ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(style.ItemInnerSpacing.x, style.ItemInnerSpacing.x));
+  float x = 0;
+  int i = 0;
+  for (const char* name : names) {
+    const float w = ImGui::CalcTextSize(name).x + style.FramePadding.x * 2;
+    if (i > 0 && x + style.ItemInnerSpacing.x + w <= ImGui::GetContentRegionAvail().x) {
+      ImGui::SameLine();
+      x += style.ItemInnerSpacing.x;
+    } else {
+      x = 0;
+    }
+    const bool selected = i == current;
+    ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(selected ? ImGuiCol_TabActive : ImGuiCol_Tab));
+    ImGui::PushStyleColor(ImGuiCol_ButtonHovered, ImGui::GetStyleColorVec4(ImGuiCol_TabHovered));
+    ImGui::PushStyleColor(ImGuiCol_ButtonActive, ImGui::GetStyleColorVec4(ImGuiCol_TabActive));
+    if (ImGui::Button(name)) current = i;
+    ImGui::PopStyleColor(3);
+    recordRect(s, (std::string("tab.") + id + "." + name).c_str());
+    x += w;
+    ++i;
+  }
+  ImGui::PopStyleVar(2);
+  ImGui::PopID();
+  ImGui::Separator();
+}
+
+namespace {
+
+// The label of a checkbox or radio button after it, wrapped at the window's edge (ImGui's own
+// label is one line, cut off in a narrow panel at a large UI scale); hovering it is hovering the box.
+void wrappedLabel(const char* label) {
+  const char* end = ImGui::FindRenderedTextEnd(label);
+  if (end == label) return;
+  ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+  ImGui::PushTextWrapPos(0.f);
+  ImGui::TextUnformatted(label, end);
+  ImGui::PopTextWrapPos();
+}
+
+}  // namespace
+
+bool checkbox(const char* label, bool* v) {
+  ImGui::PushID(label);
+  bool changed = ImGui::Checkbox("##box", v);
+  const bool boxHovered = ImGui::IsItemHovered();
+  ImGui::PopID();
+  wrappedLabel(label);
+  if (ImGui::IsItemClicked()) {
+    *v = !*v;
+    changed = true;
+  }
+  if (boxHovered) ImGui::SetItemAllowOverlap();
+  return changed;
+}
+
+bool radio(const char* label, int* v, int value) {
+  ImGui::PushID(label);
+  bool changed = ImGui::RadioButton("##radio", v, value);
+  ImGui::PopID();
+  wrappedLabel(label);
+  if (ImGui::IsItemClicked() && *v != value) {
+    *v = value;
+    changed = true;
+  }
+  return changed;
+}
+
+void sameLineIfFits(const char* next, bool button) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float previousEnd = ImGui::GetItemRectMax().x;
+  const float width = ImGui::CalcTextSize(next, nullptr, true).x + (button ? style.FramePadding.x * 2 : 0.f);
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  if (previousEnd + style.ItemSpacing.x + width <= right) ImGui::SameLine();
+}
+
+bool selectTab(ViewerState& s, std::string_view name) {
+  static constexpr std::pair<std::string_view, int> kControls[] = {
+      {"camera", ViewerState::cameraTab},     {"scene", ViewerState::sceneTab},
+      {"clipping", ViewerState::clippingTab}, {"display", ViewerState::displayTab},
+      {"lecture", ViewerState::lectureTab}};
+  static constexpr std::pair<std::string_view, int> kInspect[] = {
+      {"probe", ViewerState::probeTab}, {"matrices", ViewerState::matricesTab}, {"depth", ViewerState::depthTab}};
+  for (const auto& [n, tab] : kControls)
+    if (n == name) return s.controlsTab = tab, true;
+  for (const auto& [n, tab] : kInspect)
+    if (n == name) return s.inspectTab = tab, true;
+  return false;
 }
 
 void tooltip(const char* english, const char* german) {
@@ -49,19 +209,41 @@ void errorText(const std::string& text) {
 void section(const char* title) {
   ImGui::Spacing();
   ImGui::Separator();
-  ImGui::TextDisabled("%s", title);
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", title);
+  ImGui::PopStyleColor();
 }
 
-std::string vecText(const Vec3& v) {
-  char buf[128];
-  std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g)", v.x, v.y, v.z);
-  return buf;
+std::string vecText(const Vec3& v) { return formatVector(v, 4); }
+
+std::string vecText(const Vec4& v) { return formatVector(v, 4); }
+
+std::string num(double v, double scale, int digits) { return formatNumber(v, {digits, scale}); }
+
+namespace {
+constexpr double kCopiedShownSeconds = 2.0;
 }
 
-std::string vecText(const Vec4& v) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g, %.4g)", v.x, v.y, v.z, v.w);
-  return buf;
+bool copyButton(ViewerState& s, const char* label, const char* id, const std::string& text) {
+  const bool pressed = ImGui::SmallButton(label);
+  recordRect(s, id);
+  if (pressed) {
+    ImGui::SetClipboardText(text.c_str());
+    s.copied = {id, ImGui::GetTime()};
+    // The window draws only on input: keep frames coming until the notice has gone again.
+    s.animateUntil = std::max(s.animateUntil, s.copied.at + kCopiedShownSeconds + 0.05);
+  }
+  return pressed;
+}
+
+void copiedNotice(ViewerState& s, const char* id) {
+  if (s.copied.id != id) return;
+  if (ImGui::GetTime() - s.copied.at > kCopiedShownSeconds) {
+    s.copied = {};
+    return;
+  }
+  ImGui::SameLine();
+  ImGui::TextColored(ImVec4(0.55f, 0.9f, 0.5f, 1), "copied");
 }
 
 }  // namespace vplab::ui

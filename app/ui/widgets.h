@@ -6,6 +6,10 @@
 
 #include <imgui.h>
 
+#include <initializer_list>
+#include <string>
+#include <string_view>
+
 namespace vplab::ui {
 
 /// A drag field for a WC vector; records its rect as `id` in s.rects.
@@ -14,6 +18,22 @@ bool dragDouble(ViewerState& s, const char* label, const char* id, double& v, fl
                 double min = 0, double max = 0, const char* format = "%.3f");
 /// Remembers the last item's screen rect under `id`.
 void recordRect(ViewerState& s, const char* id);
+/// A row of tabs that wraps onto further lines when the window is narrow (a large UI scale) rather
+/// than shortening the names ("Cam…"); `current` is the selected tab's index. Records each tab's rect
+/// as "tab.ID.NAME".
+void tabRow(ViewerState& s, const char* id, std::initializer_list<const char*> names, int& current);
+/// ImGui's checkbox and radio button with the label wrapped at the window's edge (clicking the
+/// label toggles, as ImGui's does). The last item afterwards is the label (for tooltips).
+bool checkbox(const char* label, bool* v);
+bool radio(const char* label, int* v, int value);
+/// SameLine() when a button labelled `next` (or, with button = false, the text `next`) still fits
+/// on the line, else the next line.
+void sameLineIfFits(const char* next, bool button = true);
+/// Shows a tab by its lower-case name: camera, scene, clipping, display, lecture (the controls) or
+/// probe, matrices, depth (the inspector). False for another name.
+bool selectTab(ViewerState& s, std::string_view name);
+/// Makes the next widget narrow enough for its label (after "##", nothing) to fit beside it.
+void fitLabel(const char* label);
 /// A tooltip on the last item: the English explanation, then the German one of the lecture notes.
 void tooltip(const char* english, const char* german);
 /// A (?) marker with a tooltip.
@@ -21,7 +41,14 @@ void help(const char* english, const char* german);
 void errorText(const std::string& text);
 /// A separator with a small heading.
 void section(const char* title);
-/// "(0.1235, -2, 3.5)".
+/// A number of a panel with formatNumber (app/number_text.h): `digits` significant digits, noise
+/// relative to `scale` (the numbers shown with it) printed as 0.
+std::string num(double v, double scale = 0, int digits = 4);
+/// A small button that copies `text` to the clipboard; remembers the copy for copiedNotice.
+bool copyButton(ViewerState& s, const char* label, const char* id, const std::string& text);
+/// "copied" beside the button `id` for two seconds after it copied.
+void copiedNotice(ViewerState& s, const char* id);
+/// "(0.1235, -2, 3.5)", through formatVector.
 std::string vecText(const Vec3& v);
 std::string vecText(const Vec4& v);
 

@@ -1,5 +1,6 @@
 // The camera view: what the synthetic camera sees, through the GLSL path with the CPU pipeline's
 // matrices (domain.md). At the device's W × H it is pixel-aligned with DC: glViewport(0, 0, W, H).
+#include "app/number_text.h"
 #include "app/views/theme.h"
 #include "app/views/view_renderer.h"
 
@@ -52,7 +53,8 @@ void addVanishingPoints(const PipelineRun& run, int sceneIndex, OverlayBatch& b,
     const Vec2 at = vp.dc * toPixels;
     const bool inside = at.x >= 0 && at.y >= 0 && at.x <= width && at.y <= height;
     char text[96];
-    std::snprintf(text, sizeof text, "VP %s (%.0f, %.0f)%s", names[axis], vp.dc.x, vp.dc.y, inside ? "" : " outside");
+    std::snprintf(text, sizeof text, "VP %s (%s, %s)%s", names[axis], formatNumber(std::round(vp.dc.x), {10}).c_str(),
+                  formatNumber(std::round(vp.dc.y), {10}).c_str(), inside ? "" : " outside");
     labels.push_back({glm::clamp(at, Vec2(4), Vec2(width - 4, height - 4)) + Vec2(8, -8), text, colors[axis],
                       TextSize::label, Anchor::left});
   }

@@ -129,7 +129,13 @@ void ViewRenderer::drawNpc(const Scene& /*scene*/, const PipelineRun& run, const
   OverlayBatch cube;
   std::vector<TextLabel> labels;
   if (ov.cube) addCube(cube, labels, view, w, h, ov.labels);
+  // The translucent front face lies in z = 1, where clipping puts the scene's cut polygons and
+  // edges: pushed back by glPolygonOffset it loses every depth tie to them instead of z-fighting
+  // (the cube's lines are not offset: GL_POLYGON_OFFSET_FILL acts on filled triangles only).
+  gl_.Enable(GL_POLYGON_OFFSET_FILL);
+  gl_.PolygonOffset(1.f, 2.f);
   overlay_.draw(cube, view, w, h, OverlayDepth::test);
+  gl_.Disable(GL_POLYGON_OFFSET_FILL);
   if (s.highlights.probeNpc) newEdges.point(*s.highlights.probeNpc, theme::kProbe, 14.f);
   if (const auto& step = s.highlights.step) {
     // The clipping step-through: the plane being applied as a face of the cube, the polygon after

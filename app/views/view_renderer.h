@@ -49,6 +49,8 @@ class ViewRenderer {
     const VolumePart& p = volumeParts_[i];
     return {size_t(p.count[kInsideFaces] + p.count[kInsidePass]) / 3, size_t(p.count[kOutsidePass]) / 3};
   }
+  /// Where the last view drawn put its labels (x0, y0, x1, y1, pixels), for the tests.
+  const std::vector<glm::vec4>& labelsPlaced() const { return text_->placed(); }
   /// Larger text, lines and points for a projector (lecture mode).
   void setScale(float scale);
 

@@ -101,7 +101,10 @@ void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const F
   auto label = [&](const Vec3& p, const std::string& text, const glm::vec4& color, Vec2 offset = {8, 0}) {
     if (!ov.labels) return;
     const Projected q = projectToPixels(view, p, w, h);
-    if (q.visible) labels.push_back({q.pixel + offset, text, color, TextSize::label, Anchor::left});
+    // The offset from the point grows with the text (and the markers) at a large UI scale.
+    if (q.visible)
+      labels.push_back({q.pixel + offset * double(text_->scale()), text, color, TextSize::label, Anchor::left, true, true,
+                        q.pixel});
   };
 
   if (ov.newEdges) {
