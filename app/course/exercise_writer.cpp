@@ -17,7 +17,7 @@ namespace {
 struct Block {
   enum Kind { title, heading, paragraph, math, figure, items } kind;
   std::string text;                 // math: LaTeX; figure: the file's stem; others: text with $…$ math
-  std::vector<std::string> list;    // items
+  std::vector<std::string> list{};  // items
 };
 using Document = std::vector<Block>;
 

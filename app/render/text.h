@@ -32,7 +32,7 @@ struct TextLabel {
   bool shadow = true;  // a dark outline keeps labels readable on any background
   bool avoid = true;   // moved near its place when it would overlap a label placed before it or a marker
   /// The point the label names (a drawn marker, pixels): no label may cover it.
-  std::optional<Vec2> marker;
+  std::optional<Vec2> marker{};
 };
 
 /// Where each label goes (its top-left corner, pixels): anchored, rounded, clamped to the width ×

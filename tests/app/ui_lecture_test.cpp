@@ -218,8 +218,9 @@ TEST(UiLecture, NoTextIsCutOffAtAnyScale) {
         }
         for (const std::string& p : more) problems.push_back(p);
       }
-      if (std::string(s.what) == "Depth")  // the plot at least ten lines high at every scale
+      if (std::string(s.what) == "Depth") {  // the plot at least ten lines high at every scale
         EXPECT_GE(v->state().rects.at("depth.plot").w, 10 * ImGui::GetTextLineHeight());
+      }
       char name[128];
       std::snprintf(name, sizeof name, "ui-%.1f-%s.png", scale, s.what);
       writePng(v->image(), test::outputDir() / name);
@@ -309,12 +310,14 @@ TEST(UiLecture, VanishingTextFollowsTheGeometryInEveryBundledScene) {
                   parallel)
             << t.axes[size_t(a)];
         points += t.axes[size_t(a)].find("meet at DC") != std::string::npos;
-        if (scene.camera.projection != Projection::perspective)
+        if (scene.camera.projection != Projection::perspective) {
           EXPECT_EQ(t.axes[size_t(a)].find("meet"), std::string::npos) << t.axes[size_t(a)];
+        }
       }
       const std::string stem = entry.path().stem().string();
-      if (stem.rfind("vanishing-", 0) == 0 && o.name == run.objects.front().name)
+      if (stem.rfind("vanishing-", 0) == 0 && o.name == run.objects.front().name) {
         EXPECT_EQ(points, stem.back() - '0') << t.headline;
+      }
     }
   }
   EXPECT_GE(scenes, 10);
