@@ -132,6 +132,14 @@ std::pair<int, int> parseSize(const std::string& s) {
 
 int runRender(const RenderOptions& r) {
   const Scene scene = sceneFrom(r.scene);
+  {
+    // Non-finite results are an error here as in the dump (coordinates so large that a product
+    // overflows), said before the views derive their observers from them.
+    PipelineOptions options;
+    options.strategy = *clipStrategyFromString(r.strategy);
+    if (auto e = nonFiniteError(runPipeline(scene, options)))
+      throw Error((r.scene.empty() ? std::string("the default scene") : r.scene) + ": " + *e);
+  }
   RenderRequest request;
   if (r.view != "ui") request.view = *viewKindFromString(r.view);
   request.style = *styleFromString(r.style);
