@@ -13,6 +13,7 @@ packages=(
   nlohmann-json3-dev libtinyobjloader-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth x11-utils fonts-dejavu-core
+  clang libfuzzer-14-dev libclang-rt-14-dev time  # sanitizer and fuzz stages of test.sh; time -v
 )
 
 missing=()
