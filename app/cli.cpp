@@ -9,21 +9,81 @@
 #include "app/ui/widgets.h"
 #include "pipeline/dump.h"
 #include "pipeline/error.h"
+#include "pipeline/limits.h"
 #include "pipeline/scene_io.h"
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 namespace vplab {
 
 namespace {
 
 Scene sceneFrom(const std::string& path) { return path.empty() ? defaultScene() : loadScene(path); }
+
+// ---------------------------------------------------------------- option checks
+
+/// A finite number from lo to hi (CLI11's Range lets NaN through: every comparison with it is false).
+CLI::Validator finiteIn(double lo, double hi) {
+  std::ostringstream range;
+  range << "a finite number from " << lo << " to " << hi;
+  return CLI::Validator(
+      [lo, hi, expected = range.str()](std::string& s) -> std::string {
+        double v = 0;
+        size_t used = 0;
+        try {
+          v = std::stod(s, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used == 0 || used != s.size() || !std::isfinite(v) || v < lo || v > hi)
+          return "\"" + s + "\" is not " + expected;
+        return {};
+      },
+      "FLOAT in [" + CLI::detail::to_string(lo) + " - " + CLI::detail::to_string(hi) + "]");
+}
+
+/// Output files by extension: what vplab can write, and nothing it would write in another format.
+CLI::Validator extensionIn(std::vector<std::string> extensions) {
+  std::string list;
+  for (const auto& e : extensions) list += (list.empty() ? "" : " or ") + e;
+  return CLI::Validator(
+      [extensions, list](std::string& s) -> std::string {
+        std::string ext = std::filesystem::path(s).extension().string();
+        for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+        for (const auto& e : extensions)
+          if (ext == e) return {};
+        return "\"" + s + "\": vplab writes only " + list + " files" +
+               (ext.empty() ? std::string(", and this name has no extension") : ", not " + ext);
+      },
+      list);
+}
+
+/// The picture `vplab render` makes must stay within the image limits (pipeline/limits.h), checked
+/// before any framebuffer is made. --view all puts three views side by side under a title strip.
+void checkImageSize(const std::string& view, int w, int h) {
+  const bool all = view == "all";
+  const int64_t width = all ? 3 * int64_t(w) + 12 : w, height = all ? int64_t(h) + 64 : h;  // 64: the titles, at most
+  const std::string what = all ? "--view all puts three " + std::to_string(w) + " × " + std::to_string(h) +
+                                     " views side by side: about " + std::to_string(width) + " × " +
+                                     std::to_string(height) + " pixels, which"
+                               : "the picture of " + std::to_string(w) + " × " + std::to_string(h) + " pixels";
+  if (width > kMaxImageSide || height > kMaxImageSide)
+    throw Error(what + " exceeds the limit of " + std::to_string(kMaxImageSide) + " pixels per side" +
+                (all ? "; each view may be at most " + std::to_string((kMaxImageSide - 12) / 3) + " × " +
+                           std::to_string(kMaxImageSide - 64)
+                     : std::string()));
+  if (width * height > kMaxImagePixels)
+    throw Error(what + " exceeds the limit of " + std::to_string(kMaxImagePixels) + " pixels in one picture");
+}
 
 struct DumpOptions {
   std::string scene;
@@ -37,7 +97,15 @@ int runDump(const DumpOptions& d) {
   options.strategy = *clipStrategyFromString(d.strategy);
   options.boundingBoxTest = d.boundingBox;
   const PipelineRun run = runPipeline(sceneFrom(d.scene), options);
-  std::cout << dumpJson(run, d.indent);
+  try {
+    // Streamed: the text of a large scene never exists in memory as a whole. A reader that goes
+    // away (`vplab dump | head`) is a write error, not a SIGPIPE.
+    std::signal(SIGPIPE, SIG_IGN);
+    std::ios::sync_with_stdio(false);
+    writeDump(std::cout, run, d.indent);
+  } catch (const Error& e) {
+    throw Error((d.scene.empty() ? std::string("the default scene") : d.scene) + ": " + e.what());
+  }
   return 0;
 }
 
@@ -67,14 +135,27 @@ std::pair<int, int> parseSize(const std::string& s) {
 
 int runRender(const RenderOptions& r) {
   const Scene scene = sceneFrom(r.scene);
+  {
+    // Non-finite results are an error here as in the dump (coordinates so large that a product
+    // overflows), said before the views derive their observers from them.
+    PipelineOptions options;
+    options.strategy = *clipStrategyFromString(r.strategy);
+    if (auto e = nonFiniteError(runPipeline(scene, options)))
+      throw Error((r.scene.empty() ? std::string("the default scene") : r.scene) + ": " + *e);
+  }
   RenderRequest request;
   if (r.view != "ui") request.view = *viewKindFromString(r.view);
   request.style = *styleFromString(r.style);
   request.pipeline.strategy = *clipStrategyFromString(r.strategy);
   request.morphT = r.morphT;
   if (!r.size.empty()) std::tie(request.width, request.height) = parseSize(r.size);
+  if (r.view == "ui") checkImageSize(r.view, request.width > 0 ? request.width : 1280, request.height > 0 ? request.height : 720);
+  else checkImageSize(r.view, request.width > 0 ? request.width : scene.device.width,
+                      request.height > 0 ? request.height : scene.device.height);
   const std::string out = r.out.empty() ? "vplab-" + r.view + ".png" : r.out;
-  if (std::filesystem::path(out).extension() == ".svg") {
+  std::string extension = std::filesystem::path(out).extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".svg") {
     // Vector lines for slides and lecture notes: made on the CPU, no GL context needed. Without
     // --style, the hidden-line drawing (a filled style has no lines to export).
     if (!r.styleGiven) request.style = Style::hiddenLine;
@@ -176,10 +257,11 @@ int runCommandLine(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   app.add_option("--quit-after-frames", viewer.quitAfterFrames,
                  "Quit by itself after N frames (for smoke tests and scripted screenshots)")
-      ->check(CLI::PositiveNumber);
-  app.add_option("--screenshot", viewer.screenshot, "Write a PNG of the whole window when quitting");
+      ->check(CLI::Range(1, 100000000));
+  app.add_option("--screenshot", viewer.screenshot, "Write a PNG of the whole window when quitting")
+      ->check(extensionIn({".png"}));
   app.add_option("--ui-scale", viewer.uiScale, "Scale fonts and handles (1.5 or 2 for a projector)")
-      ->check(CLI::Range(0.5f, 4.f));
+      ->check(finiteIn(0.5, 4));
   app.add_flag("--gl-debug", viewer.glDebug, "Turn on KHR_debug and fail on any OpenGL error");
   app.add_flag("--report-frames", viewer.reportFrames, "Print how many frames the window drew when it ends (tests)");
 
@@ -208,7 +290,7 @@ int runCommandLine(int argc, char** argv) {
       ->check(CLI::IsMember({"camera", "world", "npc", "all", "morph", "ui"}));
   renderCmd->add_option("--morph-t", render.morphT,
                         "With --view morph: 0 MC, 1 WC, 2 VRC, 2.5 homogeneous NPC, 3 NPC, 4 DC, or between")
-      ->check(CLI::Range(0.0, 4.0));
+      ->check(finiteIn(0, 4));
   renderCmd->add_option("--style", render.style,
                         "flat (object colours, unlit), shaded (lit by the scene's lights), wire (every edge), "
                         "hidden-line (hidden edges dashed, seed figure 16.1) or hidden-removed (hidden "
@@ -219,14 +301,15 @@ int runCommandLine(int argc, char** argv) {
                         "pixel-aligned with DC)");
   renderCmd->add_option("--out", render.out,
                         "PNG file to write, or an SVG file (vector lines of the wireframe styles wire, hidden-line, "
-                        "hidden-removed; hidden-line unless --style says); default: vplab-VIEW.png");
+                        "hidden-removed; hidden-line unless --style says); default: vplab-VIEW.png")
+      ->check(extensionIn({".png", ".svg"}));
   renderCmd->add_option("--backend", render.backend, "Headless OpenGL: auto (EGL, then OSMesa), egl or osmesa")
       ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
   renderCmd->add_option("--strategy", render.strategy, "Clipping strategy of the CPU overlays: npc, wc or divide-first")
       ->check(CLI::IsMember({"npc", "wc", "divide-first"}));
   renderCmd->add_flag("--gl-debug", render.glDebug, "Turn on KHR_debug and fail on any OpenGL error");
   renderCmd->add_option("--ui-scale", render.uiScale, "With --view ui: scale fonts and handles")
-      ->check(CLI::Range(0.5f, 4.f));
+      ->check(finiteIn(0.5, 4));
   renderCmd->add_option("--tab", render.tabs, "With --view ui: show this tab (repeatable): camera, scene, clipping, "
                                               "display, lecture (controls) or probe, matrices, depth (inspector)")
       ->check(CLI::IsMember({"camera", "scene", "clipping", "display", "lecture", "probe", "matrices", "depth"}));
@@ -247,8 +330,11 @@ int runCommandLine(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+  } catch (const CLI::RuntimeError& e) {
+    return e.get_exit_code();  // a subcommand that ran in its callback (exercise, grade) and set its status
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version exit 0; every usage error exits 2 (CLI11's own codes differ by kind).
+    return app.exit(e) == 0 ? 0 : 2;
   }
   try {
     if (dumpCmd->parsed()) return runDump(dump);

@@ -1,6 +1,9 @@
 #include "pipeline/dump.h"
 
+#include "pipeline/error.h"
 #include "pipeline/json_text.h"
+
+#include <sstream>
 
 namespace vplab {
 
@@ -60,23 +63,73 @@ Json statsJson(const PipelineRun& run) {
 
 }  // namespace
 
-std::string dumpJson(const PipelineRun& run, int indent) {
-  Json j;
-  j["camera"] = {{"u", toJson(run.frame.u)}, {"v", toJson(run.frame.v)}, {"n", toJson(run.frame.n)},
-                 {"vpd", run.frame.vpd}, {"dmin", run.frame.dmin}, {"dmax", run.frame.dmax},
-                 {"projection", std::string(toString(run.camera.projection))}};
-  j["device"] = {{"width", run.device.width}, {"height", run.device.height}};
-  j["matrices"] = {{"vrc_from_wc", toJson(run.vrcFromWc)},
-                   {"npc_from_vrc", toJson(run.npcFromVrc)},
-                   {"dc_from_npc", toJson(run.dcFromNpc)}};
-  j["objects"] = Json::array();
-  for (const ObjectRun& o : run.objects) {
-    Json polygons = Json::array();
-    for (size_t f = 0; f < o.faceCount(); ++f) polygons.push_back(polygonJson(o, f));
-    j["objects"].push_back({{"name", o.name}, {"wc_from_mc", toJson(o.wcFromMc)}, {"polygons", polygons}});
+std::optional<std::string> nonFiniteError(const PipelineRun& run) {
+  const Mat4 matrices[] = {run.vrcFromWc, run.npcFromVrc, run.dcFromNpc};
+  const char* names[] = {"vrc_from_wc", "npc_from_vrc", "dc_from_npc"};
+  for (int i = 0; i < 3; ++i)
+    if (!isFinite(matrices[i])) return std::string("the matrix ") + names[i] + " is not finite";
+  for (size_t i = 0; i < run.objects.size(); ++i) {
+    const ObjectRun& o = run.objects[i];
+    const std::string object = "object \"" + o.name + "\" (/objects/" +
+                               std::to_string(i < run.sceneIndex.size() ? run.sceneIndex[i] : i) + ")";
+    auto bad = [&](size_t v, const char* stage, const std::string& value) {
+      return object + ": vertex " + std::to_string(v) + " in " + stage + " is " + value +
+             ", not finite: the scene's coordinates or scale factors are too large";
+    };
+    if (!isFinite(o.wcFromMc)) return object + ": its modeling matrix wc_from_mc is not finite";
+    for (size_t v = 0; v < o.vertexCount(); ++v) {
+      const uint32_t u = uint32_t(v);
+      if (!isFinite(o.mesh->positions[v])) return bad(v, "MC", format(o.mesh->positions[v]));
+      if (!isFinite(o.wc(u))) return bad(v, "WC", format(o.wc(u)));
+      if (!isFinite(o.vrc(u))) return bad(v, "VRC", format(o.vrc(u)));
+      if (!isFinite(o.npcH[v])) return bad(v, "homogeneous NPC", format(o.npcH[v]));
+    }
+    for (size_t f = 0; f < o.faceCount(); ++f)
+      for (uint32_t ref : o.clippedFace(f))
+        if (!isFinite(o.clippedDc(ref))) return bad(ref, "DC", format(o.clippedDc(ref)));
   }
-  j["stats"] = statsJson(run);
-  return prettyJson(j, indent) + "\n";
+  return std::nullopt;
+}
+
+void writeDump(std::ostream& out, const PipelineRun& run, int indent) {
+  if (auto e = nonFiniteError(run)) throw Error(*e);
+  JsonStreamWriter w(out, indent);
+  w.beginObject();
+  w.key("camera");
+  w.value({{"u", toJson(run.frame.u)}, {"v", toJson(run.frame.v)}, {"n", toJson(run.frame.n)},
+           {"vpd", run.frame.vpd}, {"dmin", run.frame.dmin}, {"dmax", run.frame.dmax},
+           {"projection", std::string(toString(run.camera.projection))}});
+  w.key("device");
+  w.value({{"width", run.device.width}, {"height", run.device.height}});
+  w.key("matrices");
+  w.value({{"vrc_from_wc", toJson(run.vrcFromWc)},
+           {"npc_from_vrc", toJson(run.npcFromVrc)},
+           {"dc_from_npc", toJson(run.dcFromNpc)}});
+  w.key("objects");
+  w.beginArray();
+  for (const ObjectRun& o : run.objects) {
+    w.beginObject();
+    w.key("name");
+    w.value(o.name);
+    w.key("wc_from_mc");
+    w.value(toJson(o.wcFromMc));
+    w.key("polygons");
+    w.beginArray();
+    for (size_t f = 0; f < o.faceCount(); ++f) w.value(polygonJson(o, f));
+    w.end();
+    w.end();
+  }
+  w.end();
+  w.key("stats");
+  w.value(statsJson(run));
+  w.end();
+  w.finish("\n");
+}
+
+std::string dumpJson(const PipelineRun& run, int indent) {
+  std::ostringstream out;
+  writeDump(out, run, indent);
+  return std::move(out).str();
 }
 
 }  // namespace vplab

@@ -1,5 +1,7 @@
 #include "pipeline/json_text.h"
 
+#include "pipeline/error.h"
+
 namespace vplab {
 
 namespace {
@@ -61,6 +63,86 @@ void write(const Json& j, int indent, size_t inlineWidth, int level, std::string
 }
 
 }  // namespace
+
+void appendPrettyJson(const Json& j, int indent, size_t inlineWidth, int level, std::string& out) {
+  if (indent < 0) {
+    out += j.dump();
+    return;
+  }
+  write(j, indent, inlineWidth, level, out);
+}
+
+JsonStreamWriter::JsonStreamWriter(std::ostream& out, int indent, size_t inlineWidth)
+    : out_(out), indent_(indent), inlineWidth_(inlineWidth) {}
+
+void JsonStreamWriter::element() {
+  if (open_.empty() || !open_.back().array) return;  // the top, or after a key
+  Open& o = open_.back();
+  if (indent_ < 0) {
+    if (o.entries) buffer_ += ',';
+  } else {
+    buffer_ += o.entries ? ",\n" : "\n";
+    buffer_.append(size_t(indent_) * open_.size(), ' ');
+  }
+  ++o.entries;
+}
+
+void JsonStreamWriter::beginObject() {
+  element();
+  buffer_ += '{';
+  open_.push_back({false, 0});
+}
+
+void JsonStreamWriter::beginArray() {
+  element();
+  buffer_ += '[';
+  open_.push_back({true, 0});
+}
+
+void JsonStreamWriter::end() {
+  const Open o = open_.back();
+  open_.pop_back();
+  if (o.entries && indent_ >= 0) {
+    buffer_ += '\n';
+    buffer_.append(size_t(indent_) * open_.size(), ' ');
+  }
+  buffer_ += o.array ? ']' : '}';
+  flushIfFull();
+}
+
+void JsonStreamWriter::key(std::string_view key) {
+  Open& o = open_.back();
+  if (indent_ < 0) {
+    if (o.entries) buffer_ += ',';
+    buffer_ += Json(key).dump() + ":";
+  } else {
+    buffer_ += o.entries ? ",\n" : "\n";
+    buffer_.append(size_t(indent_) * open_.size(), ' ');
+    buffer_ += Json(key).dump() + ": ";
+  }
+  ++o.entries;
+}
+
+void JsonStreamWriter::value(const Json& j) {
+  element();
+  appendPrettyJson(j, indent_, inlineWidth_, int(open_.size()), buffer_);
+  flushIfFull();
+}
+
+void JsonStreamWriter::flushIfFull() {
+  if (buffer_.size() < (1u << 16)) return;
+  out_.write(buffer_.data(), std::streamsize(buffer_.size()));
+  buffer_.clear();
+  if (!out_) throw Error("writing the JSON text failed");
+}
+
+void JsonStreamWriter::finish(std::string_view tail) {
+  buffer_ += tail;
+  out_.write(buffer_.data(), std::streamsize(buffer_.size()));
+  buffer_.clear();
+  out_.flush();
+  if (!out_) throw Error("writing the JSON text failed");
+}
 
 std::string prettyJson(const Json& j, int indent, size_t inlineWidth) {
   if (indent < 0) return j.dump();

@@ -3,6 +3,7 @@
 // and computes its outcode once, whatever the number of faces using it (seed 002).
 #pragma once
 
+#include "pipeline/limits.h"
 #include "pipeline/math.h"
 
 #include <cstdint>
@@ -29,6 +30,14 @@ struct Mesh {
   void addFace(std::initializer_list<uint32_t> face);
   void addFace(std::span<const uint32_t> face);
 };
+
+/// The size of a mesh, known before it is built (to check it against the scene's budget first).
+struct MeshSize {
+  size_t faces = 0, vertices = 0, corners = 0;
+};
+/// Throws vplab::Error naming the limit and the value when a mesh of `size` does not fit in what is
+/// left of the scene's budget (`used` of `limits` already taken by earlier objects).
+void checkMeshSize(const MeshSize& size, const MeshSize& used, const Limits& limits);
 
 /// Newell's normal of face f (unnormalized; robust for non-planar and concave faces).
 Vec3 faceNormal(const Mesh& mesh, size_t f);

@@ -2,6 +2,8 @@
 
 #include "pipeline/error.h"
 
+#include <algorithm>
+
 namespace vplab {
 
 Mesh cube() {
@@ -27,6 +29,17 @@ Mesh tetrahedron() {
   m.addFace({0, 1, 2});
   m.addFace({1, 3, 2});
   return m;
+}
+
+MeshSize cylinderSize(int n) {
+  const size_t k = size_t(std::max(n, 0));
+  return {k + 2, 2 * k, 4 * k + 2 * k};  // n side quads and two n-gon caps
+}
+
+MeshSize sphereSize(int n) {
+  const size_t k = size_t(std::max(n, 4));
+  // n triangles at each pole, n(n/2 − 2) quads; the poles and n/2 − 1 circles of n vertices
+  return {2 * k + k * (k / 2 - 2), 2 + (k / 2 - 1) * k, 6 * k + 4 * k * (k / 2 - 2)};
 }
 
 Mesh cylinder(int n) {

@@ -18,6 +18,10 @@ Mesh sphere(int n);
 /// One polygon through the given vertices, in the given order (at least 3).
 Mesh polygon(const std::vector<Vec3>& vertices);
 
-inline constexpr int kMaxSegments = 4096;
+inline constexpr int kMaxSegments = kDefaultLimits.segments;
+
+/// The sizes cylinder(n) and sphere(n) will have (n checked by them, not here).
+MeshSize cylinderSize(int n);
+MeshSize sphereSize(int n);
 
 }  // namespace vplab

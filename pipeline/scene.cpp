@@ -25,13 +25,33 @@ std::optional<Shape> shapeFromString(std::string_view s) {
   return std::nullopt;
 }
 
-void buildMesh(SceneObject& o, const std::filesystem::path& baseDir) {
+void buildMesh(SceneObject& o, const std::filesystem::path& baseDir, const Limits& limits, const MeshSize& used) {
+  // Primitives are sized before they are built, so a scene cannot ask for more than the limits allow.
+  auto segmentsWithin = [&] {
+    if (o.segments > limits.segments)
+      throw Error(std::to_string(o.segments) + " segments exceed the limit of " + std::to_string(limits.segments));
+  };
   switch (o.shape) {
-    case Shape::cube: o.mesh = std::make_shared<Mesh>(cube()); break;
-    case Shape::tetrahedron: o.mesh = std::make_shared<Mesh>(tetrahedron()); break;
-    case Shape::cylinder: o.mesh = std::make_shared<Mesh>(cylinder(o.segments)); break;
-    case Shape::sphere: o.mesh = std::make_shared<Mesh>(sphere(o.segments)); break;
+    case Shape::cube:
+      checkMeshSize({6, 8, 24}, used, limits);
+      o.mesh = std::make_shared<Mesh>(cube());
+      break;
+    case Shape::tetrahedron:
+      checkMeshSize({4, 4, 12}, used, limits);
+      o.mesh = std::make_shared<Mesh>(tetrahedron());
+      break;
+    case Shape::cylinder:
+      segmentsWithin();
+      checkMeshSize(cylinderSize(o.segments), used, limits);
+      o.mesh = std::make_shared<Mesh>(cylinder(o.segments));
+      break;
+    case Shape::sphere:
+      segmentsWithin();
+      checkMeshSize(sphereSize(o.segments), used, limits);
+      o.mesh = std::make_shared<Mesh>(sphere(o.segments));
+      break;
     case Shape::polygon:
+      checkMeshSize({1, o.vertices.size(), o.vertices.size()}, used, limits);
       for (const Vec3& v : o.vertices)
         if (!isFinite(v)) throw Error("polygon vertex " + format(v) + " is not finite");
       o.mesh = std::make_shared<Mesh>(polygon(o.vertices));
@@ -40,7 +60,7 @@ void buildMesh(SceneObject& o, const std::filesystem::path& baseDir) {
       if (o.file.empty()) throw Error("a mesh object needs a file");
       const std::filesystem::path file(o.file);
       const std::filesystem::path p = file.is_absolute() ? file : baseDir / file;
-      o.mesh = std::make_shared<Mesh>(loadObj(p));
+      o.mesh = std::make_shared<Mesh>(loadObj(p, limits, used));
       break;
     }
   }

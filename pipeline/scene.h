@@ -61,8 +61,10 @@ struct Scene {
   bool operator==(const Scene&) const = default;
 };
 
-/// Builds the object's MC mesh from its shape (OBJ files relative to baseDir). Throws vplab::Error.
-void buildMesh(SceneObject& object, const std::filesystem::path& baseDir);
+/// Builds the object's MC mesh from its shape (OBJ files relative to baseDir). Throws vplab::Error,
+/// before allocating, when the mesh would exceed what `used` (earlier objects) leaves of `limits`.
+void buildMesh(SceneObject& object, const std::filesystem::path& baseDir, const Limits& limits = kDefaultLimits,
+               const MeshSize& used = {});
 
 /// Why the scene cannot be run (an invalid camera, an object's invalid transform, a missing mesh),
 /// naming the values; nullopt when it can.

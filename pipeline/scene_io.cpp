@@ -1,15 +1,18 @@
-// Index: 1 reading helpers (types, ranges, unknown keys)  2 reading the sections  3 writing
+// Index: 0 parsing (depth, duplicate keys, places)  1 reading helpers (types, ranges, unknown keys)
+//        2 reading the sections  3 writing
 #include "pipeline/scene_io.h"
 
 #include "pipeline/error.h"
 #include "pipeline/json_text.h"
 #include "pipeline/clipping.h"
 #include "pipeline/primitives.h"
+#include "pipeline/read_file.h"
 
 #include <nlohmann/json.hpp>
 
 #include <fstream>
 #include <limits>
+#include <set>
 #include <sstream>
 
 namespace vplab {
@@ -18,6 +21,94 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// ---------------------------------------------------------------- 0 parsing
+
+/// Builds the JSON tree (nlohmann's DOM builder behind its SAX interface) while checking what the
+/// tree itself cannot show: nesting deeper than the limit is refused before it is built (a deep
+/// tree would overflow the stack of whatever walks it), a key given twice in one object is an error
+/// (not silently last-wins), and every error knows the JSON path it happened at.
+class CheckedJsonBuilder {
+ public:
+  CheckedJsonBuilder(Json& root, int maxDepth) : dom_(root, false), maxDepth_(maxDepth) {}
+
+  std::string error;       // "/json/path: what is wrong", or the parser's message for a syntax error
+  bool syntaxError = false;  // an error of the parser (errorByte says where), not of ours
+  size_t errorByte = 0;
+
+  bool null() { return value() && dom_.null(); }
+  bool boolean(bool b) { return value() && dom_.boolean(b); }
+  bool number_integer(Json::number_integer_t n) { return value() && dom_.number_integer(n); }
+  bool number_unsigned(Json::number_unsigned_t n) { return value() && dom_.number_unsigned(n); }
+  bool number_float(Json::number_float_t n, const std::string& s) { return value() && dom_.number_float(n, s); }
+  bool string(std::string& s) { return value() && dom_.string(s); }
+  bool binary(Json::binary_t& b) { return value() && dom_.binary(b); }
+  bool start_object(std::size_t n) { return open(false) && dom_.start_object(n); }
+  bool start_array(std::size_t n) { return open(true) && dom_.start_array(n); }
+  bool end_object() { levels_.pop_back(); return dom_.end_object(); }
+  bool end_array() { levels_.pop_back(); return dom_.end_array(); }
+  bool key(std::string& k) {
+    Level& l = levels_.back();
+    l.key = k;
+    if (!l.keys.insert(k).second) return fail("the key \"" + k + "\" is given twice in this object");
+    return dom_.key(k);
+  }
+  bool parse_error(std::size_t byte, const std::string& token, const nlohmann::detail::exception& e) {
+    syntaxError = true;
+    errorByte = byte;
+    std::string what = e.what();
+    if (e.id == 406) {  // out_of_range.406: a number beyond the range of a double
+      error = path() + ": the number " + token + " is out of range: a number must be finite (at most about 1.8e308)";
+    } else {
+      if (auto p = what.find("syntax error"); p != std::string::npos) what = what.substr(p);
+      else if (auto q = what.find("] "); q != std::string::npos) what = what.substr(q + 2);  // "[json.exception…] "
+      error = "JSON " + what;
+    }
+    return false;
+  }
+
+  /// The path of the value being read: "/objects/0/translate/1".
+  std::string path() const {
+    std::string p;
+    for (const Level& l : levels_) {
+      if (l.array) {
+        if (l.count) p += "/" + std::to_string(l.count - 1);
+      } else if (!l.key.empty() || !l.keys.empty()) {
+        p += "/";
+        for (char c : l.key) p += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+      }
+    }
+    return p.empty() ? "/" : p;
+  }
+
+ private:
+  struct Level {
+    bool array;
+    size_t count = 0;          // arrays: values started so far
+    std::string key;           // objects: the current key
+    std::set<std::string> keys;  // objects: the keys seen
+  };
+
+  bool fail(const std::string& what) {
+    error = path() + ": " + what;
+    return false;
+  }
+  bool value() {
+    if (!levels_.empty() && levels_.back().array) ++levels_.back().count;
+    return true;
+  }
+  bool open(bool array) {
+    value();
+    if (int(levels_.size()) >= maxDepth_)
+      return fail("objects and arrays nested deeper than " + std::to_string(maxDepth_) + " levels (the limit)");
+    levels_.push_back(Level{array, 0, {}, {}});
+    return true;
+  }
+
+  nlohmann::detail::json_sax_dom_parser<Json> dom_;
+  int maxDepth_;
+  std::vector<Level> levels_;
+};
 
 // ---------------------------------------------------------------- 1 reading helpers
 
@@ -56,7 +147,10 @@ struct Reader {
   }
 
   int integer(const Json& j, const std::string& path, int lo, int hi) const {
+    auto range = [&] { return " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]"; };
     if (!j.is_number_integer()) fail(path, std::string("must be an integer, not ") + j.type_name());
+    if (j.is_number_unsigned() && j.get<uint64_t>() > uint64_t(std::numeric_limits<long long>::max()))
+      fail(path, std::to_string(j.get<uint64_t>()) + range());  // would wrap around as a signed number
     const auto v = j.get<long long>();
     if (v < lo || v > hi)
       fail(path, std::to_string(v) + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
@@ -147,7 +241,7 @@ ModelTransform readTransform(const Reader& r, const Json& j, const std::string& 
 }
 
 SceneObject readObject(const Reader& r, const Json& j, const std::string& path, size_t index,
-                       const std::filesystem::path& baseDir) {
+                       const std::filesystem::path& baseDir, const Limits& limits, const MeshSize& used) {
   r.object(j, path, {"name", "shape", "segments", "vertices", "file", "color", "visible", "translate", "rotate", "scale"});
   SceneObject o;
   const std::string s = r.string(r.required(j, path, "shape"), path + "/shape");
@@ -163,7 +257,7 @@ SceneObject readObject(const Reader& r, const Json& j, const std::string& path, 
   onlyFor("file", o.shape == Shape::mesh, "mesh");
   if (auto it = j.find("segments"); it != j.end()) {
     const int lo = o.shape == Shape::sphere ? 4 : 3;
-    o.segments = r.integer(*it, path + "/segments", lo, kMaxSegments);
+    o.segments = r.integer(*it, path + "/segments", lo, std::min(kMaxSegments, limits.segments));
     if (o.shape == Shape::sphere && o.segments % 2)
       r.fail(path + "/segments", "a sphere needs an even number of segments, not " + std::to_string(o.segments));
   }
@@ -178,7 +272,7 @@ SceneObject readObject(const Reader& r, const Json& j, const std::string& path, 
   if (auto it = j.find("visible"); it != j.end()) o.visible = r.boolean(*it, path + "/visible");
   o.transform = readTransform(r, j, path);
   try {
-    buildMesh(o, baseDir);
+    buildMesh(o, baseDir, limits, used);
   } catch (const Error& e) {
     r.fail(path, e.what());
   }
@@ -225,16 +319,17 @@ Json toJson(const SceneObject& o) {
 
 }  // namespace
 
-Scene parseScene(std::string_view text, std::string_view source, const std::filesystem::path& baseDir) {
+Scene parseScene(std::string_view text, std::string_view source, const std::filesystem::path& baseDir,
+                 const Limits& limits) {
   const Reader r{std::string(source)};
   Json j;
-  try {
-    j = Json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    const auto [line, col] = lineAndColumn(text, e.byte);
-    std::string what = e.what();
-    if (auto p = what.find("syntax error"); p != std::string::npos) what = what.substr(p);
-    throw Error(std::string(source) + ":" + std::to_string(line) + ":" + std::to_string(col) + ": JSON " + what);
+  {
+    CheckedJsonBuilder builder(j, limits.jsonDepth);
+    if (!Json::sax_parse(text.begin(), text.end(), &builder)) {
+      if (!builder.syntaxError) throw Error(std::string(source) + ": " + builder.error);
+      const auto [line, col] = lineAndColumn(text, builder.errorByte);
+      throw Error(std::string(source) + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " + builder.error);
+    }
   }
   r.object(j, "", {"title", "caption", "camera", "device", "background", "lights", "clip_planes", "objects"});
   Scene scene;
@@ -274,17 +369,20 @@ Scene parseScene(std::string_view text, std::string_view source, const std::file
     }
   }
   const Json& objects = r.array(r.required(j, "", "objects"), "/objects");
-  for (size_t i = 0; i < objects.size(); ++i)
-    scene.objects.push_back(readObject(r, objects[i], "/objects/" + std::to_string(i), i, baseDir));
+  MeshSize used;  // the scene's faces, vertices and corners so far, against limits
+  for (size_t i = 0; i < objects.size(); ++i) {
+    scene.objects.push_back(readObject(r, objects[i], "/objects/" + std::to_string(i), i, baseDir, limits, used));
+    const Mesh& m = *scene.objects.back().mesh;
+    used.faces += m.faceCount();
+    used.vertices += m.vertexCount();
+    used.corners += m.indices.size();
+  }
   return scene;
 }
 
-Scene loadScene(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw Error(file.string() + ": cannot open the scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  Scene scene = parseScene(text.str(), file.string(), file.parent_path());
+Scene loadScene(const std::filesystem::path& file, const Limits& limits) {
+  Scene scene = parseScene(readRegularFile(file, limits.sceneFileBytes, "scene file"), file.string(),
+                           file.parent_path(), limits);
   scene.path = file;
   return scene;
 }

@@ -17,8 +17,9 @@
 //                    "rotate": [ {"axis": [x,y,z], "deg": a, "through": [x,y,z]} ],
 //                    "scale": s or [sx,sy,sz] } ] }
 //
-// Unknown keys, wrong types, missing required keys and out-of-range values are errors that name the
-// JSON path (and the line, for syntax errors); the camera must be valid (camera.h).
+// Unknown keys, keys given twice, wrong types, missing required keys, out-of-range values and nesting
+// deeper than Limits::jsonDepth are errors that name the JSON path (and the line, for syntax errors
+// and numbers beyond a double); the camera must be valid (camera.h).
 #pragma once
 
 #include "pipeline/scene.h"
@@ -31,10 +32,13 @@ namespace vplab {
 
 /// Reads a scene file and builds its meshes (OBJ files relative to the scene file).
 /// Throws vplab::Error "FILE: /json/path: what is wrong".
-Scene loadScene(const std::filesystem::path& file);
+/// Only regular files are read; the file, its JSON and its meshes must stay within `limits`
+/// (pipeline/limits.h), checked before the memory for them is allocated.
+Scene loadScene(const std::filesystem::path& file, const Limits& limits = kDefaultLimits);
 
 /// The same for JSON text; `source` names it in messages, `baseDir` resolves mesh files.
-Scene parseScene(std::string_view json, std::string_view source, const std::filesystem::path& baseDir);
+Scene parseScene(std::string_view json, std::string_view source, const std::filesystem::path& baseDir,
+                 const Limits& limits = kDefaultLimits);
 
 /// The scene as JSON text in the format above (2-space indentation).
 std::string sceneToJson(const Scene& scene);

@@ -13,6 +13,7 @@ packages=(
   nlohmann-json3-dev libtinyobjloader-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth x11-utils xdotool fonts-dejavu-core
+  clang libfuzzer-14-dev libclang-rt-14-dev time  # sanitizer and fuzz stages of test.sh; time -v
 )
 # vplab exercise: the .tex sheets are compiled by the tests (pdflatex) and turned into pictures (pdftoppm)
 packages+=(texlive-latex-base texlive-latex-recommended poppler-utils)

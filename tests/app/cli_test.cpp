@@ -16,6 +16,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -221,6 +222,91 @@ TEST_F(Cli, DumpErrorsAreClearAndFail) {
     const ProcessResult r = vplab(c.args);
     expectFailure(r, c.mentions, c.args);
     EXPECT_TRUE(r.out.empty()) << "no partial dump on stdout: " << r.out.substr(0, 200);
+  }
+}
+
+// ---------------------------------------------------------------- hostile input (issue "Hardening")
+
+// Every number is checked for finiteness and range (CLI11's Range let NaN through: --ui-scale nan
+// aborted inside Dear ImGui), an output name must have an extension vplab writes (x.jpg got a PNG),
+// and a picture beyond the image limits says the limit (not a raw framebuffer error). Usage errors
+// exit 2, other errors 1.
+TEST_F(Cli, NumbersExtensionsAndSizesAreChecked) {
+  struct Case {
+    std::string args;
+    int exitCode;
+    std::vector<std::string> mentions;
+  };
+  const std::vector<Case> cases = {
+      {"render --view ui --ui-scale nan --out x.png", 2, {"--ui-scale", "\"nan\" is not a finite number from 0.5 to 4"}},
+      {"render --ui-scale inf --out x.png", 2, {"--ui-scale", "inf"}},
+      {"--ui-scale nan --quit-after-frames 1", 2, {"--ui-scale", "nan"}},
+      {"render --view morph --morph-t nan --out x.png", 2, {"--morph-t", "\"nan\" is not a finite number from 0 to 4"}},
+      {"render --view morph --morph-t 1e999 --out x.png", 2, {"--morph-t", "1e999"}},
+      {"render --view morph --morph-t 4.5 --out x.png", 2, {"--morph-t", "4.5"}},
+      {"render --out x.jpg", 2, {"--out", "x.jpg", "only .png or .svg", "not .jpg"}},
+      {"render --out picture", 2, {"--out", "no extension"}},
+      {"--screenshot s.bmp --quit-after-frames 1", 2, {"--screenshot", "only .png"}},
+      {"--quit-after-frames -3", 2, {"--quit-after-frames", "-3"}},
+      {"dump --indent nan", 2, {"--indent", "nan"}},
+      {"render --view all --size 16384x100 --out x.png", 1,
+       {"--view all", "16384 × 100", "limit of 16384 pixels per side", "at most 5457"}},
+      {"render --view camera --size 16384x16384 --out x.png", 1, {"16384 × 16384", "limit of 33554432 pixels"}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.args);
+    const ProcessResult r = vplab(c.args, "env -u DISPLAY -u WAYLAND_DISPLAY");
+    expectFailure(r, c.mentions, c.args);
+    EXPECT_EQ(r.exitCode, c.exitCode) << r.err;
+    EXPECT_THAT(pngs(), ::testing::IsEmpty()) << "an error wrote a picture";
+  }
+}
+
+// Whatever the file, vplab ends with exit status 1 (or 2 for usage) and one line naming the file:
+// never on a signal (the exit code of a process ended by a signal is -1 here).
+TEST_F(Cli, HostileFilesNeverEndOnASignal) {
+  const std::string camera = R"("camera": {"vrp": [0,0,0], "prp": [0,0,5], "vup": [0,1,0],
+    "window": {"xmin": -1, "xmax": 1, "ymin": -1, "ymax": 1}, "front": 2, "back": -2})";
+  auto scene = [&](const std::string& objects) { return "{" + camera + ", \"objects\": [" + objects + "]}"; };
+  writeFile(dir_ / "m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n#\rf 1 2 4\n");  // SIGSEGV before
+  writeFile(dir_ / "cr-comment.json", scene(R"({"shape": "mesh", "file": "m.obj"})"));
+  writeFile(dir_ / "sphere-4096.json", scene(R"({"shape": "sphere", "segments": 4096})"));  // SIGKILL (24 GB) before
+  writeFile(dir_ / "deep.json", std::string(10000, '[') + std::string(10000, ']'));
+  writeFile(dir_ / "overflow.json", scene(R"({"shape": "cube", "scale": 1e309})"));
+  writeFile(dir_ / "far.json", scene(R"({"shape": "cube", "translate": [1e308, 0, 0]})"));
+  writeFile(dir_ / "dup.json", "{" + camera + R"(, "objects": [], "objects": []})");
+  writeFile(dir_ / "dev-zero-mesh.json", scene(R"({"shape": "mesh", "file": "/dev/zero"})"));
+  writeFile(dir_ / "dir-mesh.json", scene(R"({"shape": "mesh", "file": "."})"));
+  writeFile(dir_ / "binary.json", std::string("\0\xff\xfe{[\x01", 7));
+  fs::create_directories(dir_ / "a-directory");
+  struct Case {
+    std::string args;
+    std::vector<std::string> mentions;
+  };
+  const std::vector<Case> cases = {
+      {"dump --scene cr-comment.json", {"cr-comment.json", "/objects/0", "m.obj:6", "vertex index 4"}},
+      {"dump --scene sphere-4096.json", {"sphere-4096.json", "/objects/0/segments", "4096", "2048"}},
+      {"dump --scene deep.json", {"deep.json", "nested deeper than 32 levels"}},
+      {"dump --scene overflow.json", {"overflow.json:2:", "/objects/0/scale", "1e309"}},
+      {"dump --scene far.json", {"far.json", "/objects/0", "not finite"}},
+      {"dump --scene dup.json", {"dup.json", "/objects", "given twice"}},
+      {"dump --scene dev-zero-mesh.json", {"dev-zero-mesh.json", "/dev/zero", "regular file"}},
+      {"dump --scene dir-mesh.json", {"dir-mesh.json", "is a directory"}},
+      {"dump --scene binary.json", {"binary.json:1:"}},
+      {"dump --scene /dev/zero", {"/dev/zero", "character device"}},
+      {"dump --scene a-directory", {"a-directory"}},
+      {"render --scene cr-comment.json --out x.png", {"cr-comment.json", "m.obj:6"}},
+      {"render --scene far.json --out x.svg", {"far.json", "/objects/0", "not finite"}},
+      {"render --scene far.json --out x.png", {"far.json", "/objects/0", "not finite"}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.args);
+    const ProcessResult r = vplab(c.args);
+    expectFailure(r, c.mentions, c.args);
+    EXPECT_TRUE(r.exitCode == 1 || r.exitCode == 2) << "exit code " << r.exitCode << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << "no partial output: " << r.out.substr(0, 200);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), c.args.starts_with("dump --scene a-dir") ? 2 : 1)
+        << "one message: " << r.err;
   }
 }
 

@@ -173,13 +173,13 @@ TEST(Primitives, Polygon) {
 }
 
 TEST(Primitives, BadSegmentCountsNameTheValue) {
-  EXPECT_THAT(errorOf([] { cylinder(2); }), HasSubstr("a cylinder needs 3 to 4096 segments, not 2"));
+  EXPECT_THAT(errorOf([] { cylinder(2); }), HasSubstr("a cylinder needs 3 to 2048 segments, not 2"));
   EXPECT_THAT(errorOf([] { cylinder(-5); }), HasSubstr("not -5"));
-  EXPECT_THAT(errorOf([] { cylinder(kMaxSegments + 1); }), HasSubstr("not 4097"));
-  EXPECT_THAT(errorOf([] { sphere(5); }), HasSubstr("a sphere needs an even number of segments from 4 to 4096, not 5"));
+  EXPECT_THAT(errorOf([] { cylinder(kMaxSegments + 1); }), HasSubstr("not 2049"));
+  EXPECT_THAT(errorOf([] { sphere(5); }), HasSubstr("a sphere needs an even number of segments from 4 to 2048, not 5"));
   EXPECT_THAT(errorOf([] { sphere(2); }), HasSubstr("not 2"));
   EXPECT_THAT(errorOf([] { sphere(0); }), HasSubstr("not 0"));
-  EXPECT_THAT(errorOf([] { sphere(kMaxSegments + 2); }), HasSubstr("not 4098"));
+  EXPECT_THAT(errorOf([] { sphere(kMaxSegments + 2); }), HasSubstr("not 2050"));
   EXPECT_THAT(errorOf([] { polygon({{0, 0, 0}, {1, 0, 0}}); }), HasSubstr("at least 3 vertices, not 2"));
   EXPECT_EQ(errorOf([] { cylinder(kMaxSegments); }), "<no exception thrown>");
 }
