@@ -1,5 +1,8 @@
 #include "pipeline/grading.h"
 
+#include "pipeline/json_read.h"
+#include "pipeline/limits.h"
+
 #include "pipeline/error.h"
 
 #include <algorithm>
@@ -21,16 +24,8 @@ std::string_view stageName(int stage) {
 }
 
 Json parseAnswer(std::string_view text, std::string_view source) {
-  try {
-    return Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    // nlohmann reports the byte offset; turn it into a line and column.
-    const size_t at = std::min(size_t(e.byte), text.size());
-    size_t line = 1, col = 1;
-    for (size_t i = 0; i + 1 < at; ++i) text[i] == '\n' ? (++line, col = 1) : ++col;
-    throw Error(std::string(source) + ": line " + std::to_string(line) + ", column " + std::to_string(col) +
-                ": not valid JSON (" + e.what() + ")");
-  }
+  // The dump nests 8 deep (/objects/0/polygons/0/npc_h/0/0); an answer is read with a scene's limit.
+  return parseCheckedJson(text, source, kDefaultLimits.jsonDepth);
 }
 
 namespace {

@@ -5,6 +5,7 @@
 #include "app/course/grade_report.h"
 #include "app/headless.h"
 #include "pipeline/error.h"
+#include "pipeline/read_file.h"
 #include "pipeline/scene_io.h"
 
 #include <CLI/CLI.hpp>
@@ -69,14 +70,15 @@ Scene gradeScene(const std::string& path) {
   }
 }
 
+/// A student's answer: a regular file of at most 64 MiB (a whole dump of the bundled scenes is far
+/// smaller), checked before it is read, so /dev/zero or a FIFO is an input error and not a hang.
 std::string readAnswer(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError(path + ": cannot open the student's file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  const std::string text = s.str();
-  if (text.size() > (64u << 20)) throw UsageError(path + ": " + std::to_string(text.size()) + " bytes; at most 64 MiB are read");
-  return text;
+  constexpr std::uintmax_t kMaxAnswerBytes = std::uintmax_t(64) << 20;
+  try {
+    return readRegularFile(path, kMaxAnswerBytes, "student's answer file");
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
 }
 
 void emit(const GradeReport& report, const GradeArgs& a) {

@@ -295,10 +295,17 @@ TEST_F(Course, GradeNumbersInputErrorsExitWith2) {
   std::ofstream(dir_ / "broken.json") << "{\"camera\": ";
   r = vplab("grade numbers --student broken.json");
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_THAT(r.err, HasSubstr("broken.json: line 1, column"));
+  EXPECT_THAT(r.err, HasSubstr("broken.json:1:"));
   r = vplab("grade numbers --student missing.json");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_THAT(r.err, HasSubstr("missing.json: cannot open"));
+  // Special files are refused before anything is read (no endless read of /dev/zero).
+  r = vplab("grade numbers --student /dev/zero");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("/dev/zero: is "));
+  r = vplab("grade numbers --student " + dir_.string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("is a directory"));
   r = vplab("grade numbers");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_THAT(r.err, HasSubstr("--student FILE is required"));

@@ -307,8 +307,14 @@ TEST(Grading, MalformedAnswersNameTheFileAndThePath) {
   Json badOutcode = {{"objects", Json::array({{{"polygons", Json::array({{{"outcodes", {1.5, 0, 0, 0}}}})}}})}};
   EXPECT_EQ(grade(badOutcode), "alice.json: /objects/0/polygons/0/outcodes/0: 1.5 where an integer is expected");
   EXPECT_EQ(grade(Json::array()), "alice.json: /: an array where an object is expected");
-  EXPECT_EQ(errorOf([] { parseAnswer("{\n  \"camera\": {,\n}", "bob.json"); }).substr(0, 29),
-            "bob.json: line 2, column 14: ");
+  EXPECT_EQ(errorOf([] { parseAnswer("{\n  \"camera\": {,\n}", "bob.json"); }).substr(0, 32),
+            "bob.json:2:14: JSON syntax error");
+  // Hostile answers: nesting deeper than the limit and duplicate keys are refused, naming the place.
+  const std::string deep = errorOf([] { parseAnswer(std::string(100000, '['), "deep.json"); });
+  EXPECT_EQ(deep.rfind("deep.json: /0/0/0/", 0), 0u) << deep;
+  EXPECT_NE(deep.find(": objects and arrays nested deeper than 32 levels (the limit)"), std::string::npos) << deep;
+  EXPECT_EQ(errorOf([] { parseAnswer(R"({"camera": {"vpd": 1, "vpd": 2}})", "twice.json"); }),
+            "twice.json: /camera/vpd: the key \"vpd\" is given twice in this object");
 }
 
 }  // namespace
