@@ -176,7 +176,11 @@ int runViewerWindow(ViewerLaunch launch) {
     viewer.enableAutosave(stateDir, kAutosaveDelay);
   }
   try {
-    return loop(window, viewer, input, signals, launch);
+    const int status = loop(window, viewer, input, signals, launch);
+    // The views' render thread finishes the image it is drawing before the viewer ends (a GL draw
+    // call cannot be interrupted): the window goes at once.
+    glfwHideWindow(window.handle());
+    return status;
   } catch (...) {
     viewer.writeRecoveryNow();  // an unexpected error ends the viewer: keep the work first
     throw;
