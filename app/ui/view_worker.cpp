@@ -17,6 +17,24 @@ namespace {
 constexpr int kNice = 5;
 }  // namespace
 
+Image readTexture(const GladGLContext& gl, GLuint texture) {
+  GLint w = 0, h = 0;
+  gl.BindTexture(GL_TEXTURE_2D, texture);
+  gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+  gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
+  if (w <= 0 || h <= 0) throw Error("the view has no image to export yet");
+  std::vector<Rgba> rows(size_t(w) * size_t(h));
+  gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl.GetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+  Image image;
+  image.width = w;
+  image.height = h;
+  image.pixels.resize(rows.size());
+  for (int y = 0; y < h; ++y)
+    std::copy_n(rows.begin() + ptrdiff_t(h - 1 - y) * w, w, image.pixels.begin() + ptrdiff_t(y) * w);
+  return image;
+}
+
 GLuint uploadImageTo(const GladGLContext& gl, gl::Texture& texture, const Image& image) {
   std::vector<Rgba> rows(image.pixels.size());
   for (int y = 0; y < image.height; ++y)

@@ -42,6 +42,8 @@ struct ViewTargets {
 /// Draws one view into `targets` on the current context; returns the texture that shows it (the
 /// camera view at the device's W × H, or its difference image with the CPU's polygons).
 GLuint drawViewInto(GlContext& context, ViewRenderer& renderer, ViewTargets& targets, const ViewRequest& r);
+/// Reads a view's texture (rows bottom first, as drawn) as an image with the top row first.
+Image readTexture(const GladGLContext& gl, GLuint texture);
 /// Uploads `image` (top row first) into `texture` bottom row first, as the views' textures are.
 GLuint uploadImageTo(const GladGLContext& gl, gl::Texture& texture, const Image& image);
 

@@ -492,18 +492,17 @@ void Viewer::exportMenu() {
   struct Entry {
     ViewKind kind;
     const char* name;
-    gl::RenderTarget* target;
   };
-  const Entry entries[] = {{ViewKind::camera, "camera", &camera_}, {ViewKind::world, "world", &world_},
-                           {ViewKind::npc, "NPC", &npc_}};
+  const Entry entries[] = {{ViewKind::camera, "camera"}, {ViewKind::world, "world"}, {ViewKind::npc, "NPC"}};
   for (const Entry& e : entries) {
+    // The image shown (drawn in this thread or on the views' render thread: textures are shared).
+    const GLuint texture = viewCache_[size_t(e.kind)].texture;
     const std::string png = std::string(e.name) + " view as PNG…";
-    if (ImGui::MenuItem(png.c_str(), nullptr, false, e.target->width() > 0)) {
-      gl::RenderTarget* target = e.target;
+    if (ImGui::MenuItem(png.c_str(), nullptr, false, texture != 0)) {
       dialog_.open("Export the " + std::string(e.name) + " view", FileDialog::Mode::save, {".png"},
-                   "vplab-" + std::string(toString(e.kind)) + ".png", [this, target](const std::filesystem::path& f) {
+                   "vplab-" + std::string(toString(e.kind)) + ".png", [this, texture](const std::filesystem::path& f) {
                      try {
-                       writePng(target->read(), f);
+                       writePng(readTexture(ctx_.gl(), texture), f);
                        setStatus("exported " + f.string(), false);
                      } catch (const Error& err) {
                        setStatus(err.what(), true);
@@ -512,9 +511,9 @@ void Viewer::exportMenu() {
     }
     const std::optional<std::string> why = svgExportError(e.kind, s_.frame);
     const std::string svg = std::string(e.name) + " view as SVG…";
-    if (ImGui::MenuItem(svg.c_str(), nullptr, false, !why && e.target->width() > 0)) {
+    if (ImGui::MenuItem(svg.c_str(), nullptr, false, !why && texture != 0)) {
       const ViewKind kind = e.kind;
-      const int w = e.target->width(), h = e.target->height();
+      const int w = cachedWidth(kind), h = cachedHeight(kind);
       dialog_.open("Export the " + std::string(e.name) + " view", FileDialog::Mode::save, {".svg"},
                    "vplab-" + std::string(toString(kind)) + ".svg", [this, kind, w, h](const std::filesystem::path& f) {
                      try {

@@ -2,6 +2,7 @@
 // large mesh is being drawn again, the window keeps producing frames, each short, with a busy mark
 // on the view, and then shows the same image a synchronous viewer draws.
 #include "app/ui/headless_viewer.h"
+#include "app/ui/view_worker.h"
 #include "tests/app/gl_test_support.h"
 
 #include <gtest/gtest.h>
@@ -118,6 +119,21 @@ TEST(ViewWorker, TheWindowKeepsDrawingWhileAViewIsRedrawnThenShowsItsNewImage) {
     writePng(expected, (test::outputDir() / "view_worker_sync.png").string());
   }
   EXPECT_EQ(differ, 0u) << "the render thread's image differs from the synchronous one";
+}
+
+// File > Export reads the view's texture as shown (it may come from the render thread's context):
+// the rows come back in the image's order, every pixel as uploaded.
+TEST(ViewWorker, ReadingAViewTextureGivesItsImage) {
+  GlContext& context = *test::egl().context;
+  Image image(7, 5);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) image.at(x, y) = Rgba{uint8_t(30 * x), uint8_t(40 * y), 200, 255};
+  gl::Texture texture;
+  const GLuint id = uploadImageTo(context.gl(), texture, image);
+  const Image back = readTexture(context.gl(), id);
+  ASSERT_EQ(back.width, image.width);
+  ASSERT_EQ(back.height, image.height);
+  EXPECT_TRUE(back.pixels == image.pixels);
 }
 
 }  // namespace
