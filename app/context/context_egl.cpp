@@ -28,7 +28,8 @@ std::string eglErrorName(EGLint e) {
 
 class EglContext final : public GlContext {
  public:
-  explicit EglContext(bool debug) {
+  /// `share`: the context whose objects the new one shares (EGL_NO_CONTEXT: none).
+  explicit EglContext(bool debug, EGLContext share = EGL_NO_CONTEXT) {
     if (!gladLoaderLoadEGL(EGL_NO_DISPLAY)) throw Error("libEGL.so.1 could not be loaded");
     if (!GLAD_EGL_EXT_platform_base || !GLAD_EGL_MESA_platform_surfaceless)
       throw Error("EGL_MESA_platform_surfaceless is not supported by this EGL");
@@ -52,7 +53,7 @@ class EglContext final : public GlContext {
                                      EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                      EGL_CONTEXT_OPENGL_DEBUG, debug ? EGL_TRUE : EGL_FALSE,
                                      EGL_NONE};
-    context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, contextAttribs);
+    context_ = eglCreateContext(display_, config, share, contextAttribs);
     if (context_ == EGL_NO_CONTEXT) fail("eglCreateContext(OpenGL 3.3 core)");
     makeCurrent();
     loadGl(reinterpret_cast<GLADloadfunc>(eglGetProcAddress), debug, "egl");
@@ -62,12 +63,20 @@ class EglContext final : public GlContext {
   // display, and eglTerminate would pull it from under the other contexts still alive.
   ~EglContext() override {
     if (context_ != EGL_NO_CONTEXT) {
-      eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+      // A shared context may end on a thread where another context is current: leave that one be.
+      if (eglGetCurrentContext() == context_) eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
       eglDestroyContext(display_, context_);
     }
   }
 
   std::string_view backend() const override { return "egl"; }
+
+  std::unique_ptr<GlContext> createShared() override {
+    auto shared = std::make_unique<EglContext>(debug(), context_);
+    makeCurrent();  // the new context's constructor made itself current
+    return shared;
+  }
+  void releaseCurrent() override { eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT); }
 
   void makeCurrent() override {
     if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) fail("eglMakeCurrent");

@@ -17,6 +17,34 @@ std::string glfwProblem() {
   return description ? std::string(description) : "GLFW error " + std::to_string(code);
 }
 
+/// A hidden 1 × 1 window: GLFW makes contexts only with windows. Created and destroyed on the main
+/// thread (GLFW requires it); current on the render thread in between.
+class GlfwSharedContext final : public GlContext {
+ public:
+  GlfwSharedContext(GLFWwindow* share, bool debug) {
+    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+    window_ = glfwCreateWindow(1, 1, "vplab views", nullptr, share);
+    glfwWindowHint(GLFW_VISIBLE, GLFW_TRUE);
+    if (!window_) throw Error("a second OpenGL context for the views could not be created: " + glfwProblem());
+    glfwMakeContextCurrent(window_);
+    try {
+      loadGl(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress), debug, "glfw");
+    } catch (...) {
+      glfwMakeContextCurrent(share);
+      glfwDestroyWindow(window_);
+      throw;
+    }
+    glfwMakeContextCurrent(share);
+  }
+  ~GlfwSharedContext() override { glfwDestroyWindow(window_); }
+  std::string_view backend() const override { return "glfw"; }
+  void makeCurrent() override { glfwMakeContextCurrent(window_); }
+  void releaseCurrent() override { glfwMakeContextCurrent(nullptr); }
+
+ private:
+  GLFWwindow* window_ = nullptr;
+};
+
 }  // namespace
 
 GlfwWindow::GlfwWindow(int width, int height, const std::string& title, bool debug) {
@@ -51,6 +79,8 @@ GlfwWindow::~GlfwWindow() {
 }
 
 void GlfwWindow::makeCurrent() { glfwMakeContextCurrent(window_); }
+std::unique_ptr<GlContext> GlfwWindow::createShared() { return std::make_unique<GlfwSharedContext>(window_, debug()); }
+void GlfwWindow::releaseCurrent() { glfwMakeContextCurrent(nullptr); }
 void GlfwWindow::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_); }
 void GlfwWindow::setShouldClose(bool close) { glfwSetWindowShouldClose(window_, close ? GLFW_TRUE : GLFW_FALSE); }

@@ -18,6 +18,9 @@ class GlfwWindow final : public GlContext {
 
   std::string_view backend() const override { return "glfw"; }
   void makeCurrent() override;
+  /// A hidden window whose context shares this window's objects (the views' render thread).
+  std::unique_ptr<GlContext> createShared() override;
+  void releaseCurrent() override;
 
   GLFWwindow* handle() const { return window_; }
   void setTitle(const std::string& title);

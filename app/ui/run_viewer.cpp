@@ -157,6 +157,12 @@ int runViewerWindow(ViewerLaunch launch) {
   GlfwWindow window(launch.width, launch.height, title, launch.glDebug);
   Viewer viewer(window, std::move(launch.scene), launch.uiScale);
   GlfwBackend backend(window.handle());
+  try {
+    // glfwPostEmptyEvent is thread-safe: a finished view image wakes the event wait.
+    viewer.useViewWorker(window.createShared(), [] { glfwPostEmptyEvent(); });
+  } catch (const std::exception& e) {
+    std::cerr << "vplab: the views are drawn in the window's thread (" << e.what() << ")\n";
+  }
   WindowInput input(window.handle());
   EndSignals signals;
   const std::filesystem::path stateDir = Autosave::defaultDirectory();
@@ -170,7 +176,11 @@ int runViewerWindow(ViewerLaunch launch) {
     viewer.enableAutosave(stateDir, kAutosaveDelay);
   }
   try {
-    return loop(window, viewer, input, signals, launch);
+    const int status = loop(window, viewer, input, signals, launch);
+    // The views' render thread finishes the image it is drawing before the viewer ends (a GL draw
+    // call cannot be interrupted): the window goes at once.
+    glfwHideWindow(window.handle());
+    return status;
   } catch (...) {
     viewer.writeRecoveryNow();  // an unexpected error ends the viewer: keep the work first
     throw;

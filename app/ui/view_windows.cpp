@@ -16,6 +16,8 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include <chrono>
+#include <cmath>
 #include <functional>
 
 namespace vplab {
@@ -36,7 +38,8 @@ bool viewImage(const char* id, GLuint texture, ImVec2 size) {
   ImGui::InvisibleButton(id, size,
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                              ImGuiButtonFlags_MouseButtonMiddle);
-  ImGui::GetWindowDrawList()->AddImage(textureId(texture), at, at + size, ImVec2(0, 1), ImVec2(1, 0));
+  if (texture) ImGui::GetWindowDrawList()->AddImage(textureId(texture), at, at + size, ImVec2(0, 1), ImVec2(1, 0));
+  else ImGui::GetWindowDrawList()->AddRectFilled(at, at + size, IM_COL32(0, 0, 0, 255));  // its first image is drawn
   return ImGui::IsItemHovered();
 }
 
@@ -73,17 +76,80 @@ bool clicked() {
 
 // A view is drawn again only when what it shows changed: the window draws frames for any input
 // (hover, ImGui settling), and a view of a million triangles takes seconds on a software renderer.
+// With the render thread (useViewWorker) the frame does not wait for it beyond a few ms: the view
+// shows its last image with a busy mark until the new one is finished.
 GLuint Viewer::drawView(ViewKind kind, ImVec2 size) {
   const ImVec2 fb = ImGui::GetIO().DisplayFramebufferScale;
   const int w = std::max(8, int(size.x * fb.x)), h = std::max(8, int(size.y * fb.y));
   ViewStamp stamp{s_.doc.shown(), runRevision_, s_.frame, w, h, s_.antialias ? 4 : 1, uiScale_};
   ViewCache& cached = viewCache_[size_t(kind)];
-  if (cached.texture == 0 || !(cached.stamp == stamp)) {
-    cached.texture = drawViewNow(kind, w, h);
-    ++viewsDrawn_;
-    cached.stamp = std::move(stamp);
-  }
+  const bool device = kind == ViewKind::camera || kind == ViewKind::all;
+  cached.width = device ? stamp.scene.device.width : w;
+  cached.height = device ? stamp.scene.device.height : h;
+  if (kind == ViewKind::world) s_.worldAspect = double(w) / h;
+  cached.busy = false;
+  cached.asked = true;
+  if (cached.texture != 0 && cached.stamp == stamp) return cached.texture;
+  if (worker_) return drawViewOnWorker(kind, std::move(stamp), w, h);
+  cached.texture = drawViewNow(kind, w, h);
+  ++viewsDrawn_;
+  cached.stamp = std::move(stamp);
   return cached.texture;
+}
+
+GLuint Viewer::drawViewOnWorker(ViewKind kind, ViewStamp stamp, int w, int h) {
+  ViewCache& cached = viewCache_[size_t(kind)];
+  if (!cached.pending || !(cached.requested == stamp)) {
+    // The render thread gets its own copy of the run (made once per run of the pipeline): the
+    // window's may be replaced by the next run while the view is being drawn.
+    if (!workerRun_ || workerRunRevision_ != runRevision_) {
+      workerRun_ = std::make_shared<const PipelineRun>(s_.run);
+      workerRunRevision_ = runRevision_;
+    }
+    cached.ticket = worker_->request({kind, s_.doc.shown(), workerRun_, s_.frame, w, h, stamp.samples, uiScale_});
+    cached.requested = std::move(stamp);
+    cached.pending = true;
+    cached.askedAt = frameNumber_;
+  }
+  // Only the frame that asked for the image waits for it (a small scene's views appear in it); later
+  // frames only look whether it is finished, so they stay as short as the panels make them.
+  const double wait = cached.askedAt == frameNumber_ ? frameWaitLeft_ : 0;
+  const auto start = std::chrono::steady_clock::now();
+  const auto done = worker_->take(kind, cached.ticket, wait);
+  frameWaitLeft_ -= std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (done) {
+    if (!done->error.empty()) {
+      setStatus("drawing the " + std::string(toString(kind)) + " view failed: " + done->error, true);
+    } else {
+      cached.texture = done->texture;  // the newest finished image, maybe of an older request
+      ++viewsDrawn_;
+    }
+    if (done->ticket == cached.ticket) {
+      cached.pending = false;
+      cached.stamp = cached.requested;
+    }
+  }
+  cached.busy = cached.pending;
+  return cached.texture;
+}
+
+void Viewer::busyMark(ViewKind kind) {
+  if (!viewCache_[size_t(kind)].busy) return;
+  const ImVec2 max = ImGui::GetItemRectMax();
+  const ImVec2 min = ImGui::GetItemRectMin();
+  const char* text = "updating…";
+  const float pad = 4 * uiScale_, radius = ImGui::GetTextLineHeight() * 0.4f;
+  const ImVec2 textSize = ImGui::CalcTextSize(text);
+  const ImVec2 size(pad * 3 + radius * 2 + textSize.x, pad * 2 + textSize.y);
+  const ImVec2 at(std::max(min.x, max.x - size.x - pad), min.y + pad);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->AddRectFilled(at, at + size, IM_COL32(20, 22, 28, 210), 3 * uiScale_);
+  // A quarter circle turning once a second.
+  const ImVec2 centre = at + ImVec2(pad + radius, size.y * 0.5f);
+  const float a0 = float(std::fmod(ImGui::GetTime(), 1.0) * 2 * M_PI);
+  draw->PathArcTo(centre, radius, a0, a0 + float(M_PI) * 1.5f, 12);
+  draw->PathStroke(IM_COL32(255, 200, 90, 255), false, 2 * uiScale_);
+  draw->AddText(at + ImVec2(pad * 2 + radius * 2, pad), IM_COL32(235, 235, 235, 255), text);
 }
 
 GLuint Viewer::drawViewNow(ViewKind kind, int w, int h) {
@@ -179,7 +245,8 @@ void Viewer::viewWindows() {
       const ViewCamera observer = viewCameraOf(observerCamera(s_.frame.world.orbit, s_.worldAspect));
       const bool hovered = viewImage("world", texture, size);
       ui::recordRect(s_, "view.world");
-      worldInteraction(hovered, observer, world_.width(), world_.height(), mouseIn(ImGui::GetItemRectMin(), fbScale));
+      busyMark(ViewKind::world);
+      worldInteraction(hovered, observer, cachedWidth(ViewKind::world), cachedHeight(ViewKind::world), mouseIn(ImGui::GetItemRectMin(), fbScale));
     }
   }
   ImGui::End();
@@ -193,10 +260,11 @@ void Viewer::viewWindows() {
     const ImVec2 size = ImGui::GetContentRegionAvail();
     if (size.x >= 8 && size.y >= 8) {
       const GLuint texture = drawView(ViewKind::npc, size);
-      const ViewCamera observer = viewCameraOf(observerCamera(s_.frame.npc.orbit, double(npc_.width()) / npc_.height()));
+      const ViewCamera observer = viewCameraOf(observerCamera(s_.frame.npc.orbit, double(cachedWidth(ViewKind::npc)) / cachedHeight(ViewKind::npc)));
       const bool hovered = viewImage("npc", texture, size);
+      busyMark(ViewKind::npc);
       ui::recordRect(s_, "view.npc");
-      orbitInteraction(hovered, ViewKind::npc, s_.frame.npc.orbit, observer, npc_.width(), npc_.height(),
+      orbitInteraction(hovered, ViewKind::npc, s_.frame.npc.orbit, observer, cachedWidth(ViewKind::npc), cachedHeight(ViewKind::npc),
                        mouseIn(ImGui::GetItemRectMin(), fbScale));
     }
   }
@@ -229,6 +297,7 @@ void Viewer::cameraWindowContents() {
   }
   const ImVec2 at = ImGui::GetCursorScreenPos();
   const bool hovered = viewImage("camera", texture, size);
+  busyMark(ViewKind::camera);
   ui::recordRect(s_, "view.camera");
   if (demo) {
     caption(at, size.x, IM_COL32(140, 230, 140, 255), {"clip, then divide (right)", "clip first (right)", "right"});
@@ -261,6 +330,7 @@ void Viewer::morphWindow() {
     if (size.x >= 8 && size.y >= 8) {
       const GLuint texture = drawView(ViewKind::morph, size);
       const bool hovered = viewImage("morph", texture, size);
+      busyMark(ViewKind::morph);
       ui::recordRect(s_, "view.morph");
       const ViewCamera none;
       morphInteraction(hovered);
@@ -294,19 +364,21 @@ void Viewer::lectureWindow() {
       const GLuint texture = drawView(kind, shown);
       ImGui::SetCursorPos((size - shown) * 0.5f);
       viewImage("lecture", texture, shown);
+      busyMark(kind);
     } else {
       const GLuint texture = drawView(kind, size);
       const bool hovered = viewImage("lecture", texture, size);
+      busyMark(kind);
       const ImVec2 fb = io.DisplayFramebufferScale;
       const Vec2 mouse = mouseIn(ImGui::GetItemRectMin(), fb);
       if (kind == ViewKind::world)
         orbitInteraction(hovered, kind, s_.frame.world.orbit,
-                         viewCameraOf(observerCamera(s_.frame.world.orbit, s_.worldAspect)), world_.width(),
-                         world_.height(), mouse);
+                         viewCameraOf(observerCamera(s_.frame.world.orbit, s_.worldAspect)), cachedWidth(ViewKind::world),
+                         cachedHeight(ViewKind::world), mouse);
       if (kind == ViewKind::npc)
         orbitInteraction(hovered, kind, s_.frame.npc.orbit,
-                         viewCameraOf(observerCamera(s_.frame.npc.orbit, double(npc_.width()) / npc_.height())),
-                         npc_.width(), npc_.height(), mouse);
+                         viewCameraOf(observerCamera(s_.frame.npc.orbit, double(cachedWidth(ViewKind::npc)) / cachedHeight(ViewKind::npc))),
+                         cachedWidth(ViewKind::npc), cachedHeight(ViewKind::npc), mouse);
       if (kind == ViewKind::morph) morphInteraction(hovered);
     }
     const Scene& scene = s_.doc.scene();

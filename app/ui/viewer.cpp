@@ -47,6 +47,12 @@ void setUpStyle(float scale) {
   style.ScaleAllSizes(scale);
 }
 
+/// How long a frame waits for the render thread's images before it shows the views' last ones: a
+/// small scene's views (a few ms each on llvmpipe) appear in the frame that changed them.
+constexpr double kFrameWaitForViews = 0.03;
+/// The busy mark's spinner steps 10 times a second (a frame each, nothing else while idle).
+constexpr double kBusyMarkStep = 0.1;
+
 /// Where "save a copy" of a bundled scene starts: its name in the working directory.
 std::filesystem::path copyName(const std::filesystem::path& bundled) {
   std::error_code ec;
@@ -145,11 +151,23 @@ void Viewer::runPipeline() {
 
 void Viewer::makeCurrent() { ImGui::SetCurrentContext(imgui_); }
 
+void Viewer::useViewWorker(std::unique_ptr<GlContext> context, std::function<void()> wake) {
+  worker_ = std::make_unique<ViewWorker>(std::move(context), std::move(wake));
+  for (ViewCache& c : viewCache_) c = {};
+}
+
 double Viewer::wakeIn() const {
   if (settleFrames_ > 0 || s_.morphPlaying || loader_.busy() || askRecovery_ || s_.animateUntil > imgui_->Time) return 0;
   double wake = 1e9;
+  // The busy mark's spinner turns while a view is drawn on the render thread; its new image is
+  // shown at once.
+  for (size_t k = 0; k < viewCache_.size(); ++k) {
+    if (!viewCache_[k].pending) continue;
+    if (worker_->hasFinished(ViewKind(k))) return 0;
+    wake = kBusyMarkStep;
+  }
   // ImGui 1.86 blinks the text cursor (on 0.8 s, off 0.4 s): a few frames a second while typing.
-  if (imgui_->IO.WantTextInput) wake = 0.2;
+  if (imgui_->IO.WantTextInput) wake = std::min(wake, 0.2);
   if (autosave_) wake = std::min(wake, autosave_->dueIn(imgui_->Time));
   return wake;
 }
@@ -158,6 +176,9 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   ImGui::SetCurrentContext(imgui_);
   if (s_.uiScale != uiScale_) applyUiScale(s_.uiScale);  // the font atlas is locked during a frame
   if (settleFrames_ > 0) --settleFrames_;
+  frameWaitLeft_ = kFrameWaitForViews;
+  ++frameNumber_;
+  for (ViewCache& c : viewCache_) c.asked = false;
   if (s_.objectToLoad) {  // "+ OBJ mesh…" of the scene panel
     const std::filesystem::path& path = s_.doc.scene().path;
     loader_.startObject(std::move(*s_.objectToLoad), path.empty() ? std::filesystem::path() : path.parent_path());
@@ -211,6 +232,8 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   discardDialog();
   dialog_.draw();
   relayout_ = false;
+  for (ViewCache& c : viewCache_)
+    if (!c.asked) c.pending = c.busy = false;  // not shown any more: its image is not waited for
   ImGui::Render();
 
   // Going straight from one field into the next keeps some item active in every frame: the change
@@ -467,18 +490,17 @@ void Viewer::exportMenu() {
   struct Entry {
     ViewKind kind;
     const char* name;
-    gl::RenderTarget* target;
   };
-  const Entry entries[] = {{ViewKind::camera, "camera", &camera_}, {ViewKind::world, "world", &world_},
-                           {ViewKind::npc, "NPC", &npc_}};
+  const Entry entries[] = {{ViewKind::camera, "camera"}, {ViewKind::world, "world"}, {ViewKind::npc, "NPC"}};
   for (const Entry& e : entries) {
+    // The image shown (drawn in this thread or on the views' render thread: textures are shared).
+    const GLuint texture = viewCache_[size_t(e.kind)].texture;
     const std::string png = std::string(e.name) + " view as PNG…";
-    if (ImGui::MenuItem(png.c_str(), nullptr, false, e.target->width() > 0)) {
-      gl::RenderTarget* target = e.target;
+    if (ImGui::MenuItem(png.c_str(), nullptr, false, texture != 0)) {
       dialog_.open("Export the " + std::string(e.name) + " view", FileDialog::Mode::save, {".png"},
-                   "vplab-" + std::string(toString(e.kind)) + ".png", [this, target](const std::filesystem::path& f) {
+                   "vplab-" + std::string(toString(e.kind)) + ".png", [this, texture](const std::filesystem::path& f) {
                      try {
-                       writePng(target->read(), f);
+                       writePng(readTexture(ctx_.gl(), texture), f);
                        setStatus("exported " + f.string(), false);
                      } catch (const Error& err) {
                        setStatus(err.what(), true);
@@ -487,9 +509,9 @@ void Viewer::exportMenu() {
     }
     const std::optional<std::string> why = svgExportError(e.kind, s_.frame);
     const std::string svg = std::string(e.name) + " view as SVG…";
-    if (ImGui::MenuItem(svg.c_str(), nullptr, false, !why && e.target->width() > 0)) {
+    if (ImGui::MenuItem(svg.c_str(), nullptr, false, !why && texture != 0)) {
       const ViewKind kind = e.kind;
-      const int w = e.target->width(), h = e.target->height();
+      const int w = cachedWidth(kind), h = cachedHeight(kind);
       dialog_.open("Export the " + std::string(e.name) + " view", FileDialog::Mode::save, {".svg"},
                    "vplab-" + std::string(toString(kind)) + ".svg", [this, kind, w, h](const std::filesystem::path& f) {
                      try {

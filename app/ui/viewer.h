@@ -9,6 +9,7 @@
 #include "app/ui/autosave.h"
 #include "app/ui/file_dialog.h"
 #include "app/ui/loader.h"
+#include "app/ui/view_worker.h"
 #include "app/ui/viewer_state.h"
 #include "app/views/view_renderer.h"
 
@@ -50,6 +51,13 @@ class Viewer {
   double wakeIn() const;
   /// How many times a view was drawn (not reused from its last image): tests check hover frames cost none.
   unsigned viewsDrawn() const { return viewsDrawn_; }
+  /// Draws the views on a render thread with `context` (GlContext::createShared of the window's):
+  /// a view whose image is not ready within the frame shows its last image with a busy mark.
+  /// `wake` wakes the window's event wait (called on the render thread). Without it (headless, the
+  /// UI tests) each view is drawn in the frame that needs it.
+  void useViewWorker(std::unique_ptr<GlContext> context, std::function<void()> wake);
+  /// Whether `kind` shows an older image while its current one is being drawn.
+  bool viewBusy(ViewKind kind) const { return viewCache_[size_t(kind)].busy; }
   /// Asks for `n` more frames (something changed that ImGui shows only after it laid it out again).
   void requestFrames(int n) { settleFrames_ = std::max(settleFrames_, n); }
 
@@ -119,6 +127,9 @@ class Viewer {
   /// the last image while nothing it shows changed.
   GLuint drawView(ViewKind kind, ImVec2 size);
   GLuint drawViewNow(ViewKind kind, int w, int h);
+  /// A spinner and "updating…" in the top right corner of the last item (a view's image) while
+  /// `kind` is busy.
+  void busyMark(ViewKind kind);
 
   GlContext& ctx_;
   ImGuiContext* imgui_ = nullptr;
@@ -146,13 +157,31 @@ class Viewer {
   struct ViewCache {
     ViewStamp stamp;
     GLuint texture = 0;
+    int width = 0, height = 0;  // of the image asked for last, in pixels
+    // With the render thread: the image asked for and not yet shown.
+    ViewStamp requested;
+    uint64_t ticket = 0;
+    uint64_t askedAt = 0;  // the frame that asked for it
+    bool pending = false;
+    bool busy = false;  // shown with an older image in this frame
+    bool asked = false;  // drawView was called for it in this frame
   };
+  /// The render thread's image of `kind` if it finishes within what is left of the frame's wait.
+  GLuint drawViewOnWorker(ViewKind kind, ViewStamp stamp, int w, int h);
+  /// The pixel size of the image of `kind` asked for last (for picking in it).
+  int cachedWidth(ViewKind kind) const { return viewCache_[size_t(kind)].width; }
+  int cachedHeight(ViewKind kind) const { return viewCache_[size_t(kind)].height; }
   std::array<ViewCache, 5> viewCache_;  // by ViewKind
   unsigned runRevision_ = 0;            // counts the runs of the CPU pipeline
   unsigned viewsDrawn_ = 0;
   Scene ranScene_;                // the input of s_.run (runPipeline runs only when it changes)
   PipelineOptions ranOptions_;
   bool ranOnce_ = false;
+  std::unique_ptr<ViewWorker> worker_;
+  std::shared_ptr<const PipelineRun> workerRun_;  // s_.run of runRevision workerRunRevision_
+  unsigned workerRunRevision_ = 0;
+  double frameWaitLeft_ = 0;
+  uint64_t frameNumber_ = 0;  // seconds this frame may still wait for the render thread
   int settleFrames_ = 2;     // frames still to draw without input (wakeIn)
   SceneLoader loader_;
   std::unique_ptr<Autosave> autosave_;

@@ -1,0 +1,101 @@
+// The views drawn on a render thread (README "The viewer": the window never waits for a view). A
+// view of a million triangles takes seconds on a software renderer; meanwhile the window keeps
+// drawing its panels and shows the view's last finished image with a busy mark. The thread has its
+// own GL context sharing the window's textures (GlContext::createShared); the ViewRenderer, whose
+// vertex arrays cannot be shared, lives entirely on it. The latest request for a view replaces one
+// not yet started (the latest camera wins: no queue of stale work).
+#pragma once
+
+#include "app/context/context.h"
+#include "app/gl/render_target.h"
+#include "app/views/view_renderer.h"
+
+#include <array>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+namespace vplab {
+
+/// Everything a view's image is drawn from (the scene shares its meshes: a cheap copy).
+struct ViewRequest {
+  ViewKind kind = ViewKind::world;
+  Scene scene;
+  std::shared_ptr<const PipelineRun> run;
+  FrameSettings frame;
+  int width = 0, height = 0, samples = 1;
+  float uiScale = 1.f;
+};
+
+/// The render targets of one image of each view, and the camera view's difference image.
+struct ViewTargets {
+  explicit ViewTargets(const GladGLContext& gl) : world(gl), camera(gl), npc(gl), morph(gl) {}
+  gl::RenderTarget world, camera, npc, morph;
+  gl::Texture difference;
+};
+
+/// Draws one view into `targets` on the current context; returns the texture that shows it (the
+/// camera view at the device's W × H, or its difference image with the CPU's polygons).
+GLuint drawViewInto(GlContext& context, ViewRenderer& renderer, ViewTargets& targets, const ViewRequest& r);
+/// Reads a view's texture (rows bottom first, as drawn) as an image with the top row first.
+Image readTexture(const GladGLContext& gl, GLuint texture);
+/// Uploads `image` (top row first) into `texture` bottom row first, as the views' textures are.
+GLuint uploadImageTo(const GladGLContext& gl, gl::Texture& texture, const Image& image);
+
+class ViewWorker {
+ public:
+  /// Starts the render thread on `context` (shares the window's objects; made on this thread).
+  /// `wake` is called on the render thread when an image is finished (glfwPostEmptyEvent).
+  ViewWorker(std::unique_ptr<GlContext> context, std::function<void()> wake);
+  /// Lets the image being drawn finish, then ends the thread and frees its GL objects.
+  ~ViewWorker();
+  ViewWorker(const ViewWorker&) = delete;
+  ViewWorker& operator=(const ViewWorker&) = delete;
+
+  /// Asks for an image; replaces this view's request not yet started. Returns its ticket.
+  uint64_t request(ViewRequest r);
+  /// A finished image: ticket says which request it answers (tickets grow).
+  struct Finished {
+    uint64_t ticket = 0;
+    GLuint texture = 0;
+    std::string error;  // what went wrong drawing it (texture 0)
+  };
+  /// The newest image of `kind` finished since the last call, waiting up to `seconds` for the
+  /// request `ticket` to finish. The image returned is the one shown from now on: the thread
+  /// never draws into it until a newer one of the same view is taken.
+  std::optional<Finished> take(ViewKind kind, uint64_t ticket, double seconds);
+  /// Whether an image of `kind` is finished and not yet taken (the window then draws a frame at once).
+  bool hasFinished(ViewKind kind) const;
+  /// How many images the thread has drawn.
+  unsigned drawn() const;
+
+ private:
+  static constexpr size_t kViews = 5;    // by ViewKind
+  static constexpr size_t kBuffers = 3;  // shown, finished not yet taken, being drawn
+  void run();
+  size_t freeBuffer(size_t view) const;
+
+  std::unique_ptr<GlContext> ctx_;
+  std::function<void()> wake_;
+  mutable std::mutex mutex_;
+  std::condition_variable changed_;
+  bool stop_ = false;
+  uint64_t nextTicket_ = 1;
+  struct ViewSlot {
+    std::optional<ViewRequest> pending;
+    uint64_t pendingTicket = 0;
+    std::optional<Finished> finished;  // not yet taken
+    size_t finishedBuffer = 0;
+    size_t shownBuffer = kBuffers;  // none
+  };
+  std::array<ViewSlot, kViews> slots_;
+  unsigned drawn_ = 0;
+  std::thread thread_;
+};
+
+}  // namespace vplab
