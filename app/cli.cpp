@@ -274,7 +274,7 @@ int runCommandLine(int argc, char** argv) {
                       "planes in WC) or divide-first (wrong on purpose: divides by w before clipping)")
       ->check(CLI::IsMember({"npc", "wc", "divide-first"}));
   dumpCmd->add_flag("--bounding-box", dump.boundingBox,
-                    "Decide whole objects by their bounding box first (seed 15.3.4)");
+                    "Decide whole objects by their bounding box first (lecture notes 15.3.4)");
   dumpCmd->add_option("--indent", dump.indent, "JSON indentation; -1 prints everything on one line")
       ->check(CLI::Range(-1, 8));
 
@@ -293,7 +293,7 @@ int runCommandLine(int argc, char** argv) {
       ->check(finiteIn(0, 4));
   renderCmd->add_option("--style", render.style,
                         "flat (object colours, unlit), shaded (lit by the scene's lights), wire (every edge), "
-                        "hidden-line (hidden edges dashed, seed figure 16.1) or hidden-removed (hidden "
+                        "hidden-line (hidden edges dashed, lecture notes figure 16.1) or hidden-removed (hidden "
                         "edges left out, figure 16.3)")
       ->check(CLI::IsMember({"flat", "shaded", "wire", "hidden-line", "hidden-removed"}));
   renderCmd->add_option("--size", render.size,

@@ -3,7 +3,7 @@
 // colours, plus a difference picture for the viewer's overlay and for failing golden tests.
 //
 // Coordinates are image coordinates: x right, y down, row 0 on top (app/image.h, the DC convention
-// of domain.md stage 5), so a reported pixel can be found in DC directly.
+// of docs/conventions.md stage 5), so a reported pixel can be found in DC directly.
 #pragma once
 
 #include <cstddef>

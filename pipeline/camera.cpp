@@ -30,7 +30,7 @@ namespace {
 // vectors after glm::normalize (and gave misleading messages such as "PRP equals VRP").
 double maxAbs(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 
-// Seed 15.2.2: N points from VRP to the eye, U = VUP × N, V = N × U. No checks here.
+// lecture notes 15.2.2: N points from VRP to the eye, U = VUP × N, V = N × U. No checks here.
 ViewFrame frameUnchecked(const Camera& c) {
   ViewFrame f{};
   const Vec3 toEye = c.prp - c.vrp;

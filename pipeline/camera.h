@@ -1,8 +1,8 @@
-// The synthetic camera (seed 15.1) and stage 2, view orientation WC → VRC (seed 15.2.2).
+// The synthetic camera (lecture notes 15.1) and stage 2, view orientation WC → VRC (lecture notes 15.2.2).
 //
 // VRP is the point looked at and the origin of VRC; PRP is the eye (projection reference point);
 // VUP the view-up vector. The window lies in the view plane z = 0 of VRC, the front and back planes
-// are z = F and z = B in VRC with B < F (domain.md, stages 2 and 3).
+// are z = F and z = B in VRC with B < F (docs/conventions.md, stages 2 and 3).
 #pragma once
 
 #include "pipeline/math.h"
@@ -26,7 +26,7 @@ struct ViewWindow {
   bool operator==(const ViewWindow&) const = default;
 };
 
-/// Oblique parallel projection (seed 14.3.2): shortening factor d = 1 / tan α and angle φ.
+/// Oblique parallel projection (lecture notes 14.3.2): shortening factor d = 1 / tan α and angle φ.
 struct ObliqueParams {
   double d = 0.5;
   double phiDeg = 50;
@@ -47,7 +47,7 @@ struct Camera {
   bool operator==(const Camera&) const = default;
 };
 
-/// The VRC axes and distances derived from a valid camera (seed 15.2.2, domain.md stage 2).
+/// The VRC axes and distances derived from a valid camera (lecture notes 15.2.2, docs/conventions.md stage 2).
 struct ViewFrame {
   Vec3 u, v, n;  // WC; U, V, N right-handed, the eye on +N
   double vpd;    // |PRP − VRP|: the eye is at VRC (0, 0, VPD)
@@ -62,7 +62,7 @@ std::optional<std::string> cameraError(const Camera& camera);
 /// U, V, N, VPD, dmin, dmax. Throws vplab::Error with cameraError's message when invalid.
 ViewFrame viewFrame(const Camera& camera);
 
-/// Stage 2: vrcFromWc = [U 0; V 0; N 0; 0 0 0 1] · T(−VRP) (seed 15.2.2; rows are U, V, N).
+/// Stage 2: vrcFromWc = [U 0; V 0; N 0; 0 0 0 1] · T(−VRP) (lecture notes 15.2.2; rows are U, V, N).
 Mat4 vrcFromWc(const ViewFrame& frame, const Vec3& vrp);
 Mat4 vrcFromWc(const Camera& camera);
 

@@ -1,6 +1,6 @@
 // Sutherland–Hodgman one plane at a time, for the clipping step-through (README "Lecture
 // features"): the polygon entering each plane's pass, every vertex's boundary coordinate for that
-// plane (seed 002), the polygon leaving it and which of its vertices the pass created. Uses the
+// plane (Hill 7.4), the polygon leaving it and which of its vertices the pass created. Uses the
 // very kernel the pipeline clips with, so the last step equals the clipper's output.
 #pragma once
 
@@ -21,7 +21,7 @@ struct ClipStep {
 };
 
 /// The passes over face f of an object, clipping in homogeneous NPC: left, right, bottom, top, back,
-/// front, then the run's user clip planes (seed 003). A trivially accepted polygon has only skipped
+/// front, then the run's user clip planes (DGL wiki). A trivially accepted polygon has only skipped
 /// steps; a trivially rejected one is still stepped through (to show why the outcodes reject it).
 std::vector<ClipStep> clipSteps(const PipelineRun& run, const ObjectRun& object, size_t face);
 

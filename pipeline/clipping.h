@@ -1,6 +1,6 @@
-// Stage 4, clipping in homogeneous coordinates (seed 15.3, 15.2.4; seeds 002 and 003; domain.md).
+// Stage 4, clipping in homogeneous coordinates (lecture notes 15.3, 15.2.4; Hill 7.4 and the DGL wiki; docs/conventions.md).
 //
-// Blinn & Newell, "Clipping using homogeneous coordinates" (SIGGRAPH 1978), as retold by seed 002:
+// Blinn & Newell, "Clipping using homogeneous coordinates" (SIGGRAPH 1978), as retold by Hill 7.4:
 // a point (x, y, z, w) of homogeneous NPC is inside when 0 ≤ x ≤ w, 0 ≤ y ≤ w, 0 ≤ z ≤ w. Its six
 // boundary coordinates BC0..BC5 are x, w − x, y, w − y, z, w − z; the 6-bit outcode has bit i set
 // when BCi < 0 (Cohen–Sutherland in 3D). Both are computed once per vertex and reused by every edge
@@ -8,7 +8,7 @@
 // created on an edge gets its own by the same interpolation, never by recomputation.
 //
 // Clip before dividing: a point behind the eye has w < 0 and fails x ≤ w or 0 ≤ x by itself, while
-// after the division x/w flips sign and can land inside the cube (seeds 002, 003).
+// after the division x/w flips sign and can land inside the cube (Hill 7.4 and the DGL wiki).
 #pragma once
 
 #include "pipeline/math.h"
@@ -22,7 +22,7 @@
 namespace vplab {
 
 enum ClipPlane : int { kLeft = 0, kRight, kBottom, kTop, kBack, kFront, kPlaneCount };
-/// User clip planes (seed 003, glClipPlane) follow the cube's six: planes 6 … 11. Each is a linear
+/// User clip planes (DGL wiki, glClipPlane) follow the cube's six: planes 6 … 11. Each is a linear
 /// form of the homogeneous point too, so the same clipper handles them.
 inline constexpr int kMaxUserPlanes = 6;
 inline constexpr int kMaxClipPlanes = kPlaneCount + kMaxUserPlanes;

@@ -15,7 +15,7 @@ void addIntersections(OperationCounts& c, uint64_t created, uint64_t values) {
   c.multiplications += created * values;
 }
 
-// Seed 15.3.4: the box's 8 corners go through the one transformation to NPC and the inside test.
+// lecture notes 15.3.4: the box's 8 corners go through the one transformation to NPC and the inside test.
 void addBoxTests(OperationCounts& c, uint64_t boxes) {
   c.multiplications += boxes * 8 * kTransformMul;
   c.additions += boxes * 8 * (kTransformAdd + kNpcTestAdd);

@@ -1,4 +1,4 @@
-// Statistics of a pipeline run and the seed's cost model for them (seed 15.3.3):
+// Statistics of a pipeline run and the lecture notes' cost model for them (lecture notes 15.3.3):
 //
 //   a 4 × 4 transformation          16 multiplications, 12 additions
 //   inside test in NPC              6 comparisons (+ 3 subtractions for w − x, w − y, w − z)
@@ -6,7 +6,7 @@
 //   perspective division            3 divisions
 //   a new vertex on an edge         1 division for t, then every interpolated value (coordinates
 //                                   and boundary values) 1 multiplication and 2 additions
-//   a bounding-box test             its 8 corners transformed to NPC and tested (seed 15.3.4)
+//   a bounding-box test             its 8 corners transformed to NPC and tested (lecture notes 15.3.4)
 //
 // Clipping in WC saves the NPC transformation of invisible points but costs 2 more multiplications
 // per inside test, and one more MC → WC transformation per point when WC is not stored.
@@ -36,7 +36,7 @@ struct PipelineStats {
   uint64_t polygonsClippedAway = 0;  // cut, nothing remains
   uint64_t verticesCreated = 0;      // new vertices on clip planes
   uint64_t verticesOutput = 0;       // divided and mapped to DC
-  uint64_t objectsBoxTested = 0;     // seed 15.3.4: each costs 8 corner transformations and tests
+  uint64_t objectsBoxTested = 0;     // lecture notes 15.3.4: each costs 8 corner transformations and tests
   uint64_t objectsAcceptedByBox = 0;
   uint64_t objectsRejectedByBox = 0;
   uint64_t polygonsDecidedByBox = 0;
@@ -47,7 +47,7 @@ struct PipelineStats {
   OperationCounts operations;
 };
 
-/// The operation counts for a strategy, from the events in `stats` (domain.md stage 4; seed 15.3.3).
+/// The operation counts for a strategy, from the events in `stats` (docs/conventions.md stage 4; lecture notes 15.3.3).
 OperationCounts npcStrategyCost(const PipelineStats& s);
 OperationCounts wcStrategyCost(const PipelineStats& s);
 OperationCounts divideFirstCost(const PipelineStats& s);

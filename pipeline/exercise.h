@@ -43,7 +43,7 @@ struct Exercise {
 Exercise generateExercise(const ExerciseSpec& spec);
 
 /// P1 through the stages (lecture notes 15.2): MC, WC, VRC, homogeneous NPC, its boundary
-/// coordinates and outcode (seed 002), NPC after the division and DC (meaningful when inside).
+/// coordinates and outcode (Hill 7.4), NPC after the division and DC (meaningful when inside).
 struct PointStages {
   Vec3 mc, wc, vrc;
   Vec4 npcH;

@@ -18,7 +18,7 @@
 
 namespace vplab {
 
-/// The stages of domain.md, for "where the student departs": 0 the scene's MC, 1 modeling,
+/// The stages of docs/conventions.md, for "where the student departs": 0 the scene's MC, 1 modeling,
 /// 2 view orientation, 3 view mapping, 4 clipping, 5 device mapping.
 std::string_view stageName(int stage);
 

@@ -1,7 +1,7 @@
 // Vectors and matrices of the CPU pipeline: double precision, column vectors (p' = M · p), as GLM.
 //
 // The seeds write points as row vectors (p' = p · M); their matrices are the transposes of ours
-// (domain.md, "Notation"). `matrixFromRows` lets code write a matrix as it looks on paper, in the
+// (docs/conventions.md, "Notation"). `matrixFromRows` lets code write a matrix as it looks on paper, in the
 // column-vector form, inside a `// clang-format off` block.
 #pragma once
 

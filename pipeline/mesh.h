@@ -1,6 +1,6 @@
-// A polygon mesh in MC (seed chapter 16): a vertex list and faces that index it, each face
+// A polygon mesh in MC (lecture notes chapter 16): a vertex list and faces that index it, each face
 // counter-clockwise seen from outside. Faces share vertices, so the pipeline transforms each vertex
-// and computes its outcode once, whatever the number of faces using it (seed 002).
+// and computes its outcode once, whatever the number of faces using it (Hill 7.4).
 #pragma once
 
 #include "pipeline/limits.h"

@@ -10,13 +10,13 @@ using Json = nlohmann::ordered_json;
 const std::vector<MistakeModel>& mistakeModels() {
   static const std::vector<MistakeModel> models = {
       {Mistake::transposed, "transposed",
-       "the matrices are transposed: the seed's row-vector form (p' = p · M) where the column form (p' = M · p) is asked",
-       "domain.md \"Notation\"; the matrix panel shows both forms"},
+       "the matrices are transposed: the lecture notes' row-vector form (p' = p · M) where the column form (p' = M · p) is asked",
+       "docs/conventions.md \"Notation\"; the matrix panel shows both forms"},
       {Mistake::yNotFlipped, "y-not-flipped", "y is not flipped in the device mapping: y_dc = H·y instead of H·(1 − y)",
        "lecture notes 15.2.5: DC has its origin top-left, y down"},
       {Mistake::divideFirst, "divide-first",
        "the division by w comes before clipping: points behind the eye flip into view",
-       "seed 002 (clipping in homogeneous coordinates) and the divide-first demo (Clipping panel, strategy divide first)"},
+       "Hill 7.4 (clipping in homogeneous coordinates) and the divide-first demo (Clipping panel, strategy divide first)"},
       {Mistake::frontBackSwapped, "front-back-swapped",
        "front and back planes are swapped: front → z = 0, back → z = 1",
        "lecture notes 15.2.4: front → z = 1, back → z = 0 after mirroring back"},

@@ -3,17 +3,17 @@
 // what a student making that mistake would print. `vplab grade` compares a student's numbers with
 // every model and names the one they match.
 //
-//   transposed          the matrices written in the seed's row-vector form (p' = p · M, the
+//   transposed          the matrices written in the lecture notes' row-vector form (p' = p · M, the
 //                       transposes) where the dump's column form (p' = M · p) is asked for; points
 //                       computed correctly
-//   y-not-flipped       device mapping y_dc = H · y instead of H · (1 − y) (domain.md stage 5)
-//   divide-first        dividing by w before clipping (seed 002): the pipeline's divide-first strategy
+//   y-not-flipped       device mapping y_dc = H · y instead of H · (1 − y) (docs/conventions.md stage 5)
+//   divide-first        dividing by w before clipping (Hill 7.4): the pipeline's divide-first strategy
 //   front-back-swapped  front → z = 0 and back → z = 1 (F and B exchanged in the view mapping, or the
 //                       seed's mirrored system not mirrored back, 15.2.4: the same numbers)
 //   left-handed-n       N = normalize(VRP − PRP) (lecture notes 15.2.2 has PRP − VRP): the pipeline
 //                       run with PRP mirrored about VRP, which yields exactly that N, U and V
 //   degrees-as-radians  rotation angles and the oblique φ taken as radians
-//   oblique-shear-sign  the oblique shear with the opposite sign (seed 14.3.2): φ + 180°
+//   oblique-shear-sign  the oblique shear with the opposite sign (lecture notes 14.3.2): φ + 180°
 //
 // The variants change the scene (left-handed N, degrees, shear sign) or the strategy (divide first)
 // and run the real pipeline, or transform the reference dump where the mistake sits in the last

@@ -153,7 +153,7 @@ template <class Classify>
   o.outcodes.resize(n);
   o.dc.resize(n);
   const Vec4 c0(o.npcFromMc[0]), c1(o.npcFromMc[1]), c2(o.npcFromMc[2]), c3(o.npcFromMc[3]);
-  // dcFromNpc scales x and y and moves y (domain.md stage 5): its diagonal and last column are all
+  // dcFromNpc scales x and y and moves y (docs/conventions.md stage 5): its diagonal and last column are all
   // there is to it, so the vertices inside cost two multiplications more than the division.
   const double sx = dcFromNpcM[0][0], sy = dcFromNpcM[1][1], sz = dcFromNpcM[2][2];
   const double tx = dcFromNpcM[3][0], ty = dcFromNpcM[3][1], tz = dcFromNpcM[3][2];
@@ -277,7 +277,7 @@ template <class Source>
   return Fate::clipped;
 }
 
-// Trivial accept and reject by the outcodes (seed 15.2.4), Sutherland–Hodgman for the rest. Per face
+// Trivial accept and reject by the outcodes (lecture notes 15.2.4), Sutherland–Hodgman for the rest. Per face
 // only its fate is written.
 template <class Source>
 void clipFaces(ObjectRun& o, const Source& source, ClipScratch& scratch, PipelineStats& stats) {
@@ -343,7 +343,7 @@ void clipEdges(ObjectRun& o, PipelineStats& stats) {
   }
 }
 
-// Seed 15.3.4: one test of the object's bounding box can decide all its polygons at once.
+// lecture notes 15.3.4: one test of the object's bounding box can decide all its polygons at once.
 BoxVerdict boxVerdict(const Mesh& mesh, const Mat4& npcFromMc, const std::vector<Vec4>& userPlanesNpc,
                       Outcode& common) {
   Outcode all = kAllPlanes, any = 0;

@@ -1,7 +1,7 @@
-// The five stages run over a scene (seed 15.2.6, figure 15.10): every vertex of every polygon goes
+// The five stages run over a scene (lecture notes 15.2.6, figure 15.10): every vertex of every polygon goes
 // MC → WC → VRC → homogeneous NPC; polygons are clipped against the unit cube; the survivors are
 // divided by w and mapped to DC. A run keeps every stage's results for the views, the dump, the
-// vertex probe and the tests, plus statistics and operation counts (seed 15.3.3).
+// vertex probe and the tests, plus statistics and operation counts (lecture notes 15.3.3).
 //
 // Data-oriented, in two passes: one over the vertices (stages 1–3 as the one composite matrix
 // npcFromMc, the classification, and stage 5 for the vertices inside) and one over the faces (trivial
@@ -25,8 +25,8 @@
 
 namespace vplab {
 
-/// Where polygons are clipped (seed 15.3.1–15.3.3). divideFirst is wrong on purpose: it divides by w
-/// before clipping, so points behind the eye flip into view (seeds 002, 003).
+/// Where polygons are clipped (lecture notes 15.3.1–15.3.3). divideFirst is wrong on purpose: it divides by w
+/// before clipping, so points behind the eye flip into view (Hill 7.4 and the DGL wiki).
 enum class ClipStrategy { npc, wc, divideFirst };
 std::string_view toString(ClipStrategy s);
 std::optional<ClipStrategy> clipStrategyFromString(std::string_view s);
@@ -34,7 +34,7 @@ inline bool isCorrect(ClipStrategy s) { return s != ClipStrategy::divideFirst; }
 
 struct PipelineOptions {
   ClipStrategy strategy = ClipStrategy::npc;
-  bool boundingBoxTest = false;  // decide whole objects by their MC bounding box first (seed 15.3.4)
+  bool boundingBoxTest = false;  // decide whole objects by their MC bounding box first (lecture notes 15.3.4)
   bool clipEdges = false;        // also clip every unique edge (wireframe styles and overlays)
 };
 
@@ -47,7 +47,7 @@ enum class Fate : uint8_t {
 };
 std::string_view toString(Fate f);
 
-/// The bounding-box verdict for an object (seed 15.3.4).
+/// The bounding-box verdict for an object (lecture notes 15.3.4).
 enum class BoxVerdict : uint8_t { notTested, inside, outside, crossing };
 
 /// One object's pass through the pipeline. Vertex refs of clipped polygons below `vertexCount()`
@@ -61,12 +61,12 @@ struct ObjectRun {
   Mat4 npcFromMc{1.0};  // npcFromVrc · vrcFromWc · wcFromMc: stages 1–3 in one matrix
   ClipStrategy strategy = ClipStrategy::npc;
   std::array<Vec4, kPlaneCount> planesWc{};  // the frustum's planes in WC (the WC strategy's tests)
-  // The enabled user clip planes (seed 003) as linear forms in the space the strategy clips in:
+  // The enabled user clip planes (DGL wiki) as linear forms in the space the strategy clips in:
   // homogeneous NPC (npc), WC on (x, y, z, 1) (wc), NPC after the division (divide first).
   std::vector<Vec4> userForms;
 
   // Stages 1–3, per mesh vertex: homogeneous NPC, not divided yet (npcFromMc · MC: one 4 × 4
-  // product per vertex, the seed's cost model). WC and VRC on demand, the very affine products the
+  // product per vertex, the lecture notes' cost model). WC and VRC on demand, the very affine products the
   // stage matrices define (storing them would double the vertex pass's memory traffic).
   std::vector<Vec4> npcH;
   Vec3 wc(uint32_t v) const { return transformAffine(wcFromMc, mesh->positions[v]); }
@@ -83,7 +83,7 @@ struct ObjectRun {
   /// then the user planes'), computed as the vertex pass computed them for the outcode.
   ClipValues clipValuesOf(uint32_t v) const;
   /// The same, computed once per vertex when a polygon or edge crossing a plane first needs them
-  /// and kept for every other one using the vertex (seed 002), in a cache reused from run to run.
+  /// and kept for every other one using the vertex (Hill 7.4), in a cache reused from run to run.
   const ClipValues& sharedClipValues(uint32_t v);
 
   // Stage 4, per face: its fate. The faces cut with something left (fate clipped), ascending, and
@@ -135,7 +135,7 @@ struct PipelineRun {
   Mat4 npcFromVrc{1.0};
   Mat4 dcFromNpc{1.0};
   Mat4 npcFromWc{1.0};  // npcFromVrc · vrcFromWc
-  // The enabled user clip planes (seed 003) as linear forms: in WC on (x, y, z, 1), and pulled back
+  // The enabled user clip planes (DGL wiki) as linear forms: in WC on (x, y, z, 1), and pulled back
   // to homogeneous NPC (plane_wc · wcFromNpc), where they clip together with the cube's planes.
   std::vector<Vec4> userPlanesWc, userPlanesNpc;
   std::vector<ObjectRun> objects;  // one per visible scene object, in scene order
@@ -149,7 +149,7 @@ struct PipelineRun {
 void runPipeline(const Scene& scene, const PipelineOptions& options, PipelineRun& run);
 PipelineRun runPipeline(const Scene& scene, const PipelineOptions& options = {});
 
-/// The six frustum planes in WC (seed 15.3.1): plane i at a WC point p is BCi(npcFromWc · p).
+/// The six frustum planes in WC (lecture notes 15.3.1): plane i at a WC point p is BCi(npcFromWc · p).
 std::array<Vec4, kPlaneCount> frustumPlanesWc(const Mat4& npcFromWc);
 
 }  // namespace vplab

@@ -45,7 +45,7 @@ MeshSize sphereSize(int n) {
 Mesh cylinder(int n) {
   if (n < 3 || n > kMaxSegments)
     throw Error("a cylinder needs 3 to " + std::to_string(kMaxSegments) + " segments, not " + std::to_string(n));
-  const double delta = 2 * kPi / n;  // seed 16.2.1: δ = 2π/n, φ = k·δ
+  const double delta = 2 * kPi / n;  // lecture notes 16.2.1: δ = 2π/n, φ = k·δ
   Mesh m;
   for (int k = 0; k < n; ++k) m.positions.push_back({std::cos(k * delta), std::sin(k * delta), 1.0});
   for (int k = 0; k < n; ++k) m.positions.push_back({std::cos(k * delta), std::sin(k * delta), -1.0});
@@ -74,7 +74,7 @@ Mesh sphere(int n) {
   if (n < 4 || n % 2 != 0 || n > kMaxSegments)
     throw Error("a sphere needs an even number of segments from 4 to " + std::to_string(kMaxSegments) +
                 ", not " + std::to_string(n));
-  const double delta = 2 * kPi / n;  // seed 16.2.2: θ = l·δ from the north pole, φ = k·δ
+  const double delta = 2 * kPi / n;  // lecture notes 16.2.2: θ = l·δ from the north pole, φ = k·δ
   const int rings = n / 2 - 1;       // latitude circles l = 1 .. n/2 − 1
   auto point = [](double theta, double phi) {
     return Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));

@@ -1,5 +1,5 @@
 // A scene: the synthetic camera, the device, and objects built from primitives in MC, each placed in
-// WC by its modeling transform (seed 15.2.1). Plain data; scene_io.h reads and writes it as JSON.
+// WC by its modeling transform (lecture notes 15.2.1). Plain data; scene_io.h reads and writes it as JSON.
 #pragma once
 
 #include "pipeline/camera.h"
@@ -38,7 +38,7 @@ struct Light {
   bool operator==(const Light&) const = default;
 };
 
-/// A user clip plane in WC (seed 003, glClipPlane): the half-space n·(x − point) ≥ 0 is kept.
+/// A user clip plane in WC (DGL wiki, glClipPlane): the half-space n·(x − point) ≥ 0 is kept.
 struct UserClipPlane {
   Vec3 normal{1, 0, 0};
   Vec3 point{0, 0, 0};

@@ -3,7 +3,7 @@
 //   t = 0 MC → 1 WC → 2 VRC → 2.5 homogeneous NPC (before the division, drawn as its x, y, z)
 //     → 3 NPC (after the division) → 4 DC
 // The division by w is its own step (2.5 → 3): x, y, z are divided by a w that grows linearly from
-// 1 to the vertex's w, so the frustum visibly turns into the cube (seed 15.2.4). DC is drawn in
+// 1 to the vertex's w, so the frustum visibly turns into the cube (lecture notes 15.2.4). DC is drawn in
 // units of the device height with y pointing down from the top-left origin: (x_dc / H, −y_dc / H, z).
 #pragma once
 

@@ -1,8 +1,8 @@
-// Vanishing points (seed 14.2): in a perspective projection, lines parallel to a direction d that is
+// Vanishing points (lecture notes 14.2): in a perspective projection, lines parallel to a direction d that is
 // not parallel to the view plane meet in one image point, the image of the point at infinity
 // (d, 0). With homogeneous coordinates that is simply npcFromWc · (d, 0), divided by its w. A box
 // seen with one, two or three of its axes not parallel to the view plane shows one, two or three
-// vanishing points (seed figure 14.2).
+// vanishing points (lecture notes figure 14.2).
 #pragma once
 
 #include "pipeline/pipeline.h"

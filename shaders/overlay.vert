@@ -10,7 +10,7 @@ uniform mat4 wcFromMc;
 uniform mat4 vrcFromWc;
 uniform mat4 npcFromVrc;
 uniform mat4 glClipFromNpc;
-// User clip planes in WC (seed 003), for the objects' edges in the wireframe styles.
+// User clip planes in WC (DGL wiki), for the objects' edges in the wireframe styles.
 uniform int userPlaneCount;
 uniform vec4 userPlanesWc[6];
 

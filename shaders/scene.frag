@@ -1,7 +1,7 @@
 #version 330 core
 // Flat: the object's colour, unlit. Shaded (SHADED defined): ambient, diffuse and specular
 // (Blinn–Phong) from the scene's point lights, with the normal transformed by the inverse transpose
-// (seed 13.5). The variants are separate programs: a software renderer runs every instruction of a
+// (lecture notes 13.5). The variants are separate programs: a software renderer runs every instruction of a
 // shader, taken branches or not, so a flat program must not carry the lighting.
 
 in vec3 wcPosition;
@@ -10,7 +10,7 @@ in vec4 volumeNpcH;
 
 // 0: no volume test; 1: keep what is inside the other camera's view volume; 2: keep what is outside.
 // Blinn's boundary coordinates are linear in WC, and the interpolation of volumeNpcH is perspective-
-// correct, so the test splits each polygon exactly where the CPU clipper cuts it (seed 002).
+// correct, so the test splits each polygon exactly where the CPU clipper cuts it (Hill 7.4).
 uniform int volumeMode;
 uniform vec3 color;
 uniform float alpha;          // < 1: faded (outside the view volume)

@@ -1,5 +1,5 @@
 #version 330 core
-// The GLSL path of the viewing pipeline (domain.md, "The GLSL path with the same matrices"):
+// The GLSL path of the viewing pipeline (docs/conventions.md, "The GLSL path with the same matrices"):
 // the CPU pipeline's own matrices, column vectors, applied right to left:
 //   gl_Position = glClipFromNpc · npcFromVrc · vrcFromWc · wcFromMc · p
 // No other projection matrix exists. glClipFromNpc takes the NPC cube (front z = w) to GL's clip
@@ -11,13 +11,13 @@ layout(location = 1) in vec3 mcNormal;    // MC
 uniform mat4 wcFromMc;          // stage 1
 uniform mat4 vrcFromWc;         // stage 2, of the camera this view is seen through
 uniform mat4 npcFromVrc;        // stage 3
-uniform mat4 glClipFromNpc;     // the constant of domain.md
-uniform mat3 wcNormalFromMc;    // inverse transpose of wcFromMc's 3 × 3 (seed 13.5)
+uniform mat4 glClipFromNpc;     // the constant of docs/conventions.md
+uniform mat3 wcNormalFromMc;    // inverse transpose of wcFromMc's 3 × 3 (lecture notes 13.5)
 
 // Another camera's view volume (the world view shows the scene camera's volume solid and the rest
 // faded): that camera's homogeneous NPC, whose boundary coordinates the fragment shader tests.
 uniform mat4 volumeNpcFromWc;
-// User clip planes in WC (seed 003, glClipPlane): a·x + b·y + c·z + d ≥ 0 is kept.
+// User clip planes in WC (DGL wiki, glClipPlane): a·x + b·y + c·z + d ≥ 0 is kept.
 uniform int userPlaneCount;
 uniform vec4 userPlanesWc[6];
 

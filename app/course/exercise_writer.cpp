@@ -119,12 +119,12 @@ struct Writer {
     return "";
   }
 
-  // Two matrices: the column form p' = M·p (the dump's) and the seed's row form p' = p·M^T.
+  // Two matrices: the column form p' = M·p (the dump's) and the lecture notes' row form p' = p·M^T.
   void matrixPair(Document& d, const std::string& name, const Mat4& m) const {
     d.push_back({Block::math, name + " = " + mat(m) + "\\qquad " + name + "^{T} = " + mat(glm::transpose(m))});
     d.push_back({Block::paragraph,
                  L("Left the column-vector form ($p' = M \\cdot p$, as the dump prints it); right the "
-                   "seed's row-vector form ($p' = p \\cdot M^T$), its transpose.",
+                   "lecture notes' row-vector form ($p' = p \\cdot M^T$), its transpose.",
                    "Links die Form für Spaltenvektoren ($p' = M \\cdot p$, wie der Dump sie ausgibt); rechts "
                    "die Form des Skripts für Zeilenvektoren ($p' = p \\cdot M^T$), ihre Transponierte.")});
   }
@@ -277,7 +277,7 @@ struct Writer {
 
   void pointClipAndDevice(Document& d) const {
     const PointStages& p = s.point;
-    d.push_back({Block::heading, L("4. Clipping test of $P_1$ (15.2.4, seed 002)", "4. Clipping-Test von $P_1$ (15.2.4, Seed 002)")});
+    d.push_back({Block::heading, L("4. Clipping test of $P_1$ (15.2.4, Hill 7.4)", "4. Clipping-Test von $P_1$ (15.2.4, Hill 7.4)")});
     std::string bc;
     for (int i = 0; i < kPlaneCount; ++i)
       bc += std::string(i ? ",\\ " : "") + "BC_" + std::to_string(i) + " = " + num(p.bc[size_t(i)]);
@@ -298,10 +298,10 @@ struct Writer {
       d.push_back({Block::paragraph,
                    L("$w = " + num(p.npcH.w) + " < 0$: $P_1$ lies behind the eye. It is clipped away before the "
                      "division. Dividing first would give $" + vec(p.npc) + "$: $x/w$ and $y/w$ flip sign, and the "
-                     "point could land inside the cube (the divide-first mistake, seed 002).",
+                     "point could land inside the cube (the divide-first mistake, Hill 7.4).",
                      "$w = " + num(p.npcH.w) + " < 0$: $P_1$ liegt hinter dem Auge und wird vor der Division "
                      "weggeclippt. Zuerst zu dividieren ergäbe $" + vec(p.npc) + "$: $x/w$ und $y/w$ wechseln das "
-                     "Vorzeichen, der Punkt könnte im Würfel landen (der Fehler divide first, Seed 002).")});
+                     "Vorzeichen, der Punkt könnte im Würfel landen (der Fehler divide first, Hill 7.4).")});
     } else {
       d.push_back({Block::paragraph, L("$P_1$ lies outside the view volume: it is not mapped to DC.",
                                        "$P_1$ liegt außerhalb des Sichtvolumens und wird nicht auf DC abgebildet.")});

@@ -1,7 +1,7 @@
 // `vplab exercise` (issue 14): an exercise sheet and its worked solution as Markdown (with LaTeX
 // math, as course platforms and notebooks render it) and standalone LaTeX, with their figures.
 //
-// The solution follows the lecture notes' order and notation (15.2.1–15.2.5, 15.3; seed 002):
+// The solution follows the lecture notes' order and notation (15.2.1–15.2.5, 15.3; Hill 7.4):
 // modeling, view orientation (N, U, V, VPD), view mapping, clipping in homogeneous coordinates
 // (boundary coordinates, outcode, Sutherland–Hodgman plane by plane), the division by w and the
 // device mapping. Every number is the pipeline's own (pipeline/exercise.h), printed as an exact

@@ -47,7 +47,7 @@ ImageGrade gradeImage(ViewRenderer& renderer, const Scene& scene, const Image& s
     PipelineOptions options;
     options.strategy = ClipStrategy::divideFirst;
     candidates.push_back({"divide-first", "divided by w before clipping: what lies behind the eye wraps around into view",
-                          "seed 002 and the divide-first demo (Clipping panel)",
+                          "Hill 7.4 and the divide-first demo (Clipping panel)",
                           rasterizeClippedPolygons(runPipeline(s, options), s.background, s.device.width, s.device.height)});
   }
   double best = 1e300;

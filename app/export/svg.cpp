@@ -203,11 +203,11 @@ struct Canvas {
   const DepthField* depth = nullptr;  // the faces that hide lines (hidden-line styles); none: nothing hides
 
   Vec4 hom(const Vec3& p) const { return npcFromS * Vec4(p, 1.0); }
-  /// DC of the view (domain.md stage 5 at width × height) after the division by w > 0.
+  /// DC of the view (docs/conventions.md stage 5 at width × height) after the division by w > 0.
   Px pixel(const Vec4& h) const { return {width * (h.x / h.w), height * (1.0 - h.y / h.w), h.z / h.w}; }
 };
 
-// Clipping against the view camera's volume in homogeneous coordinates (domain.md stage 4), written
+// Clipping against the view camera's volume in homogeneous coordinates (docs/conventions.md stage 4), written
 // out here over linear forms so the same code also clips to the NPC view's grown cube. Plane i's
 // boundary value at p is dot(form_i, p); inside is ≥ 0.
 using Planes = std::array<Vec4, 6>;
@@ -654,7 +654,7 @@ std::vector<std::pair<Edge, EdgeRange>> clippedEdges(const ObjectRun& o) {
 
 // ---------------------------------------------------------------- 6 camera view (camera_view.cpp)
 
-// Seed 14.2's vanishing points as camera_view.cpp's addVanishingPoints draws them (in device DC).
+// lecture notes 14.2's vanishing points as camera_view.cpp's addVanishingPoints draws them (in device DC).
 void vanishingPointOverlay(Drawing& d, const Canvas& dc, const PipelineRun& run, int sceneIndex,
                            std::vector<TextLabel>& labels, std::vector<std::function<void()>>& points) {
   const ObjectRun* o = nullptr;
@@ -887,7 +887,7 @@ void worldView(Drawing& d, const Scene& scene, const PipelineRun& run, const Fra
     label(k[7], "front F", theme::kFrustum, {6, -10});
     label(k[3], "back B", theme::kFrustum, {6, -10});
   }
-  // User clip planes (seed 003): a translucent square on each, around its point, with its normal.
+  // User clip planes (DGL wiki): a translucent square on each, around its point, with its normal.
   const double planeSize = geometry::clipPlaneSquareSize(run.camera);
   for (const UserClipPlane& p : scene.clipPlanes) {
     if (!p.enabled) continue;

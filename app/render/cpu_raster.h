@@ -1,6 +1,6 @@
 // A software rasterizer for the CPU pipeline's clipped polygons: an independent oracle for what the
 // GLSL path (OpenGL, Mesa's llvmpipe) draws for the same scene. It follows GL's rules as Mesa applies
-// them, translated into DC (domain.md, stage 5 and "The GLSL path with the same matrices"):
+// them, translated into DC (docs/conventions.md, stage 5 and "The GLSL path with the same matrices"):
 //
 // - Coverage: a pixel (x, y) is covered when its centre (x + 0.5, y + 0.5) lies inside the polygon.
 //   Convex polygons are fan-triangulated from their first vertex (as mesh.h's triangulated()), and

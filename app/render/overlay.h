@@ -52,7 +52,7 @@ class OverlayRenderer {
   explicit OverlayRenderer(const GladGLContext& gl);
   /// Multiplies every line width and point size (lecture mode on a projector).
   void setScale(float scale) { scale_ = scale; }
-  /// User clip planes in WC (seed 003) for drawMeshEdges; empty: none.
+  /// User clip planes in WC (DGL wiki) for drawMeshEdges; empty: none.
   void setUserPlanes(std::vector<Vec4> planesWc) { userPlanes_ = std::move(planesWc); }
   /// Draws the batch seen through `view` into the current viewport of `width` × `height` pixels:
   /// triangles first, then lines, then points.

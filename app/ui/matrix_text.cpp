@@ -18,7 +18,7 @@ double largestEntry(const Mat4& m) {
 
 std::string matrixText(const Mat4& m, std::string_view name, MatrixFormat format, bool seedForm) {
   const Mat4 shown = seedForm ? glm::transpose(m) : m;
-  const std::string title = std::string(name) + (seedForm ? " (seed's row-vector form, p' = p · M)" : " (p' = M · p)");
+  const std::string title = std::string(name) + (seedForm ? " (lecture notes' row-vector form, p' = p · M)" : " (p' = M · p)");
   const auto rows = rowsOf(shown);
   const NumberFormat plain{6, largestEntry(m)};
   NumberFormat latex = plain;

@@ -1,5 +1,5 @@
 // Matrices as text for the matrix panel's copy buttons: plain text, Markdown and LaTeX, in the
-// column-vector form the project computes with or the seed's row-vector form (the transpose).
+// column-vector form the project computes with or the lecture notes' row-vector form (the transpose).
 #pragma once
 
 #include "pipeline/math.h"

@@ -1,4 +1,4 @@
-// The camera panel: the synthetic camera's parameters (seed 15.1–15.2) and what follows from them.
+// The camera panel: the synthetic camera's parameters (lecture notes 15.1–15.2) and what follows from them.
 #include "app/ui/panels.h"
 #include "app/ui/picking.h"
 #include "app/ui/widgets.h"
@@ -67,7 +67,7 @@ void cameraPanel(ViewerState& s) {
   c.projection = Projection(p);
   if (c.projection == Projection::oblique) {
     dragDouble(s, "d", "camera.oblique.d", c.oblique.d, 0.01f, 0.0, 4.0);
-    tooltip("d = 1 / tan α: how much a unit of depth is shortened (seed 14.3.2).",
+    tooltip("d = 1 / tan α: how much a unit of depth is shortened (lecture notes 14.3.2).",
             "d = 1/tan α: Verkürzungsfaktor der Tiefe (14.3.2).");
     dragDouble(s, "phi (deg)", "camera.oblique.phi", c.oblique.phiDeg, 0.5f, -180.0, 180.0, "%.1f");
     tooltip("φ: the angle under which depth is drawn in the view plane.", "φ: Winkel der Tiefenachse in der Bildebene.");

@@ -1,4 +1,4 @@
-// The clipping panel (strategy, bounding-box test, statistics and operation counts; seed 15.3) and
+// The clipping panel (strategy, bounding-box test, statistics and operation counts; lecture notes 15.3) and
 // the display panel (styles and overlays per view).
 #include "app/ui/panels.h"
 #include "app/ui/widgets.h"
@@ -34,10 +34,10 @@ bool styleCombo(const char* label, Style& style) {
 void clippingPanel(ViewerState& s) {
   int strategy = int(s.pipeline.strategy);
   radio("homogeneous NPC (Blinn)", &strategy, int(ClipStrategy::npc));
-  tooltip("Clip against the unit cube in homogeneous coordinates, 0 ≤ x, y, z ≤ w, then divide (seed 002).",
+  tooltip("Clip against the unit cube in homogeneous coordinates, 0 ≤ x, y, z ≤ w, then divide (Hill 7.4).",
           "Clipping im NPC in homogenen Koordinaten, dann Division durch w.");
   radio("the six frustum planes in WC", &strategy, int(ClipStrategy::wc));
-  tooltip("Clip in WC against the plane equations of the view volume (seed 15.3.1).", "Clipping im WC (15.3.1).");
+  tooltip("Clip in WC against the plane equations of the view volume (lecture notes 15.3.1).", "Clipping im WC (15.3.1).");
   radio("divide first, then clip — WRONG on purpose", &strategy, int(ClipStrategy::divideFirst));
   tooltip("Divides by w before clipping: for points behind the eye (w < 0) x/w and y/w flip sign, so edges "
           "reaching behind the eye wrap around through infinity.",
@@ -75,7 +75,7 @@ void clippingPanel(ViewerState& s) {
     ImGui::EndTable();
   }
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-  ImGui::TextWrapped("Operation counts follow the seed's cost model (15.3.3).");
+  ImGui::TextWrapped("Operation counts follow the lecture notes' cost model (15.3.3).");
   ImGui::PopStyleColor();
 }
 

@@ -1,6 +1,6 @@
 // The matrices panel (each stage's 4 × 4 matrix and the composite, live) and the vertex probe
 // (one vertex through every stage: MC, WC, VRC, homogeneous NPC, NPC, DC, its boundary coordinates
-// and outcode; seed 15.2, seed 002).
+// and outcode; lecture notes 15.2, Hill 7.4).
 #include "app/number_text.h"
 #include "app/ui/matrix_text.h"
 #include "app/ui/panels.h"
@@ -71,7 +71,7 @@ void matrixTable(ViewerState& s, const char* name, const char* id, const Mat4& m
 }  // namespace
 
 void matricesPanel(ViewerState& s) {
-  checkbox("the seed's row-vector form (p' = p · M, transposed)", &s.seedForm);
+  checkbox("the lecture notes' row-vector form (p' = p · M, transposed)", &s.seedForm);
   tooltip("The project computes with column vectors (p' = M · p, as GLM). The lecture notes write points as "
           "row vectors; their matrices are the transposes.",
           "Die Vorlesung schreibt Punkte als Zeilenvektoren; ihre Matrizen sind die transponierten.");
@@ -129,7 +129,7 @@ void probePanel(ViewerState& s) {
     row("NPC (÷ w)", "w ≤ 0: behind the eye, no image point");
     row("DC", "—");
   }
-  // Blinn's boundary coordinates of the homogeneous point, whatever the strategy (seed 002).
+  // Blinn's boundary coordinates of the homogeneous point, whatever the strategy (Hill 7.4).
   const Boundary bc = boundaryCoordinates(h);
   const Outcode code = outcodeOf(bc);
   section("boundary coordinates (inside when ≥ 0)");

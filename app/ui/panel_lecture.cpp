@@ -1,6 +1,6 @@
-// The lecture panel: the stage morph, the clipping step-through (seed 002's boundary coordinates,
-// one Sutherland–Hodgman pass at a time), vanishing points (seed 14.2) and lecture mode; and the
-// depth plot (seed 15.2.4) in the inspector.
+// The lecture panel: the stage morph, the clipping step-through (Hill 7.4's boundary coordinates,
+// one Sutherland–Hodgman pass at a time), vanishing points (lecture notes 14.2) and lecture mode; and the
+// depth plot (lecture notes 15.2.4) in the inspector.
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include "app/ui/panels.h"
 #include "app/ui/vanishing_text.h"
@@ -62,7 +62,7 @@ void stepThroughSection(ViewerState& s) {
   checkbox("step through the clipping of a polygon", &st.active);
   recordRect(s, "step.active");
   tooltip("Sutherland–Hodgman one plane at a time in homogeneous NPC: each vertex's boundary coordinate for "
-          "the plane, and the vertices each pass creates (seed 002). Shift+click a polygon in the camera view "
+          "the plane, and the vertices each pass creates (Hill 7.4). Shift+click a polygon in the camera view "
           "to choose it.",
           "Sutherland–Hodgman Ebene für Ebene; Randkoordinaten der Ecken und neue Ecken.");
   if (!st.active) return;
@@ -151,7 +151,7 @@ void stepThroughSection(ViewerState& s) {
 void vanishingSection(ViewerState& s) {
   checkbox("vanishing points of the selected object", &s.frame.overlays.vanishingPoints);
   tooltip("In a perspective projection, edges parallel to an axis that is not parallel to the view plane meet "
-          "in one image point (seed 14.2): one, two or three of them.",
+          "in one image point (lecture notes 14.2): one, two or three of them.",
           "Fluchtpunkte: parallele Kanten treffen sich im Bild in einem Punkt (14.2).");
   if (!s.frame.overlays.vanishingPoints) return;
   const ObjectRun* o = runOf(s, s.selectedObject);
@@ -194,7 +194,7 @@ void lecturePanel(ViewerState& s) {
 }
 
 // The depth plot: NPC z and GL's window depth against VRC z between B and F, the objects' depth
-// ranges, equal VRC steps and where they land in NPC (crowding near the back plane, seed 15.2.4),
+// ranges, equal VRC steps and where they land in NPC (crowding near the back plane, lecture notes 15.2.4),
 // and what 16- and 24-bit depth buffers can resolve.
 void depthPanel(ViewerState& s) {
   const Camera& c = s.run.camera;

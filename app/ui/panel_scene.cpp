@@ -1,4 +1,4 @@
-// The scene panel: the objects (seed 16) and their modeling transforms (seed 13, 15.2.1).
+// The scene panel: the objects (lecture notes, chapter 16) and their modeling transforms (lecture notes 13, 15.2.1).
 #include "app/ui/panels.h"
 #include "app/ui/widgets.h"
 
@@ -60,7 +60,7 @@ void transformEditor(ViewerState& s, SceneObject& o) {
     dragDouble(s, "deg", "object.rotation.deg", r.deg, 0.5f, 0, 0, "%.1f");
     bool through = r.through.has_value();
     if (checkbox("axis through a point", &through)) r.through = through ? std::optional<Vec3>(t.translate) : std::nullopt;
-    tooltip("Rotate about the line through this point (seed 13.3: translate, rotate, translate back).",
+    tooltip("Rotate about the line through this point (lecture notes 13.3: translate, rotate, translate back).",
             "Drehung um eine Achse durch einen Punkt (13.3).");
     if (r.through) dragVec3(s, "through", "object.rotation.through", *r.through);
     ImGui::PopID();
@@ -92,13 +92,13 @@ void objectEditor(ViewerState& s, SceneObject& o) {
       buildMesh(rebuilt, {});
       o = std::move(rebuilt);
     }
-    tooltip("n: the number of facets around (seed 16.2).", "n: Anzahl der Facetten (16.2).");
+    tooltip("n: the number of facets around (lecture notes 16.2).", "n: Anzahl der Facetten (16.2).");
   }
   if (o.shape == Shape::mesh) ImGui::TextDisabled("OBJ: %s (%zu faces)", o.file.c_str(), o.mesh ? o.mesh->faceCount() : 0);
   transformEditor(s, o);
 }
 
-// User clip planes (seed 003, glClipPlane): kept is the half-space the normal points into.
+// User clip planes (DGL wiki, glClipPlane): kept is the half-space the normal points into.
 void clipPlanesEditor(ViewerState& s) {
   std::vector<UserClipPlane>& planes = s.doc.scene().clipPlanes;
   for (size_t i = 0; i < planes.size(); ++i) {
@@ -157,7 +157,7 @@ void scenePanel(ViewerState& s, FileDialog& dialog) {
                   addObject(s, Shape::mesh, (ec || rel.empty() ? file : rel).string());
                 });
   if (scene.objects.empty()) {
-    section("user clip planes (seed 003)");
+    section("user clip planes (DGL wiki)");
     clipPlanesEditor(s);
     return;
   }
@@ -170,7 +170,7 @@ void scenePanel(ViewerState& s, FileDialog& dialog) {
     scene.objects.erase(scene.objects.begin() + s.selectedObject);
     s.probe.reset();
   }
-  section("user clip planes (seed 003)");
+  section("user clip planes (DGL wiki)");
   clipPlanesEditor(s);
 }
 

@@ -1,4 +1,4 @@
-// The Lecture tab's explanation of an object's vanishing points (seed 14.2), made from the actual
+// The Lecture tab's explanation of an object's vanishing points (lecture notes 14.2), made from the actual
 // geometry: which of the object's principal axes are parallel to the view plane for this camera,
 // and whether the projection is a perspective one at all (parallel and oblique projections keep
 // every set of parallel edges parallel, whatever their direction).

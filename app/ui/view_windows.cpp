@@ -303,7 +303,7 @@ void Viewer::cameraWindowContents() {
     caption(at, size.x, IM_COL32(140, 230, 140, 255), {"clip, then divide (right)", "clip first (right)", "right"});
     ui::errorText("Dividing by w first flips x/w and y/w of every point behind the eye (w < 0), so an edge that "
                   "reaches behind the eye wraps around through infinity. Clipping at z ≤ w first cuts it before w "
-                  "reaches 0 (seeds 002, 003).");
+                  "reaches 0 (Hill 7.4 and the DGL wiki).");
   }
   if (!hovered || !clicked()) return;
   const Vec2 mouse = mouseIn(ImGui::GetItemRectMin(), ImVec2(1, 1));

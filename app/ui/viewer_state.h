@@ -59,7 +59,7 @@ struct ViewerState {
   bool keepAspect = true;       // the window keeps the device's aspect ratio
   bool antialias = true;        // 4× multisampling in the world, NPC and morph views (off by default on
                                 // a software renderer, where it costs more than all the drawing)
-  bool seedForm = false;        // matrices in the seed's row-vector form (transposed)
+  bool seedForm = false;        // matrices in the lecture notes' row-vector form (transposed)
   bool showHelp = false;
   bool quitRequested = false;   // asked to quit; a dirty document asks first
   bool quitConfirmed = false;

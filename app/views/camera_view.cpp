@@ -1,5 +1,5 @@
 // The camera view: what the synthetic camera sees, through the GLSL path with the CPU pipeline's
-// matrices (domain.md). At the device's W × H it is pixel-aligned with DC: glViewport(0, 0, W, H).
+// matrices (docs/conventions.md). At the device's W × H it is pixel-aligned with DC: glViewport(0, 0, W, H).
 #include "app/number_text.h"
 #include "app/views/theme.h"
 #include "app/views/view_renderer.h"
@@ -20,7 +20,7 @@ ViewCamera dcCamera(const Device& device) {
   return v;
 }
 
-// Seed 14.2: the images of an object's edges along each principal axis meet in the axis's
+// lecture notes 14.2: the images of an object's edges along each principal axis meet in the axis's
 // vanishing point. Each edge is drawn on to it, dashed, in the axis's colour.
 void addVanishingPoints(const PipelineRun& run, int sceneIndex, OverlayBatch& b, std::vector<TextLabel>& labels,
                         int width, int height) {

@@ -141,7 +141,7 @@ void ViewRenderer::drawObjects(const Scene& scene, const ViewCamera& view, const
     scene_->set("glClipFromNpc", glClipFromNpc());
     scene_->set("volumeMode", pass.volumeMode);
     scene_->set("volumeNpcFromWc", pass.volumeNpcFromWc);
-    // The user clip planes in WC (seed 003), the same enabled planes the CPU pipeline clips with.
+    // The user clip planes in WC (DGL wiki), the same enabled planes the CPU pipeline clips with.
     if (planes > 0) {
       int k = 0;
       for (const UserClipPlane& p : scene.clipPlanes)

@@ -60,7 +60,7 @@ class ViewRenderer {
     Mat4 volumeNpcFromWc{1.0};
     float alpha = 1.f;
     bool shaded = true;
-    bool userPlanes = false;  // clip by the scene's user clip planes (gl_ClipDistance, seed 003)
+    bool userPlanes = false;  // clip by the scene's user clip planes (gl_ClipDistance, DGL wiki)
     /// With volumeMode ≠ 0: draw only the faces partitionByVolume kept for that mode.
     bool partitioned = false;
   };

@@ -22,8 +22,8 @@ std::string_view toString(ViewKind v);
 std::optional<ViewKind> viewKindFromString(std::string_view s);
 
 /// flat: each object's colour, unlit. shaded: lit by the scene's lights. wire: every edge.
-/// hiddenLine: visible edges solid, hidden ones dashed (seed figure 16.1). hiddenRemoved: only the
-/// visible edges (seed figure 16.3).
+/// hiddenLine: visible edges solid, hidden ones dashed (lecture notes figure 16.1). hiddenRemoved: only the
+/// visible edges (lecture notes figure 16.3).
 enum class Style { flat, shaded, wire, hiddenLine, hiddenRemoved };
 std::string_view toString(Style s);
 std::optional<Style> styleFromString(std::string_view s);
@@ -39,7 +39,7 @@ struct OverlaySettings {
   bool cube = true;          // NPC: the unit cube and its axes
   bool cpuPolygons = false;  // camera: the CPU clipper's DC polygons over the GPU image
   bool difference = false;   // camera: where the GPU image and the CPU raster differ
-  bool vanishingPoints = false;  // camera: the selected object's vanishing points and lines (seed 14.2)
+  bool vanishingPoints = false;  // camera: the selected object's vanishing points and lines (lecture notes 14.2)
   bool operator==(const OverlaySettings&) const = default;
 };
 

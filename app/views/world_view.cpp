@@ -1,7 +1,7 @@
 // The world view: an orbiting observer (itself a synthetic camera of the pipeline) sees the scene in
 // WC together with the scene camera: VRP, PRP, VUP, the U, V, N axes, the window in the view plane
 // and the view volume. What lies inside the view volume is drawn solid, the rest faded; the edges
-// the CPU clipper created are highlighted (seed 15.1, figures 15.1–15.5).
+// the CPU clipper created are highlighted (lecture notes 15.1, figures 15.1–15.5).
 #include "app/views/theme.h"
 #include "app/views/view_geometry.h"
 #include "app/views/view_renderer.h"
@@ -51,7 +51,7 @@ void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const F
   const OverlaySettings& ov = s.overlays;
 
   // The objects: inside the view volume solid, outside faded. The fragment shader splits them by
-  // the scene camera's boundary coordinates (seed 002), exactly where the CPU clipper cuts.
+  // the scene camera's boundary coordinates (Hill 7.4), exactly where the CPU clipper cuts.
   if (isFilled(style)) {
     const bool partitioned = partitionedWorld_ && target.samples() == 1;
     if (partitioned) partitionByVolume(scene, run);
@@ -134,7 +134,7 @@ void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const F
     label(c[7], "front F", theme::kFrustum, {6, -10});
     label(c[3], "back B", theme::kFrustum, {6, -10});
   }
-  // User clip planes (seed 003): a translucent square on each, around its point, with its normal.
+  // User clip planes (DGL wiki): a translucent square on each, around its point, with its normal.
   const double planeSize = geometry::clipPlaneSquareSize(run.camera);
   for (const UserClipPlane& p : scene.clipPlanes) {
     if (!p.enabled) continue;

@@ -168,7 +168,7 @@ TEST_F(Course, SolutionNumbersAreThoseOfVplabDump) {
     for (const Json* m : {&d["matrices"]["vrc_from_wc"], &d["matrices"]["npc_from_vrc"], &d["matrices"]["dc_from_npc"],
                           &o["wc_from_mc"]}) {
       EXPECT_TRUE(contains(matrices, flat(*m))) << m->dump() << " (column form)";
-      EXPECT_TRUE(contains(matrices, transposed(*m))) << m->dump() << " (the seed's row form)";
+      EXPECT_TRUE(contains(matrices, transposed(*m))) << m->dump() << " (the lecture notes' row form)";
     }
     const Json& p = o["polygons"][0];
     for (const char* stage : {"mc", "wc", "vrc"})  // P1 through the stages

@@ -21,7 +21,7 @@ const Vec3 kRed{1, 0, 0}, kBlue{0, 0, 1};
 
 /// A parallel camera whose window is the device: WC (x, y, z) lands at DC (x, H − y, z), exactly for
 /// the dyadic values the tests use (the window scales by 1/W and W, the depth range is [0, 1]), so
-/// the tests can place polygons directly in DC (domain.md stages 3 and 5).
+/// the tests can place polygons directly in DC (docs/conventions.md stages 3 and 5).
 Camera pixelCamera(int width, int height) {
   Camera c;
   c.vrp = {0, 0, 0};
@@ -296,7 +296,7 @@ TEST(CpuRaster, EqualDepthKeepsTheFirstPolygonLikeGlLess) {
 TEST(CpuRaster, PolygonOnTheBackPlaneIsNotDrawnLikeGl) {
   EXPECT_EQ(coveredCount(render(dcScene(8, 8, {dcRect("back", 8, 0, 0, 8, 8, 0, kRed)}))), 0u);
   EXPECT_EQ(coveredCount(render(dcScene(8, 8, {dcRect("near back", 8, 0, 0, 8, 8, 1e-6, kRed)}))), 64u);
-  // The front plane is inside the cube (domain.md stage 4: on a plane counts as inside).
+  // The front plane is inside the cube (docs/conventions.md stage 4: on a plane counts as inside).
   EXPECT_EQ(coveredCount(render(dcScene(8, 8, {dcRect("front", 8, 0, 0, 8, 8, 1, kRed)}))), 64u);
 }
 
@@ -388,7 +388,7 @@ TEST(CpuRaster, SubpixelSnappingRoundsVerticesToTheGrid) {
   EXPECT_EQ(coveredCount(rasterizeClippedPolygons(run, scene.background, 4, 4, 10)), 12u);
 }
 
-// Perspective, with domain.md's check camera on 320 × 240: a WC point (x, y, 0) lands at
+// Perspective, with docs/conventions.md's check camera on 320 × 240: a WC point (x, y, 0) lands at
 // DC (160 + 160·x, 120 − 160·y). For each pixel, a ray from the eye through its centre decides
 // independently which of two polygons it meets first: a square in the view plane and a rectangle
 // tilted through it (z = x / 0.6). Centres within 1e-6 of an edge or with a near tie are left out.

@@ -144,7 +144,7 @@ TEST(Parity, CpuClippedPolygonsMatchTheGlslFlatCameraView) {
   EXPECT_GE(scenesWithClipping, size_t(kSceneCount * 3 / 4));
 }
 
-// User clip planes (seed 003): the CPU pipeline clips with them in homogeneous NPC, the GLSL path
+// User clip planes (DGL wiki): the CPU pipeline clips with them in homogeneous NPC, the GLSL path
 // with gl_ClipDistance in WC; both must cut the same pixels away. Same criterion as above.
 TEST(Parity, UserClipPlanesAgreeBetweenCpuAndGlsl) {
   test::Rng rng(0xc1a9);

@@ -1,5 +1,5 @@
-// The synthetic camera and stage 2, view orientation WC → VRC (seed 15.1, 15.2.2; domain.md
-// stage 2), and every invalid camera of domain.md with its message.
+// The synthetic camera and stage 2, view orientation WC → VRC (lecture notes 15.1, 15.2.2; docs/conventions.md
+// stage 2), and every invalid camera of docs/conventions.md with its message.
 #include "pipeline/camera.h"
 
 #include "pipeline/view_mapping.h"

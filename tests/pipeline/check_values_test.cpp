@@ -1,4 +1,4 @@
-// domain.md "Check values": computed independently of the project.
+// docs/conventions.md "Check values": computed independently of the project.
 #include "pipeline/camera.h"
 #include "pipeline/device_mapping.h"
 #include "pipeline/modeling.h"
@@ -64,7 +64,7 @@ TEST(CheckValues, RunPipelineMapsTheAxisPoints) {
   EXPECT_EQ(far.objects[0].fate[0], Fate::rejected);
 }
 
-// Seed 13.4 (its text lost the multiplication dots): the basis B with x-axis (√½, √½), y-axis
+// lecture notes 13.4 (its text lost the multiplication dots): the basis B with x-axis (√½, √½), y-axis
 // (−√½, √½) and origin (4, 1) given in A; the point (2·√2, 4·√2) in B is (2, 7) in A. In 3D with
 // the z-axis (0, 0, 1) and z = 0.
 TEST(CheckValues, Seed13_4ChangeOfBasis) {
@@ -76,7 +76,7 @@ TEST(CheckValues, Seed13_4ChangeOfBasis) {
   EXPECT_NEAR(inA.y, 7, 1e-14);
   EXPECT_NEAR(inA.z, 0, 1e-14);
   EXPECT_EQ(inA.w, 1);
-  // The way back (seed 13.4: p_B = p_A · (B_A)⁻¹ in its row form).
+  // The way back (lecture notes 13.4: p_B = p_A · (B_A)⁻¹ in its row form).
   const Vec4 inB = glm::inverse(m) * Vec4(2, 7, 0, 1);
   EXPECT_NEAR(inB.x, 2 * std::sqrt(2.0), 1e-14);
   EXPECT_NEAR(inB.y, 4 * std::sqrt(2.0), 1e-14);

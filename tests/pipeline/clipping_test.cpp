@@ -1,6 +1,6 @@
 // Stage 4 kernels (clipping.h): Blinn's boundary coordinates and outcodes, Sutherland–Hodgman in
 // homogeneous coordinates, parametric edge clipping; on designed, random (fixed seed) and
-// adversarial polygons (seed 15.3, 15.2.4; seeds 002 and 003; domain.md stage 4).
+// adversarial polygons (lecture notes 15.3, 15.2.4; Hill 7.4 and the DGL wiki; docs/conventions.md stage 4).
 #include "pipeline/clipping.h"
 
 #include "pipeline/view_mapping.h"
@@ -124,7 +124,7 @@ TEST(Clipping, PlaneNames) {
 }
 
 // A point behind the eye (w < 0) always fails a test by itself, because BC0 + BC1 = w < 0 (and
-// likewise for y and z), even where its division lands inside the cube (seed 002).
+// likewise for y and z), even where its division lands inside the cube (Hill 7.4).
 TEST(Clipping, PointsBehindTheEyeAreOutside) {
   const Vec4 mirrored(-0.5, -0.5, -0.5, -1);  // divides to (0.5, 0.5, 0.5), the cube's centre
   EXPECT_EQ(test::outsideCube(divideByW(mirrored)), 0);
@@ -370,7 +370,7 @@ double maxCoordinate(std::span<const ClipVertex> poly) {
 }
 
 // Multiplying the four homogeneous coordinates of a vertex by k > 0 does not move the point it
-// stands for, nor (seed 002) the segment between two such points: the set {a·P0 + b·P1 : a, b ≥ 0}
+// stands for, nor (Hill 7.4) the segment between two such points: the set {a·P0 + b·P1 : a, b ≥ 0}
 // is the same. So the divided clip output is unchanged. With k a power of two the scaling is exact
 // and so is the agreement (bit for bit). With arbitrary k (1e-3..1e3, a different one per vertex,
 // w < 0 vertices included) the interpolation parameters differ. A created vertex carries an absolute

@@ -1,5 +1,5 @@
-// Stage 5, device mapping NPC → DC (seed 15.2.5; domain.md stage 5) and the constant that hands
-// homogeneous NPC to OpenGL's clip space (domain.md "The GLSL path with the same matrices").
+// Stage 5, device mapping NPC → DC (lecture notes 15.2.5; docs/conventions.md stage 5) and the constant that hands
+// homogeneous NPC to OpenGL's clip space (docs/conventions.md "The GLSL path with the same matrices").
 #include "pipeline/device_mapping.h"
 
 #include "pipeline/clipping.h"

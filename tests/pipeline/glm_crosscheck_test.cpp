@@ -12,7 +12,7 @@
 //   (in the view plane, distance VPD) seen from the eye and scaled to the near plane is
 //   l = xmin·dmin/VPD, r = xmax·dmin/VPD, b = ymin·dmin/VPD, t = ymax·dmin/VPD. frustumRH_NO gives
 //   GL clip coordinates with w_c = −z_eye = VPD − z_vrc (the same w as ours) and near → z_c = −w_c.
-//   NPC is then the inverse of domain.md's glClipFromNpc: x = (x_c + w)/2, y = (y_c + w)/2,
+//   NPC is then the inverse of docs/conventions.md's glClipFromNpc: x = (x_c + w)/2, y = (y_c + w)/2,
 //   z = (w − z_c)/2. So in exact arithmetic the two matrices are equal, not just proportional.
 //
 //   Parallel: the eye of lookAt at VRP (centre VRP − N), then orthoRH_NO(xmin, xmax, ymin, ymax,

@@ -1,5 +1,5 @@
 // The pure mathematics behind the lecture features: the stage morph, the clipping step-through,
-// vanishing points (seed 14.2) and the depth buffer's resolution (seed 15.2.4).
+// vanishing points (lecture notes 14.2) and the depth buffer's resolution (lecture notes 15.2.4).
 #include "pipeline/clip_steps.h"
 #include "pipeline/stage_morph.h"
 #include "pipeline/vanishing_points.h"
@@ -168,7 +168,7 @@ TEST(DepthResolution, MatchesTheSlopeOfNpcDepth) {
       EXPECT_NEAR(depthResolution(c, f, z, bits), expected, expected * 1e-6) << bits << " bits at z = " << z;
     }
     EXPECT_GT(depthResolution(c, f, -1.9, bits), depthResolution(c, f, 1.9, bits))
-        << "coarser near the back plane: equal steps crowd there (seed 15.2.4)";
+        << "coarser near the back plane: equal steps crowd there (lecture notes 15.2.4)";
   }
   Camera p = c;
   p.projection = Projection::parallel;

@@ -1,4 +1,4 @@
-// Stage 1, modeling MC → WC (seed 13.1–13.5, 15.2.1; domain.md stage 1).
+// Stage 1, modeling MC → WC (lecture notes 13.1–13.5, 15.2.1; docs/conventions.md stage 1).
 #include "pipeline/modeling.h"
 
 #include "test_util.h"
@@ -90,7 +90,7 @@ TEST(Modeling, AxisRotationsAgreeWithRotationAbout) {
   EXPECT_NEAR(glm::length(apply(rotationY(90), {0, 0, 1}) - Vec3(1, 0, 0)), 0, 1e-15);
 }
 
-// Seed 13.3 composes a rotation about an arbitrary axis: rotate the axis into z, rotate about z,
+// lecture notes 13.3 composes a rotation about an arbitrary axis: rotate the axis into z, rotate about z,
 // undo. With an orthonormal basis B = [e1 e2 a] (det 1) that is B · Rz · Bᵀ, independent of the
 // closed form. Random axes (fixed seed); 1e-14: products of three rotations with unit entries.
 TEST(Modeling, RotationAboutMatchesTheSeedsComposition) {
@@ -145,7 +145,7 @@ TEST(Modeling, ScalingAboutKeepsTheFixedPoint) {
   }
 }
 
-// Seed 13.5: normals map with the inverse transpose; under a non-uniform scale the plain matrix
+// lecture notes 13.5: normals map with the inverse transpose; under a non-uniform scale the plain matrix
 // would tilt them, the normal matrix keeps them perpendicular to every transformed tangent.
 TEST(Modeling, NormalMatrixKeepsNormalsPerpendicular) {
   test::Rng rng(135);

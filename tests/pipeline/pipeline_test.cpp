@@ -1,4 +1,4 @@
-// The five stages over a scene (pipeline.h; seed 15.2.6, 15.3): each stage is its matrix, vertices
+// The five stages over a scene (pipeline.h; lecture notes 15.2.6, 15.3): each stage is its matrix, vertices
 // are transformed and classified once and shared by their faces, the clipped output lies in the
 // cube, the fates and statistics add up, the bounding-box test and edge clipping agree with the
 // per-polygon work, and an invalid camera leaves a previous run unchanged.
@@ -120,7 +120,7 @@ TEST(Pipeline, EachStageIsItsMatrix) {
   }
 }
 
-// Seed 002: boundary coordinates and outcodes are computed once per vertex (one entry per mesh
+// Hill 7.4: boundary coordinates and outcodes are computed once per vertex (one entry per mesh
 // vertex, not per face corner) and shared by every face that uses the vertex.
 TEST(Pipeline, VerticesAreClassifiedOnce) {
   Scene scene = test::sceneWith(test::checkCamera(), {test::shapeObject("sphere", Shape::sphere, {{0.8, 0, 0}, {}, {1, 1, 1}}, 12)});
@@ -375,7 +375,7 @@ TEST(Pipeline, PolygonsInAPlaneAreInside) {
   }
 }
 
-// Seed 15.3.4: deciding whole objects by their bounding box changes nothing visible; it counts the
+// lecture notes 15.3.4: deciding whole objects by their bounding box changes nothing visible; it counts the
 // objects it decided.
 TEST(Pipeline, BoundingBoxTestGivesTheSameOutput) {
   const Camera c = test::checkCamera();

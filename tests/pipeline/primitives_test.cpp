@@ -1,4 +1,4 @@
-// The primitives of seed chapter 16 and the mesh helpers (mesh.h): counts, orientation (every face
+// The primitives of lecture notes chapter 16 and the mesh helpers (mesh.h): counts, orientation (every face
 // counter-clockwise seen from outside), closedness, sizes, and bad segment counts.
 #include "pipeline/primitives.h"
 

@@ -1,4 +1,4 @@
-// Where to clip (seed 15.3.1–15.3.3; seeds 002, 003): clipping in WC and in homogeneous NPC give
+// Where to clip (lecture notes 15.3.1–15.3.3; Hill 7.4 and the DGL wiki): clipping in WC and in homogeneous NPC give
 // the same picture; dividing by w first (wrong on purpose) wraps edges that reach behind the eye
 // around through infinity, and is only right when everything lies in front of the eye. And the
 // seed's cost model.
@@ -68,7 +68,7 @@ TEST(Strategies, WcAndNpcGiveTheSamePicture) {
       EXPECT_EQ(npc.stats.polygonsTriviallyAccepted, wc.stats.polygonsTriviallyAccepted);
       EXPECT_EQ(npc.stats.polygonsTriviallyRejected, wc.stats.polygonsTriviallyRejected);
       EXPECT_EQ(npc.stats.verticesCreated, wc.stats.verticesCreated);
-      EXPECT_EQ(npc.stats.verticesOutput, wc.stats.verticesOutput);  // seed 15.3.3: the same number of points remain
+      EXPECT_EQ(npc.stats.verticesOutput, wc.stats.verticesOutput);  // lecture notes 15.3.3: the same number of points remain
     }
   }
   EXPECT_GT(clippedFaces, 500);  // 1495 with this seed
@@ -97,7 +97,7 @@ TEST(Strategies, DivideFirstIsRightInFrontOfTheEye) {
   EXPECT_GT(clippedFaces, 300);  // 695 with this seed
 }
 
-// The designed case of seeds 002/003: a triangle with one vertex behind the eye. For the check
+// The designed case of Hill 7.4 and the DGL wiki: a triangle with one vertex behind the eye. For the check
 // camera (eye at z = 5, front plane z = 2) the triangle A = (0.5, −0.2, 0), B = (0.5, 0.2, 0),
 // C = (1, 0, 8) has x = 0.5 + z/16, so its points in front of the eye project to
 // x = 5·(0.5 + z/16)/(5 − z) ≥ 0.5, i.e. NPC x ≥ 0.75, growing without bound toward the eye plane;
@@ -167,7 +167,7 @@ TEST(Strategies, DivideFirstWrapsAroundBehindTheEye) {
   }
 }
 
-// With domain.md's depth mapping a point behind the eye (ze < 0) divides to
+// With docs/conventions.md's depth mapping a point behind the eye (ze < 0) divides to
 // z = dmin·(dmax − ze)/((dmax − dmin)·ze) < −dmin/(dmax − dmin) < 0: a single point behind the eye
 // never lands inside the cube after the division (only its x and y can), so the divide-first
 // artifact shows on edges and polygons reaching behind the eye, not on points alone.

@@ -55,7 +55,7 @@ class Rng {
   std::mt19937_64 gen_;
 };
 
-/// U, V, N and VPD by the formulas of domain.md stage 2, written again here (not pipeline code).
+/// U, V, N and VPD by the formulas of docs/conventions.md stage 2, written again here (not pipeline code).
 struct TestFrame {
   Vec3 u, v, n;
   double vpd;
@@ -151,7 +151,7 @@ inline Scene sceneWith(const Camera& camera, std::vector<SceneObject> objects) {
   return s;
 }
 
-/// The camera of domain.md's check values.
+/// The camera of docs/conventions.md's check values.
 inline Camera checkCamera() {
   Camera c;
   c.vrp = {0, 0, 0};

@@ -1,4 +1,4 @@
-// User clip planes (seed 003, glClipPlane): planes in WC that the pipeline clips with together with
+// User clip planes (DGL wiki, glClipPlane): planes in WC that the pipeline clips with together with
 // the view volume's six, in homogeneous NPC (each plane pulled back to a linear form on NPC).
 #include "pipeline/clip_steps.h"
 #include "pipeline/pipeline.h"

@@ -1,4 +1,4 @@
-// Stage 3, view mapping (seed 14, 15.2.3–15.2.4; domain.md stage 3): known points of the view
+// Stage 3, view mapping (lecture notes 14, 15.2.3–15.2.4; docs/conventions.md stage 3): known points of the view
 // volume land on the known corners of the NPC cube, the depth non-linearity, the oblique presets.
 #include "pipeline/view_mapping.h"
 
@@ -91,7 +91,7 @@ Vec3 volumeCornerVrc(const Camera& c, double x, double y, double planeZ) {
     }
     case Projection::parallel: return {x, y, planeZ};
     case Projection::oblique: {
-      // domain.md: (x, y, z) lands at (x + z·d·cos φ, y − z·d·sin φ); solve for the point at z = P.
+      // docs/conventions.md: (x, y, z) lands at (x + z·d·cos φ, y − z·d·sin φ); solve for the point at z = P.
       const double phi = c.oblique.phiDeg * kPi / 180;
       return {x - planeZ * c.oblique.d * std::cos(phi), y + planeZ * c.oblique.d * std::sin(phi), planeZ};
     }
@@ -145,7 +145,7 @@ TEST(ViewMapping, VrpLandsWhereTheWindowPutsIt) {
   }
 }
 
-// domain.md's homogeneous formulas, not only the divided result: w' = ze = VPD − z exactly, so a
+// docs/conventions.md's homogeneous formulas, not only the divided result: w' = ze = VPD − z exactly, so a
 // matrix off by a positive factor (same divided points) fails here.
 TEST(ViewMapping, PerspectiveHomogeneousFormulas) {
   test::Rng rng(0x51ab);
@@ -172,7 +172,7 @@ TEST(ViewMapping, PerspectiveHomogeneousFormulas) {
   }
 }
 
-// Seed 15.2.4: after the division NPC z is order-preserving but not linear; npcDepthOfVrcZ gives
+// lecture notes 15.2.4: after the division NPC z is order-preserving but not linear; npcDepthOfVrcZ gives
 // the divided matrix result, and equal VRC steps from front to back give shrinking NPC steps.
 TEST(ViewMapping, PerspectiveDepthIsNonLinear) {
   const Camera c = checkCamera();
@@ -226,13 +226,13 @@ TEST(ViewMapping, ObliquePresets) {
   EXPECT_EQ(kCavalier.phiDeg, 35.0);
   EXPECT_EQ(kCabinet.d, 0.5);
   EXPECT_EQ(kCabinet.phiDeg, 50.0);
-  // d = 1/tan α: cavalier α = 45°, cabinet α = 63.43° (seed 14.3.2).
+  // d = 1/tan α: cavalier α = 45°, cabinet α = 63.43° (lecture notes 14.3.2).
   EXPECT_NEAR(std::atan(1 / kCavalier.d) * 180 / kPi, 45, 1e-12);
   EXPECT_NEAR(std::atan(1 / kCabinet.d) * 180 / kPi, 63.43, 0.005);  // the seed rounds to 0.01°
 }
 
 // A point one unit behind the view plane (VRC z = −1) lands at (x − d·cos φ, y + d·sin φ) before
-// the window mapping (domain.md, seed 14.3.2): through the shear alone and through npcFromVrc.
+// the window mapping (docs/conventions.md, lecture notes 14.3.2): through the shear alone and through npcFromVrc.
 TEST(ViewMapping, ObliqueShearMovesAPointBehindTheViewPlane) {
   for (const ObliqueParams& ob : {kCavalier, kCabinet, ObliqueParams{0.8, -120}}) {
     const double phi = ob.phiDeg * kPi / 180;
