@@ -2,8 +2,8 @@
 #pragma once
 
 #include "app/context/context.h"
-#include "app/image.h"
-#include "app/views/view_renderer.h"
+#include "app/views/image.h"
+#include "app/render/view_renderer.h"
 
 namespace vplab {
 

@@ -1,7 +1,7 @@
 #include "app/course/grade_image.h"
 
 #include "app/headless.h"
-#include "app/render/cpu_raster.h"
+#include "app/export/cpu_raster.h"
 #include "pipeline/error.h"
 
 namespace vplab {

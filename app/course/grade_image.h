@@ -1,10 +1,10 @@
 // `vplab grade image` (issue 14): a student's screenshot against the reference rendered headless at
 // the student's size, with max/mean thresholds, a difference image, and the image mistake models:
 // upside down (y not flipped), mirrored (x flipped), divide first (the divide-first wrap-around,
-// Hill 7.4: the CPU's divide-first polygons rasterized by app/render/cpu_raster.h).
+// Hill 7.4: the CPU's divide-first polygons rasterized by app/export/cpu_raster.h).
 #pragma once
-#include "app/image_compare.h"
-#include "app/views/view_renderer.h"
+#include "app/export/image_compare.h"
+#include "app/render/view_renderer.h"
 #include "pipeline/scene.h"
 
 #include <optional>

@@ -4,13 +4,13 @@
 // Each view is rebuilt here from the same inputs its GPU drawing uses (views/*_view.cpp), step by
 // step in the same order, but into SVG elements instead of GL draw calls; the comments name the
 // GPU code each part mirrors.
-#include "app/number_text.h"
+#include "app/views/number_text.h"
 #include "app/export/svg.h"
 
 #include "app/headless.h"
-#include "app/render/cpu_raster.h"
+#include "app/export/cpu_raster.h"
 #include "app/render/text.h"
-#include "app/render/view_camera.h"
+#include "app/views/view_camera.h"
 #include "app/views/theme.h"
 #include "app/views/view_geometry.h"
 #include "pipeline/error.h"
@@ -159,9 +159,8 @@ std::unique_ptr<Fonts> makeFonts(float scale) {
   return f;
 }
 
-/// A label where the PNG puts it: its top-left corner after TextRenderer::draw's anchoring,
-/// rounding, clamping to the view and greedy overlap avoidance.
-struct PlacedLabel {
+/// A label where the PNG puts it (app/views/labels.h).
+struct SvgLabel {
   Vec2 topLeft;
   std::string text;
   glm::vec4 color;
@@ -169,14 +168,18 @@ struct PlacedLabel {
   bool shadow;
 };
 
-std::vector<PlacedLabel> placeLabels(const std::vector<TextLabel>& labels, const Fonts& fonts, int width,
+struct FontsMetrics final : TextMetrics {
+  const Fonts& fonts;
+  explicit FontsMetrics(const Fonts& f) : fonts(f) {}
+  Vec2 measure(std::string_view text, TextSize size) const override { return fonts.measure(std::string(text), size); }
+  float scale() const override { return fonts.scale; }
+};
+
+std::vector<SvgLabel> placeSvgLabels(const std::vector<TextLabel>& labels, const Fonts& fonts, int width,
                                      int height) {
-  std::vector<PlacedLabel> out;
-  const std::vector<glm::vec2> at = vplab::placeLabels(
-      labels, [&](const TextLabel& l) { return Vec2(fonts.measure(l.text, l.size)); }, width, height,
-      7.f * fonts.scale);
-  for (size_t i = 0; i < labels.size(); ++i)
-    out.push_back({Vec2(at[i]), labels[i].text, labels[i].color, labels[i].size, labels[i].shadow});
+  std::vector<SvgLabel> out;
+  for (const PlacedLabel& p : vplab::placeLabels(labels, FontsMetrics(fonts), width, height))
+    out.push_back({Vec2(p.topLeft), p.text, p.color, p.size, p.shadow});
   return out;
 }
 
@@ -439,7 +442,7 @@ struct PolygonElement {
   double alpha;
 };
 struct TextElement {
-  PlacedLabel label;
+  SvgLabel label;
 };
 using Element = std::variant<LineElement, CircleElement, PolygonElement, TextElement>;
 
@@ -524,7 +527,7 @@ class Drawing {
   }
 
   void labels(const std::vector<TextLabel>& labels) {
-    for (PlacedLabel& l : placeLabels(labels, *fonts_, width_, height_))
+    for (SvgLabel& l : placeSvgLabels(labels, *fonts_, width_, height_))
       elements_.push_back(TextElement{std::move(l)});
   }
 
@@ -601,7 +604,7 @@ std::string Drawing::body() const {
       }
       out += "/>\n";
     } else if (const auto* t = std::get_if<TextElement>(&e)) {
-      const PlacedLabel& p = t->label;
+      const SvgLabel& p = t->label;
       if (openText != p.size) {
         close();
         out += std::string("<g class=\"") + (p.size == TextSize::title ? "title" : "label") +

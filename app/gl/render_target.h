@@ -4,7 +4,7 @@
 #pragma once
 
 #include "app/gl/objects.h"
-#include "app/image.h"
+#include "app/views/image.h"
 
 namespace vplab::gl {
 

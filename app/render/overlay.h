@@ -5,7 +5,7 @@
 
 #include "app/gl/objects.h"
 #include "app/gl/shader.h"
-#include "app/render/view_camera.h"
+#include "app/views/view_camera.h"
 
 #include <glm/glm.hpp>
 

@@ -1,6 +1,6 @@
 #include "app/ui/matrix_text.h"
 
-#include "app/number_text.h"
+#include "app/views/number_text.h"
 
 #include <algorithm>
 #include <cmath>

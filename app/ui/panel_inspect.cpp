@@ -1,7 +1,7 @@
 // The matrices panel (each stage's 4 × 4 matrix and the composite, live) and the vertex probe
 // (one vertex through every stage: MC, WC, VRC, homogeneous NPC, NPC, DC, its boundary coordinates
 // and outcode; lecture notes 15.2, Hill 7.4).
-#include "app/number_text.h"
+#include "app/views/number_text.h"
 #include "app/ui/matrix_text.h"
 #include "app/ui/panels.h"
 #include "app/ui/widgets.h"

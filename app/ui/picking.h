@@ -2,7 +2,7 @@
 // view's own synthetic camera (the pipeline's matrices) and the nearest within a radius wins.
 #pragma once
 
-#include "app/render/view_camera.h"
+#include "app/views/view_camera.h"
 #include "app/ui/viewer_state.h"
 
 #include <optional>

@@ -1,6 +1,6 @@
 #include "app/ui/vanishing_text.h"
 
-#include "app/number_text.h"
+#include "app/views/number_text.h"
 #include "pipeline/vanishing_points.h"
 
 namespace vplab {

@@ -5,8 +5,8 @@
 //
 // Index: 1 helpers  2 drawing a view  3 the windows  4 interaction  5 CPU images for the camera view
 #define IMGUI_DEFINE_MATH_OPERATORS
-#include "app/image_compare.h"
-#include "app/render/cpu_raster.h"
+#include "app/export/image_compare.h"
+#include "app/export/cpu_raster.h"
 #include "app/ui/layout.h"
 #include "app/ui/picking.h"
 #include "app/ui/viewer.h"

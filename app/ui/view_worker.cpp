@@ -1,8 +1,8 @@
 // The views' render thread (view_worker.h).
 #include "app/ui/view_worker.h"
 
-#include "app/image_compare.h"
-#include "app/render/cpu_raster.h"
+#include "app/export/image_compare.h"
+#include "app/export/cpu_raster.h"
 #include "pipeline/error.h"
 
 #include <sys/resource.h>

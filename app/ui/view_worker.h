@@ -8,7 +8,7 @@
 
 #include "app/context/context.h"
 #include "app/gl/render_target.h"
-#include "app/views/view_renderer.h"
+#include "app/render/view_renderer.h"
 
 #include <array>
 #include <condition_variable>

@@ -11,7 +11,7 @@
 #include "app/ui/loader.h"
 #include "app/ui/view_worker.h"
 #include "app/ui/viewer_state.h"
-#include "app/views/view_renderer.h"
+#include "app/render/view_renderer.h"
 
 #include <algorithm>
 #include <array>

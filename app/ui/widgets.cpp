@@ -1,6 +1,6 @@
 #include "app/ui/widgets.h"
 
-#include "app/number_text.h"
+#include "app/views/number_text.h"
 
 #include <imgui_internal.h>
 

@@ -41,7 +41,7 @@ void help(const char* english, const char* german);
 void errorText(const std::string& text);
 /// A separator with a small heading.
 void section(const char* title);
-/// A number of a panel with formatNumber (app/number_text.h): `digits` significant digits, noise
+/// A number of a panel with formatNumber (app/views/number_text.h): `digits` significant digits, noise
 /// relative to `scale` (the numbers shown with it) printed as 0.
 std::string num(double v, double scale = 0, int digits = 4);
 /// A small button that copies `text` to the clipboard; remembers the copy for copiedNotice.

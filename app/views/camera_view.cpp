@@ -1,8 +1,8 @@
 // The camera view: what the synthetic camera sees, through the GLSL path with the CPU pipeline's
 // matrices (docs/conventions.md). At the device's W × H it is pixel-aligned with DC: glViewport(0, 0, W, H).
-#include "app/number_text.h"
+#include "app/views/number_text.h"
 #include "app/views/theme.h"
-#include "app/views/view_renderer.h"
+#include "app/render/view_renderer.h"
 
 #include "pipeline/vanishing_points.h"
 

@@ -2,7 +2,7 @@
 // polygons) and the view volume move together from MC (t = 0) through WC, VRC, homogeneous NPC and
 // NPC to DC (t = 4). The observer keeps its angles and follows the morphing scene to keep it framed.
 #include "app/views/theme.h"
-#include "app/views/view_renderer.h"
+#include "app/render/view_renderer.h"
 
 #include "pipeline/stage_morph.h"
 

@@ -4,7 +4,7 @@
 // faded, as far as it lies in front of the eye (w > 0) and not too far outside the cube.
 #include "app/views/theme.h"
 #include "app/views/view_geometry.h"
-#include "app/views/view_renderer.h"
+#include "app/render/view_renderer.h"
 
 #include "pipeline/clipping.h"
 

@@ -2,7 +2,7 @@
 // (app/export/svg.cpp), so the picture and the vector drawing are built from one description.
 #pragma once
 
-#include "app/render/text.h"
+#include "app/views/labels.h"
 #include "pipeline/pipeline.h"
 
 #include <glm/glm.hpp>

@@ -4,7 +4,7 @@
 // the CPU clipper created are highlighted (lecture notes 15.1, figures 15.1–15.5).
 #include "app/views/theme.h"
 #include "app/views/view_geometry.h"
-#include "app/views/view_renderer.h"
+#include "app/render/view_renderer.h"
 
 namespace vplab {
 

@@ -1,4 +1,4 @@
-#include "app/image.h"
+#include "app/views/image.h"
 
 #include "pipeline/error.h"
 

@@ -1,4 +1,4 @@
-#include "app/render/cpu_raster.h"
+#include "app/export/cpu_raster.h"
 
 #include <algorithm>
 #include <cmath>

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "app/image.h"
+#include "app/views/image.h"
 
 namespace vplab {
 

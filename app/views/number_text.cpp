@@ -1,4 +1,4 @@
-#include "app/number_text.h"
+#include "app/views/number_text.h"
 
 #include <algorithm>
 #include <cmath>

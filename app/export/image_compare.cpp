@@ -1,4 +1,4 @@
-#include "app/image_compare.h"
+#include "app/export/image_compare.h"
 
 #include <algorithm>
 #include <cstdint>

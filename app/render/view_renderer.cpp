@@ -1,6 +1,6 @@
 // Index: 1 names  2 construction  3 shared drawing (objects, edges, CPU polygons, lights)
 //        4 headless rendering and the "all" composition
-#include "app/views/view_renderer.h"
+#include "app/render/view_renderer.h"
 
 #include "app/views/theme.h"
 #include "pipeline/clipping.h"

@@ -1,4 +1,4 @@
-#include "app/render/view_camera.h"
+#include "app/views/view_camera.h"
 
 #include "pipeline/view_mapping.h"
 

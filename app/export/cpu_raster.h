@@ -33,7 +33,7 @@
 
 #include <cstdint>
 
-#include "app/image.h"
+#include "app/views/image.h"
 #include "pipeline/pipeline.h"
 
 namespace vplab {

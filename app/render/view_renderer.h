@@ -9,7 +9,7 @@
 #include "app/render/gpu_mesh.h"
 #include "app/render/overlay.h"
 #include "app/render/text.h"
-#include "app/render/view_camera.h"
+#include "app/views/view_camera.h"
 #include "app/views/views.h"
 #include "pipeline/pipeline.h"
 
