@@ -8,7 +8,10 @@
 //   morph   the stage morph: the visible scene moving from MC through WC, VRC and NPC to DC
 #pragma once
 
+#include "app/views/display_list.h"
+#include "app/views/labels.h"
 #include "app/views/observer.h"
+#include "pipeline/pipeline.h"
 
 #include <optional>
 #include <string>
@@ -91,5 +94,27 @@ struct FrameSettings {
   // Equal settings draw equal views (the viewer reuses a view's last image, app/ui/view_windows.cpp).
   bool operator==(const FrameSettings&) const = default;
 };
+
+/// What a view is built from. `run` is the CPU pipeline's run of `scene` (with clipEdges for the
+/// wireframe styles); the display lists built point into both, which must outlive them.
+struct ViewInput {
+  const Scene& scene;
+  const PipelineRun& run;
+  const FrameSettings& settings;
+  int width = 0, height = 0;  // each view's pixels (ViewKind::all: each of its three panels)
+  const TextMetrics& text;    // measures the labels; its scale() grows text, lines and markers
+};
+
+/// Each view as a display list, a pure function of its input (app/views/<view>_view.cpp).
+draw::DisplayList cameraView(const ViewInput& in);
+draw::DisplayList worldView(const ViewInput& in);
+draw::DisplayList npcView(const ViewInput& in);
+draw::DisplayList morphView(const ViewInput& in);
+
+/// The picture of a view kind: one panel, or for ViewKind::all the camera, world and NPC views side
+/// by side under a strip of titles. `out` is overwritten; its storage is reused where it can be
+/// (a frame of the 1M-triangle scene's NPC view is not allocated anew).
+void buildPicture(ViewKind kind, const ViewInput& in, draw::Picture& out);
+draw::Picture buildPicture(ViewKind kind, const ViewInput& in);
 
 }  // namespace vplab

@@ -4,7 +4,7 @@
 // file; without a display, `vplab` says so and leaves a dump and a picture instead. Also the check
 // half of the Xvfb smoke test (tests/CMakeLists.txt runs the window first).
 #include "app/headless.h"
-#include "app/image_compare.h"
+#include "app/export/image_compare.h"
 #include "pipeline/dump.h"
 #include "pipeline/scene_io.h"
 #include "tests/app/gl_test_support.h"

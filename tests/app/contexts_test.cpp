@@ -4,7 +4,7 @@
 // equality (no tolerance); a difference means a backend sets up different state (a different
 // framebuffer format, sample count, depth precision or default state).
 #include "app/headless.h"
-#include "app/image_compare.h"
+#include "app/export/image_compare.h"
 #include "tests/app/gl_test_support.h"
 #include "tests/pipeline/test_util.h"
 

@@ -2,8 +2,8 @@
 // solution is the pipeline's: checked against `vplab dump` of the exercise's scene; the .tex files
 // compile with pdflatex and are turned into PNG pages to look at) and `vplab grade numbers|image`
 // (exit codes, the mistake named, --json, --junit, clear errors for malformed input).
-#include "app/image.h"
-#include "app/render/cpu_raster.h"
+#include "app/views/image.h"
+#include "app/export/cpu_raster.h"
 #include "pipeline/scene_io.h"
 
 #include <gmock/gmock.h>

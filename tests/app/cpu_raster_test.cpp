@@ -1,6 +1,6 @@
-// The CPU rasterizer (app/render/cpu_raster.h), the oracle for the GLSL path: coverage by pixel
+// The CPU rasterizer (app/export/cpu_raster.h), the oracle for the GLSL path: coverage by pixel
 // centres, GL's edge rule mirrored into DC, the depth test, and the colour conversion.
-#include "app/render/cpu_raster.h"
+#include "app/export/cpu_raster.h"
 
 #include <gtest/gtest.h>
 

@@ -5,8 +5,8 @@
 #pragma once
 
 #include "app/context/context.h"
-#include "app/image.h"
-#include "app/views/view_renderer.h"
+#include "app/views/image.h"
+#include "app/render/view_renderer.h"
 #include "pipeline/error.h"
 
 #include <gtest/gtest.h>

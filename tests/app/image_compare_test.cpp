@@ -1,6 +1,6 @@
-// Image comparison (app/image_compare.h): counts, share, max and mean deltas, the threshold, the
+// Image comparison (app/export/image_compare.h): counts, share, max and mean deltas, the threshold, the
 // worst pixels, the size mismatch report and the difference picture.
-#include "app/image_compare.h"
+#include "app/export/image_compare.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

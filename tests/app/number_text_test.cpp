@@ -1,5 +1,5 @@
-// formatNumber (app/number_text.h): the one way numbers are printed, and the matrix copies made with it.
-#include "app/number_text.h"
+// formatNumber (app/views/number_text.h): the one way numbers are printed, and the matrix copies made with it.
+#include "app/views/number_text.h"
 #include "app/ui/matrix_text.h"
 
 #include <gmock/gmock.h>

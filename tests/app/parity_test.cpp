@@ -1,5 +1,5 @@
 // CPU–GPU parity: the CPU pipeline's clipped DC polygons, filled by the independent CPU rasterizer
-// (app/render/cpu_raster.h), against the GLSL path's flat camera view (renderImage, ViewKind::camera,
+// (app/export/cpu_raster.h), against the GLSL path's flat camera view (renderImage, ViewKind::camera,
 // Style::flat, at the device's size so that it is pixel-aligned with DC) on random scenes.
 //
 // Tolerance: a pixel agrees only when it is exactly equal (channel threshold 0). In the flat style
@@ -13,8 +13,8 @@
 // clip plane, a wrong edge rule along a whole edge (a row or column of pixels per polygon) or a
 // wrong depth order produce.
 #include "app/headless.h"
-#include "app/image_compare.h"
-#include "app/render/cpu_raster.h"
+#include "app/export/image_compare.h"
+#include "app/export/cpu_raster.h"
 #include "tests/app/gl_test_support.h"
 #include "tests/pipeline/test_util.h"
 

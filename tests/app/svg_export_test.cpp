@@ -25,7 +25,7 @@
 // export's 2 decimals), the partition of each edge into visible and hidden parts.
 #include "app/export/svg.h"
 #include "app/headless.h"
-#include "app/render/cpu_raster.h"
+#include "app/export/cpu_raster.h"
 #include "pipeline/error.h"
 #include "pipeline/scene_io.h"
 #include "tests/app/gl_test_support.h"

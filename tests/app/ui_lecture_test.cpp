@@ -1,8 +1,8 @@
 // The viewer as a lecture uses it (issue 11): what the panels show is right side up, says what the
 // geometry says, applies typed values once, and reads on a projector. Drives the headless viewer
 // (app/ui/headless_viewer.h) with synthetic input, like ui_test.cpp.
-#include "app/image.h"
-#include "app/render/cpu_raster.h"
+#include "app/views/image.h"
+#include "app/export/cpu_raster.h"
 #include "app/ui/headless_viewer.h"
 #include "app/ui/keys.h"
 #include "tests/app/gl_test_support.h"
