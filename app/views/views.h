@@ -111,6 +111,13 @@ draw::DisplayList worldView(const ViewInput& in);
 draw::DisplayList npcView(const ViewInput& in);
 draw::DisplayList morphView(const ViewInput& in);
 
+/// The same, built into `out` (overwritten), reusing its storage where it can: the NPC and morph
+/// views' polygon arrays keep their capacity from frame to frame.
+void cameraView(const ViewInput& in, draw::DisplayList& out);
+void worldView(const ViewInput& in, draw::DisplayList& out);
+void npcView(const ViewInput& in, draw::DisplayList& out);
+void morphView(const ViewInput& in, draw::DisplayList& out);
+
 /// The picture of a view kind: one panel, or for ViewKind::all the camera, world and NPC views side
 /// by side under a strip of titles. `out` is overwritten; its storage is reused where it can be
 /// (a frame of the 1M-triangle scene's NPC view is not allocated anew).
