@@ -1,5 +1,11 @@
-// Index: 1 SVG text  2 one display list  3 pictures and files
+// The SVG backend (svg.h; svg_view.cpp makes the views' pictures). 1 SVG text  2 a display list  3 pictures
 #include "app/export/svg.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <optional>
 
 #include "app/export/cpu_raster.h"
 #include "app/fonts/font_atlas.h"
@@ -7,13 +13,6 @@
 #include "app/views/painted_fill.h"
 #include "app/views/projection.h"
 #include "pipeline/error.h"
-
-#include <algorithm>
-#include <charconv>
-#include <cmath>
-#include <cstdio>
-#include <fstream>
-#include <optional>
 
 namespace vplab {
 
@@ -58,11 +57,12 @@ std::string hex(const glm::vec3& c) {
 std::string escaped(std::string_view text) {
   std::string out;
   for (char ch : text) {
-    if (ch == '&') out += "&amp;";
-    else if (ch == '<') out += "&lt;";
-    else if (ch == '>') out += "&gt;";
-    else if (ch == '"') out += "&quot;";
-    else out += ch;
+    const char* entity = ch == '&'   ? "&amp;"
+                         : ch == '<' ? "&lt;"
+                         : ch == '>' ? "&gt;"
+                         : ch == '"' ? "&quot;"
+                                     : nullptr;
+    entity ? out += entity : out += ch;
   }
   return out;
 }
@@ -72,17 +72,12 @@ std::string opacity(const char* attribute, double alpha) {
   return std::string(" ") + attribute + "=\"" + num(std::clamp(alpha, 0.0, 1.0), 3) + '"';
 }
 
-// ---------------------------------------------------------------- 2 one display list
+// ---------------------------------------------------------------- 2 a display list
 
 /// Whether a part that is `hidden` is drawn under `depth`, and its alpha factor.
 std::optional<float> depthAlpha(Depth depth, bool hidden) {
-  switch (depth) {
-    case Depth::ignore: return 1.f;
-    case Depth::test: return hidden ? std::nullopt : std::optional(1.f);
-    case Depth::hiddenOnly: return hidden ? std::optional(1.f) : std::nullopt;
-    case Depth::xray: return hidden ? kXrayAlpha : 1.f;
-  }
-  return std::nullopt;
+  if ((depth == Depth::test && hidden) || (depth == Depth::hiddenOnly && !hidden)) return std::nullopt;
+  return depth == Depth::xray && hidden ? kXrayAlpha : 1.f;
 }
 
 class ListWriter {
@@ -97,59 +92,61 @@ class ListWriter {
   }
 
  private:
-  // Filled faces, back to front, each part GL's depth test would keep of them; then, when they write
-  // depth, they hide what comes after (not each other: the painter's order decides that).
+  // Faces back to front. Those that write depth (opaque, depth-only) join the depth field first, so
+  // each is drawn where no face of this batch or an earlier one lies in front (GL's depth test: faces
+  // that intersect or enclose come out right); translucent ones do not write depth, as in GL.
   void draw(const Fill& fill) {
     const std::vector<PaintedPolygon> faces = paintedPolygons(fill, list_);
-    const bool opaque = fill.alpha >= 1.f;
-    if (!fill.depthOnly) {
-      out_ += "<g class=\"fill\">\n";
-      for (const PaintedPolygon& face : faces)
-        for (const DepthField::Part& part : depth_.parts(face.points))
-          if (!part.hidden) polygon(part.polygon, face.color, opaque && face.color.a >= 1.f);
-      out_ += "</g>\n";
-    }
-    if (fill.depthOnly || opaque)
-      for (const PaintedPolygon& face : faces) depth_.addFan(face.points);
+    if (fill.depthOnly || fill.alpha >= 1.f)
+      for (const PaintedPolygon& face : faces) depth_.addFan(face.points, fill.depthOnly);
+    if (fill.depthOnly) return;
+    out_ += std::string("<g class=\"fill\"") + crisp() + ">\n";
+    for (const PaintedPolygon& face : faces)
+      for (const DepthField::Part& part : depth_.parts(face.points))
+        if (!part.hidden) polygon(part.polygon, face.color, list_.antialiased && face.color.a >= 1.f);
+    out_ += "</g>\n";
   }
 
   void draw(const Triangles& t) {
     const ViewProjection proj(list_, t.space);
     std::vector<Vec4> h;
-    out_ += "<g class=\"triangles\">\n";
-    for (size_t i = 0; i + 2 < t.vertices.size(); i += 3) {
-      h = {proj.npcH(t.vertices[i].position), proj.npcH(t.vertices[i + 1].position),
-           proj.npcH(t.vertices[i + 2].position)};
-      const std::vector<PixelPoint> p = proj.polygon(h);
-      if (p.empty()) continue;
-      const glm::vec4& c = t.vertices[i].color;
-      if (t.depth == Depth::ignore) {
-        polygon(p, c, false);
-        continue;
+    out_ += std::string("<g class=\"triangles\"") + crisp() + ">\n";
+    inPasses(t.depth, [&] {
+      for (size_t i = 0; i + 2 < t.vertices.size(); i += 3) {
+        h = {proj.npcH(t.vertices[i].position), proj.npcH(t.vertices[i + 1].position),
+             proj.npcH(t.vertices[i + 2].position)};
+        const std::vector<PixelPoint> p = proj.polygon(h);
+        if (p.empty()) continue;
+        const glm::vec4& c = t.vertices[i].color;
+        const double push = t.pushedBack ? DepthField::polygonOffset(p[0], p[1], p[2]) : 0.0;
+        for (const DepthField::Part& part :
+             t.depth == Depth::ignore ? std::vector<DepthField::Part>{{p, false}} : depth_.parts(p, push))
+          if (const auto a = alphaFor(t.depth, part.hidden))
+            polygon(part.polygon, c * glm::vec4(1, 1, 1, *a), false);
       }
-      const double push = t.pushedBack ? DepthField::polygonOffset(p[0], p[1], p[2]) : 0.0;
-      for (const DepthField::Part& part : depth_.parts(p, push))
-        if (const auto a = depthAlpha(t.depth, part.hidden)) polygon(part.polygon, c * glm::vec4(1, 1, 1, *a), false);
-    }
+    });
     out_ += "</g>\n";
   }
 
   void draw(const Lines& l) {
-    out_ += "<g class=\"lines\" stroke-width=\"" + num(l.widthPx + kInkPx) + '"' +
-            (l.dashPx > 0 ? " stroke-linecap=\"butt\" stroke-dasharray=\"" + num(l.dashPx) + ' ' + num(l.dashPx) + '"'
-                          : std::string(" stroke-linecap=\"square\"")) +
+    // The class names the depth mode (readers and tests find the hidden-line passes by it).
+    const char* depth[] = {"", " depth-test", " hidden-only", " x-ray"};
+    out_ += std::string("<g class=\"lines") + depth[int(l.depth)] + "\" stroke-width=\"" +
+            num(l.widthPx + kInkPx) + '"' +
+            (l.dashPx > 0
+                 ? " stroke-linecap=\"butt\" stroke-dasharray=\"" + num(l.dashPx) + ' ' + num(l.dashPx) + '"'
+                 : std::string(" stroke-linecap=\"square\"")) +
             ">\n";
-    const ViewProjection proj(list_, l.space);
-    for (size_t i = 0; i + 1 < l.segments.size(); i += 2)
-      segment(l, proj.segment(l.segments[i].position, l.segments[i + 1].position), l.segments[i].color);
-    if (!l.meshEdges.empty()) {
-      const ViewProjection clipped(list_, l.space, l.clipPlanes);
+    const ViewProjection proj(list_, l.space), clipped(list_, l.space, l.clipPlanes);
+    inPasses(l.depth, [&] {
+      for (size_t i = 0; i + 1 < l.segments.size(); i += 2)
+        segment(l, proj.segment(l.segments[i].position, l.segments[i + 1].position), l.segments[i].color);
       for (const MeshInstance& m : l.meshEdges) {
         if (!m.mesh) continue;
         auto at = [&](uint32_t v) { return clipped.npcH(m.spaceFromMc * Vec4(m.mesh->positions[v], 1.0)); };
         for (const Edge& e : uniqueEdges(*m.mesh)) segment(l, clipped.segment(at(e.a), at(e.b)), m.color);
       }
-    }
+    });
     closeStroke();
     out_ += "</g>\n";
   }
@@ -157,50 +154,60 @@ class ListWriter {
   void draw(const Points& p) {
     const ViewProjection proj(list_, p.space);
     const double radius = 0.5 * p.sizePx;
-    for (const Vertex& v : p.points) {
-      const std::optional<PixelPoint> at = proj.point(v.position);
-      if (!at || at->x < -radius - 1 || at->y < -radius - 1 || at->x > list_.width + radius + 1 ||
-          at->y > list_.height + radius + 1)
-        continue;
-      const auto a = depthAlpha(p.depth, p.depth != Depth::ignore && depth_.hides(*at));
-      if (!a) continue;
-      // The point shader: a disc sizePx across, its outer 1.5 px darkened to 35 %.
-      out_ += "<circle cx=\"" + num(at->x) + "\" cy=\"" + num(at->y) + "\" r=\"" + num(radius - 0.75) +
-              "\" fill=\"" + hex(glm::vec3(v.color)) + "\" stroke=\"" + hex(glm::vec3(v.color) * 0.35f) +
-              "\" stroke-width=\"1.5\"" + opacity("opacity", v.color.a * *a) + "/>\n";
-    }
+    inPasses(p.depth, [&] {
+      for (const Vertex& v : p.points) {
+        const std::optional<PixelPoint> at = proj.point(v.position);
+        if (!at) continue;  // behind the eye, before the front or beyond the back plane
+        const auto a = alphaFor(p.depth, p.depth != Depth::ignore && depth_.hides(*at));
+        if (!a) continue;
+        // The point shader: a disc sizePx across, its outer 1.5 px darkened to 35 %.
+        out_ += "<circle cx=\"" + num(at->x) + "\" cy=\"" + num(at->y) + "\" r=\"" + num(radius - 0.75) +
+                "\" fill=\"" + hex(glm::vec3(v.color)) + "\" stroke=\"" + hex(glm::vec3(v.color) * 0.35f) +
+                "\" stroke-width=\"1.5\"" + opacity("opacity", v.color.a * *a) + "/>\n";
+      }
+    });
   }
 
   void draw(const Text& t) {
-    for (TextSize size : {TextSize::label, TextSize::title}) {
-      bool open = false;
-      for (const PlacedLabel& p : t.labels) {
-        if (p.size != size) continue;
-        if (!open)
-          out_ += std::string("<g class=\"") + (size == TextSize::title ? "title" : "label") + "\" font-family=\"" +
-                  fonts_.cssFamily() + "\" font-size=\"" + num(fonts_.emPx(size)) +
-                  // the PNG's shadow: the glyphs drawn dark one pixel off in four directions
-                  "\" stroke=\"#000000\" stroke-width=\"2\" stroke-linejoin=\"round\" paint-order=\"stroke\">\n";
-        open = true;
-        out_ += "<text x=\"" + num(p.topLeft.x) + "\" y=\"" + num(p.topLeft.y + fonts_.baselinePx(size)) +
-                "\" fill=\"" + hex(glm::vec3(p.color)) + '"' + opacity("fill-opacity", p.color.a) +
-                (p.shadow ? opacity("stroke-opacity", 0.75 * p.color.a) : std::string(" stroke=\"none\"")) + '>' +
-                escaped(p.text) + "</text>\n";
-      }
-      if (open) out_ += "</g>\n";
-    }
+    // The PNG's shadow (the glyphs drawn dark one pixel off in four directions) as a stroke under them.
+    out_ += std::string("<g class=\"labels\" font-family=\"") + fonts_.cssFamily() +
+            "\" stroke=\"#000000\" stroke-width=\"2\" stroke-linejoin=\"round\" paint-order=\"stroke\">\n";
+    for (const PlacedLabel& p : t.labels)
+      out_ += "<text x=\"" + num(p.topLeft.x) + "\" y=\"" + num(p.topLeft.y + fonts_.baselinePx(p.size)) +
+              "\" font-size=\"" + num(fonts_.emPx(p.size)) + "\" fill=\"" + hex(glm::vec3(p.color)) + '"' +
+              opacity("fill-opacity", p.color.a) +
+              (p.shadow ? opacity("stroke-opacity", 0.75 * p.color.a) : std::string(" stroke=\"none\"")) +
+              '>' + escaped(p.text) + "</text>\n";
+    out_ += "</g>\n";
   }
+
+  // X-ray batches are drawn as GL draws them, in two passes: every hidden part (faint), then every
+  // visible part, so a visible line lies over the hidden lines of its own batch.
+  template <class Body>
+  void inPasses(Depth depth, const Body& body) {
+    if (depth != Depth::xray) return body();
+    for (bool hidden : {true, false}) pass_ = hidden, body();
+    pass_.reset();
+  }
+  std::optional<float> alphaFor(Depth depth, bool hidden) const {
+    if (pass_ && hidden != *pass_) return std::nullopt;
+    return depthAlpha(depth, hidden);
+  }
+
+  // A list GL draws without multisampling (the camera view, pixel-aligned with DC) has aliased
+  // faces: so have the SVG's (the lines keep their own smooth edge, as the line shader's).
+  const char* crisp() const { return list_.antialiased ? "" : " shape-rendering=\"crispEdges\""; }
 
   // A segment's parts as depth decides, consecutive lines of one colour in one group.
   void segment(const Lines& l, const std::optional<PixelSegment>& s, const glm::vec4& color) {
     if (!s) return;
     if (l.depth == Depth::ignore || depth_.empty()) {
-      if (const auto a = depthAlpha(l.depth, false)) line(l, s->a, s->b, s->dashOrigin, color.a * *a, color);
+      if (const auto a = alphaFor(l.depth, false)) line(l, s->a, s->b, s->dashOrigin, color.a * *a, color);
       return;
     }
     const double len = distancePx(s->a, s->b);
     for (const DepthField::Piece& piece : depth_.pieces(s->a, s->b))
-      if (const auto a = depthAlpha(l.depth, piece.hidden))
+      if (const auto a = alphaFor(l.depth, piece.hidden))
         line(l, mix(s->a, s->b, piece.t0), mix(s->a, s->b, piece.t1), s->dashOrigin + piece.t0 * len,
              color.a * *a, color);
   }
@@ -214,15 +221,13 @@ class ListWriter {
       out_ += "<g stroke=\"" + hex(glm::vec3(color)) + '"' + opacity("stroke-opacity", alpha) + ">\n";
       stroke_ = stroke;
     }
-    out_ += "<line x1=\"";
-    appendNum(out_, a.x);
-    out_ += "\" y1=\"";
-    appendNum(out_, a.y);
-    out_ += "\" x2=\"";
-    appendNum(out_, b.x);
-    out_ += "\" y2=\"";
-    appendNum(out_, b.y);
-    out_ += '"';
+    out_ += "<line";
+    for (const auto& [name, v] :
+         {std::pair(" x1=\"", a.x), {" y1=\"", a.y}, {" x2=\"", b.x}, {" y2=\"", b.y}}) {
+      out_ += name;
+      appendNum(out_, v);
+      out_ += '"';
+    }
     if (const double phase = std::fmod(along, 2.0 * l.dashPx); l.dashPx > 0 && phase > 0.005)
       out_ += " stroke-dashoffset=\"" + num(phase) + '"';
     out_ += "/>\n";
@@ -241,7 +246,8 @@ class ListWriter {
       appendNum(out_, points[i].y);
     }
     out_ += "\" fill=\"" + hex(glm::vec3(color)) + '"' + opacity("fill-opacity", color.a);
-    if (sealed) out_ += " stroke=\"" + hex(glm::vec3(color)) + "\" stroke-width=\"0.5\" stroke-linejoin=\"round\"";
+    if (sealed)
+      out_ += " stroke=\"" + hex(glm::vec3(color)) + "\" stroke-width=\"0.5\" stroke-linejoin=\"round\"";
     out_ += "/>\n";
   }
 
@@ -250,11 +256,12 @@ class ListWriter {
   std::string& out_;
   DepthField depth_;
   std::optional<glm::vec4> stroke_;
+  std::optional<bool> pass_;  // the x-ray pass: hidden parts (true) or visible parts (false)
 };
 
 }  // namespace
 
-// ---------------------------------------------------------------- 3 pictures and files
+// ---------------------------------------------------------------- 3 pictures
 
 size_t svgFaceCount(const draw::Picture& picture) {
   size_t n = 0;
@@ -266,32 +273,27 @@ size_t svgFaceCount(const draw::Picture& picture) {
 
 std::string svgOfPicture(const draw::Picture& picture, const FontAtlas& fonts, std::string_view title) {
   if (picture.width < 1 || picture.height < 1)
-    throw Error("SVG export: the size " + std::to_string(picture.width) + " x " + std::to_string(picture.height) +
-                " is not at least 1 x 1 pixels");
+    throw Error("SVG export: the size " + std::to_string(picture.width) + " x " +
+                std::to_string(picture.height) + " is not at least 1 x 1 pixels");
   if (const size_t faces = svgFaceCount(picture); faces > kMaxSvgFaces)
     throw Error("SVG export: the picture has " + std::to_string(faces) + " filled faces, more than the " +
-                std::to_string(kMaxSvgFaces) + " an SVG document can hold and still open; export a PNG instead");
+                std::to_string(kMaxSvgFaces) +
+                " an SVG document can hold and still open; export a PNG instead");
   const std::string w = std::to_string(picture.width), h = std::to_string(picture.height);
-  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
-                    "version=\"1.1\" width=\"" + w + "\" height=\"" + h + "\" viewBox=\"0 0 " + w + ' ' + h +
-                    "\">\n<title>" + escaped(title) + "</title>\n<rect class=\"background\" width=\"" + w +
-                    "\" height=\"" + h + "\" fill=\"" + hex(picture.background) + "\"/>\n";
+  std::string out =
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
+      "version=\"1.1\" width=\"" +
+      w + "\" height=\"" + h + "\" viewBox=\"0 0 " + w + ' ' + h + "\">\n<title>" + escaped(title) +
+      "</title>\n<rect class=\"background\" width=\"" + w + "\" height=\"" + h + "\" fill=\"" +
+      hex(picture.background) + "\"/>\n";
   for (const Panel& p : picture.panels) {
     const std::string pw = std::to_string(p.list.width), ph = std::to_string(p.list.height);
-    out += "<svg class=\"panel\" x=\"" + std::to_string(p.x) + "\" y=\"" + std::to_string(p.y) + "\" width=\"" + pw +
-           "\" height=\"" + ph + "\" viewBox=\"0 0 " + pw + ' ' + ph + "\">\n";
+    out += "<svg class=\"panel\" x=\"" + std::to_string(p.x) + "\" y=\"" + std::to_string(p.y) +
+           "\" width=\"" + pw + "\" height=\"" + ph + "\" viewBox=\"0 0 " + pw + ' ' + ph + "\">\n";
     ListWriter(p.list, fonts, out).write();
     out += "</svg>\n";
   }
   return out + "</svg>\n";
-}
-
-void writeSvg(const std::string& svg, const std::filesystem::path& file) {
-  std::ofstream out(file, std::ios::binary);
-  if (!out) throw Error(file.string() + ": cannot open the SVG file for writing");
-  out.write(svg.data(), std::streamsize(svg.size()));
-  out.close();
-  if (!out) throw Error(file.string() + ": cannot write the SVG file");
 }
 
 }  // namespace vplab

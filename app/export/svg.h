@@ -12,19 +12,20 @@
 // line), solid lines with square caps (they end half their width beyond their end points), dashes
 // dashPx on, dashPx off in phase with GL's. Markers are discs with the point shader's dark rim.
 // Labels are <text> in the font atlas's family and size at the places the views gave them, with
-// the PNG's dark shadow as a stroke painted under the glyphs. Opaque faces get a 0.5 px stroke of
-// their own colour, which closes the hairline seams an anti-aliased renderer leaves between
-// neighbouring faces. Coordinates have at most 2 decimals.
+// the PNG's dark shadow as a stroke painted under the glyphs. Faces of a list GL multisamples get,
+// when opaque, a 0.5 px stroke of their own colour, which closes the hairline seams an anti-aliased
+// renderer leaves between neighbouring faces; a list GL draws aliased (the camera view) has its
+// faces drawn with shape-rendering="crispEdges", aliased as well. Coordinates have at most 2 decimals.
 #pragma once
-
-#include "app/views/display_list.h"
-#include "app/views/views.h"
-#include "pipeline/pipeline.h"
 
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
+
+#include "app/views/display_list.h"
+#include "app/views/views.h"
+#include "pipeline/pipeline.h"
 
 namespace vplab {
 
@@ -42,16 +43,15 @@ size_t svgFaceCount(const draw::Picture& picture);
 /// filled faces.
 std::string svgOfPicture(const draw::Picture& picture, const FontAtlas& fonts, std::string_view title);
 
-/// Why a view cannot be exported as SVG with these settings (a filled style, the morph view), or
-/// nullopt when it can. For greying out a menu entry.
-std::optional<std::string> svgExportError(ViewKind view, const FrameSettings& settings);
+/// Why a view of the scene cannot be exported as SVG with these settings (its filled panels would
+/// draw more than kMaxSvgFaces faces, estimated from the scene's faces), or nullopt when it can.
+/// For greying out a menu entry.
+std::optional<std::string> svgExportError(ViewKind view, const Scene& scene, const FrameSettings& settings);
 
-/// The view as a standalone SVG document of width × height pixels (ViewKind::all: three panels of
-/// width × height and a title strip, like the PNG), viewBox in pixels, origin top-left as DC.
-/// `run` is the CPU pipeline's run of `scene` (with PipelineOptions::clipEdges; without, the edges
-/// are clipped here). `scale`: lecture mode, ViewRenderer::setScale's factor for the text, the line
-/// widths and the marker sizes. Throws vplab::Error when svgExportError says why, or for a size
-/// below 1 × 1.
+/// The view as a standalone SVG document: the picture buildPicture makes of it (ViewKind::all:
+/// three panels of width × height and a title strip, like the PNG), with labels measured by a font
+/// atlas of `scale` (lecture mode: text, line widths and marker sizes grow with it). `run` is the
+/// CPU pipeline's run of `scene`. Throws vplab::Error for a size below 1 × 1 or too many faces.
 std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run,
                       const FrameSettings& settings, int width, int height, float scale = 1.f);
 

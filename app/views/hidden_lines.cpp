@@ -22,11 +22,12 @@ double DepthField::polygonOffset(const PixelPoint& a, const PixelPoint& b, const
   return std::max(std::abs(zx), std::abs(zy)) + r2;
 }
 
-void DepthField::addFan(std::span<const PixelPoint> polygon) {
-  for (size_t i = 1; i + 1 < polygon.size(); ++i) addTriangle(polygon[0], polygon[i], polygon[i + 1]);
+void DepthField::addFan(std::span<const PixelPoint> polygon, bool pushedBack) {
+  for (size_t i = 1; i + 1 < polygon.size(); ++i)
+    addTriangle(polygon[0], polygon[i], polygon[i + 1], pushedBack);
 }
 
-void DepthField::addTriangle(const PixelPoint& a, const PixelPoint& b, const PixelPoint& c) {
+void DepthField::addTriangle(const PixelPoint& a, const PixelPoint& b, const PixelPoint& c, bool pushedBack) {
   const double area2 = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
   if (!(std::abs(area2) > 1e-9)) return;  // degenerate (or not finite): GL draws nothing either
   Triangle t;
@@ -39,7 +40,7 @@ void DepthField::addTriangle(const PixelPoint& a, const PixelPoint& b, const Pix
   t.zx = ((b.z - a.z) * (c.y - a.y) - (c.z - a.z) * (b.y - a.y)) / area2;
   t.zy = ((c.z - a.z) * (b.x - a.x) - (b.z - a.z) * (c.x - a.x)) / area2;
   t.z0 = a.z - t.zx * a.x - t.zy * a.y;
-  t.offset = polygonOffset(a, b, c);
+  t.offset = pushedBack ? polygonOffset(a, b, c) : 2.0 * std::ldexp(1.0, -24);
   triangles_.push_back(t);
   indexed_ = false;
 }
@@ -139,12 +140,13 @@ std::vector<DepthField::Part> DepthField::parts(std::span<const PixelPoint> poly
               hides(mix(p, polygon[(i + 1) % polygon.size()], 0.5), pushBack) == hidden;
   }
   if (uniform) return {{whole, hidden}};
-  for (size_t i = 1; i + 1 < polygon.size(); ++i) split(polygon[0], polygon[i], polygon[i + 1], pushBack, 0, out);
+  for (size_t i = 1; i + 1 < polygon.size(); ++i)
+    split(polygon[0], polygon[i], polygon[i + 1], pushBack, 0, out);
   return out;
 }
 
-void DepthField::split(const PixelPoint& a, const PixelPoint& b, const PixelPoint& c, double pushBack, int depth,
-                       std::vector<Part>& out) const {
+void DepthField::split(const PixelPoint& a, const PixelPoint& b, const PixelPoint& c, double pushBack,
+                       int depth, std::vector<Part>& out) const {
   const PixelPoint centre{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3};
   const double longest = std::max({distancePx(a, b), distancePx(b, c), distancePx(c, a)});
   const bool ha = hides(a, pushBack), hb = hides(b, pushBack), hc = hides(c, pushBack);

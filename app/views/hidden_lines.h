@@ -4,18 +4,19 @@
 // screen-space triangles with their exact plane depth (not a pixel z-buffer, so the answer does not
 // depend on pixel centres and where it changes along a segment is found to a fraction of a pixel),
 // sorted into a grid of cells. A face hides a point only when it lies in front of it by more than
-// the glPolygonOffset(1, 2) the views push the faces back by: GL_LEQUAL fails when
+// the glPolygonOffset(1, 2) the views push the depth-only faces back by: GL_LEQUAL fails when
 // 1 − z_point > 1 − z_face + m + 2r, m the face's largest depth slope per pixel (factor 1), r the
-// depth buffer's resolution 2^−24 (units 2).
+// depth buffer's resolution 2^−24 (units 2). Faces drawn in colour are not pushed back: they hide
+// what lies more than 2r behind them.
 //
 // No GL.
 #pragma once
 
-#include "app/views/projection.h"
-
 #include <cstdint>
 #include <span>
 #include <vector>
+
+#include "app/views/projection.h"
 
 namespace vplab::draw {
 
@@ -23,8 +24,10 @@ class DepthField {
  public:
   DepthField(int width, int height) : width_(width), height_(height) {}
 
-  /// A polygon as GL fans it, from its first vertex; every triangle writes depth.
-  void addFan(std::span<const PixelPoint> polygon);
+  /// A polygon as GL fans it, from its first vertex; every triangle writes depth. `pushedBack`: drawn
+  /// with glPolygonOffset(1, 2) (the hidden-line styles' depth-only faces); else it hides what lies
+  /// behind it by more than the two depth-buffer steps of rounding only.
+  void addFan(std::span<const PixelPoint> polygon, bool pushedBack = true);
   bool empty() const { return triangles_.empty(); }
   size_t triangleCount() const { return triangles_.size(); }
 
@@ -62,7 +65,7 @@ class DepthField {
     double zx, zy, z0;  // z = zx·x + zy·y + z0
     double offset;      // the polygon offset in z
   };
-  void addTriangle(const PixelPoint& a, const PixelPoint& b, const PixelPoint& c);
+  void addTriangle(const PixelPoint& a, const PixelPoint& b, const PixelPoint& c, bool pushedBack);
   void index() const;  // sorts the triangles into the grid when some were added since the last query
   void split(const PixelPoint& a, const PixelPoint& b, const PixelPoint& c, double pushBack, int depth,
              std::vector<Part>& out) const;

@@ -18,19 +18,14 @@ Vec3 newellNormal(std::span<const Vec3> p) {
   return n;
 }
 
-Vec3 centroid(std::span<const Vec3> p) {
-  Vec3 c(0);
-  for (const Vec3& q : p) c += q;
-  return p.empty() ? c : c / double(p.size());
-}
-
 // The six forms of Blinn's test "inside the other camera's volume" (scene.frag's volumeMode) as forms
 // on the observer's homogeneous NPC: BC_k(V·X) = (Vᵀ·bc_k)·X for the batch's point X.
 std::array<Vec4, kPlaneCount> volumeForms(const ViewProjection& proj, const Mat4& npcFromSpace) {
-  const Vec4 cube[kPlaneCount] = {Vec4(1, 0, 0, 0), Vec4(-1, 0, 0, 1), Vec4(0, 1, 0, 0),
+  const Vec4 cube[kPlaneCount] = {Vec4(1, 0, 0, 0),  Vec4(-1, 0, 0, 1), Vec4(0, 1, 0, 0),
                                   Vec4(0, -1, 0, 1), Vec4(0, 0, 1, 0),  Vec4(0, 0, -1, 1)};
   std::array<Vec4, kPlaneCount> out;
-  for (int k = 0; k < kPlaneCount; ++k) out[size_t(k)] = proj.formInNpc(glm::transpose(npcFromSpace) * cube[k]);
+  for (int k = 0; k < kPlaneCount; ++k)
+    out[size_t(k)] = proj.formInNpc(glm::transpose(npcFromSpace) * cube[k]);
   return out;
 }
 
@@ -43,30 +38,43 @@ class Painter {
 
   // One face: `space` its corners in the batch's space (after the division), `npcH` the observer's
   // homogeneous NPC of them; `normal` its normal for lighting.
-  void face(std::span<const Vec3> space, std::span<const Vec4> npcH, const Vec3& normal, const glm::vec4& color) {
+  void face(std::span<const Vec3> space, std::span<const Vec4> npcH, const Vec3& normal,
+            const glm::vec4& color) {
     pieces_.clear();
     if (fill_.volume.keep == VolumeTest::Keep::all) {
-      pieces_.push_back(proj_.polygon(npcH));
+      pieces_.push_back(proj_.clip(npcH));
     } else if (fill_.volume.keep == VolumeTest::Keep::inside) {
-      pieces_.push_back(proj_.polygon(npcH, volume_));
+      pieces_.push_back(proj_.clip(npcH, volume_));
     } else {  // outside: outside plane k and inside planes 0 … k − 1, disjoint, together the complement
       std::vector<Vec4> forms;
       for (int k = 0; k < kPlaneCount; ++k) {
         forms.push_back(-volume_[size_t(k)]);
-        pieces_.push_back(proj_.polygon(npcH, forms));
+        pieces_.push_back(proj_.clip(npcH, forms));
         forms.back() = volume_[size_t(k)];
       }
     }
+    // The depth to sort by, and the point to light: the centroid of what is drawn of the face (a
+    // face reaching behind the eye is lit where it is seen, as the fragments light it).
     double z = 0;
+    Vec3 at(0);
     size_t n = 0;
-    for (const auto& p : pieces_)
-      for (const PixelPoint& q : p) z += q.z, ++n;
+    for (const auto& piece : pieces_)
+      for (const Vec4& h : piece) {
+        z += h.z / h.w;
+        at += proj_.spaceOf(h);
+        ++n;
+      }
     if (n == 0) return;
     glm::vec4 c(glm::vec3(color), color.a * fill_.alpha);
     if (fill_.lit)
-      c = glm::vec4(litColor(fill_, glm::vec3(color), centroid(space), normal, newellNormal(space), eye_), c.a);
-    for (auto& p : pieces_)
-      if (p.size() >= 3) out_.push_back({std::move(p), c, z / double(n)});
+      c = glm::vec4(litColor(fill_, glm::vec3(color), at / double(n), normal, newellNormal(space), eye_),
+                    c.a);
+    for (const auto& piece : pieces_) {
+      if (piece.size() < 3) continue;
+      PaintedPolygon p{{}, c, z / double(n)};
+      for (const Vec4& h : piece) p.points.push_back(proj_.pixel(h));
+      out_.push_back(std::move(p));
+    }
   }
 
   std::vector<PaintedPolygon> take() {
@@ -81,7 +89,7 @@ class Painter {
   Vec4 eye_;
   ViewProjection proj_;
   std::array<Vec4, kPlaneCount> volume_{};
-  std::vector<std::vector<PixelPoint>> pieces_;
+  std::vector<std::vector<Vec4>> pieces_;
   std::vector<PaintedPolygon> out_;
 };
 

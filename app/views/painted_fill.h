@@ -1,17 +1,17 @@
 // Filled faces without a depth buffer (the SVG backend): the painter's algorithm (Foley et al. 15.5,
 // "depth sort"). Each face of a Fill is projected and clipped as GL would (app/views/projection.h:
 // the view volume, the user clip planes, Fill::volume), coloured once as the shaders colour it
-// (flat: its colour; lit: shaders/scene.frag's Blinn–Phong, lecture notes 13.5, evaluated at the
-// face's centroid with its normal there), and the faces are sorted back to front by the mean depth
-// of their clipped corners. Unlike the depth buffer this cannot show faces that intersect or
-// overlap cyclically, and a lit face is one colour where GL interpolates across it.
+// (flat: its colour; lit: shaders/scene.frag's Blinn–Phong, lecture notes 13.5, evaluated once,
+// at the centroid of the face's clipped corners, with the face's normal there), and the faces are
+// sorted back to front by the mean depth of their clipped corners. Unlike the depth buffer this cannot show
+// faces that intersect or overlap cyclically, and a lit face is one colour where GL interpolates across it.
 //
 // No GL.
 #pragma once
 
-#include "app/views/projection.h"
-
 #include <vector>
+
+#include "app/views/projection.h"
 
 namespace vplab::draw {
 

@@ -1,10 +1,10 @@
 #include "app/views/projection.h"
 
-#include "pipeline/device_mapping.h"
-#include "pipeline/error.h"
-
 #include <cmath>
 #include <string>
+
+#include "pipeline/device_mapping.h"
+#include "pipeline/error.h"
 
 namespace vplab::draw {
 
@@ -17,7 +17,7 @@ namespace {
 
 // Blinn's boundary coordinates BC0..BC5 (x, w − x, y, w − y, z, w − z) as forms on homogeneous NPC.
 constexpr int kFrontForm = kFront;  // BC5 = w − z: the front plane, GL's near plane
-const Vec4 kCubeForms[kPlaneCount] = {Vec4(1, 0, 0, 0), Vec4(-1, 0, 0, 1), Vec4(0, 1, 0, 0),
+const Vec4 kCubeForms[kPlaneCount] = {Vec4(1, 0, 0, 0),  Vec4(-1, 0, 0, 1), Vec4(0, 1, 0, 0),
                                       Vec4(0, -1, 0, 1), Vec4(0, 0, 1, 0),  Vec4(0, 0, -1, 1)};
 
 // The view's pixels as NPC: the inverse of the device mapping x_px = W·x, y_px = H·(1 − y), at the
@@ -48,7 +48,8 @@ ViewProjection::ViewProjection(const DisplayList& list, Space space, std::span<c
   if (clipPlanes.size() > size_t(kMaxUserPlanes))
     throw Error("display list: " + std::to_string(clipPlanes.size()) + " user clip planes, at most " +
                 std::to_string(kMaxUserPlanes));
-  spaceFromNpcT_ = glm::transpose(glm::inverse(npcFromSpace_));
+  spaceFromNpc_ = glm::inverse(npcFromSpace_);
+  spaceFromNpcT_ = glm::transpose(spaceFromNpc_);
   forms_.assign(std::begin(kCubeForms), std::end(kCubeForms));
   for (const Vec4& p : clipPlanes) forms_.push_back(formInNpc(p));
 }
@@ -68,8 +69,7 @@ std::optional<PixelSegment> ViewProjection::segment(const Vec4& a, const Vec4& b
   return PixelSegment{p0, p1, distancePx(origin, p0)};
 }
 
-std::vector<PixelPoint> ViewProjection::polygon(std::span<const Vec4> npcH, std::span<const Vec4> extraForms) const {
-  std::vector<PixelPoint> out;
+std::vector<Vec4> ViewProjection::clip(std::span<const Vec4> npcH, std::span<const Vec4> extraForms) const {
   std::vector<Vec4> clipped = clipPolygonByForms(npcH, forms_, scratch_);
   if (!extraForms.empty() && clipped.size() >= 3) {
     if (extraForms.size() > size_t(kMaxClipPlanes))
@@ -77,9 +77,14 @@ std::vector<PixelPoint> ViewProjection::polygon(std::span<const Vec4> npcH, std:
                   std::to_string(kMaxClipPlanes));
     clipped = clipPolygonByForms(clipped, extraForms, scratch_);
   }
-  if (clipped.size() < 3) return out;
-  out.reserve(clipped.size());
-  for (const Vec4& h : clipped) out.push_back(pixel(h));
+  if (clipped.size() < 3) clipped.clear();
+  return clipped;
+}
+
+std::vector<PixelPoint> ViewProjection::polygon(std::span<const Vec4> npcH,
+                                                std::span<const Vec4> extraForms) const {
+  std::vector<PixelPoint> out;
+  for (const Vec4& h : clip(npcH, extraForms)) out.push_back(pixel(h));
   return out;
 }
 

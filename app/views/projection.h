@@ -9,12 +9,12 @@
 // No GL: this is what GL's clipper and viewport do for the GL backend.
 #pragma once
 
-#include "app/views/display_list.h"
-#include "pipeline/clipping.h"
-
 #include <optional>
 #include <span>
 #include <vector>
+
+#include "app/views/display_list.h"
+#include "pipeline/clipping.h"
 
 namespace vplab::draw {
 
@@ -50,16 +50,23 @@ class ViewProjection {
   PixelPoint pixel(const Vec4& npcH) const;
 
   std::optional<PixelSegment> segment(const Vec4& aNpcH, const Vec4& bNpcH) const;
-  std::optional<PixelSegment> segment(const Vec3& a, const Vec3& b) const { return segment(npcH(a), npcH(b)); }
+  std::optional<PixelSegment> segment(const Vec3& a, const Vec3& b) const {
+    return segment(npcH(a), npcH(b));
+  }
   /// A polygon given in homogeneous NPC, clipped to the volume, the user planes and `extraForms`
-  /// (forms on homogeneous NPC), in pixels; empty when fewer than three vertices remain.
+  /// (forms on homogeneous NPC), still in homogeneous NPC; empty when fewer than three vertices remain.
+  std::vector<Vec4> clip(std::span<const Vec4> npcH, std::span<const Vec4> extraForms = {}) const;
+  /// The same, in pixels.
   std::vector<PixelPoint> polygon(std::span<const Vec4> npcH, std::span<const Vec4> extraForms = {}) const;
+  /// The point of the batch's space a point of homogeneous NPC is (after the division).
+  Vec3 spaceOf(const Vec4& npcH) const { return divideByW(spaceFromNpc_ * npcH); }
   /// A marker's centre, when its point lies in front of the eye between the front and back planes.
   std::optional<PixelPoint> point(const Vec3& p) const;
 
  private:
   Mat4 npcFromSpace_{1.0};
-  Mat4 spaceFromNpcT_{1.0};  // transpose(inverse(npcFromSpace)): takes forms along
+  Mat4 spaceFromNpc_{1.0};
+  Mat4 spaceFromNpcT_{1.0};  // its transpose: takes forms along
   int width_ = 0, height_ = 0;
   std::vector<Vec4> forms_;  // BC0..BC5 of the cube, then the user planes, on homogeneous NPC
   mutable ClipScratch scratch_;

@@ -1,13 +1,12 @@
 // The SVG backend (app/export/svg.h) on hand-made display lists: the document's structure, and its
 // rasterisation by rsvg-convert shows what the lists say (fills in painter's order, depth-tested,
 // hidden-only and x-ray lines against the faces drawn before them, markers, text).
-#include "app/export/svg.h"
+#include <gtest/gtest.h>
 
+#include "app/export/svg.h"
 #include "app/fonts/font_atlas.h"
 #include "pipeline/error.h"
 #include "svg_test_support.h"
-
-#include <gtest/gtest.h>
 
 namespace vplab {
 namespace {
@@ -47,7 +46,8 @@ const FontAtlas& fonts() {
 }
 
 bool near(const Rgba& p, const Rgba& q, int tolerance = 8) {
-  return std::abs(p.r - q.r) <= tolerance && std::abs(p.g - q.g) <= tolerance && std::abs(p.b - q.b) <= tolerance;
+  return std::abs(p.r - q.r) <= tolerance && std::abs(p.g - q.g) <= tolerance &&
+         std::abs(p.b - q.b) <= tolerance;
 }
 
 TEST(SvgBackend, PanelsAreNestedAtTheirOffsetsOnTheirBackgrounds) {
@@ -64,14 +64,15 @@ TEST(SvgBackend, PanelsAreNestedAtTheirOffsetsOnTheirBackgrounds) {
   }
   const std::string svg = svgOfPicture(p, fonts(), "a <b> & c");
   EXPECT_NE(svg.find("<title>a &lt;b&gt; &amp; c</title>"), std::string::npos);
-  EXPECT_NE(svg.find("<svg class=\"panel\" x=\"150\" y=\"20\" width=\"100\" height=\"100\""), std::string::npos);
+  EXPECT_NE(svg.find("<svg class=\"panel\" x=\"150\" y=\"20\" width=\"100\" height=\"100\""),
+            std::string::npos);
   const Image image = test::rasteriseSvg(svg, "panels");
   ASSERT_EQ(image.width, 300);
   ASSERT_EQ(image.height, 120);
-  EXPECT_TRUE(near(image.at(50, 10), {0, 255, 0}));    // the title strip: the picture's background
-  EXPECT_TRUE(near(image.at(50, 70), {255, 0, 0}));    // panel 0
-  EXPECT_TRUE(near(image.at(125, 70), {0, 255, 0}));   // the gap
-  EXPECT_TRUE(near(image.at(200, 70), {0, 0, 255}));   // panel 1
+  EXPECT_TRUE(near(image.at(50, 10), {0, 255, 0}));   // the title strip: the picture's background
+  EXPECT_TRUE(near(image.at(50, 70), {255, 0, 0}));   // panel 0
+  EXPECT_TRUE(near(image.at(125, 70), {0, 255, 0}));  // the gap
+  EXPECT_TRUE(near(image.at(200, 70), {0, 0, 255}));  // panel 1
 }
 
 TEST(SvgBackend, NearerFacesArePaintedOverFartherOnes) {
@@ -81,7 +82,7 @@ TEST(SvgBackend, NearerFacesArePaintedOverFartherOnes) {
   f.polygons.push_back(square(-1, 0.6, {0, 0, 1}));  // far and large
   list.add(std::move(f));
   const Image image = test::rasteriseSvg(svgOfPicture(onePanel(list), fonts(), "painter"), "painter");
-  EXPECT_TRUE(near(image.at(200, 150), {255, 0, 0}));  // the near face wins in the overlap
+  EXPECT_TRUE(near(image.at(200, 150), {255, 0, 0}));       // the near face wins in the overlap
   EXPECT_TRUE(near(image.at(200 + 75, 150), {0, 0, 255}));  // the near face ends at 250, the far at 300
   EXPECT_TRUE(near(image.at(5, 5), {0, 0, 0}));
 }
@@ -103,13 +104,15 @@ DisplayList faceAndLineBehind(Depth depth, float dashPx = 0) {
 
 TEST(SvgBackend, DepthTestedLinesStopBehindTheFaces) {
   // Behind z = −1 the line spans x = ±0.8 · 5/6 … in pixels 200 ± 133; the face covers 160 … 240.
-  const Image test = test::rasteriseSvg(svgOfPicture(onePanel(faceAndLineBehind(Depth::test)), fonts(), "t"), "test");
+  const Image test =
+      test::rasteriseSvg(svgOfPicture(onePanel(faceAndLineBehind(Depth::test)), fonts(), "t"), "test");
   EXPECT_TRUE(near(test.at(100, 150), {255, 255, 255}));
   EXPECT_TRUE(near(test.at(200, 150), {255, 0, 0}));  // hidden: the face shows
   const Image ignore =
       test::rasteriseSvg(svgOfPicture(onePanel(faceAndLineBehind(Depth::ignore)), fonts(), "i"), "ignore");
   EXPECT_TRUE(near(ignore.at(200, 150), {255, 255, 255}));  // over everything
-  const Image xray = test::rasteriseSvg(svgOfPicture(onePanel(faceAndLineBehind(Depth::xray)), fonts(), "x"), "xray");
+  const Image xray =
+      test::rasteriseSvg(svgOfPicture(onePanel(faceAndLineBehind(Depth::xray)), fonts(), "x"), "xray");
   // Faint where hidden: white at 30 % over red.
   EXPECT_TRUE(near(xray.at(200, 150), {255, 77, 77}, 10)) << int(xray.at(200, 150).g);
   EXPECT_TRUE(near(xray.at(100, 150), {255, 255, 255}));
@@ -121,8 +124,8 @@ TEST(SvgBackend, HiddenOnlyLinesAreTheHiddenPartsInPhaseWithTheDashes) {
   EXPECT_TRUE(near(image.at(100, 150), {0, 0, 0}));  // visible part: not drawn
   int white = 0, red = 0;
   for (int x = 165; x < 235; ++x) (near(image.at(x, 150), {255, 255, 255}, 60) ? white : red) += 1;
-  EXPECT_GT(white, 20);  // dashes …
-  EXPECT_GT(red, 20);    // … and gaps
+  EXPECT_GT(white, 20);                                         // dashes …
+  EXPECT_GT(red, 20);                                           // … and gaps
   EXPECT_NE(svg.find("stroke-dashoffset"), std::string::npos);  // the piece starts mid-pattern
 }
 

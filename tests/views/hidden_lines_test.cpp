@@ -24,6 +24,19 @@ TEST(HiddenLines, AFaceHidesOnlyWhatLiesBehindIt) {
   EXPECT_TRUE(d.hides({200, 150, 0.6 - 3 * std::ldexp(1.0, -24)}));
 }
 
+TEST(HiddenLines, AFaceInColourIsNotPushedBack) {
+  // A steep face (depth slope 0.001 per pixel): pushed back (depth only) it spares a point 0.0009
+  // behind it, drawn in colour it hides it, as GL's plain depth test does.
+  const PixelPoint face[3] = {{0, 0, 0.5}, {400, 0, 0.9}, {0, 300, 0.5}};
+  DepthField pushed(400, 300), plain(400, 300);
+  pushed.addFan(face, true);
+  plain.addFan(face, false);
+  const PixelPoint behind{100, 50, 0.6 - 0.0009};
+  EXPECT_FALSE(pushed.hides(behind));
+  EXPECT_TRUE(plain.hides(behind));
+  EXPECT_FALSE(plain.hides({100, 50, 0.6}));  // on it: not hidden
+}
+
 TEST(HiddenLines, APushedBackPointLosesTheTie) {
   const DepthField d = fieldWithFace();
   EXPECT_FALSE(d.hides({200, 150, 0.6}));

@@ -1,17 +1,18 @@
 #include "app/views/painted_fill.h"
 
-#include "views_test_support.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "hand_made_lists.h"
 
 namespace vplab::draw {
 namespace {
 
 double area(const std::vector<PixelPoint>& p) {
   double a = 0;
-  for (size_t i = 0; i < p.size(); ++i) a += p[i].x * p[(i + 1) % p.size()].y - p[(i + 1) % p.size()].x * p[i].y;
+  for (size_t i = 0; i < p.size(); ++i)
+    a += p[i].x * p[(i + 1) % p.size()].y - p[(i + 1) % p.size()].x * p[i].y;
   return std::abs(a) / 2;
 }
 
@@ -74,7 +75,8 @@ TEST(PaintedFill, LitIsBlinnPhongOfTheShader) {
   f.lights = {Light{{5, 0, 5}, {1, 1, 1}}};
   const glm::vec3 oblique = litColor(f, c, Vec3(0), Vec3(0, 0, 1), Vec3(0, 0, 1), Vec4(0, 0, 1, 0));
   const double d = std::sqrt(0.5), h = std::cos(M_PI / 8);
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR(oblique[i], std::min(1.0, 0.25 * c[i] + d * c[i] + 0.3 * std::pow(h, 48)), 1e-6);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(oblique[i], std::min(1.0, 0.25 * c[i] + d * c[i] + 0.3 * std::pow(h, 48)), 1e-6);
 }
 
 TEST(PaintedFill, TheVolumeSplitsEachFaceIntoInsideAndOutside) {

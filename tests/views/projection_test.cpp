@@ -1,9 +1,9 @@
 #include "app/views/projection.h"
 
-#include "pipeline/error.h"
-#include "views_test_support.h"
-
 #include <gtest/gtest.h>
+
+#include "hand_made_lists.h"
+#include "pipeline/error.h"
 
 namespace vplab::draw {
 namespace {
@@ -70,8 +70,8 @@ TEST(Projection, PolygonsAreClippedByTheUserPlanesToo) {
   ASSERT_EQ(half.size(), 4u);
   double minX = 1e9, maxX = -1e9;
   for (const PixelPoint& q : half) minX = std::min(minX, q.x), maxX = std::max(maxX, q.x);
-  EXPECT_NEAR(minX, 200, 1e-9);  // x = 0
-  EXPECT_NEAR(maxX, 300, 1e-9);  // x = 0.5
+  EXPECT_NEAR(minX, 200, 1e-9);            // x = 0
+  EXPECT_NEAR(maxX, 300, 1e-9);            // x = 0.5
   const Vec4 keepFarLeft(-1, 0, 0, -0.9);  // x ≤ −0.9: misses the square
   EXPECT_TRUE(p.polygon(square, std::span(&keepFarLeft, 1)).empty());
 }
