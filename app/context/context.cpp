@@ -46,8 +46,10 @@ std::string glErrorName(GLenum e) {
 void GlContext::loadGl(GLADloadfunc load, bool debug, std::string_view backendName) {
   const int version = gladLoadGLContext(&gl_, load);
   if (version == 0) throw Error(std::string(backendName) + ": loading the OpenGL functions failed");
-  if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 33)
-    throw Error(std::string(backendName) + ": OpenGL 3.3 core is needed, the context has " +
+  const auto* versionText = reinterpret_cast<const char*>(gl_.GetString(GL_VERSION));
+  const bool es = versionText && std::string_view(versionText).starts_with("OpenGL ES");
+  if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < (es ? 30 : 33))
+    throw Error(std::string(backendName) + (es ? ": OpenGL ES 3.0" : ": OpenGL 3.3 core") + " is needed, the context has " +
                 std::to_string(GLAD_VERSION_MAJOR(version)) + "." + std::to_string(GLAD_VERSION_MINOR(version)));
   if (debug) {
     if (!gl_.KHR_debug) throw Error(std::string(backendName) + ": GL_KHR_debug is not available for a debug context");
