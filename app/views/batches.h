@@ -41,7 +41,10 @@ class Marks {
   bool empty() const { return lines_.empty() && points_.empty() && triangles_.empty(); }
 
   /// Appends the marks to `list` as batches in `space` with `depth` (none when empty). The
-  /// triangles are pushed back (Triangles::pushedBack) when `pushedBack`.
+  /// triangles are pushed back (Triangles::pushedBack) when `pushedBack`. With Depth::xray the
+  /// views emit one Marks at the end of their 3D batches: the old OverlayRenderer drew the faint
+  /// hidden parts of all of its batches first, then the visible parts, so a backend that draws a run
+  /// of consecutive xray batches in those two passes draws the very same pixels.
   void emit(DisplayList& list, Space space, Depth depth, float scale, bool pushedBack = false);
 
  private:

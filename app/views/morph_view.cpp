@@ -54,7 +54,7 @@ void morphView(const ViewInput& in, DisplayList& list) {
   list.antialiased = true;
 
   const double t = s.morphing.t;
-  const Inverses inv{glm::inverse(run.npcFromVrc), glm::inverse(run.vrcFromWc)};
+  const Inverses inv{glm::inverse(run.npcFromVrc), run.wcFromVrc};
   std::vector<PolygonSet> sets = recycled.polygonSets(run.objects.size());
   std::vector<Vec3> all;
   Marks lines;

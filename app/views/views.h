@@ -105,7 +105,10 @@ struct ViewInput {
   const TextMetrics& text;    // measures the labels; its scale() grows text, lines and markers
 };
 
-/// Each view as a display list, a pure function of its input (app/views/<view>_view.cpp).
+/// Each view as a display list, a pure function of its input (app/views/<view>_view.cpp). Every
+/// batch is in the observer's space or in the view's pixels: the camera view looks at WC through
+/// the scene camera (its DC overlays are in pixels, DC scaled to the view's size), the world view
+/// at WC, the NPC view at NPC and the morph view at the morph's space, each through its orbit.
 draw::DisplayList cameraView(const ViewInput& in);
 draw::DisplayList worldView(const ViewInput& in);
 draw::DisplayList npcView(const ViewInput& in);

@@ -104,7 +104,7 @@ DisplayList worldView(const ViewInput& in) {
   if (isFilled(in.settings.world.style)) addFilledObjects(in, list);
   else addEdges(in, scale, list);
 
-  const Mat4 wcFromNpc = glm::inverse(run.npcFromWc), wcFromVrc = glm::inverse(run.vrcFromWc);
+  const Mat4 &wcFromNpc = run.wcFromNpc, &wcFromVrc = run.wcFromVrc;
   Marks b;
   std::vector<TextLabel> labels;
   auto label = [&](const Vec3& p, const std::string& text, const glm::vec4& color, Vec2 offset = {8, 0}) {
