@@ -156,9 +156,8 @@ int runRender(const RenderOptions& r) {
   std::string extension = std::filesystem::path(out).extension().string();
   for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
   if (extension == ".svg") {
-    // Vector lines for slides and lecture notes: made on the CPU, no GL context needed. Without
-    // --style, the hidden-line drawing (a filled style has no lines to export).
-    if (!r.styleGiven) request.style = Style::hiddenLine;
+    // The same picture as the PNG of the same request, as vector graphics for slides and lecture
+    // notes: drawn by the SVG backend on the CPU, no GL context needed.
     if (r.view == "ui") throw Error("--view ui has no SVG form: write a PNG");
     writeSvg(svgOfRequest(scene, request), out);
     return 0;
