@@ -469,6 +469,8 @@ void runPipeline(const Scene& scene, const PipelineOptions& options, PipelineRun
   run.vrcFromWc = vrcFromWcM;
   run.npcFromVrc = npcFromVrcM;
   run.npcFromWc = npcFromVrcM * vrcFromWcM;
+  run.wcFromVrc = glm::inverse(vrcFromWcM);
+  run.wcFromNpc = glm::inverse(run.npcFromWc);
   run.dcFromNpc = dcFromNpc(scene.device);
   run.userPlanesWc.clear();
   run.userPlanesNpc.clear();

@@ -135,6 +135,11 @@ struct PipelineRun {
   Mat4 npcFromVrc{1.0};
   Mat4 dcFromNpc{1.0};
   Mat4 npcFromWc{1.0};  // npcFromVrc · vrcFromWc
+  // The inverses, computed once per run (glm::inverse of the two above) for everything that maps
+  // back: NPC points to WC (the world view's clipped polygons, the front and back plane handles),
+  // VRC points to WC (the window, the camera's axes). A homogeneous result needs its division by w.
+  Mat4 wcFromVrc{1.0};  // vrcFromWc⁻¹: the rotation's transpose after translating back by VRP
+  Mat4 wcFromNpc{1.0};  // npcFromWc⁻¹ = wcFromVrc · npcFromVrc⁻¹
   // The enabled user clip planes (DGL wiki) as linear forms: in WC on (x, y, z, 1), and pulled back
   // to homogeneous NPC (plane_wc · wcFromNpc), where they clip together with the cube's planes.
   std::vector<Vec4> userPlanesWc, userPlanesNpc;

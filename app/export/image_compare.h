@@ -1,9 +1,13 @@
-// Comparing RGBA8 images the way Magnum's DebugTools::CompareImage reports them: how many pixels
-// differ, by how much at most and on average, and the worst pixels with their coordinates and both
-// colours, plus a difference picture for the viewer's overlay and for failing golden tests.
+// Comparing RGBA8 images: how many pixels differ (some channel by more than a threshold), by how
+// much at most and on average over all channels, and the worst pixels with their coordinates and
+// both colours, plus a difference picture for the viewer's overlay and for failing golden tests.
+// Our own code (no image-comparison library is used). The measures follow the idea of Magnum's
+// DebugTools::CompareImage, which fails a comparison on a largest and a mean channel difference;
+// callers here decide with thresholds of the same kind (the golden tests: a per-channel threshold
+// and a largest share of pixels beyond it; `vplab grade image`: a mean difference and a share).
 //
-// Coordinates are image coordinates: x right, y down, row 0 on top (app/image.h, the DC convention
-// of docs/conventions.md stage 5), so a reported pixel can be found in DC directly.
+// Coordinates are image coordinates: x right, y down, row 0 on top (app/views/image.h, the DC
+// convention of docs/conventions.md stage 5), so a reported pixel can be found in DC directly.
 #pragma once
 
 #include <cstddef>
@@ -39,7 +43,7 @@ struct ImageComparison {
   bool passed() const { return !sizeMismatch && differingPixels == 0; }
 };
 
-/// Compares channel by channel (r, g, b and a, as Magnum compares every channel of the format).
+/// Compares channel by channel: r, g, b and a (alpha counts like any colour channel).
 /// A size mismatch is reported in the result (sizeMismatch), not thrown. Up to `worstCount`
 /// differing pixels are kept in `worst`.
 ImageComparison compareImages(const Image& actual, const Image& expected, int channelThreshold,

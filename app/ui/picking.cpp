@@ -4,8 +4,9 @@ namespace vplab {
 
 namespace {
 
+// WC of a point in NPC (after the division): back through the run's wcFromNpc, then divided by w.
 Vec3 wcOfNpc(const PipelineRun& run, const Vec3& npc) {
-  const Vec4 p = glm::inverse(run.npcFromWc) * Vec4(npc, 1.0);
+  const Vec4 p = run.wcFromNpc * Vec4(npc, 1.0);
   return Vec3(p) / p.w;
 }
 
@@ -42,7 +43,7 @@ const char* handleName(Handle h) {
 
 Vec3 handlePosition(const PipelineRun& run, Handle h) {
   const ViewWindow& w = run.camera.window;
-  const Mat4 wcFromVrc = glm::inverse(run.vrcFromWc);
+  const Mat4& wcFromVrc = run.wcFromVrc;
   const double cx = (w.xmin + w.xmax) / 2, cy = (w.ymin + w.ymax) / 2;
   switch (h) {
     case Handle::vrp: return run.camera.vrp;

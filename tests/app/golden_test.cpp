@@ -1,5 +1,6 @@
-// Golden images (tests/golden/*.png), compared the way Magnum's CompareImage does: a per-channel
-// threshold and a largest share of pixels beyond it.
+// Golden images (tests/golden/*.png), compared by app/export/image_compare.h: a per-channel
+// threshold and a largest share of pixels beyond it (thresholds after the idea of Magnum's
+// CompareImage, which is not used).
 //
 //   default-VIEW-STYLE.png     the default scene (pipeline/scene.h defaultScene()), each view
 //                              (camera, world, npc) in each style, 320 × 240

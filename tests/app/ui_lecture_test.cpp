@@ -545,7 +545,7 @@ TEST(UiLecture, NpcCubeFaceDoesNotZFightWithTheScene) {
   square.shape = Shape::polygon;
   // In VRC z = F: the default camera's frame, so that NPC z = 1 (up to rounding).
   const PipelineRun before = runPipeline(scene);
-  const Mat4 wcFromVrc = glm::inverse(before.vrcFromWc);
+  const Mat4& wcFromVrc = before.wcFromVrc;
   const Vec3 centre = transformAffine(wcFromVrc, {0, 0, scene.camera.front});
   square.vertices = {};
   for (auto [x, y] : {std::pair(-0.6, -0.6), {0.6, -0.6}, {0.6, 0.6}, {-0.6, 0.6}})

@@ -40,6 +40,8 @@ void expectSameRun(const PipelineRun& a, const PipelineRun& b) {
   EXPECT_TRUE(bitwiseEqual(a.npcFromVrc, b.npcFromVrc));
   EXPECT_TRUE(bitwiseEqual(a.dcFromNpc, b.dcFromNpc));
   EXPECT_TRUE(bitwiseEqual(a.npcFromWc, b.npcFromWc));
+  EXPECT_TRUE(bitwiseEqual(a.wcFromVrc, b.wcFromVrc));
+  EXPECT_TRUE(bitwiseEqual(a.wcFromNpc, b.wcFromNpc));
   EXPECT_EQ(a.camera.prp, b.camera.prp);
   EXPECT_EQ(a.camera.front, b.camera.front);
   EXPECT_EQ(a.frame.vpd, b.frame.vpd);
@@ -145,6 +147,46 @@ TEST(Pipeline, VerticesAreClassifiedOnce) {
         for (int p = 0; p < kPlaneCount; ++p)
           EXPECT_NEAR(o.clipValuesOf(uint32_t(i))[size_t(p)], boundaryCoordinates(o.npcH[i])[p],
                       1e-12 * (1 + glm::length(o.npcH[i])));
+    }
+  }
+}
+
+double maxAbs(const Mat4& m) {
+  double a = 0;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) a = std::max(a, std::abs(m[c][r]));
+  return a;
+}
+
+// The run keeps the inverses of vrcFromWc and npcFromWc (computed once, not in every view): each
+// times its matrix is the identity, and a WC point goes to VRC or to NPC (divided by w) and back.
+TEST(Pipeline, StoresTheInversesOfItsMatrices) {
+  test::Rng rng(1212);
+  for (const Camera& c : someCameras(rng)) {
+    const Scene scene = test::randomPolygonScene(rng, c, 4, false);
+    const PipelineRun run = runPipeline(scene);
+    // The inverse carries a relative error of about cond(M)·ε; the product's entries add four
+    // products each. 16·ε·|M|·|M⁻¹| (largest entries) bounds both with a margin: for these cameras
+    // it is 2e-14 to 7e-13, and the products come out within 4e-15 of the identity.
+    for (auto [m, inverse] : {std::pair{run.vrcFromWc, run.wcFromVrc}, {run.npcFromWc, run.wcFromNpc}}) {
+      const double eps = 16 * std::numeric_limits<double>::epsilon() * maxAbs(m) * maxAbs(inverse);
+      for (const Mat4& product : {m * inverse, inverse * m})
+        for (int col = 0; col < 4; ++col)
+          for (int r = 0; r < 4; ++r) EXPECT_NEAR(product[col][r], col == r ? 1 : 0, eps) << "entry " << r << ", " << col;
+    }
+    // VRC's origin is VRP (lecture notes 15.2.2).
+    EXPECT_NEAR(glm::length(transformAffine(run.wcFromVrc, Vec3(0)) - c.vrp), 0, 1e-12 * (1 + glm::length(c.vrp)));
+    for (int k = 0; k < 20; ++k) {
+      const Vec3 wc = c.vrp + rng.inBox(-10, 10);
+      const Vec4 npcH = run.npcFromWc * Vec4(wc, 1);
+      if (npcH.w <= 1e-3) continue;  // on the eye's plane (perspective): the division is meaningless
+      const Vec4 back = run.wcFromNpc * Vec4(divideByW(npcH), 1);
+      // Relative 1e-12: the round trips come out within 1e-15; the margin is for the division by a
+      // small w (down to 1e-3), which magnifies the inverse's error.
+      const double tolerance = 1e-12 * (1 + glm::length(wc));
+      EXPECT_NEAR(glm::length(Vec3(back) / back.w - wc), 0, tolerance) << "through NPC";
+      EXPECT_NEAR(glm::length(transformAffine(run.wcFromVrc, transformAffine(run.vrcFromWc, wc)) - wc), 0, tolerance)
+          << "through VRC";
     }
   }
 }

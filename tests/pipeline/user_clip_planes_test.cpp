@@ -23,7 +23,7 @@ Scene sceneWithPlanes(Rng& rng, int planes) {
 
 // WC of a clipped vertex, back from homogeneous NPC.
 Vec3 wcOf(const PipelineRun& run, const ObjectRun& o, uint32_t ref) {
-  const Vec4 p = glm::inverse(run.npcFromWc) * o.clippedNpcH(ref);
+  const Vec4 p = run.wcFromNpc * o.clippedNpcH(ref);
   return Vec3(p) / p.w;
 }
 
