@@ -1,5 +1,5 @@
-// Index: 1 names  2 construction  3 shared drawing (objects, edges, CPU polygons, lights)
-//        4 headless rendering and the "all" composition
+// Index: 1 construction  2 shared drawing (objects, edges, CPU polygons, lights)
+//        3 headless rendering and the "all" composition (the names are in app/views/views.cpp)
 #include "app/render/view_renderer.h"
 
 #include "app/views/theme.h"
@@ -10,43 +10,7 @@
 
 namespace vplab {
 
-// ---------------------------------------------------------------- 1 names
-
-std::string_view toString(ViewKind v) {
-  switch (v) {
-    case ViewKind::camera: return "camera";
-    case ViewKind::world: return "world";
-    case ViewKind::npc: return "npc";
-    case ViewKind::all: return "all";
-    case ViewKind::morph: return "morph";
-  }
-  return "?";
-}
-
-std::optional<ViewKind> viewKindFromString(std::string_view s) {
-  for (ViewKind v : {ViewKind::camera, ViewKind::world, ViewKind::npc, ViewKind::all, ViewKind::morph})
-    if (toString(v) == s) return v;
-  return std::nullopt;
-}
-
-std::string_view toString(Style s) {
-  switch (s) {
-    case Style::flat: return "flat";
-    case Style::shaded: return "shaded";
-    case Style::wire: return "wire";
-    case Style::hiddenLine: return "hidden-line";
-    case Style::hiddenRemoved: return "hidden-removed";
-  }
-  return "?";
-}
-
-std::optional<Style> styleFromString(std::string_view s) {
-  for (Style st : {Style::flat, Style::shaded, Style::wire, Style::hiddenLine, Style::hiddenRemoved})
-    if (toString(st) == s) return st;
-  return std::nullopt;
-}
-
-// ---------------------------------------------------------------- 2 construction
+// ---------------------------------------------------------------- 1 construction
 
 ViewRenderer::ViewRenderer(GlContext& context, float textScale)
     : ctx_(context),
@@ -75,7 +39,7 @@ void ViewRenderer::setScale(float scale) {
   overlay_.setScale(scale);
 }
 
-// ---------------------------------------------------------------- 3 shared drawing
+// ---------------------------------------------------------------- 2 shared drawing
 
 const gl::Program& ViewRenderer::sceneProgram(bool volumeTest, int lights, bool userPlanes) {
   lights = std::clamp(lights, 0, 4);
@@ -399,7 +363,7 @@ void ViewRenderer::drawPolygons(const std::vector<PolygonSet>& sets, const ViewC
   gl_.BindVertexArray(0);
 }
 
-// ---------------------------------------------------------------- 4 headless rendering
+// ---------------------------------------------------------------- 3 headless rendering
 
 Image ViewRenderer::render(ViewKind kind, const Scene& scene, const PipelineRun& run, const FrameSettings& s,
                            int width, int height) {

@@ -1,8 +1,9 @@
 // The stage morph view (pipeline/stage_morph.h): the visible part of the scene (the CPU clipper's
 // polygons) and the view volume move together from MC (t = 0) through WC, VRC, homogeneous NPC and
 // NPC to DC (t = 4). The observer keeps its angles and follows the morphing scene to keep it framed.
+#include "app/views/batches.h"
 #include "app/views/theme.h"
-#include "app/render/view_renderer.h"
+#include "app/views/views.h"
 
 #include "pipeline/stage_morph.h"
 
@@ -11,6 +12,8 @@
 namespace vplab {
 
 namespace {
+
+using namespace draw;
 
 // Every stage of a vertex of a clipped polygon. Created vertices exist only in homogeneous NPC;
 // the inverse matrices give their other stages exactly.
@@ -38,20 +41,29 @@ StageValues cornerStages(const PipelineRun& run, const Inverses& inv, int i) {
 
 }  // namespace
 
-void ViewRenderer::drawMorph(const Scene& /*scene*/, const PipelineRun& run, const FrameSettings& s,
-                             gl::RenderTarget& target) {
-  const int w = target.width(), h = target.height();
-  beginView(target, Vec3(theme::kViewBackground));
+void morphView(const ViewInput& in, DisplayList& list) {
+  const PipelineRun& run = in.run;
+  const FrameSettings& s = in.settings;
+  const int w = in.width, h = in.height;
+  const float scale = in.text.scale();
+
+  Recycled recycled(list);  // the previous frame's polygon arrays, with their capacity
+  list.width = w;
+  list.height = h;
+  list.background = theme::kViewBackground;
+  list.antialiased = true;
 
   const double t = s.morphing.t;
-  const Inverses inv{glm::inverse(run.npcFromVrc), glm::inverse(run.vrcFromWc)};
-  std::vector<PolygonSet> sets;
+  const Inverses inv{glm::inverse(run.npcFromVrc), run.wcFromVrc};
+  std::vector<PolygonSet> sets = recycled.polygonSets(run.objects.size());
   std::vector<Vec3> all;
-  OverlayBatch lines;
-  for (const ObjectRun& o : run.objects) {
+  Marks lines;
+  std::vector<Vec3> poly;
+  for (size_t k = 0; k < run.objects.size(); ++k) {
+    const ObjectRun& o = run.objects[k];
     const Mat4 mcFromWc = glm::inverse(o.wcFromMc);
-    PolygonSet set{glm::vec3(o.color), {}, {}};
-    std::vector<Vec3> poly;
+    PolygonSet& set = sets[k];
+    set.color = glm::vec3(o.color);
     for (size_t f = 0; f < o.faceCount(); ++f) {
       poly.clear();
       for (uint32_t ref : o.clippedFace(f)) poly.push_back(morphPosition(stagesOf(o, ref, inv, mcFromWc), t, run.device));
@@ -60,7 +72,6 @@ void ViewRenderer::drawMorph(const Scene& /*scene*/, const PipelineRun& run, con
       all.insert(all.end(), poly.begin(), poly.end());
       set.add(poly);
     }
-    sets.push_back(std::move(set));
   }
   std::array<Vec3, 8> c;
   for (int i = 0; i < 8; ++i) c[size_t(i)] = morphPosition(cornerStages(run, inv, i), std::max(t, 1.0), run.device);
@@ -83,8 +94,15 @@ void ViewRenderer::drawMorph(const Scene& /*scene*/, const PipelineRun& run, con
 
   const Orbit o = framed(s.morphing.orbit, all, double(w) / h);
   const ViewCamera view = viewCameraOf(observerCamera(o, double(w) / h));
-  drawPolygons(sets, view, {0, Mat4(1.0), 1.f, s.morph.style == Style::shaded}, kMorph);
-  overlay_.draw(lines, view, w, h, OverlayDepth::xray);
+  list.observer = {Space::morph, view};
+  Fill polygons;
+  polygons.space = Space::morph;
+  polygons.polygons = std::move(sets);
+  polygons.lit = s.morph.style == Style::shaded;
+  if (polygons.lit) polygons.lights = polygonLights(view);
+  polygons.ambient = kPolygonAmbient;
+  list.add(std::move(polygons));
+  lines.emit(list, Space::morph, Depth::xray, scale);
 
   std::vector<TextLabel> labels;
   char title[160];
@@ -99,7 +117,13 @@ void ViewRenderer::drawMorph(const Scene& /*scene*/, const PipelineRun& run, con
   axisLabel({axis, 0, 0}, "x", theme::kU);
   axisLabel({0, t > 3.5 ? -axis : axis, 0}, "y", theme::kV);
   axisLabel({0, 0, axis}, "z", theme::kN);
-  text_->draw(labels, w, h);
+  list.add(Text{placeLabels(labels, in.text, w, h)});
+}
+
+DisplayList morphView(const ViewInput& in) {
+  DisplayList list;
+  morphView(in, list);
+  return list;
 }
 
 }  // namespace vplab

@@ -2,9 +2,10 @@
 // the scene after view mapping, clipping in homogeneous coordinates and the division by w, seen by
 // an orbiting observer. The filled polygons are the CPU clipper's output; what it cut away is shown
 // faded, as far as it lies in front of the eye (w > 0) and not too far outside the cube.
+#include "app/views/batches.h"
 #include "app/views/theme.h"
 #include "app/views/view_geometry.h"
-#include "app/render/view_renderer.h"
+#include "app/views/views.h"
 
 #include "pipeline/clipping.h"
 
@@ -16,6 +17,8 @@ namespace vplab {
 
 namespace {
 
+using namespace draw;
+
 // An edge by its end points in NPC, in either direction.
 std::array<double, 6> edgeKey(const Vec3& a, const Vec3& b) {
   const bool swap = std::tie(b.x, b.y, b.z) < std::tie(a.x, a.y, a.z);
@@ -23,7 +26,7 @@ std::array<double, 6> edgeKey(const Vec3& a, const Vec3& b) {
   return {p.x, p.y, p.z, q.x, q.y, q.z};
 }
 
-void addCube(OverlayBatch& b, std::vector<TextLabel>& labels, const ViewCamera& view, int w, int h, bool withLabels) {
+void addCube(Marks& b, std::vector<TextLabel>& labels, const ViewCamera& view, int w, int h, bool withLabels) {
   using geometry::cubeCorner;
   for (int i = 0; i < 8; ++i)
     for (int bit : {1, 2, 4})
@@ -42,33 +45,36 @@ void addCube(OverlayBatch& b, std::vector<TextLabel>& labels, const ViewCamera& 
 
 }  // namespace
 
-void ViewRenderer::drawNpc(const Scene& /*scene*/, const PipelineRun& run, const FrameSettings& s,
-                           gl::RenderTarget& target) {
-  const int w = target.width(), h = target.height();
-  beginView(target, Vec3(theme::kViewBackground));
-
-  const ViewCamera view = viewCameraOf(observerCamera(s.npc.orbit, double(w) / h));
+void npcView(const ViewInput& in, DisplayList& list) {
+  const PipelineRun& run = in.run;
+  const FrameSettings& s = in.settings;
+  const int w = in.width, h = in.height;
+  const float scale = in.text.scale();
   const Style style = s.npc.style;
   const OverlaySettings& ov = s.overlays;
 
-  // The polygons' storage is kept from frame to frame (npcInside_, npcFaded_).
-  std::vector<PolygonSet>& inside = npcInside_;
-  std::vector<PolygonSet>& faded = npcFaded_;
-  inside.resize(run.objects.size());
-  faded.resize(run.objects.size());
-  OverlayBatch outlines, dashedOutlines, newEdges, fadedOutlines;
+  Recycled recycled(list);  // the previous frame's polygon arrays, with their capacity
+  list.width = w;
+  list.height = h;
+  list.background = theme::kViewBackground;
+  const ViewCamera view = viewCameraOf(observerCamera(s.npc.orbit, double(w) / h));
+  list.observer = {Space::npc, view};
+  list.antialiased = true;
+
+  // The clipped polygons (drawn filled, or as the hidden-line styles' occluders) and the faded ones
+  // (filled styles), one set per object.
+  const bool keepInside = style != Style::wire, keepFaded = isFilled(style) && ov.fadeOutside;
+  std::vector<PolygonSet> inside = recycled.polygonSets(keepInside ? run.objects.size() : 0);
+  std::vector<PolygonSet> faded = recycled.polygonSets(keepFaded ? run.objects.size() : 0);
+  Marks outlines, dashedOutlines, newEdges, fadedOutlines;
   ClipScratch scratch;
   std::set<std::array<double, 6>> drawnEdges;
   const bool outlined = !isFilled(style) || style == Style::hiddenLine;
   std::vector<Vec3> poly;  // reused: no allocation per polygon
   for (size_t k = 0; k < run.objects.size(); ++k) {
     const ObjectRun& o = run.objects[k];
-    PolygonSet &in = inside[k], &out = faded[k];
-    for (PolygonSet* set : {&in, &out}) {
-      set->color = glm::vec3(o.color);
-      set->points.clear();
-      set->ends.clear();
-    }
+    if (keepInside) inside[k].color = glm::vec3(o.color);
+    if (keepFaded) faded[k].color = glm::vec3(o.color);
     const glm::vec4 c(glm::vec3(o.color), 1.f);
     for (size_t f = 0; f < o.faceCount(); ++f) {
       const auto face = o.clippedFace(f);
@@ -86,56 +92,51 @@ void ViewRenderer::drawNpc(const Scene& /*scene*/, const PipelineRun& run, const
           // Two faces share each mesh edge: draw it once, or its dashes would overlap out of phase.
           if (!outlined || !drawnEdges.insert(edgeKey(a, b)).second) continue;
           if (!isFilled(style)) outlines.line(a, b, c, theme::kEdgeWidth);
-          if (style == Style::hiddenLine) dashedOutlines.line(a, b, glm::vec4(glm::vec3(c), 0.8f), theme::kEdgeWidth, theme::kDashPx);
+          if (style == Style::hiddenLine)
+            dashedOutlines.line(a, b, glm::vec4(glm::vec3(c), 0.8f), theme::kEdgeWidth, theme::kDashPx);
         }
-        in.add(poly);
+        if (keepInside) inside[k].add(poly);
       }
       if (ov.fadeOutside && o.fate[f] != Fate::accepted) {
         geometry::fadedNpcPolygon(o, f, scratch, poly);
         if (poly.size() >= 3) {
-          if (!isFilled(style)) fadedOutlines.polyline(poly, true, glm::vec4(glm::vec3(c), theme::kFadedAlpha), theme::kEdgeWidth);
-          out.add(poly);
+          if (!isFilled(style))
+            fadedOutlines.polyline(poly, true, glm::vec4(glm::vec3(c), theme::kFadedAlpha), theme::kEdgeWidth);
+          if (keepFaded) faded[k].add(poly);
         }
       }
     }
   }
 
   const bool shaded = style == Style::shaded;
-  if (isFilled(style)) {
-    drawPolygons(inside, view, {0, Mat4(1.0), 1.f, shaded}, kNpcInside);
-  } else if (style != Style::wire) {
-    depthOnly([&] { drawPolygons(inside, view, {0, Mat4(1.0), 1.f, false}, kNpcInside); });
-  }
-  const OverlayDepth depth = style == Style::wire ? OverlayDepth::ignore : OverlayDepth::test;
-  overlay_.draw(outlines, view, w, h, depth);
-  if (style == Style::hiddenLine) {
-    gl_.Enable(GL_BLEND);
-    gl_.DepthMask(GL_FALSE);
-    gl_.DepthFunc(GL_GREATER);
-    overlay_.drawLines(dashedOutlines, view, w, h, Mat4(1.0));
-    gl_.DepthFunc(GL_LESS);
-    gl_.DepthMask(GL_TRUE);
-  }
+  auto polygons = [&](std::vector<PolygonSet>&& sets, float alpha, bool lit, bool depthOnly) {
+    Fill fill;
+    fill.space = Space::npc;
+    fill.polygons = std::move(sets);
+    fill.lit = lit;
+    if (lit) fill.lights = polygonLights(view);
+    fill.ambient = kPolygonAmbient;
+    fill.alpha = alpha;
+    fill.depthOnly = depthOnly;
+    list.add(std::move(fill));
+  };
+  if (isFilled(style)) polygons(std::move(inside), 1.f, shaded, false);
+  else if (style != Style::wire) polygons(std::move(inside), 1.f, false, true);
+  const Depth depth = style == Style::wire ? Depth::ignore : Depth::test;
+  outlines.emit(list, Space::npc, depth, scale);
+  dashedOutlines.emit(list, Space::npc, Depth::hiddenOnly, scale);
   if (ov.fadeOutside) {
-    gl_.Enable(GL_BLEND);
-    gl_.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    gl_.DepthMask(GL_FALSE);
-    if (isFilled(style)) drawPolygons(faded, view, {0, Mat4(1.0), theme::kFadedAlpha, shaded}, kNpcFaded);
-    else overlay_.draw(fadedOutlines, view, w, h, depth);
-    gl_.DepthMask(GL_TRUE);
-    gl_.Disable(GL_BLEND);
+    if (isFilled(style)) polygons(std::move(faded), theme::kFadedAlpha, shaded, false);
+    else fadedOutlines.emit(list, Space::npc, depth, scale);
   }
 
-  OverlayBatch cube;
+  Marks cube;
   std::vector<TextLabel> labels;
   if (ov.cube) addCube(cube, labels, view, w, h, ov.labels);
   // The translucent front face lies in z = 1, where clipping puts the scene's cut polygons and
-  // edges: pushed back by glPolygonOffset it loses every depth tie to them instead of z-fighting
-  // (the cube's lines are not offset: GL_POLYGON_OFFSET_FILL acts on filled triangles only).
-  gl_.Enable(GL_POLYGON_OFFSET_FILL);
-  gl_.PolygonOffset(1.f, 2.f);
-  overlay_.draw(cube, view, w, h, OverlayDepth::test);
-  gl_.Disable(GL_POLYGON_OFFSET_FILL);
+  // edges: pushed back, it loses every depth tie to them instead of z-fighting (the cube's lines
+  // are not pushed back).
+  cube.emit(list, Space::npc, Depth::test, scale, /*pushedBack=*/true);
   if (s.highlights.probeNpc) newEdges.point(*s.highlights.probeNpc, theme::kProbe, 14.f);
   if (const auto& step = s.highlights.step) {
     // The clipping step-through: the plane being applied as a face of the cube, the polygon after
@@ -149,8 +150,14 @@ void ViewRenderer::drawNpc(const Scene& /*scene*/, const PipelineRun& run, const
     for (size_t i = 0; i < step->polygonNpc.size(); ++i)
       newEdges.point(step->polygonNpc[i], step->created[i] ? theme::kNewEdge : theme::kProbe, step->created[i] ? 13.f : 9.f);
   }
-  overlay_.draw(newEdges, view, w, h, OverlayDepth::xray);
-  text_->draw(labels, w, h);
+  newEdges.emit(list, Space::npc, Depth::xray, scale);
+  if (!labels.empty()) list.add(Text{placeLabels(labels, in.text, w, h)});
+}
+
+DisplayList npcView(const ViewInput& in) {
+  DisplayList list;
+  npcView(in, list);
+  return list;
 }
 
 }  // namespace vplab

@@ -4,12 +4,14 @@
 
 namespace vplab::geometry {
 
+Vec3 wcOfNpc(const Mat4& wcFromNpc, const Vec3& npc) {
+  const Vec4 p = wcFromNpc * Vec4(npc, 1.0);
+  return Vec3(p) / p.w;
+}
+
 std::array<Vec3, 8> viewVolumeCorners(const Mat4& wcFromNpc) {
   std::array<Vec3, 8> c;
-  for (int i = 0; i < 8; ++i) {
-    const Vec4 p = wcFromNpc * Vec4(cubeCorner(i), 1.0);
-    c[size_t(i)] = Vec3(p) / p.w;
-  }
+  for (int i = 0; i < 8; ++i) c[size_t(i)] = wcOfNpc(wcFromNpc, cubeCorner(i));
   return c;
 }
 

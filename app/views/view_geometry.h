@@ -16,6 +16,9 @@ namespace vplab::geometry {
 /// Corner i of the unit cube: x = bit 0, y = bit 1, z = bit 2 (z = 1 front, 0 back).
 inline Vec3 cubeCorner(int i) { return Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1); }
 
+/// A point of NPC taken back to WC through the inverse of the camera's npcFromWc (divided by w).
+Vec3 wcOfNpc(const Mat4& wcFromNpc, const Vec3& npc);
+
 /// The view volume's corners in WC: the unit cube's corners taken back from NPC (exact for every
 /// projection). Corner i as cubeCorner(i).
 std::array<Vec3, 8> viewVolumeCorners(const Mat4& wcFromNpc);

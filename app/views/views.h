@@ -105,11 +105,21 @@ struct ViewInput {
   const TextMetrics& text;    // measures the labels; its scale() grows text, lines and markers
 };
 
-/// Each view as a display list, a pure function of its input (app/views/<view>_view.cpp).
+/// Each view as a display list, a pure function of its input (app/views/<view>_view.cpp). Every
+/// batch is in the observer's space or in the view's pixels: the camera view looks at WC through
+/// the scene camera (its DC overlays are in pixels, DC scaled to the view's size), the world view
+/// at WC, the NPC view at NPC and the morph view at the morph's space, each through its orbit.
 draw::DisplayList cameraView(const ViewInput& in);
 draw::DisplayList worldView(const ViewInput& in);
 draw::DisplayList npcView(const ViewInput& in);
 draw::DisplayList morphView(const ViewInput& in);
+
+/// The same, built into `out` (overwritten), reusing its storage where it can: the NPC and morph
+/// views' polygon arrays keep their capacity from frame to frame.
+void cameraView(const ViewInput& in, draw::DisplayList& out);
+void worldView(const ViewInput& in, draw::DisplayList& out);
+void npcView(const ViewInput& in, draw::DisplayList& out);
+void morphView(const ViewInput& in, draw::DisplayList& out);
 
 /// The picture of a view kind: one panel, or for ViewKind::all the camera, world and NPC views side
 /// by side under a strip of titles. `out` is overwritten; its storage is reused where it can be

@@ -2,29 +2,18 @@
 // WC together with the scene camera: VRP, PRP, VUP, the U, V, N axes, the window in the view plane
 // and the view volume. What lies inside the view volume is drawn solid, the rest faded; the edges
 // the CPU clipper created are highlighted (lecture notes 15.1, figures 15.1–15.5).
+#include "app/views/batches.h"
 #include "app/views/theme.h"
 #include "app/views/view_geometry.h"
-#include "app/render/view_renderer.h"
+#include "app/views/views.h"
 
 namespace vplab {
 
 namespace {
 
-struct Frame {
-  const PipelineRun& run;
-  Mat4 wcFromNpc;  // the inverse of the scene camera's npcFromVrc · vrcFromWc
-  Mat4 wcFromVrc;
-};
+using namespace draw;
 
-Vec3 wcOfNpc(const Frame& f, const Vec3& npc) {
-  const Vec4 p = f.wcFromNpc * Vec4(npc, 1.0);
-  return Vec3(p) / p.w;
-}
-
-std::array<Vec3, 8> volumeCorners(const Frame& f) { return geometry::viewVolumeCorners(f.wcFromNpc); }
-
-void addArrow(OverlayBatch& b, const Vec3& from, const Vec3& to, const Vec3& eye, const glm::vec4& color,
-              float dash = 0.f) {
+void addArrow(Marks& b, const Vec3& from, const Vec3& to, const Vec3& eye, const glm::vec4& color, float dash = 0.f) {
   b.line(from, to, color, theme::kLineWidth + 0.5f, dash);
   const Vec3 dir = to - from;
   const double len = glm::length(dir);
@@ -37,74 +26,93 @@ void addArrow(OverlayBatch& b, const Vec3& from, const Vec3& to, const Vec3& eye
   b.line(to, base - side, color, theme::kLineWidth + 0.5f);
 }
 
-}  // namespace
+// The objects: inside the view volume solid, outside faded. The backend splits them by the scene
+// camera's boundary coordinates (Hill 7.4), exactly where the CPU clipper cuts.
+void addFilledObjects(const ViewInput& in, DisplayList& list) {
+  const Style style = in.settings.world.style;
+  Fill inside;
+  inside.space = Space::wc;
+  inside.meshes = sceneMeshes(in.scene, &in.run);
+  inside.lit = style == Style::shaded;
+  if (inside.lit) inside.lights = sceneLights(in.scene);
+  inside.ambient = kSceneAmbient;
+  inside.volume = {VolumeTest::Keep::inside, in.run.npcFromWc};
+  inside.clipPlanes = userClipPlanes(in.scene);
+  if (!in.settings.overlays.fadeOutside) {
+    list.add(std::move(inside));
+    return;
+  }
+  Fill outside = inside;
+  outside.alpha = theme::kFadedAlpha;
+  outside.volume.keep = VolumeTest::Keep::outside;
+  outside.clipPlanes.clear();  // the faded rest, outside the volume, is not cut by the user planes
+  list.add(std::move(inside));
+  list.add(std::move(outside));
+}
 
-void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const FrameSettings& s,
-                             gl::RenderTarget& target) {
-  const int w = target.width(), h = target.height();
-  beginView(target, Vec3(theme::kViewBackground));
-
-  const ViewCamera view = viewCameraOf(observerCamera(s.world.orbit, double(w) / h));
-  const Frame f{run, glm::inverse(run.npcFromWc), glm::inverse(run.vrcFromWc)};
-  const Style style = s.world.style;
-  const bool shaded = style == Style::shaded;
-  const OverlaySettings& ov = s.overlays;
-
-  // The objects: inside the view volume solid, outside faded. The fragment shader splits them by
-  // the scene camera's boundary coordinates (Hill 7.4), exactly where the CPU clipper cuts.
-  if (isFilled(style)) {
-    const bool partitioned = partitionedWorld_ && target.samples() == 1;
-    if (partitioned) partitionByVolume(scene, run);
-    drawObjects(scene, view, {1, run.npcFromWc, 1.f, shaded, true, partitioned});
-    if (ov.fadeOutside) {
-      gl_.Enable(GL_BLEND);
-      gl_.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-      gl_.DepthMask(GL_FALSE);
-      drawObjects(scene, view, {2, run.npcFromWc, theme::kFadedAlpha, shaded, false, partitioned});
-      gl_.DepthMask(GL_TRUE);
-      gl_.Disable(GL_BLEND);
-    }
-  } else {
-    // Wireframes from the CPU's edge clipping: the visible part of each edge solid, all of it faded.
-    const bool hidden = style != Style::wire;
-    if (hidden) {
-      depthOnly([&] { drawObjects(scene, view, {0, Mat4(1.0), 1.f, false}); });
-    }
-    OverlayBatch solid, dashed, faded;
-    for (const ObjectRun& o : run.objects) {
-      const glm::vec4 c(glm::vec3(o.color), 1.f);
-      for (size_t i = 0; i < o.edges.size() && i < o.edgeRanges.size(); ++i) {
-        const Vec3 a = o.wc(o.edges[i].a), b = o.wc(o.edges[i].b);
-        if (ov.fadeOutside) faded.line(a, b, glm::vec4(glm::vec3(c), theme::kFadedAlpha), theme::kEdgeWidth);
-        const EdgeRange& r = o.edgeRanges[i];
-        if (!r.visible) continue;
-        // Boundary coordinates are linear along the WC segment, so t carries over from NPC.
-        const Vec3 p0 = a + r.t0 * (b - a), p1 = a + r.t1 * (b - a);
-        solid.line(p0, p1, c, theme::kEdgeWidth);
-        if (style == Style::hiddenLine) dashed.line(p0, p1, glm::vec4(glm::vec3(c), 0.8f), theme::kEdgeWidth, theme::kDashPx);
-      }
-    }
-    overlay_.draw(faded, view, w, h, hidden ? OverlayDepth::test : OverlayDepth::ignore);
-    overlay_.draw(solid, view, w, h, hidden ? OverlayDepth::test : OverlayDepth::ignore);
-    if (style == Style::hiddenLine) {
-      gl_.Enable(GL_BLEND);
-      gl_.DepthMask(GL_FALSE);
-      gl_.DepthFunc(GL_GREATER);
-      overlay_.drawLines(dashed, view, w, h, Mat4(1.0));
-      gl_.DepthFunc(GL_LESS);
-      gl_.DepthMask(GL_TRUE);
+// Wireframes from the CPU's edge clipping: the visible part of each edge solid, all of it faded.
+// Hidden line: the faces fill the depth buffer first; the hidden parts dashed or not drawn.
+void addEdges(const ViewInput& in, float scale, DisplayList& list) {
+  const Style style = in.settings.world.style;
+  const bool hidden = style != Style::wire;
+  if (hidden) {
+    Fill occluder;
+    occluder.space = Space::wc;
+    occluder.meshes = sceneMeshes(in.scene);
+    occluder.depthOnly = true;
+    list.add(std::move(occluder));
+  }
+  Marks solid, dashed, faded;
+  for (const ObjectRun& o : in.run.objects) {
+    const glm::vec4 c(glm::vec3(o.color), 1.f);
+    for (size_t i = 0; i < o.edges.size() && i < o.edgeRanges.size(); ++i) {
+      const Vec3 a = o.wc(o.edges[i].a), b = o.wc(o.edges[i].b);
+      if (in.settings.overlays.fadeOutside)
+        faded.line(a, b, glm::vec4(glm::vec3(c), theme::kFadedAlpha), theme::kEdgeWidth);
+      const EdgeRange& r = o.edgeRanges[i];
+      if (!r.visible) continue;
+      // Boundary coordinates are linear along the WC segment, so t carries over from NPC.
+      const Vec3 p0 = a + r.t0 * (b - a), p1 = a + r.t1 * (b - a);
+      solid.line(p0, p1, c, theme::kEdgeWidth);
+      if (style == Style::hiddenLine)
+        dashed.line(p0, p1, glm::vec4(glm::vec3(c), 0.8f), theme::kEdgeWidth, theme::kDashPx);
     }
   }
+  const Depth depth = hidden ? Depth::test : Depth::ignore;
+  faded.emit(list, Space::wc, depth, scale);
+  solid.emit(list, Space::wc, depth, scale);
+  dashed.emit(list, Space::wc, Depth::hiddenOnly, scale);
+}
 
-  OverlayBatch b;
+}  // namespace
+
+DisplayList worldView(const ViewInput& in) {
+  const Scene& scene = in.scene;
+  const PipelineRun& run = in.run;
+  const OverlaySettings& ov = in.settings.overlays;
+  const int w = in.width, h = in.height;
+  const float scale = in.text.scale();
+
+  DisplayList list;
+  list.width = w;
+  list.height = h;
+  list.background = theme::kViewBackground;
+  const ViewCamera view = viewCameraOf(observerCamera(in.settings.world.orbit, double(w) / h));
+  list.observer = {Space::wc, view};
+  list.antialiased = true;
+
+  if (isFilled(in.settings.world.style)) addFilledObjects(in, list);
+  else addEdges(in, scale, list);
+
+  const Mat4 &wcFromNpc = run.wcFromNpc, &wcFromVrc = run.wcFromVrc;
+  Marks b;
   std::vector<TextLabel> labels;
   auto label = [&](const Vec3& p, const std::string& text, const glm::vec4& color, Vec2 offset = {8, 0}) {
     if (!ov.labels) return;
     const Projected q = projectToPixels(view, p, w, h);
     // The offset from the point grows with the text (and the markers) at a large UI scale.
     if (q.visible)
-      labels.push_back({q.pixel + offset * double(text_->scale()), text, color, TextSize::label, Anchor::left, true, true,
-                        q.pixel});
+      labels.push_back({q.pixel + offset * double(scale), text, color, TextSize::label, Anchor::left, true, true, q.pixel});
   };
 
   if (ov.newEdges) {
@@ -114,12 +122,13 @@ void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const F
         const auto face = o.clippedFace(fi);
         for (size_t i = 0; i < face.size(); ++i)
           if (o.isNewEdge(fi, i))
-            b.line(wcOfNpc(f, o.clippedNpc(face[i])), wcOfNpc(f, o.clippedNpc(face[(i + 1) % face.size()])),
-                   theme::kNewEdge, theme::kLineWidth + 0.5f);
+            b.line(geometry::wcOfNpc(wcFromNpc, o.clippedNpc(face[i])),
+                   geometry::wcOfNpc(wcFromNpc, o.clippedNpc(face[(i + 1) % face.size()])), theme::kNewEdge,
+                   theme::kLineWidth + 0.5f);
       }
   }
   if (ov.frustum) {
-    const auto c = volumeCorners(f);
+    const auto c = geometry::viewVolumeCorners(wcFromNpc);
     // Corner i has x = bit 0, y = bit 1, z = bit 2 (z = 1 front, 0 back).
     const int front[4] = {4, 5, 7, 6}, back[4] = {0, 1, 3, 2};
     b.quad(c[4], c[5], c[7], c[6], theme::kFrontPlane);
@@ -141,18 +150,18 @@ void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const F
     const Vec3 n = glm::normalize(p.normal);
     const auto q = geometry::clipPlaneSquare(p, planeSize);
     b.quad(q[0], q[1], q[2], q[3], theme::kClipPlane);
-    b.polyline({q[0], q[1], q[2], q[3]}, true, glm::vec4(glm::vec3(theme::kClipPlane), 0.8f), 1.5f);
+    b.polyline(q, true, glm::vec4(glm::vec3(theme::kClipPlane), 0.8f), 1.5f);
     addArrow(b, p.point, p.point + n * (0.3 * planeSize), view.camera.prp, glm::vec4(glm::vec3(theme::kClipPlane), 1.f));
     label(p.point + n * (0.3 * planeSize), "clip plane", glm::vec4(glm::vec3(theme::kClipPlane), 1.f));
   }
   if (ov.viewPlane) {
     const ViewWindow& win = run.camera.window;
-    const Vec3 corners[4] = {transformAffine(f.wcFromVrc, {win.xmin, win.ymin, 0}),
-                             transformAffine(f.wcFromVrc, {win.xmax, win.ymin, 0}),
-                             transformAffine(f.wcFromVrc, {win.xmax, win.ymax, 0}),
-                             transformAffine(f.wcFromVrc, {win.xmin, win.ymax, 0})};
+    const std::array<Vec3, 4> corners{transformAffine(wcFromVrc, {win.xmin, win.ymin, 0}),
+                                      transformAffine(wcFromVrc, {win.xmax, win.ymin, 0}),
+                                      transformAffine(wcFromVrc, {win.xmax, win.ymax, 0}),
+                                      transformAffine(wcFromVrc, {win.xmin, win.ymax, 0})};
     b.quad(corners[0], corners[1], corners[2], corners[3], theme::kWindowFill);
-    b.polyline({corners[0], corners[1], corners[2], corners[3]}, true, theme::kWindow, theme::kLineWidth);
+    b.polyline(corners, true, theme::kWindow, theme::kLineWidth);
     label(corners[3], "window", theme::kWindow, {6, -10});
   }
   if (ov.cameraAxes) {
@@ -173,7 +182,7 @@ void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const F
     label(cam.vrp, "VRP", theme::kVrp, {8, 12});
     label(cam.prp, "PRP", theme::kPrp);
   }
-  const Highlights& hl = s.highlights;
+  const Highlights& hl = in.settings.highlights;
   for (const Highlights::HandleMark& m : hl.handles) {
     b.point(m.wc, m.hot ? theme::kHandleHot : theme::kHandle, m.hot ? 15.f : 9.f);
     if (m.hot) label(m.wc, m.name, theme::kHandleHot, {10, -12});
@@ -182,18 +191,21 @@ void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const F
   if (const auto& step = hl.step) {
     // The clipping step-through in WC: the frustum's face of the plane being applied, the polygon.
     if (step->plane >= 0 && step->plane < kPlaneCount) {
-      const auto c = volumeCorners(f);
+      const auto c = geometry::viewVolumeCorners(wcFromNpc);
       const auto ring = geometry::cubeFaceRing(step->plane);
       b.quad(c[size_t(ring[0])], c[size_t(ring[1])], c[size_t(ring[2])], c[size_t(ring[3])], theme::kStepPlane);
     }
     std::vector<Vec3> poly;
-    for (const Vec3& p : step->polygonNpc) poly.push_back(wcOfNpc(f, p));
+    for (const Vec3& p : step->polygonNpc) poly.push_back(geometry::wcOfNpc(wcFromNpc, p));
     b.polyline(poly, true, theme::kProbe, theme::kLineWidth + 1.f);
     for (size_t i = 0; i < poly.size(); ++i)
       b.point(poly[i], step->created[i] ? theme::kNewEdge : theme::kProbe, step->created[i] ? 13.f : 9.f);
   }
-  overlay_.draw(b, view, w, h, OverlayDepth::xray);
-  text_->draw(labels, w, h);
+  b.emit(list, Space::wc, Depth::xray, scale);
+  if (!labels.empty()) list.add(Text{placeLabels(labels, in.text, w, h)});
+  return list;
 }
+
+void worldView(const ViewInput& in, DisplayList& out) { out = worldView(in); }
 
 }  // namespace vplab

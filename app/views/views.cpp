@@ -1,0 +1,40 @@
+// The names of the views and styles (the command line's --view and --style, the scene files).
+#include "app/views/views.h"
+
+namespace vplab {
+
+std::string_view toString(ViewKind v) {
+  switch (v) {
+    case ViewKind::camera: return "camera";
+    case ViewKind::world: return "world";
+    case ViewKind::npc: return "npc";
+    case ViewKind::all: return "all";
+    case ViewKind::morph: return "morph";
+  }
+  return "?";
+}
+
+std::optional<ViewKind> viewKindFromString(std::string_view s) {
+  for (ViewKind v : {ViewKind::camera, ViewKind::world, ViewKind::npc, ViewKind::all, ViewKind::morph})
+    if (toString(v) == s) return v;
+  return std::nullopt;
+}
+
+std::string_view toString(Style s) {
+  switch (s) {
+    case Style::flat: return "flat";
+    case Style::shaded: return "shaded";
+    case Style::wire: return "wire";
+    case Style::hiddenLine: return "hidden-line";
+    case Style::hiddenRemoved: return "hidden-removed";
+  }
+  return "?";
+}
+
+std::optional<Style> styleFromString(std::string_view s) {
+  for (Style st : {Style::flat, Style::shaded, Style::wire, Style::hiddenLine, Style::hiddenRemoved})
+    if (toString(st) == s) return st;
+  return std::nullopt;
+}
+
+}  // namespace vplab

@@ -1,0 +1,85 @@
+// The NPC view's display list: the clipper's polygons, the faded rest, the cube, and the storage of
+// its polygon arrays kept from frame to frame.
+#include "app/views/theme.h"
+#include "pipeline/primitives.h"
+#include "tests/views/view_test_support.h"
+
+#include <gtest/gtest.h>
+
+namespace vplab {
+namespace {
+
+using namespace draw;
+
+TEST(NpcView, FilledPolygonsAreTheClippersThenTheFadedRest) {
+  test::ViewFixture f(defaultScene(), Style::shaded);
+  const DisplayList list = npcView(f.input());
+  EXPECT_EQ(list.observer.space, Space::npc);
+  const auto fills = test::batchesOf<Fill>(list);
+  ASSERT_EQ(fills.size(), 2u);
+  const Fill &inside = *fills[0], &faded = *fills[1];
+  ASSERT_EQ(inside.polygons.size(), f.run.objects.size());
+  for (size_t k = 0; k < f.run.objects.size(); ++k) {
+    const ObjectRun& o = f.run.objects[k];
+    size_t visible = 0, cut = 0;
+    for (size_t face = 0; face < o.faceCount(); ++face) {
+      visible += !o.clippedFace(face).empty();
+      cut += o.fate[face] != Fate::accepted;
+    }
+    EXPECT_EQ(inside.polygons[k].polygonCount(), visible) << o.name;
+    EXPECT_LE(faded.polygons[k].polygonCount(), cut) << o.name;
+    EXPECT_EQ(inside.polygons[k].color, glm::vec3(o.color));
+  }
+  EXPECT_TRUE(inside.lit);
+  ASSERT_EQ(inside.lights.size(), 1u);  // one white light by the observer's eye
+  EXPECT_EQ(inside.lights[0].position, Vec3(list.observer.camera.eyeWc) + Vec3(0.6, 1.2, 0.4));
+  EXPECT_FLOAT_EQ(inside.ambient, 0.3f);
+  EXPECT_FLOAT_EQ(faded.alpha, theme::kFadedAlpha);
+  // The cube's front face is pushed back, behind the cut faces lying in z = 1.
+  const auto triangles = test::batchesOf<Triangles>(list);
+  ASSERT_FALSE(triangles.empty());
+  EXPECT_TRUE(triangles[0]->pushedBack);
+  EXPECT_EQ(triangles[0]->depth, Depth::test);
+}
+
+TEST(NpcView, HiddenLineOutlinesEachEdgeOnceOverAnOccluder) {
+  test::ViewFixture f(defaultScene(), Style::hiddenLine);
+  f.settings.overlays.fadeOutside = false;
+  const DisplayList list = npcView(f.input());
+  const Fill& occluder = std::get<Fill>(list.batches[0]);
+  EXPECT_TRUE(occluder.depthOnly);
+  EXPECT_FALSE(occluder.lit);
+  const Lines& visible = std::get<Lines>(list.batches[1]);
+  const Lines& hidden = std::get<Lines>(list.batches[2]);
+  EXPECT_EQ(visible.depth, Depth::test);
+  EXPECT_EQ(hidden.depth, Depth::hiddenOnly);
+  EXPECT_EQ(hidden.segments.size(), visible.segments.size());
+  EXPECT_GT(visible.segments.size(), 0u);
+}
+
+// A frame of a large scene must not allocate its polygon arrays anew (as the old renderer kept them).
+TEST(NpcView, BuildingIntoThePreviousListKeepsThePolygonArrays) {
+  Scene scene = defaultScene();
+  scene.objects[3].mesh = std::make_shared<const Mesh>(sphere(90));
+  test::ViewFixture f(scene, Style::shaded);
+  DisplayList list;
+  npcView(f.input(), list);
+  std::vector<const Vec3*> before;
+  for (const Fill* fill : test::batchesOf<Fill>(list))
+    for (const PolygonSet& s : fill->polygons) before.push_back(s.points.data());
+  ASSERT_EQ(before.size(), 2 * f.run.objects.size());
+  npcView(f.input(), list);
+  std::vector<const Vec3*> after;
+  for (const Fill* fill : test::batchesOf<Fill>(list))
+    for (const PolygonSet& s : fill->polygons) after.push_back(s.points.data());
+  EXPECT_EQ(after, before);
+  // and the picture's NPC panel likewise
+  Picture picture;
+  buildPicture(ViewKind::all, f.input(), picture);
+  const Vec3* panel = std::get<Fill>(picture.panels[3].list.batches[0]).polygons[3].points.data();
+  buildPicture(ViewKind::all, f.input(), picture);
+  EXPECT_EQ(std::get<Fill>(picture.panels[3].list.batches[0]).polygons[3].points.data(), panel);
+}
+
+}  // namespace
+}  // namespace vplab
