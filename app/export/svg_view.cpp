@@ -4,7 +4,7 @@
 
 #include "app/export/svg.h"
 #include "app/fonts/font_atlas.h"
-#include "app/headless.h"
+#include "app/views/render_request.h"
 #include "pipeline/error.h"
 
 namespace vplab {
@@ -43,12 +43,10 @@ std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run,
 }
 
 std::string svgOfRequest(const Scene& scene, const RenderRequest& request) {
-  const int w = request.width > 0 ? request.width : scene.device.width;
-  const int h = request.height > 0 ? request.height : scene.device.height;
+  const PixelSize size = pixelSizeOf(request, scene);
   const PipelineRun run = runPipeline(scene, request.pipeline);
-  FrameSettings settings = frameSettingsFor(scene, request.style, double(w) / h);
-  settings.morphing.t = request.morphT;
-  return svgOfView(request.view, scene, run, settings, w, h);
+  return svgOfView(request.view, scene, run, frameSettingsOf(request, scene), size.width, size.height,
+                   request.scale);
 }
 
 void writeSvg(const std::string& svg, const std::filesystem::path& file) {

@@ -53,6 +53,7 @@ class ViewRenderer {
   const std::vector<glm::vec4>& labelsPlaced() const { return text_->placed(); }
   /// Larger text, lines and points for a projector (lecture mode).
   void setScale(float scale);
+  float scale() const { return text_->scale(); }
 
  private:
   struct ObjectPass {

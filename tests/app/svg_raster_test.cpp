@@ -57,13 +57,12 @@ std::string name(ViewKind v, Style s) { return std::string(toString(v)) + "-" + 
 /// The labels' boxes of the request's picture (as svgOfRequest and renderImage build it), grown by
 /// kTextMarginPx, painted black in the image.
 void maskLabels(Image& image, const Scene& scene, const RenderRequest& request) {
-  const int w = request.width > 0 ? request.width : scene.device.width;
-  const int h = request.height > 0 ? request.height : scene.device.height;
+  const PixelSize size = pixelSizeOf(request, scene);
   const PipelineRun run = runPipeline(scene, request.pipeline);
-  FrameSettings settings = frameSettingsFor(scene, request.style, double(w) / h);
-  settings.morphing.t = request.morphT;
-  const FontAtlas fonts(1.f);
-  const draw::Picture picture = buildPicture(request.view, ViewInput{scene, run, settings, w, h, fonts});
+  const FrameSettings settings = frameSettingsOf(request, scene);
+  const FontAtlas fonts(request.scale);
+  const draw::Picture picture =
+      buildPicture(request.view, ViewInput{scene, run, settings, size.width, size.height, fonts});
   for (const draw::Panel& panel : picture.panels)
     for (const PlacedLabel& l : panel.list.labels()) {
       const int x0 = panel.x + int(std::floor(l.topLeft.x)) - kTextMarginPx;

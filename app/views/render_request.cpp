@@ -1,0 +1,27 @@
+#include "app/views/render_request.h"
+
+namespace vplab {
+
+FrameSettings frameSettingsFor(const Scene& scene, Style style, double aspect) {
+  FrameSettings s;
+  s.camera.style = style;
+  s.world = {style, defaultWorldOrbit(scene, aspect)};
+  s.npc = {style, defaultNpcOrbit()};
+  s.morph = {style == Style::shaded ? Style::shaded : Style::flat, {}};
+  return s;
+}
+
+PixelSize pixelSizeOf(const RenderRequest& request, const Scene& scene) {
+  return {request.width > 0 ? request.width : scene.device.width,
+          request.height > 0 ? request.height : scene.device.height};
+}
+
+FrameSettings frameSettingsOf(const RenderRequest& request, const Scene& scene) {
+  if (request.frame) return *request.frame;
+  const PixelSize size = pixelSizeOf(request, scene);
+  FrameSettings settings = frameSettingsFor(scene, request.style, double(size.width) / size.height);
+  settings.morphing.t = request.morphT;
+  return settings;
+}
+
+}  // namespace vplab
