@@ -1,7 +1,7 @@
 // Index: 1 timing helpers  2 frame times  3 start-up  4 input to frame  5 the report
 #include "app/bench.h"
 
-#include "app/headless.h"
+#include "app/render/headless.h"
 #include "app/ui/headless_viewer.h"
 #include "app/ui/keys.h"
 #include "bench/workloads.h"

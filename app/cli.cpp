@@ -3,7 +3,7 @@
 #include "app/bench.h"
 #include "app/course/course_commands.h"
 #include "app/export/svg.h"
-#include "app/headless.h"
+#include "app/render/headless.h"
 #include "app/ui/headless_viewer.h"
 #include "app/ui/run_viewer.h"
 #include "app/ui/widgets.h"

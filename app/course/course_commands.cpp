@@ -3,7 +3,7 @@
 #include "app/course/exercise_writer.h"
 #include "app/course/grade_image.h"
 #include "app/course/grade_report.h"
-#include "app/headless.h"
+#include "app/render/headless.h"
 #include "pipeline/error.h"
 #include "pipeline/read_file.h"
 #include "pipeline/scene_io.h"

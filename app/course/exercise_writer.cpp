@@ -1,7 +1,7 @@
 #include "app/course/exercise_writer.h"
 
 #include "app/export/svg.h"
-#include "app/headless.h"
+#include "app/render/headless.h"
 #include "pipeline/error.h"
 #include "pipeline/rational.h"
 #include "pipeline/scene_io.h"

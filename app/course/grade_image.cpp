@@ -1,6 +1,6 @@
 #include "app/course/grade_image.h"
 
-#include "app/headless.h"
+#include "app/render/headless.h"
 #include "app/export/cpu_raster.h"
 #include "pipeline/error.h"
 

@@ -2,7 +2,7 @@
 //        4 menus, shortcuts and dialogs  5 files: open, save, autosave and recovery
 #include "app/ui/viewer.h"
 
-#include "app/assets.h"
+#include "app/ui/assets.h"
 #include "app/export/svg.h"
 #include "app/ui/keys.h"
 #include "app/ui/layout.h"

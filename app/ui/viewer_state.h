@@ -1,7 +1,7 @@
 // Everything the interactive viewer knows between frames, in one owned struct (no globals).
 #pragma once
 
-#include "app/assets.h"
+#include "app/ui/assets.h"
 #include "app/gl/render_target.h"
 #include "app/ui/document.h"
 #include "app/views/views.h"

@@ -3,7 +3,7 @@
 // error cases and `vplab dump`'s give a clear message on stderr and a non-zero exit, and write no
 // file; without a display, `vplab` says so and leaves a dump and a picture instead. Also the check
 // half of the Xvfb smoke test (tests/CMakeLists.txt runs the window first).
-#include "app/headless.h"
+#include "app/render/headless.h"
 #include "app/export/image_compare.h"
 #include "pipeline/dump.h"
 #include "pipeline/scene_io.h"

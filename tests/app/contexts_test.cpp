@@ -3,7 +3,7 @@
 // (llvmpipe), so the same draw calls give the same bytes: the comparisons below demand byte
 // equality (no tolerance); a difference means a backend sets up different state (a different
 // framebuffer format, sample count, depth precision or default state).
-#include "app/headless.h"
+#include "app/render/headless.h"
 #include "app/export/image_compare.h"
 #include "tests/app/gl_test_support.h"
 #include "tests/pipeline/test_util.h"

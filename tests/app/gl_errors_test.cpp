@@ -2,7 +2,7 @@
 // on a debug context (KHR_debug on, GlContext::checkErrors after each draw) without a single GL
 // error or KHR_debug error message. And the check itself works: a deliberate error is caught,
 // named, and cleared.
-#include "app/headless.h"
+#include "app/render/headless.h"
 #include "app/ui/picking.h"
 #include "pipeline/scene_io.h"
 #include "tests/app/gl_test_support.h"

@@ -11,7 +11,7 @@
 // On a mismatch the test writes NAME.actual.png and NAME.diff.png into the build tree (the path is
 // printed) and prints the worst pixels. A missing golden fails and says how to bless.
 // scripts/bless-goldens.sh (VPLAB_BLESS=1) writes every image as its golden instead of comparing.
-#include "app/headless.h"
+#include "app/render/headless.h"
 #include "app/export/image_compare.h"
 #include "app/ui/headless_viewer.h"
 #include "pipeline/scene_io.h"

@@ -12,7 +12,7 @@
 // of the pixels must therefore be equal: 384 of 320 × 240, far below what a wrong matrix, a lost
 // clip plane, a wrong edge rule along a whole edge (a row or column of pixels per polygon) or a
 // wrong depth order produce.
-#include "app/headless.h"
+#include "app/render/headless.h"
 #include "app/export/image_compare.h"
 #include "app/export/cpu_raster.h"
 #include "tests/app/gl_test_support.h"

@@ -3,7 +3,7 @@
 // it says: the viewer's settings when it carries them (its export), its scale (lecture mode), and
 // `vplab render --ui-scale` for the views as the library draws them.
 #include "app/export/svg.h"
-#include "app/headless.h"
+#include "app/render/headless.h"
 #include "app/views/render_request.h"
 #include "tests/app/gl_test_support.h"
 

@@ -4,7 +4,7 @@
 // is declined. Whether the SVG shows the PNG's picture, pixel for pixel, in every view and style is
 // svg_raster_test.cpp's (which superseded this file's line-sampling comparison).
 #include "app/export/svg.h"
-#include "app/headless.h"
+#include "app/render/headless.h"
 #include "app/export/cpu_raster.h"
 #include "pipeline/error.h"
 #include "pipeline/scene_io.h"

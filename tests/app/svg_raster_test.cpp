@@ -38,7 +38,7 @@
 #include "app/export/image_compare.h"
 #include "app/export/svg.h"
 #include "app/fonts/font_atlas.h"
-#include "app/headless.h"
+#include "app/render/headless.h"
 #include "pipeline/error.h"
 #include "pipeline/scene_io.h"
 #include "tests/app/gl_test_support.h"

@@ -390,7 +390,7 @@ TEST(UiLecture, ClickingAVertexShowsTheProbeAndShiftClickTheStepThrough) {
 }  // namespace
 }  // namespace vplab
 
-#include "app/headless.h"
+#include "app/render/headless.h"
 
 namespace vplab {
 namespace {

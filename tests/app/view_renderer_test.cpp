@@ -2,7 +2,7 @@
 // (inside the scene camera's view volume solid, outside faded) from only the faces that can show
 // in each (ViewRenderer::partitionByVolume): the picture must be byte for byte the one drawn with
 // every face in both passes, in every scene and style, from several observers.
-#include "app/headless.h"
+#include "app/render/headless.h"
 #include "app/gl/render_target.h"
 #include "pipeline/primitives.h"
 #include "pipeline/scene_io.h"

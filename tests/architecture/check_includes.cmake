@@ -5,7 +5,7 @@
 #     <GL/osmesa.h>, <GLFW/glfw3.h>, <EGL/egl.h>, <imgui.h>, "imgui_internal.h", …), or
 #   - a header of a layer above it: pipeline/ may include only "pipeline/…" of the project, app/views/
 #     only "pipeline/…" and "app/views/…" (so not "app/gl/…", "app/render/…", "app/context/…",
-#     "app/ui/…", "app/fonts/…", "app/export/…", "app/headless.h", …).
+#     "app/ui/…", "app/fonts/…", "app/export/…", "app/render/headless.h", …).
 # Every *.h, *.hpp, *.cpp and *.inl under the checked directories is read when the test runs (a new
 # file is checked without configuring again); only #include lines count, not comments or strings.
 #

@@ -1,4 +1,4 @@
-#include "app/headless.h"
+#include "app/render/headless.h"
 
 namespace vplab {
 

@@ -1,4 +1,4 @@
-#include "app/assets.h"
+#include "app/ui/assets.h"
 
 #include <nlohmann/json.hpp>
 
