@@ -179,6 +179,8 @@ GLuint Viewer::drawViewNow(ViewKind kind, int w, int h) {
       renderer_.drawCamera(scene, s_.run, s_.frame, camera_);
       if (s_.frame.overlays.difference) return differenceTexture();
       return camera_.colorTexture();
+    case ViewKind::divideFirst:
+    case ViewKind::depth: break;  // drawn by the panels that show them (cameraWindowContents, depthPanel)
   }
   return 0;
 }
