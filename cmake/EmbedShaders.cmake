@@ -1,6 +1,6 @@
 # Writes OUTPUT, a C++ file defining vplab::gl::embeddedShader(name) over the GLSL files in
 # SHADER_DIR, so the executable carries its shaders and runs from any working directory.
-file(GLOB SHADER_FILES "${SHADER_DIR}/*.vert" "${SHADER_DIR}/*.geom" "${SHADER_DIR}/*.frag")
+file(GLOB SHADER_FILES "${SHADER_DIR}/*.vert" "${SHADER_DIR}/*.frag")
 list(SORT SHADER_FILES)
 set(_body "")
 foreach(_file IN LISTS SHADER_FILES)

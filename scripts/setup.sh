@@ -17,6 +17,8 @@ packages=(
 )
 # vplab exercise: the .tex sheets are compiled by the tests (pdflatex) and turned into pictures (pdftoppm)
 packages+=(texlive-latex-base texlive-latex-recommended poppler-utils)
+# the SVG backend's tests rasterise its documents with rsvg-convert
+packages+=(librsvg2-bin)
 
 missing=()
 for p in "${packages[@]}"; do

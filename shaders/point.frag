@@ -1,5 +1,6 @@
-#version 330 core
 // A disc with a dark rim and a one-pixel smooth edge.
+// No #version line: the loader (app/gl/shader.cpp) puts "#version 330 core" or "#version 300 es" first.
+precision highp float;
 
 in vec4 gColor;
 in vec2 gLocal;

@@ -1,12 +1,16 @@
-#version 330 core
 // Flat: the object's colour, unlit. Shaded (SHADED defined): ambient, diffuse and specular
 // (Blinn–Phong) from the scene's point lights, with the normal transformed by the inverse transpose
 // (lecture notes 13.5). The variants are separate programs: a software renderer runs every instruction of a
 // shader, taken branches or not, so a flat program must not carry the lighting.
+// No #version line: the loader (app/gl/shader.cpp) puts "#version 330 core" or "#version 300 es" first.
+precision highp float;
 
 in vec3 wcPosition;
 in vec3 wcNormal;
 in vec4 volumeNpcH;
+#if defined(USER_PLANES) && defined(GL_ES)
+in float gClipDistance[6];  // see scene.vert
+#endif
 
 // 0: no volume test; 1: keep what is inside the other camera's view volume; 2: keep what is outside.
 // Blinn's boundary coordinates are linear in WC, and the interpolation of volumeNpcH is perspective-
@@ -23,6 +27,10 @@ uniform float ambient;
 out vec4 fragColor;
 
 void main() {
+#if defined(USER_PLANES) && defined(GL_ES)
+  for (int k = 0; k < 6; ++k)
+    if (gClipDistance[k] < 0.0) discard;
+#endif
 #ifdef VOLUME_TEST
   // Only in the program that needs it: a shader that may discard loses the early depth test, which
   // on a software renderer means shading every hidden fragment too.

@@ -1,5 +1,6 @@
-#version 330 core
 // Glyph coverage from the font atlas (ImGui's, single channel) times the text colour.
+// No #version line: the loader (app/gl/shader.cpp) puts "#version 330 core" or "#version 300 es" first.
+precision highp float;
 
 in vec2 vUv;
 in vec4 vColor;

@@ -41,14 +41,34 @@ std::string glErrorName(GLenum e) {
   }
 }
 
+/// GLAD loads desktop GL's functions by the version the context reports, so on OpenGL ES 3.x it
+/// leaves out the ones desktop GL got in 3.1 – 3.3 that ES 3.0 has too (instancing, sync objects):
+/// loaded here by name.
+void loadEsCoreFunctions(GladGLContext& gl, GLADloadfunc load) {
+#define VPLAB_LOAD(name, type) \
+  if (!gl.name) gl.name = reinterpret_cast<type>(load("gl" #name))
+  VPLAB_LOAD(DrawArraysInstanced, PFNGLDRAWARRAYSINSTANCEDPROC);
+  VPLAB_LOAD(DrawElementsInstanced, PFNGLDRAWELEMENTSINSTANCEDPROC);
+  VPLAB_LOAD(VertexAttribDivisor, PFNGLVERTEXATTRIBDIVISORPROC);
+  VPLAB_LOAD(FenceSync, PFNGLFENCESYNCPROC);
+  VPLAB_LOAD(ClientWaitSync, PFNGLCLIENTWAITSYNCPROC);
+  VPLAB_LOAD(DeleteSync, PFNGLDELETESYNCPROC);
+  VPLAB_LOAD(GetInteger64v, PFNGLGETINTEGER64VPROC);
+  VPLAB_LOAD(CopyBufferSubData, PFNGLCOPYBUFFERSUBDATAPROC);
+#undef VPLAB_LOAD
+}
+
 }  // namespace
 
 void GlContext::loadGl(GLADloadfunc load, bool debug, std::string_view backendName) {
   const int version = gladLoadGLContext(&gl_, load);
   if (version == 0) throw Error(std::string(backendName) + ": loading the OpenGL functions failed");
-  if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 33)
-    throw Error(std::string(backendName) + ": OpenGL 3.3 core is needed, the context has " +
+  const auto* versionText = reinterpret_cast<const char*>(gl_.GetString(GL_VERSION));
+  const bool es = versionText && std::string_view(versionText).starts_with("OpenGL ES");
+  if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < (es ? 30 : 33))
+    throw Error(std::string(backendName) + (es ? ": OpenGL ES 3.0" : ": OpenGL 3.3 core") + " is needed, the context has " +
                 std::to_string(GLAD_VERSION_MAJOR(version)) + "." + std::to_string(GLAD_VERSION_MINOR(version)));
+  if (es) loadEsCoreFunctions(gl_, load);
   if (debug) {
     if (!gl_.KHR_debug) throw Error(std::string(backendName) + ": GL_KHR_debug is not available for a debug context");
     gl_.Enable(GL_DEBUG_OUTPUT);

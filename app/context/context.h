@@ -65,6 +65,9 @@ std::unique_ptr<GlContext> createHeadlessContext(Backend backend, bool debug);
 
 // One factory per backend file; each throws vplab::Error with the reason it failed.
 std::unique_ptr<GlContext> createEglContext(bool debug);
+/// An OpenGL ES 3.0 context on EGL surfaceless (the API WebGL2 follows): the shaders are checked
+/// as GLSL ES 3.00 on it, and the GL backend's ES path runs on it.
+std::unique_ptr<GlContext> createEglEsContext(bool debug);
 std::unique_ptr<GlContext> createOsMesaContext(bool debug);
 
 }  // namespace vplab

@@ -1,59 +1,57 @@
-// SVG export of the wireframe views (styles wire, hidden-line, hidden-removed): the line drawing the
-// PNG of the same view, style and size shows, as vector lines for slides and lecture notes.
+// The SVG backend: draws a display list (app/views/display_list.h) as an SVG document, as the GL
+// backend draws it into pixels. It decides nothing about what is drawn; where GL has a depth buffer
+// it has the CPU's: app/views/projection.h (the observer's camera and the pipeline's own clipper),
+// app/views/hidden_lines.h (what the depth-writing faces drawn before a batch hide of its lines,
+// points and translucent polygons, with the views' polygon-offset rule) and app/views/painted_fill.h
+// (filled faces in painter's order, coloured as the shaders colour them, once per face).
 //
-// What it contains (views.h, view_renderer.h):
-//   camera  the CPU edge clipping's visible part of every edge (ObjectRun::edgeRanges, the same cut
-//           as GL's clipping of the camera view's lines), mapped to the width × height pixels
-//   world   the edges in WC seen by the world observer: the part inside the scene camera's view
-//           volume solid, the whole edge faded; the clipping's new edges, the view volume, the
-//           user clip planes, the window, VRP, PRP, U, V, N, VUP, labels
-//   npc     the clipped polygons' outlines in NPC seen by the NPC observer, faded what clipping cut
-//           away, the new edges, the unit cube and its axes, labels
-//   all     the three side by side with their title strip, as the PNG of ViewKind::all
-// plus the interactive highlights the views draw (probe, step-through, handles, vanishing points).
-//
-// Hidden lines are found on the CPU, not read back from the GPU: every projected segment is sampled
-// every half pixel and each sample is tested against the filled polygons of the view (a list of
-// screen-space triangles in a grid, with exact plane depth instead of a pixel z-buffer), with the
-// same rule as the views' depth test: a face hides a point only when it lies in front of it by more
-// than the glPolygonOffset(1, 2) the views push the faces back by. Where the visibility changes
-// between two samples the boundary is found by bisection. Style wire: every part visible; hidden-line:
-// the hidden parts dashed (as the PNG, in phase with its dashes); hidden-removed: left out. Overlays
-// drawn "x-ray" by the views (hidden parts faint) get the faint opacity on their hidden parts.
-//
-// The filled styles (flat, shaded) are not exported: a painter's-order polygon list cannot show
-// intersecting or cyclically overlapping faces as the depth buffer does, nor the shaded colours; they
-// throw vplab::Error. So does the stage-morph view.
-//
-// Lines keep the PNG's colours (object colours and theme.h) and opacities. Their stroke width is the
-// PNG's line width + 1 px: the line shader draws widthPx at full coverage with a one-pixel ramp on
-// each side, so that is the PNG's ink across a line. Dashes are 5 px on, 5 px off as in the PNG.
-// Coordinates have at most 2 decimals. Labels are <text> in DejaVu Sans, placed where the PNG places
-// them (the same font metrics through Dear ImGui's font atlas, the same overlap avoidance).
-// Duplicate lines (an edge shared by two NPC polygons is drawn twice by the PNG) are written once.
+// The document: a <svg> of the picture's pixels (viewBox in pixels, origin top-left as DC) on its
+// background, each panel a nested <svg> at its offset with its list's background, then the batches
+// in order. Lines keep their colours and opacities; their stroke is widthPx + 1 px wide (the line
+// shader covers widthPx fully with a one-pixel ramp on each side: that is the PNG's ink across a
+// line), solid lines with square caps (they end half their width beyond their end points), dashes
+// dashPx on, dashPx off in phase with GL's. Markers are discs with the point shader's dark rim.
+// Labels are <text> in the font atlas's family and size at the places the views gave them, with
+// the PNG's dark shadow as a stroke painted under the glyphs. Faces of a list GL multisamples get,
+// when opaque, a 0.5 px stroke of their own colour, which closes the hairline seams an anti-aliased
+// renderer leaves between neighbouring faces; a list GL draws aliased (the camera view) has its
+// faces drawn with shape-rendering="crispEdges", aliased as well. Coordinates have at most 2 decimals.
 #pragma once
-
-#include "app/views/views.h"
-#include "pipeline/pipeline.h"
 
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
+
+#include "app/views/display_list.h"
+#include "app/views/views.h"
+#include "pipeline/pipeline.h"
 
 namespace vplab {
 
 struct RenderRequest;
+class FontAtlas;
 
-/// Why a view cannot be exported as SVG with these settings (a filled style, the morph view), or
-/// nullopt when it can. For greying out a menu entry.
-std::optional<std::string> svgExportError(ViewKind view, const FrameSettings& settings);
+/// The most filled faces an SVG export draws: a document of more opens too slowly to be of use.
+inline constexpr size_t kMaxSvgFaces = 200000;
 
-/// The view as a standalone SVG document of width × height pixels (ViewKind::all: three panels of
-/// width × height and a title strip, like the PNG), viewBox in pixels, origin top-left as DC.
-/// `run` is the CPU pipeline's run of `scene` (with PipelineOptions::clipEdges; without, the edges
-/// are clipped here). `scale`: lecture mode, ViewRenderer::setScale's factor for the text, the line
-/// widths and the marker sizes. Throws vplab::Error when svgExportError says why, or for a size
-/// below 1 × 1.
+/// The faces the picture's visible fills draw (depth-only fills not counted).
+size_t svgFaceCount(const draw::Picture& picture);
+
+/// The picture as a standalone SVG document titled `title`, its labels in `fonts` (the atlas that
+/// measured them). Throws vplab::Error, before building anything, when it has more than kMaxSvgFaces
+/// filled faces.
+std::string svgOfPicture(const draw::Picture& picture, const FontAtlas& fonts, std::string_view title);
+
+/// Why a view of the scene cannot be exported as SVG with these settings (its filled panels would
+/// draw more than kMaxSvgFaces faces, estimated from the scene's faces), or nullopt when it can.
+/// For greying out a menu entry.
+std::optional<std::string> svgExportError(ViewKind view, const Scene& scene, const FrameSettings& settings);
+
+/// The view as a standalone SVG document: the picture buildPicture makes of it (ViewKind::all:
+/// three panels of width × height and a title strip, like the PNG), with labels measured by a font
+/// atlas of `scale` (lecture mode: text, line widths and marker sizes grow with it). `run` is the
+/// CPU pipeline's run of `scene`. Throws vplab::Error for a size below 1 × 1 or too many faces.
 std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run,
                       const FrameSettings& settings, int width, int height, float scale = 1.f);
 

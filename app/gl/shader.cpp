@@ -21,12 +21,30 @@ std::string infoLog(const GladGLContext& gl, GLuint object, bool isProgram) {
 
 GLenum stageOf(std::string_view file) {
   if (file.ends_with(".vert")) return GL_VERTEX_SHADER;
-  if (file.ends_with(".geom")) return GL_GEOMETRY_SHADER;
   if (file.ends_with(".frag")) return GL_FRAGMENT_SHADER;
-  throw Error("shaders/" + std::string(file) + ": unknown shader stage (expected .vert, .geom or .frag)");
+  throw Error("shaders/" + std::string(file) + ": unknown shader stage (expected .vert or .frag)");
 }
 
 }  // namespace
+
+GlslDialect dialectOf(const GladGLContext& gl) {
+  const auto* version = reinterpret_cast<const char*>(gl.GetString(GL_VERSION));
+  return version && std::string_view(version).starts_with("OpenGL ES") ? GlslDialect::es300 : GlslDialect::core330;
+}
+
+std::string_view versionLine(GlslDialect dialect) {
+  return dialect == GlslDialect::es300 ? "#version 300 es" : "#version 330 core";
+}
+
+std::string shaderText(std::string_view fileName, GlslDialect dialect, std::string_view defines) {
+  std::string text(versionLine(dialect));
+  text += '\n';
+  text += defines;
+  if (!defines.empty() && !defines.ends_with('\n')) text += '\n';
+  text += "#line 1\n";  // GLSL 3.30 and ES 3.00: the next line is line 1
+  text += embeddedShader(fileName);
+  return text;
+}
 
 Program::Program(const GladGLContext& gl, std::initializer_list<ShaderStage> stages) : gl_(&gl) {
   id_ = ProgramId(gl, gl.CreateProgram());
@@ -62,23 +80,16 @@ Program::Program(const GladGLContext& gl, std::initializer_list<ShaderStage> sta
 Program Program::fromFiles(const GladGLContext& gl, std::initializer_list<std::string_view> files,
                            std::string_view defines) {
   std::vector<ShaderStage> stages;
-  std::vector<std::string> sources;  // with the defines inserted; ShaderStage only views them
+  std::vector<std::string> sources;  // with #version and the defines; ShaderStage only views them
   sources.reserve(files.size());
+  const GlslDialect dialect = dialectOf(gl);
   for (std::string_view f : files) {
     const GLenum stage = stageOf(f);  // an unknown extension is the first thing to report
-    std::string text(embeddedShader(f));
-    if (!defines.empty()) {
-      const size_t eol = text.find('\n');
-      text.insert(eol == std::string::npos ? text.size() : eol + 1, defines);
-    }
-    sources.push_back(std::move(text));
+    sources.push_back(shaderText(f, dialect, defines));
     stages.push_back({stage, f, sources.back()});
   }
-  switch (stages.size()) {
-    case 2: return Program(gl, {stages[0], stages[1]});
-    case 3: return Program(gl, {stages[0], stages[1], stages[2]});
-    default: throw Error("a program needs 2 or 3 shader files");
-  }
+  if (stages.size() != 2) throw Error("a program needs a vertex and a fragment shader file");
+  return Program(gl, {stages[0], stages[1]});
 }
 
 GLint Program::location(const char* name) const {

@@ -40,20 +40,20 @@ GpuMesh upload(const GladGLContext& gl, const Mesh& mesh) {
   gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(triangles.size() * sizeof(uint32_t)), triangles.data(), GL_STATIC_DRAW);
   g.faceIndexCount = GLsizei(triangles.size());
 
-  std::vector<glm::vec3> positions(mesh.positions.begin(), mesh.positions.end());
-  std::vector<uint32_t> lines;
-  for (const Edge& e : uniqueEdges(mesh)) lines.insert(lines.end(), {e.a, e.b});
+  // The end points of each edge side by side: instanced attributes cannot go through an index buffer.
+  std::vector<glm::vec3> ends;
+  for (const Edge& e : uniqueEdges(mesh)) ends.insert(ends.end(), {glm::vec3(mesh.positions[e.a]), glm::vec3(mesh.positions[e.b])});
   g.edges = gl::makeVertexArray(gl);
-  g.edgeVertices = gl::makeBuffer(gl);
-  g.edgeIndices = gl::makeBuffer(gl);
+  g.edgeEnds = gl::makeBuffer(gl);
   gl.BindVertexArray(g.edges.id());
-  gl.BindBuffer(GL_ARRAY_BUFFER, g.edgeVertices.id());
-  gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(positions.size() * sizeof(glm::vec3)), positions.data(), GL_STATIC_DRAW);
-  gl.EnableVertexAttribArray(0);
-  gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
-  gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.edgeIndices.id());
-  gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(lines.size() * sizeof(uint32_t)), lines.data(), GL_STATIC_DRAW);
-  g.edgeIndexCount = GLsizei(lines.size());
+  gl.BindBuffer(GL_ARRAY_BUFFER, g.edgeEnds.id());
+  gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(ends.size() * sizeof(glm::vec3)), ends.data(), GL_STATIC_DRAW);
+  for (GLuint end = 0; end < 2; ++end) {
+    gl.EnableVertexAttribArray(2 * end);
+    gl.VertexAttribPointer(2 * end, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), reinterpret_cast<void*>(end * sizeof(glm::vec3)));
+    gl.VertexAttribDivisor(2 * end, 1);
+  }
+  g.edgeCount = GLsizei(ends.size() / 2);
   gl.BindVertexArray(0);
   return g;
 }

@@ -1,6 +1,6 @@
 // Meshes on the GPU, uploaded once per mesh (the scene's objects share their MC meshes): fan-
 // triangulated faces with a normal per corner (the mesh's own, or the face normal for flat faces),
-// and the unique edges as a line list.
+// and the unique edges, one pair of end points each (an instance of shaders/line.vert).
 #pragma once
 
 #include "app/gl/objects.h"
@@ -15,9 +15,9 @@ struct GpuMesh {
   gl::VertexArray faces;     // location 0: MC position, 1: MC normal
   gl::Buffer faceVertices, faceIndices;
   GLsizei faceIndexCount = 0;
-  gl::VertexArray edges;     // location 0: MC position (location 1, the colour, is set constant)
-  gl::Buffer edgeVertices, edgeIndices;
-  GLsizei edgeIndexCount = 0;
+  gl::VertexArray edges;     // per instance: location 0, 2: the MC end points (1, 3, the colours, are set constant)
+  gl::Buffer edgeEnds;
+  GLsizei edgeCount = 0;
 };
 
 class GpuMeshCache {

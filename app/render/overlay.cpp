@@ -39,12 +39,14 @@ void OverlayBatch::clear() {
 
 OverlayRenderer::OverlayRenderer(const GladGLContext& gl)
     : gl_(&gl),
-      lines_(gl::Program::fromFiles(gl, {"overlay.vert", "line.geom", "line.frag"})),
-      points_(gl::Program::fromFiles(gl, {"overlay.vert", "point.geom", "point.frag"})),
+      lines_(gl::Program::fromFiles(gl, {"line.vert", "line.frag"})),
+      points_(gl::Program::fromFiles(gl, {"point.vert", "point.frag"})),
       triangles_(gl::Program::fromFiles(gl, {"overlay.vert", "color.frag"})),
-      clippedLines_(gl::Program::fromFiles(gl, {"overlay.vert", "line.geom", "line.frag"}, "#define USER_PLANES\n")),
+      clippedLines_(gl::Program::fromFiles(gl, {"line.vert", "line.frag"}, "#define USER_PLANES\n")),
       vao_(gl::makeVertexArray(gl)),
+      segmentVao_(gl::makeVertexArray(gl)),
       vbo_(gl::makeBuffer(gl)) {
+  // Vertices (triangles) and, with divisor 1, points: position and colour of one OverlayVertex.
   gl.BindVertexArray(vao_.id());
   gl.BindBuffer(GL_ARRAY_BUFFER, vbo_.id());
   gl.EnableVertexAttribArray(0);
@@ -52,6 +54,18 @@ OverlayRenderer::OverlayRenderer(const GladGLContext& gl)
   gl.EnableVertexAttribArray(1);
   gl.VertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(OverlayVertex),
                          reinterpret_cast<void*>(offsetof(OverlayVertex, color)));
+  // Segments (line.vert): a pair of OverlayVertex per instance, the same buffer read two at a time.
+  gl.BindVertexArray(segmentVao_.id());
+  for (GLuint end = 0; end < 2; ++end) {
+    const size_t first = end * sizeof(OverlayVertex);
+    gl.EnableVertexAttribArray(2 * end);
+    gl.VertexAttribPointer(2 * end, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(OverlayVertex), reinterpret_cast<void*>(first));
+    gl.VertexAttribDivisor(2 * end, 1);
+    gl.EnableVertexAttribArray(2 * end + 1);
+    gl.VertexAttribPointer(2 * end + 1, 4, GL_FLOAT, GL_FALSE, 2 * sizeof(OverlayVertex),
+                           reinterpret_cast<void*>(first + offsetof(OverlayVertex, color)));
+    gl.VertexAttribDivisor(2 * end + 1, 1);
+  }
   gl.BindVertexArray(0);
 }
 
@@ -80,7 +94,8 @@ void OverlayRenderer::drawLines(const OverlayBatch& batch, const ViewCamera& vie
     lines_.set("widthPx", style.first * scale_);
     lines_.set("dashPx", style.second);
     upload(vertices);
-    gl.DrawArrays(GL_LINES, 0, GLsizei(vertices.size()));
+    gl.BindVertexArray(segmentVao_.id());
+    gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(vertices.size() / 2));
   }
 }
 
@@ -128,14 +143,20 @@ void OverlayRenderer::drawPass(const OverlayBatch& batch, const ViewCamera& view
   setCamera(points_, view, wcFromMc);
   points_.set("viewportSize", glm::vec2(width, height));
   points_.set("alphaScale", alphaScale);
+  gl.BindVertexArray(vao_.id());
+  gl.VertexAttribDivisor(0, 1);  // one instance (a quad) per point
+  gl.VertexAttribDivisor(1, 1);
   for (const auto& [size, vertices] : batch.points()) {
     points_.set("sizePx", size * scale_);
     upload(vertices);
-    gl.DrawArrays(GL_POINTS, 0, GLsizei(vertices.size()));
+    gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(vertices.size()));
   }
+  gl.BindVertexArray(vao_.id());
+  gl.VertexAttribDivisor(0, 0);
+  gl.VertexAttribDivisor(1, 0);
 }
 
-void OverlayRenderer::drawMeshEdges(GLuint edgeVao, GLsizei indexCount, const ViewCamera& view,
+void OverlayRenderer::drawMeshEdges(GLuint edgeVao, GLsizei edgeCount, const ViewCamera& view,
                                     const Mat4& wcFromMc, int width, int height, const glm::vec4& color,
                                     float widthPx, float dashPx) {
   const GladGLContext& gl = *gl_;
@@ -153,8 +174,9 @@ void OverlayRenderer::drawMeshEdges(GLuint edgeVao, GLsizei indexCount, const Vi
   }
   p.set("userPlaneCount", planes);
   gl.BindVertexArray(edgeVao);
-  gl.VertexAttrib4f(1, color.r, color.g, color.b, color.a);  // attribute 1 is not an array here
-  gl.DrawElements(GL_LINES, indexCount, GL_UNSIGNED_INT, nullptr);
+  gl.VertexAttrib4f(1, color.r, color.g, color.b, color.a);  // the colours are not arrays here
+  gl.VertexAttrib4f(3, color.r, color.g, color.b, color.a);
+  gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, edgeCount);
   gl.BindVertexArray(0);
   for (int i = 0; i < planes; ++i) gl.Disable(GL_CLIP_DISTANCE0 + GLenum(i));
 }

@@ -62,7 +62,7 @@ class OverlayRenderer {
   void drawLines(const OverlayBatch& batch, const ViewCamera& view, int width, int height, const Mat4& wcFromMc,
                  float alphaScale = 1.f);
   /// The edges of a GPU mesh (see GpuMesh) as thick lines of one colour, optionally dashed.
-  void drawMeshEdges(GLuint edgeVao, GLsizei indexCount, const ViewCamera& view, const Mat4& wcFromMc, int width,
+  void drawMeshEdges(GLuint edgeVao, GLsizei edgeCount, const ViewCamera& view, const Mat4& wcFromMc, int width,
                      int height, const glm::vec4& color, float widthPx, float dashPx);
 
  private:
@@ -76,7 +76,8 @@ class OverlayRenderer {
   std::vector<Vec4> userPlanes_;
   gl::Program lines_, points_, triangles_;
   gl::Program clippedLines_;  // lines_ with the user clip planes (USER_PLANES), for objects' edges
-  gl::VertexArray vao_;
+  gl::VertexArray vao_;         // vbo_ as OverlayVertex: locations 0, 1
+  gl::VertexArray segmentVao_;  // vbo_ as pairs of OverlayVertex per instance: locations 0 … 3
   gl::Buffer vbo_;
 };
 

@@ -279,7 +279,7 @@ void ViewRenderer::drawEdges(const Scene& scene, const ViewCamera& view, int wid
     for (const SceneObject& o : scene.objects) {
       if (!o.visible || !o.mesh) continue;
       const GpuMesh& g = meshes_.get(o.mesh);
-      overlay_.drawMeshEdges(g.edges.id(), g.edgeIndexCount, view, wcFromMc(o.transform), width, height,
+      overlay_.drawMeshEdges(g.edges.id(), g.edgeCount, view, wcFromMc(o.transform), width, height,
                              glm::vec4(glm::vec3(o.color), p.alpha), theme::kEdgeWidth, p.dash);
     }
   }

@@ -507,7 +507,7 @@ void Viewer::exportMenu() {
                      }
                    });
     }
-    const std::optional<std::string> why = svgExportError(e.kind, s_.frame);
+    const std::optional<std::string> why = svgExportError(e.kind, s_.doc.shown(), s_.frame);
     const std::string svg = std::string(e.name) + " view as SVG…";
     if (ImGui::MenuItem(svg.c_str(), nullptr, false, !why && texture != 0)) {
       const ViewKind kind = e.kind;

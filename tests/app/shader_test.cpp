@@ -94,19 +94,39 @@ std::string linkLog(const GladGLContext& gl, std::string_view vertex, std::strin
   return trimmed(log);
 }
 
-TEST(Shaders, EveryProgramTheAppUsesCompilesAndLinks) {
-  GlContext& ctx = *test::egl().context;
-  const std::vector<std::vector<std::string_view>> programs = {{"scene.vert", "scene.frag"},
-                                                              {"overlay.vert", "line.geom", "line.frag"},
-                                                              {"overlay.vert", "point.geom", "point.frag"},
-                                                              {"overlay.vert", "color.frag"},
-                                                              {"text.vert", "text.frag"}};
-  for (const auto& files : programs) {
-    SCOPED_TRACE(files.front());
-    if (files.size() == 2) EXPECT_NO_THROW(gl::Program::fromFiles(ctx.gl(), {files[0], files[1]}));
-    else EXPECT_NO_THROW(gl::Program::fromFiles(ctx.gl(), {files[0], files[1], files[2]}));
+/// Every program the app builds, in each variant of defines it builds it with.
+struct ProgramVariant {
+  std::string_view vertex, fragment;
+  std::string defines;
+};
+std::vector<ProgramVariant> appPrograms() {
+  std::vector<ProgramVariant> v = {{"line.vert", "line.frag", ""},    {"line.vert", "line.frag", "#define USER_PLANES\n"},
+                                   {"point.vert", "point.frag", ""},  {"overlay.vert", "color.frag", ""},
+                                   {"text.vert", "text.frag", ""}};
+  for (int volumeTest = 0; volumeTest < 2; ++volumeTest)
+    for (int lights = 0; lights <= 4; ++lights)
+      for (int planes = 0; planes < 2; ++planes) {
+        std::string d;
+        if (volumeTest) d += "#define VOLUME_TEST\n";
+        if (lights > 0) d += "#define SHADED\n#define LIGHT_COUNT " + std::to_string(lights) + "\n";
+        if (planes) d += "#define USER_PLANES\n";
+        v.push_back({"scene.vert", "scene.frag", d});
+      }
+  return v;
+}
+
+void expectEveryProgramLinks(GlContext& ctx) {
+  for (const ProgramVariant& p : appPrograms()) {
+    SCOPED_TRACE(std::string(p.vertex) + " + " + std::string(p.fragment) + " with " + p.defines);
+    EXPECT_NO_THROW(gl::Program::fromFiles(ctx.gl(), {p.vertex, p.fragment}, p.defines));
   }
   EXPECT_NO_THROW(ctx.checkErrors("building the programs"));
+}
+
+TEST(Shaders, EveryProgramTheAppUsesCompilesAndLinks) {
+  GlContext& ctx = *test::egl().context;
+  EXPECT_EQ(gl::dialectOf(ctx.gl()), gl::GlslDialect::core330);
+  expectEveryProgramLinks(ctx);
 }
 
 TEST(Shaders, CompileErrorNamesTheFileAndCarriesTheInfoLog) {
@@ -149,7 +169,49 @@ TEST(Shaders, UnknownEmbeddedFilesAndStagesAreErrors) {
   EXPECT_THAT(test::errorOf([&] { gl::Program::fromFiles(ctx.gl(), {"scene.vert", "scene.txt"}); }),
               HasSubstr("shaders/scene.txt: unknown shader stage"));
   EXPECT_FALSE(gl::embeddedShader("scene.vert").empty());
-  EXPECT_THAT(std::string(gl::embeddedShader("scene.vert")), HasSubstr("#version 330 core"));
+}
+
+// The files carry no #version line; the loader puts the context's first, then the defines, then
+// resets the line count so that the driver's messages name the file's own lines.
+TEST(Shaders, TheLoaderPutsTheDialectsVersionLineFirst) {
+  for (std::string_view f : {"scene.vert", "scene.frag", "line.vert", "line.frag", "point.vert", "point.frag",
+                             "overlay.vert", "color.frag", "text.vert", "text.frag"}) {
+    SCOPED_TRACE(f);
+    const std::string text = "\n" + std::string(gl::embeddedShader(f));
+    EXPECT_THAT(text, ::testing::Not(HasSubstr("\n#version")));  // (comments may name it)
+  }
+  EXPECT_EQ(gl::shaderText("color.frag", gl::GlslDialect::core330, "#define X\n"),
+            "#version 330 core\n#define X\n#line 1\n" + std::string(gl::embeddedShader("color.frag")));
+  EXPECT_EQ(gl::shaderText("color.frag", gl::GlslDialect::es300),
+            "#version 300 es\n#line 1\n" + std::string(gl::embeddedShader("color.frag")));
+  // A compile error's line number is the file's: line 3 of the fragment below is the broken one.
+  GlContext& ctx = *test::egl().context;
+  const std::string message = test::errorOf([&] {
+    gl::Program(ctx.gl(), {{GL_VERTEX_SHADER, "good.vert", kGoodVertex},
+                           {GL_FRAGMENT_SHADER, "broken.frag", "#version 330 core\n#define X\n#line 1\n"
+                                                               "out vec4 fragColor;\n\nvoid main() { fragColor = y; }\n"}});
+  });
+  EXPECT_THAT(message, HasSubstr("0:3("));  // Mesa's "0:LINE(COLUMN): error: …"
+  expectNoGlErrorAndDropCompilerMessages(ctx);
+}
+
+// WebGL2 compiles GLSL ES 3.00: every program, in every variant, compiles and links as such on an
+// OpenGL ES 3.0 context (Mesa's, through EGL with EGL_OPENGL_ES_API). Mesa's ES compiler rejects
+// what ES lacks (geometry stages, noperspective, gl_ClipDistance, missing precision).
+TEST(Shaders, EveryProgramCompilesAndLinksAsGlslEs300) {
+  const std::unique_ptr<GlContext> es = createEglEsContext(/*debug=*/true);  // Mesa always has one
+  ASSERT_THAT(es->description(), HasSubstr("OpenGL ES 3."));
+  EXPECT_EQ(gl::dialectOf(es->gl()), gl::GlslDialect::es300);
+  expectEveryProgramLinks(*es);
+  // and a desktop-only construct is an error there (so the check above means something)
+  const std::string message = test::errorOf([&] {
+    gl::Program(es->gl(), {{GL_VERTEX_SHADER, "np.vert", "#version 300 es\nnoperspective out float v;\n"
+                                                         "void main() { v = 1.0; gl_Position = vec4(0.0); }\n"},
+                           {GL_FRAGMENT_SHADER, "np.frag", "#version 300 es\nprecision highp float;\nnoperspective in float v;\n"
+                                                           "out vec4 c;\nvoid main() { c = vec4(v); }\n"}});
+  });
+  EXPECT_THAT(message, HasSubstr("compile failed"));
+  expectNoGlErrorAndDropCompilerMessages(*es);
 }
 
 }  // namespace
