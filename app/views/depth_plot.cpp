@@ -98,7 +98,8 @@ DepthPlot depthPlot(const PipelineRun& run, int width, int plotHeight, const Tex
   list.height = int(std::ceil(float(plotHeight) + depthPlotExtraHeight(run, width, text, options)));
   list.background = theme::kViewBackground;
   list.observer.space = Space::pixels;
-  list.antialiased = true;
+  // No multisampling: the lines bring their own smooth edges, the bars are whole-pixel rectangles.
+  list.antialiased = false;
 
   std::vector<TextLabel> labels;
   const Legend legend = legendFor(width, text, options.legend);
@@ -179,9 +180,9 @@ DepthPlot depthPlot(const PipelineRun& run, int width, int plotHeight, const Tex
       hi = std::max(hi, z);
     }
     const double shownLo = std::clamp(lo, c.back, c.front), shownHi = std::clamp(hi, c.back, c.front);
-    const float x0 = out.at(shownLo, 0).x, x1 = std::max(out.at(shownHi, 0).x, x0 + 2 * m.scale);
+    const float x0 = std::round(out.at(shownLo, 0).x), x1 = std::max(std::round(out.at(shownHi, 0).x), x0 + 2);
     DepthPlot::Bar bar{o.name, {{0, rowTop}, {float(width), rowTop + m.line}},
-                       {{x0, rowTop + m.line * 0.25f}, {x1, rowTop + m.line * 0.75f}}, lo, hi};
+                       {{x0, std::round(rowTop + m.line * 0.25f)}, {x1, std::round(rowTop + m.line * 0.75f)}}, lo, hi};
     const glm::vec4 color(glm::vec3(o.color), 0.9f);
     bars.quad({x0, bar.bar.min.y, 0}, {x1, bar.bar.min.y, 0}, {x1, bar.bar.max.y, 0}, {x0, bar.bar.max.y, 0}, color);
     // The name beside the bar, on whichever side has room.

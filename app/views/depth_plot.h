@@ -32,7 +32,7 @@ struct DepthPlot {
   struct Bar {
     std::string name;
     Box row;       // the object's row under the axis (its hover box)
-    Box bar;       // the bar: its VRC z range, cut to [B, F], at least 2 px wide
+    Box bar;       // the bar: its VRC z range, cut to [B, F], in whole pixels, at least 2 px wide
     double lo = 0, hi = 0;  // VRC z of its nearest-to-B and nearest-to-F vertex, uncut
   };
   std::vector<Bar> bars;  // one per object with vertices, in the run's order

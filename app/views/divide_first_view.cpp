@@ -15,19 +15,19 @@ namespace {
 
 using namespace draw;
 
-// A clipped polygon in the view's pixels. The CPU raster fans it from its first vertex and skips
+// A clipped polygon. The CPU raster fans it from its first vertex and skips
 // the fan's triangles that have a non-finite vertex; a polygon with such a vertex is therefore
 // given as its finite fan triangles, so that every backend fills what the raster fills.
-void addPolygon(std::span<const Vec3> pixels, PolygonSet& out) {
+void addPolygon(std::span<const Vec3> polygon, PolygonSet& out) {
   bool finite = true;
-  for (const Vec3& p : pixels) finite = finite && isFinite(p);
-  if (pixels.size() < 3) return;
+  for (const Vec3& p : polygon) finite = finite && isFinite(p);
+  if (polygon.size() < 3) return;
   if (finite) {
-    out.add(pixels);
+    out.add(polygon);
     return;
   }
-  for (size_t i = 1; i + 1 < pixels.size(); ++i) {
-    const Vec3 triangle[3] = {pixels[0], pixels[i], pixels[i + 1]};
+  for (size_t i = 1; i + 1 < polygon.size(); ++i) {
+    const Vec3 triangle[3] = {polygon[0], polygon[i], polygon[i + 1]};
     if (isFinite(triangle[0]) && isFinite(triangle[1]) && isFinite(triangle[2])) out.add(triangle);
   }
 }
@@ -43,28 +43,30 @@ DisplayList divideFirstView(const ViewInput& in) {
   list.width = in.width;
   list.height = in.height;
   list.background = glm::vec3(in.scene.background);
-  list.observer.space = Space::pixels;
+  // The polygons are in the run's DC; the view looks at DC through the device mapping undone
+  // (npcFromDc = dcFromNpc⁻¹, z_npc = z_dc), so a backend puts DC scaled to its pixels and keeps
+  // z_dc as the depth its depth test compares.
+  list.observer.space = Space::dc;
+  list.observer.camera.camera = run.camera;
+  list.observer.camera.vrcFromWc = Mat4(1.0);
+  list.observer.camera.npcFromVrc = glm::inverse(run.dcFromNpc);
+  list.observer.camera.eyeWc = Vec4(0, 0, 1, 0);  // toward the viewer: z_dc grows toward the front plane
   list.antialiased = false;  // pixel-aligned with DC, as the camera view beside it
 
-  // DC of the run's device → the view's pixels (both y down, z_dc kept for the depth test).
-  const Vec2 scale(double(in.width) / run.device.width, double(in.height) / run.device.height);
   Fill fill;
-  fill.space = Space::pixels;
+  fill.space = Space::dc;
   fill.lit = false;
   fill.polygons.resize(run.objects.size());
-  std::vector<Vec3> pixels;
+  std::vector<Vec3> dc;
   // Scene order, then face order: the order the raster fills in, which decides depth ties.
   for (size_t k = 0; k < run.objects.size(); ++k) {
     const ObjectRun& o = run.objects[k];
     PolygonSet& set = fill.polygons[k];
     set.color = glm::vec3(o.color);
     for (size_t f = 0; f < o.faceCount(); ++f) {
-      pixels.clear();
-      for (uint32_t ref : o.clippedFace(f)) {
-        const Vec3 dc = o.clippedDc(ref);
-        pixels.push_back({dc.x * scale.x, dc.y * scale.y, dc.z});
-      }
-      addPolygon(pixels, set);
+      dc.clear();
+      for (uint32_t ref : o.clippedFace(f)) dc.push_back(o.clippedDc(ref));
+      addPolygon(dc, set);
     }
   }
   list.add(std::move(fill));

@@ -127,10 +127,10 @@ void morphView(const ViewInput& in, draw::DisplayList& out);
 
 /// The divide-first comparison (app/views/divide_first_view.cpp): what the wrong strategy draws,
 /// the clipped polygons of `in.run`, which must be a run of ClipStrategy::divideFirst (else
-/// std::invalid_argument), each object's flat colour, in the view's pixels (DC scaled to
-/// in.width × in.height, z kept: z_dc, 1 at the front plane, larger is nearer) on the scene's
-/// background. One unlit Fill in Space::pixels whose depth test keeps the nearer z_dc, the first
-/// polygon drawn winning a tie, as the CPU raster (app/export/cpu_raster.h) documents.
+/// std::invalid_argument), each object's flat colour, on the scene's background. One unlit Fill in
+/// Space::dc (the run's DC), seen through the device mapping undone (observer: npcFromDc, so DC
+/// fills in.width × in.height and z_dc is the depth: the nearer, larger z_dc wins, the first
+/// polygon drawn keeping a tie), as the CPU raster (app/export/cpu_raster.h) fills them.
 draw::DisplayList divideFirstView(const ViewInput& in);
 
 /// The picture of a view kind: one panel, or for ViewKind::all the camera, world and NPC views side

@@ -89,7 +89,8 @@ TEST(DepthPlot, BarsSpanEachObjectsVrcZ) {
     EXPECT_EQ(bar.lo, lo);
     EXPECT_EQ(bar.hi, hi);
     const Camera& c = f.run.camera;
-    EXPECT_FLOAT_EQ(bar.bar.min.x, plot.at(std::clamp(lo, c.back, c.front), 0).x);
+    EXPECT_EQ(bar.bar.min.x, std::round(plot.at(std::clamp(lo, c.back, c.front), 0).x));
+    EXPECT_EQ(bar.bar.max.x, std::max(std::round(plot.at(std::clamp(hi, c.back, c.front), 0).x), bar.bar.min.x + 2));
     EXPECT_GE(bar.bar.max.x, bar.bar.min.x + 2);
     EXPECT_GE(bar.row.min.y, plot.axis.max.y);
     if (k) {

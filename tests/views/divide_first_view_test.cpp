@@ -23,23 +23,25 @@ struct DivideFirstFixture {
 };
 
 // Every clipped polygon of the run, object by object and face by face (the raster's order, which
-// decides depth ties), at DC scaled to the view's size with z_dc kept, in the object's colour.
-TEST(DivideFirstView, PolygonsAreTheDivideFirstRunsInPixels) {
+// decides depth ties), in DC as the run has them, in the object's colour; the observer puts DC onto
+// the view's pixels (scaled to its size) and keeps z_dc as NPC z, the depth.
+TEST(DivideFirstView, PolygonsAreTheDivideFirstRunsInDc) {
   const DivideFirstFixture f(defaultScene());
   const int w = 2 * f.scene.device.width, h = 3 * f.scene.device.height;  // unequal scales: x × 2, y × 3
   const DisplayList list = divideFirstView(f.input(w, h));
   EXPECT_EQ(list.width, w);
   EXPECT_EQ(list.height, h);
   EXPECT_EQ(list.background, glm::vec3(f.scene.background));
-  EXPECT_EQ(list.observer.space, Space::pixels);
+  EXPECT_EQ(list.observer.space, Space::dc);
   EXPECT_FALSE(list.antialiased);
   ASSERT_EQ(list.batches.size(), 1u);
   const Fill& fill = std::get<Fill>(list.batches[0]);
-  EXPECT_EQ(fill.space, Space::pixels);
+  EXPECT_EQ(fill.space, Space::dc);
   EXPECT_FALSE(fill.lit);
   EXPECT_FALSE(fill.depthOnly);
   EXPECT_EQ(fill.alpha, 1.f);
   ASSERT_EQ(fill.polygons.size(), f.run.objects.size());
+  const Mat4 npcFromDc = list.observer.camera.npcFromWc();
   size_t polygons = 0;
   for (size_t k = 0; k < f.run.objects.size(); ++k) {
     const ObjectRun& o = f.run.objects[k];
@@ -54,7 +56,13 @@ TEST(DivideFirstView, PolygonsAreTheDivideFirstRunsInPixels) {
       ASSERT_EQ(polygon.size(), refs.size()) << o.name << " face " << face;
       for (size_t v = 0; v < refs.size(); ++v) {
         const Vec3 dc = o.clippedDc(refs[v]);
-        EXPECT_EQ(polygon[v], Vec3(dc.x * 2, dc.y * 3, dc.z)) << o.name << " face " << face << " vertex " << v;
+        EXPECT_EQ(polygon[v], dc) << o.name << " face " << face << " vertex " << v;
+        // Through the observer: the clipped NPC point (z_npc = z_dc, the depth), and DC × (2, 3) in pixels.
+        const Vec3 npc = Vec3(npcFromDc * Vec4(dc, 1.0)), clippedNpc = o.clippedNpc(refs[v]);
+        EXPECT_NEAR(glm::length(npc - clippedNpc), 0, 1e-12) << o.name << " face " << face << " vertex " << v;
+        const Projected p = projectToPixels(list.observer.camera, dc, w, h);
+        EXPECT_TRUE(p.visible);
+        EXPECT_NEAR(glm::length(p.pixel - Vec2(dc.x * 2, dc.y * 3)), 0, 1e-9);
       }
     }
     EXPECT_EQ(i, set.polygonCount()) << o.name;
