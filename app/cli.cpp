@@ -138,9 +138,10 @@ int runRender(const RenderOptions& r) {
   {
     // Non-finite results are an error here as in the dump (coordinates so large that a product
     // overflows), said before the views derive their observers from them.
-    PipelineOptions options;
-    options.strategy = *clipStrategyFromString(r.strategy);
-    if (auto e = nonFiniteError(runPipeline(scene, options)))
+    RenderRequest checked;
+    if (r.view != "ui") checked.view = *viewKindFromString(r.view);
+    checked.pipeline.strategy = *clipStrategyFromString(r.strategy);
+    if (auto e = nonFiniteError(runPipeline(scene, pipelineOptionsOf(checked))))
       throw Error((r.scene.empty() ? std::string("the default scene") : r.scene) + ": " + *e);
   }
   RenderRequest request;
@@ -286,8 +287,11 @@ int runCommandLine(int argc, char** argv) {
                         "camera (what the synthetic camera sees, W × H, pixel-aligned with DC), world (an "
                         "observer's view of scene, camera and view volume), npc (the unit cube after view "
                         "mapping, clipping and division), all (the three side by side), morph (the stage "
-                        "morph at --morph-t) or ui (the whole viewer window with its panels; needs EGL)")
-      ->check(CLI::IsMember({"camera", "world", "npc", "all", "morph", "ui"}));
+                        "morph at --morph-t), divide-first (what dividing by w before clipping draws, the "
+                        "Clipping lesson's wrong picture; always the divide-first strategy's run), depth-plot "
+                        "(NPC z and GL window depth against VRC z, the objects' depth ranges) or ui (the whole "
+                        "viewer window with its panels; needs EGL)")
+      ->check(CLI::IsMember({"camera", "world", "npc", "all", "morph", "divide-first", "depth-plot", "ui"}));
   renderCmd->add_option("--morph-t", render.morphT,
                         "With --view morph: 0 MC, 1 WC, 2 VRC, 2.5 homogeneous NPC, 3 NPC, 4 DC, or between")
       ->check(finiteIn(0, 4));

@@ -19,6 +19,10 @@ struct RenderRequest {
 /// views of the given aspect ratio.
 FrameSettings frameSettingsFor(const Scene& scene, Style style, double aspect);
 
+/// The pipeline options a request's view is drawn from: the request's, except that the divide-first
+/// comparison is always the divide-first strategy's run (what the viewer shows it from).
+PipelineOptions pipelineOptionsOf(const RenderRequest& request);
+
 /// Runs the CPU pipeline and draws the requested view with `renderer`. Throws vplab::Error.
 Image renderImage(ViewRenderer& renderer, const Scene& scene, const RenderRequest& request);
 
