@@ -1,5 +1,7 @@
 #include "app/render/overlay.h"
 
+#include "app/views/display_list.h"
+
 #include <algorithm>
 #include <string>
 
@@ -39,6 +41,7 @@ void OverlayBatch::clear() {
 
 OverlayRenderer::OverlayRenderer(const GladGLContext& gl)
     : gl_(&gl),
+      es_(gl::dialectOf(gl) == gl::GlslDialect::es300),
       lines_(gl::Program::fromFiles(gl, {"line.vert", "line.frag"})),
       points_(gl::Program::fromFiles(gl, {"point.vert", "point.frag"})),
       triangles_(gl::Program::fromFiles(gl, {"overlay.vert", "color.frag"})),
@@ -114,11 +117,16 @@ void OverlayRenderer::draw(const OverlayBatch& batch, const ViewCamera& view, in
     case OverlayDepth::xray:
       gl.Enable(GL_DEPTH_TEST);
       gl.DepthFunc(GL_GREATER);
-      drawPass(batch, view, width, height, wcFromMc, 0.3f);
+      drawPass(batch, view, width, height, wcFromMc, draw::kXrayAlpha);
       [[fallthrough]];
     case OverlayDepth::test:
       gl.Enable(GL_DEPTH_TEST);
       gl.DepthFunc(GL_LEQUAL);
+      drawPass(batch, view, width, height, wcFromMc, 1.f);
+      break;
+    case OverlayDepth::hiddenOnly:
+      gl.Enable(GL_DEPTH_TEST);
+      gl.DepthFunc(GL_GREATER);
       drawPass(batch, view, width, height, wcFromMc, 1.f);
       break;
   }
@@ -170,7 +178,7 @@ void OverlayRenderer::drawMeshEdges(GLuint edgeVao, GLsizei edgeCount, const Vie
   p.set("alphaScale", 1.f);
   for (int i = 0; i < planes; ++i) {
     p.set(("userPlanesWc[" + std::to_string(i) + "]").c_str(), glm::vec4(userPlanes_[size_t(i)]));
-    gl.Enable(GL_CLIP_DISTANCE0 + GLenum(i));
+    if (!es_) gl.Enable(GL_CLIP_DISTANCE0 + GLenum(i));
   }
   p.set("userPlaneCount", planes);
   gl.BindVertexArray(edgeVao);
@@ -178,7 +186,8 @@ void OverlayRenderer::drawMeshEdges(GLuint edgeVao, GLsizei edgeCount, const Vie
   gl.VertexAttrib4f(3, color.r, color.g, color.b, color.a);
   gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, edgeCount);
   gl.BindVertexArray(0);
-  for (int i = 0; i < planes; ++i) gl.Disable(GL_CLIP_DISTANCE0 + GLenum(i));
+  if (!es_)
+    for (int i = 0; i < planes; ++i) gl.Disable(GL_CLIP_DISTANCE0 + GLenum(i));
 }
 
 }  // namespace vplab

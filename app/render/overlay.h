@@ -44,8 +44,8 @@ class OverlayBatch {
 };
 
 /// test: hidden by objects in front; ignore: always on top; xray: the hidden part faint, the rest
-/// as usual (camera markers inside objects stay visible).
-enum class OverlayDepth { test, ignore, xray };
+/// as usual (camera markers inside objects stay visible); hiddenOnly: only the hidden part.
+enum class OverlayDepth { test, ignore, xray, hiddenOnly };
 
 class OverlayRenderer {
  public:
@@ -72,6 +72,7 @@ class OverlayRenderer {
   void upload(const std::vector<OverlayVertex>& vertices);
 
   const GladGLContext* gl_;
+  bool es_ = false;  // OpenGL ES: the clip distances are the shaders' own (no GL_CLIP_DISTANCEi)
   float scale_ = 1.f;
   std::vector<Vec4> userPlanes_;
   gl::Program lines_, points_, triangles_;

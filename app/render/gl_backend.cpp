@@ -1,0 +1,476 @@
+// Index: 1 construction and programs  2 lists and pictures  3 fills (meshes, volume partition,
+// CPU polygons)  4 lines, points, triangles
+#include "app/render/gl_backend.h"
+
+#include "pipeline/clipping.h"
+#include "pipeline/error.h"
+#include "pipeline/pipeline.h"
+
+#include <algorithm>
+#include <string>
+#include <variant>
+
+namespace vplab {
+
+// ---------------------------------------------------------------- 1 construction and programs
+
+GlBackend::GlBackend(GlContext& context, float textScale)
+    : ctx_(context),
+      gl_(context.gl()),
+      es_(gl::dialectOf(context.gl()) == gl::GlslDialect::es300),
+      meshes_(gl_),
+      overlay_(gl_),
+      text_(std::make_unique<TextRenderer>(gl_, textScale)) {
+  ctx_.checkErrors("creating the GL backend");
+}
+
+const gl::Program& GlBackend::sceneProgram(bool volumeTest, int lights, bool userPlanes) {
+  lights = std::clamp(lights, 0, 4);
+  std::optional<gl::Program>& p = scenePrograms_[size_t(volumeTest) + 2 * size_t(lights) + 10 * size_t(userPlanes)];
+  if (!p) {
+    std::string defines;
+    if (volumeTest) defines += "#define VOLUME_TEST\n";
+    if (lights > 0) defines += "#define SHADED\n#define LIGHT_COUNT " + std::to_string(lights) + "\n";
+    if (userPlanes) defines += "#define USER_PLANES\n";
+    p = gl::Program::fromFiles(gl_, {"scene.vert", "scene.frag"}, defines);
+  }
+  return *p;
+}
+
+void GlBackend::setClipDistances(int planes) {
+  if (es_) return;  // the shaders discard by their own distances
+  for (int i = 0; i < kMaxUserPlanes; ++i) (i < planes ? gl_.Enable : gl_.Disable)(GL_CLIP_DISTANCE0 + GLenum(i));
+}
+
+// ---------------------------------------------------------------- 2 lists and pictures
+
+const ViewCamera& GlBackend::View::cameraFor(draw::Space s) const {
+  if (s == space) return observer;
+  if (s == draw::Space::pixels) return pixels;
+  throw Error("display list: a batch in " + std::string(draw::toString(s)) + " in a view of " +
+              std::string(draw::toString(space)) + " (batches are in the observer's space or in pixels)");
+}
+
+void GlBackend::draw(const draw::DisplayList& list, gl::RenderTarget& target) {
+  ++serial_;
+  polygonSlot_ = 0;
+  View view;
+  view.width = target.width();
+  view.height = target.height();
+  view.samples = target.samples();
+  view.space = list.observer.space;
+  view.observer = list.observer.camera;
+  view.pixels.vrcFromWc = Mat4(1.0);
+  view.pixels.npcFromVrc = glm::inverse(dcFromNpc(Device{view.width, view.height}));
+
+  target.bind();
+  gl_.ClearColor(list.background.r, list.background.g, list.background.b, 1.f);
+  gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthFunc(GL_LESS);
+  gl_.Disable(GL_BLEND);
+  gl_.Disable(GL_CULL_FACE);
+
+  std::vector<const draw::Batch*> marks;  // a run of x-ray batches, drawn together
+  auto flush = [&] {
+    if (!marks.empty()) drawMarks(marks, draw::Depth::xray, view);
+    marks.clear();
+  };
+  for (const draw::Batch& b : list.batches) {
+    if (const auto* fill = std::get_if<draw::Fill>(&b)) {
+      flush();
+      drawFill(*fill, view);
+    } else if (const auto* text = std::get_if<draw::Text>(&b)) {
+      flush();
+      text_->draw(text->labels, view.width, view.height);
+    } else {
+      draw::Depth depth = draw::Depth::ignore;
+      std::visit([&](const auto& m) {
+        if constexpr (!std::is_same_v<std::decay_t<decltype(m)>, draw::Fill> &&
+                      !std::is_same_v<std::decay_t<decltype(m)>, draw::Text>)
+          depth = m.depth;
+      }, b);
+      const auto* lines = std::get_if<draw::Lines>(&b);
+      if (lines && !lines->meshEdges.empty()) {
+        flush();
+        drawMeshEdges(*lines, view);
+        if (lines->segments.empty()) continue;
+      }
+      if (depth == draw::Depth::xray) {
+        marks.push_back(&b);
+        continue;
+      }
+      flush();
+      drawMarks({&b}, depth, view);
+    }
+  }
+  flush();
+  ctx_.checkErrors("drawing a display list");
+}
+
+Image GlBackend::render(const draw::Picture& picture) {
+  const glm::vec3 bg = glm::clamp(picture.background, 0.f, 1.f) * 255.f + 0.5f;
+  Image out(picture.width, picture.height, Rgba{uint8_t(bg.r), uint8_t(bg.g), uint8_t(bg.b), 255});
+  for (const draw::Panel& panel : picture.panels) {
+    gl::RenderTarget target(gl_);
+    target.resize(panel.list.width, panel.list.height, panel.list.antialiased ? 4 : 1);
+    draw(panel.list, target);
+    blit(target.read(), out, panel.x, panel.y);
+  }
+  ctx_.checkErrors("rendering a picture");
+  return out;
+}
+
+// ---------------------------------------------------------------- 3 fills
+
+void GlBackend::setFillProgram(const gl::Program& p, const draw::Fill& fill, const ViewCamera& camera, int planes) {
+  p.use();
+  p.set("vrcFromWc", camera.vrcFromWc);
+  p.set("npcFromVrc", camera.npcFromVrc);
+  p.set("glClipFromNpc", glClipFromNpc());
+  p.set("volumeMode", int(fill.volume.keep == draw::VolumeTest::Keep::inside   ? 1
+                          : fill.volume.keep == draw::VolumeTest::Keep::outside ? 2
+                                                                                : 0));
+  p.set("volumeNpcFromWc", fill.volume.npcFromSpace);
+  for (int k = 0; k < planes; ++k)
+    p.set(("userPlanesWc[" + std::to_string(k) + "]").c_str(), glm::vec4(fill.clipPlanes[size_t(k)]));
+  if (planes > 0) p.set("userPlaneCount", planes);
+  p.set("alpha", fill.alpha);
+  if (fill.lit) {
+    const int count = int(std::min<size_t>(fill.lights.size(), 4));
+    for (int i = 0; i < count; ++i) {
+      const std::string k = std::to_string(i);
+      p.set(("lightPositions[" + k + "]").c_str(), fill.lights[size_t(i)].position);
+      p.set(("lightColors[" + k + "]").c_str(), fill.lights[size_t(i)].color);
+    }
+    p.set("ambient", fill.ambient);
+    p.set("eyeWc", glm::vec4(camera.eyeWc));
+  }
+}
+
+void GlBackend::drawFill(const draw::Fill& fill, const View& view) {
+  const ViewCamera& camera = view.cameraFor(fill.space);
+  const bool blended = fill.alpha < 1.f && !fill.depthOnly;
+  if (fill.depthOnly) {  // lecture notes 16.1: the faces fill only the depth buffer, pushed back
+    gl_.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    gl_.Enable(GL_POLYGON_OFFSET_FILL);
+    gl_.PolygonOffset(1.f, 2.f);
+  }
+  if (blended) {
+    gl_.Enable(GL_BLEND);
+    gl_.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl_.DepthMask(GL_FALSE);
+  }
+  if (!fill.meshes.empty()) drawMeshes(fill, camera, view.samples);
+  if (!fill.polygons.empty()) drawPolygons(fill, camera);
+  if (blended) {
+    gl_.DepthMask(GL_TRUE);
+    gl_.Disable(GL_BLEND);
+  }
+  if (fill.depthOnly) {
+    gl_.Disable(GL_POLYGON_OFFSET_FILL);
+    gl_.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  }
+}
+
+void GlBackend::drawMeshes(const draw::Fill& fill, const ViewCamera& camera, int samples) {
+  const int planes = int(std::min<size_t>(fill.clipPlanes.size(), size_t(kMaxUserPlanes)));
+  const int lights = fill.lit ? int(std::clamp<size_t>(fill.lights.size(), 1, 4)) : 0;
+  const bool volume = fill.volume.keep != draw::VolumeTest::Keep::all;
+  const gl::Program& program = sceneProgram(volume, lights, planes > 0);
+  // Partitioned (single-sampled targets only: with multisampling a fragment's inputs are evaluated
+  // at the pixel centre even where the triangle covers only some samples, beyond any vertex margin).
+  const bool partitioned = partitioned_ && volume && samples == 1;
+  // The inside pass draws the faces inside the volume by the margin first, with the program that
+  // has no fragment test: without a discard the renderer keeps its early depth test.
+  const gl::Program* early =
+      partitioned && fill.volume.keep == draw::VolumeTest::Keep::inside ? &sceneProgram(false, lights, planes > 0) : nullptr;
+  if (early) setFillProgram(*early, fill, camera, planes);
+  setFillProgram(program, fill, camera, planes);
+  setClipDistances(planes);
+  const gl::Program* current = &program;
+  for (size_t i = 0; i < fill.meshes.size(); ++i) {
+    const draw::MeshInstance& m = fill.meshes[i];
+    if (!m.mesh) continue;
+    const GpuMesh& g = meshes_.get(m.mesh);
+    auto setObject = [&] {
+      current->set("wcFromMc", m.spaceFromMc);
+      current->set("wcNormalFromMc", normalMatrix(m.spaceFromMc));
+      current->set("color", glm::vec3(m.color));
+    };
+    gl_.BindVertexArray(g.faces.id());
+    const VolumePart* part = partitioned && m.run ? partition(i, m, fill.volume.npcFromSpace) : nullptr;
+    if (!part) {
+      setObject();
+      gl_.DrawElements(GL_TRIANGLES, g.faceIndexCount, GL_UNSIGNED_INT, nullptr);
+      continue;
+    }
+    // The VAO's element buffer is the part's until restored below.
+    auto drawPart = [&](size_t list) {
+      if (part->count[list] == 0) return;
+      gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, part->indices[list].id());
+      gl_.DrawElements(GL_TRIANGLES, part->count[list], GL_UNSIGNED_INT, nullptr);
+    };
+    if (early && part->count[kInsideFaces] > 0) {
+      current = early;
+      current->use();
+      setObject();
+      drawPart(kInsideFaces);
+      current = &program;
+      current->use();
+    }
+    setObject();
+    drawPart(fill.volume.keep == draw::VolumeTest::Keep::inside ? kInsidePass : kOutsidePass);
+    gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.faceIndices.id());
+  }
+  gl_.BindVertexArray(0);
+  setClipDistances(0);
+}
+
+std::array<size_t, 2> GlBackend::partitionedTriangles(size_t i) const {
+  if (i >= parts_.size() || parts_[i].serial != serial_) return {0, 0};
+  const VolumePart& p = parts_[i];
+  return {size_t(p.count[kInsideFaces] + p.count[kInsidePass]) / 3, size_t(p.count[kOutsidePass]) / 3};
+}
+
+// A face whose vertices all lie outside one plane of the volume has no fragment inside it; one
+// whose vertices all lie inside every plane has none outside. Both by a margin far above the GPU's
+// float rounding, so the fragment shader's own test would discard every fragment of a face left
+// out: the picture is the same, and each pass draws about half the faces instead of all. From the
+// run's homogeneous NPC (the same npcFromWc the shader tests with). Once per draw call per instance:
+// the inside and the outside fill share it.
+const GlBackend::VolumePart* GlBackend::partition(size_t instance, const draw::MeshInstance& m, const Mat4& npcFromWc) {
+  if (parts_.size() <= instance) parts_.resize(instance + 1);
+  VolumePart& part = parts_[instance];
+  if (part.serial == serial_ && part.run == m.run) return &part;
+  const ObjectRun& o = *m.run;
+  if (!o.mesh || o.mesh != m.mesh || o.npcH.size() != o.mesh->vertexCount() || o.fate.size() != o.mesh->faceCount() ||
+      m.spaceFromMc != o.wcFromMc)
+    return nullptr;  // not this mesh's run: drawn whole
+  // Bits 0–5: the vertex lies outside plane i by the margin; bit 6: inside every plane by it.
+  constexpr uint8_t kInside = 1u << 6;
+  // The GPU's value of a boundary coordinate (float matrices, float MC positions, interpolated)
+  // differs from the CPU's double by far less than these margins: 1e-3 of the vertex's own
+  // coordinates, and 1e-5 of the largest value the float products can reach for this object.
+  constexpr double kRelativeMargin = 1e-3, kProductMargin = 1e-5;
+  const Mesh& mesh = *o.mesh;
+  double wcMax = 0;
+  for (const Vec3& c : bounds(mesh).corners()) {
+    const Vec3 wc = transformAffine(o.wcFromMc, c);
+    wcMax = std::max({wcMax, std::abs(wc.x), std::abs(wc.y), std::abs(wc.z)});
+  }
+  double rowMax = 0;
+  for (int r = 0; r < 4; ++r) {
+    double sum = 0;
+    for (int c = 0; c < 4; ++c) sum += std::abs(npcFromWc[c][r]);
+    rowMax = std::max(rowMax, sum);
+  }
+  const double productMargin = kProductMargin * rowMax * (wcMax + 1);
+  vertexSides_.resize(o.npcH.size());
+  for (size_t v = 0; v < o.npcH.size(); ++v) {
+    const Vec4& p = o.npcH[v];
+    const double margin =
+        std::max(kRelativeMargin * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) + std::abs(p.w)), productMargin);
+    const Boundary bc = boundaryCoordinates(p);
+    uint8_t sides = kInside;
+    for (int b = 0; b < kPlaneCount; ++b) {
+      if (bc[size_t(b)] < -margin) sides |= uint8_t(1u << b);
+      if (!(bc[size_t(b)] > margin)) sides &= uint8_t(~kInside);  // NaN: not inside either
+    }
+    vertexSides_[v] = sides;
+  }
+  // Face f's corners are the GPU vertices faceStart[f] … (GpuMesh), fanned from the first.
+  size_t capacity = 0;
+  for (size_t f = 0; f < mesh.faceCount(); ++f) capacity += 3 * (std::max<uint32_t>(mesh.face(f).size(), 2) - 2);
+  std::array<uint32_t*, kPartLists> out{};
+  for (size_t list = 0; list < kPartLists; ++list) {
+    partIndices_[list].resize(capacity);  // scratch: only what the loop writes is read
+    out[list] = partIndices_[list].data();
+  }
+  const uint8_t* sides = vertexSides_.data();
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    const auto face = mesh.face(f);
+    uint8_t all = 0xff;
+    for (uint32_t v : face) all &= sides[v];
+    const bool outsideOnePlane = all & 0x3f, insideAll = all & kInside;
+    const uint32_t first = mesh.faceStart[f], n = uint32_t(face.size());
+    auto add = [&](size_t list) {
+      for (uint32_t c = 1; c + 1 < n; ++c) {
+        out[list][0] = first;
+        out[list][1] = first + c;
+        out[list][2] = first + c + 1;
+        out[list] += 3;
+      }
+    };
+    if (insideAll) add(kInsideFaces);  // the inside pass without its fragment test
+    else if (!outsideOnePlane) add(kInsidePass);
+    if (!insideAll) add(kOutsidePass);
+  }
+  for (size_t l = 0; l < kPartLists; ++l) {
+    const std::vector<uint32_t>& list = partIndices_[l];  // its first count[l] entries
+    part.count[l] = GLsizei(out[l] - list.data());
+    if (part.count[l] == 0) continue;
+    if (!part.indices[l]) part.indices[l] = gl::makeBuffer(gl_);
+    // Bound as an array buffer: the element binding belongs to whichever VAO is bound.
+    gl_.BindBuffer(GL_ARRAY_BUFFER, part.indices[l].id());
+    const GLsizeiptr bytes = GLsizeiptr(part.count[l]) * GLsizeiptr(sizeof(uint32_t));
+    if (bytes > part.capacity[l] || bytes < part.capacity[l] / 4) {
+      part.capacity[l] = bytes + bytes / 4;
+      gl_.BufferData(GL_ARRAY_BUFFER, part.capacity[l], nullptr, GL_STREAM_DRAW);
+    }
+    gl_.BufferSubData(GL_ARRAY_BUFFER, 0, bytes, list.data());
+  }
+  gl_.BindBuffer(GL_ARRAY_BUFFER, 0);
+  part.run = m.run;
+  part.serial = serial_;
+  return &part;
+}
+
+void GlBackend::drawPolygons(const draw::Fill& fill, const ViewCamera& camera) {
+  // Fan triangulation: a polygon of n corners gives n − 2 triangles, three GPU vertices each.
+  std::vector<std::pair<GLint, GLsizei>> ranges;  // per set: first vertex, vertex count
+  GLsizei vertices = 0;
+  for (const draw::PolygonSet& set : fill.polygons) {
+    const GLint first = vertices;
+    for (size_t k = 0; k < set.ends.size(); ++k) {
+      const uint32_t n = set.ends[k] - (k ? set.ends[k - 1] : 0);
+      if (n >= 3) vertices += GLsizei(3 * (n - 2));
+    }
+    ranges.push_back({first, vertices - first});
+  }
+  if (vertices == 0) return;
+
+  if (polygonSlot_ >= polygonBuffers_.size()) {
+    PolygonBuffer b{gl::makeVertexArray(gl_), gl::makeBuffer(gl_)};
+    gl_.BindVertexArray(b.vao.id());
+    gl_.BindBuffer(GL_ARRAY_BUFFER, b.vbo.id());
+    gl_.EnableVertexAttribArray(0);
+    gl_.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), nullptr);
+    gl_.EnableVertexAttribArray(1);
+    gl_.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), reinterpret_cast<void*>(sizeof(glm::vec3)));
+    polygonBuffers_.push_back(std::move(b));
+  }
+  PolygonBuffer& buffer = polygonBuffers_[polygonSlot_++];
+  gl_.BindVertexArray(buffer.vao.id());
+  gl_.BindBuffer(GL_ARRAY_BUFFER, buffer.vbo.id());
+  const GLsizeiptr bytes = GLsizeiptr(vertices) * GLsizeiptr(2 * sizeof(glm::vec3));
+  // Storage grows by a quarter more than asked and shrinks when a quarter of it would do.
+  if (bytes > buffer.capacity || bytes < buffer.capacity / 4) {
+    buffer.capacity = bytes + bytes / 4;
+    gl_.BufferData(GL_ARRAY_BUFFER, buffer.capacity, nullptr, GL_STREAM_DRAW);
+  }
+  auto* out = static_cast<glm::vec3*>(
+      gl_.MapBufferRange(GL_ARRAY_BUFFER, 0, bytes, GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_RANGE_BIT));
+  if (!out) throw Error("could not map the polygon buffer (" + std::to_string(bytes) + " bytes)");
+  for (const draw::PolygonSet& set : fill.polygons) {
+    for (size_t k = 0; k < set.polygonCount(); ++k) {
+      const std::span<const Vec3> poly = set.polygon(k);
+      if (poly.size() < 3) continue;
+      Vec3 n{0};  // Newell's normal
+      for (size_t i = 0; i < poly.size(); ++i) {
+        const Vec3 &p = poly[i], &q = poly[(i + 1) % poly.size()];
+        n += Vec3((p.y - q.y) * (p.z + q.z), (p.z - q.z) * (p.x + q.x), (p.x - q.x) * (p.y + q.y));
+      }
+      const double len = glm::length(n);
+      const glm::vec3 normal = len > 0 ? glm::vec3(n / len) : glm::vec3(0, 0, 1);
+      const glm::vec3 corner0(poly[0]);
+      for (size_t i = 1; i + 1 < poly.size(); ++i) {
+        out[0] = corner0;
+        out[1] = normal;
+        out[2] = glm::vec3(poly[i]);
+        out[3] = normal;
+        out[4] = glm::vec3(poly[i + 1]);
+        out[5] = normal;
+        out += 6;
+      }
+    }
+  }
+  gl_.UnmapBuffer(GL_ARRAY_BUFFER);
+
+  const int lights = fill.lit ? int(std::clamp<size_t>(fill.lights.size(), 1, 4)) : 0;
+  const gl::Program& p = sceneProgram(false, lights, false);
+  draw::Fill state;  // the fill's uniforms without volume test and user planes (CPU polygons are clipped)
+  state.lit = fill.lit;
+  state.lights = fill.lights;
+  state.ambient = fill.ambient;
+  state.alpha = fill.alpha;
+  setFillProgram(p, state, camera, 0);
+  p.set("wcFromMc", Mat4(1.0));
+  p.set("wcNormalFromMc", Mat3(1.0));
+  for (size_t i = 0; i < fill.polygons.size(); ++i) {
+    if (ranges[i].second == 0) continue;
+    p.set("color", fill.polygons[i].color);
+    gl_.DrawArrays(GL_TRIANGLES, ranges[i].first, ranges[i].second);
+  }
+  gl_.BindVertexArray(0);
+}
+
+// ---------------------------------------------------------------- 4 lines, points, triangles
+
+void GlBackend::drawMeshEdges(const draw::Lines& lines, const View& view) {
+  const ViewCamera& camera = view.cameraFor(lines.space);
+  overlay_.setUserPlanes(lines.clipPlanes);
+  gl_.Enable(GL_BLEND);
+  gl_.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  gl_.DepthMask(GL_FALSE);
+  auto pass = [&](GLenum depthFunc, float alphaScale) {
+    gl_.DepthFunc(depthFunc);
+    for (const draw::MeshInstance& m : lines.meshEdges) {
+      if (!m.mesh) continue;
+      const GpuMesh& g = meshes_.get(m.mesh);
+      overlay_.drawMeshEdges(g.edges.id(), g.edgeCount, camera, m.spaceFromMc, view.width, view.height,
+                             glm::vec4(glm::vec3(m.color), m.color.a * alphaScale), lines.widthPx, lines.dashPx);
+    }
+  };
+  switch (lines.depth) {
+    case draw::Depth::ignore: pass(GL_ALWAYS, 1.f); break;
+    case draw::Depth::test: pass(GL_LEQUAL, 1.f); break;
+    case draw::Depth::hiddenOnly: pass(GL_GREATER, 1.f); break;
+    case draw::Depth::xray:
+      pass(GL_GREATER, draw::kXrayAlpha);
+      pass(GL_LEQUAL, 1.f);
+      break;
+  }
+  gl_.DepthFunc(GL_LESS);
+  gl_.DepthMask(GL_TRUE);
+  overlay_.setUserPlanes({});
+}
+
+void GlBackend::drawMarks(const std::vector<const draw::Batch*>& batches, draw::Depth depth, const View& view) {
+  OverlayBatch marks;
+  std::optional<draw::Space> space;
+  bool pushedBack = false;
+  auto useSpace = [&](draw::Space s) {
+    if (space && *space != s) throw Error("display list: an x-ray run of batches in two spaces");
+    space = s;
+  };
+  for (const draw::Batch* b : batches) {
+    if (const auto* l = std::get_if<draw::Lines>(b)) {
+      useSpace(l->space);
+      for (size_t i = 0; i + 1 < l->segments.size(); i += 2)
+        marks.line(l->segments[i].position, l->segments[i + 1].position, l->segments[i].color, l->widthPx, l->dashPx);
+    } else if (const auto* p = std::get_if<draw::Points>(b)) {
+      useSpace(p->space);
+      for (const draw::Vertex& v : p->points) marks.point(v.position, v.color, p->sizePx);
+    } else if (const auto* t = std::get_if<draw::Triangles>(b)) {
+      useSpace(t->space);
+      pushedBack = pushedBack || t->pushedBack;
+      for (size_t i = 0; i + 2 < t->vertices.size(); i += 3)
+        marks.triangle(t->vertices[i].position, t->vertices[i + 1].position, t->vertices[i + 2].position,
+                       t->vertices[i].color);
+    }
+  }
+  if (marks.empty() || !space) return;
+  if (pushedBack) {  // loses every depth tie (the NPC cube's front face in z = 1)
+    gl_.Enable(GL_POLYGON_OFFSET_FILL);
+    gl_.PolygonOffset(1.f, 2.f);
+  }
+  const OverlayDepth d = depth == draw::Depth::ignore       ? OverlayDepth::ignore
+                         : depth == draw::Depth::test       ? OverlayDepth::test
+                         : depth == draw::Depth::hiddenOnly ? OverlayDepth::hiddenOnly
+                                                            : OverlayDepth::xray;
+  overlay_.draw(marks, view.cameraFor(*space), view.width, view.height, d);
+  if (pushedBack) gl_.Disable(GL_POLYGON_OFFSET_FILL);
+}
+
+}  // namespace vplab

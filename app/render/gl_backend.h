@@ -1,0 +1,104 @@
+// The GL backend: draws a display list (app/views/display_list.h) into a render target, and a
+// picture (panels of display lists) into an image. It decides nothing about what is drawn, only how
+// each batch maps to GL state (see drawFill, drawLines, …). Desktop GL 3.3 core and OpenGL ES 3.0
+// (WebGL2) run the same shaders (app/gl/shader.h); only user clip planes differ (gl_ClipDistance and
+// its enables on desktop, a discard in the shaders on ES). One instance per GL context: it owns the
+// programs, the meshes on the GPU, the streaming buffers and the text renderer.
+#pragma once
+
+#include "app/context/context.h"
+#include "app/gl/render_target.h"
+#include "app/gl/shader.h"
+#include "app/render/gpu_mesh.h"
+#include "app/render/overlay.h"
+#include "app/render/text.h"
+#include "app/views/display_list.h"
+#include "app/views/image.h"
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace vplab {
+
+class GlBackend {
+ public:
+  /// `textScale` enlarges the text (lecture mode); widths and sizes come scaled in the lists.
+  explicit GlBackend(GlContext& context, float textScale = 1.f);
+
+  /// Clears `target` (bound, whole viewport) to the list's background and draws its batches in order.
+  void draw(const draw::DisplayList& list, gl::RenderTarget& target);
+  /// Each panel into its own target (4× multisampled when its list is antialiased), read back and
+  /// put at the panel's place on the picture's background.
+  Image render(const draw::Picture& picture);
+
+  /// The metrics the builders measure labels with (the atlas the text is drawn from).
+  const TextRenderer& text() const { return *text_; }
+  void setTextScale(float scale) { text_ = std::make_unique<TextRenderer>(gl_, scale); }
+  /// Whether fills with MeshInstance::run draw only the faces that can show in their volume pass
+  /// (single-sampled targets only; see partition). On by default; off: every face, as tests compare.
+  void setPartitioned(bool on) { partitioned_ = on; }
+  /// The triangles the last partitioned fill drew of mesh instance `i` in its inside and outside
+  /// pass ({0, 0} when it was not partitioned).
+  std::array<size_t, 2> partitionedTriangles(size_t i) const;
+
+ private:
+  struct View {
+    int width = 0, height = 0;
+    int samples = 1;
+    draw::Space space;  // the observer's
+    ViewCamera observer;
+    ViewCamera pixels;  // Space::pixels: the view's own pixels, y down
+    const ViewCamera& cameraFor(draw::Space s) const;
+  };
+  void drawFill(const draw::Fill& fill, const View& view);
+  void drawMeshes(const draw::Fill& fill, const ViewCamera& camera, int samples);
+  void drawPolygons(const draw::Fill& fill, const ViewCamera& camera);
+  void drawMeshEdges(const draw::Lines& lines, const View& view);
+  /// One OverlayBatch's worth of lines, points and triangles (a run of consecutive x-ray batches
+  /// is drawn as one: all hidden parts first, then all visible ones, as the views expect).
+  void drawMarks(const std::vector<const draw::Batch*>& batches, draw::Depth depth, const View& view);
+  void setFillProgram(const gl::Program& p, const draw::Fill& fill, const ViewCamera& camera, int planes);
+  void setClipDistances(int planes);
+
+  /// scene.vert/.frag in the variant a fill needs (compiled on first use).
+  const gl::Program& sceneProgram(bool volumeTest, int lights, bool userPlanes);
+
+  // The world view's volume passes (Hill 7.4 boundary coordinates): which faces of each mesh can
+  // have a fragment in the inside and in the outside pass, from the CPU run's homogeneous NPC.
+  enum PartList { kInsideFaces = 0, kInsidePass, kOutsidePass, kPartLists };
+  struct VolumePart {
+    const ObjectRun* run = nullptr;
+    uint64_t serial = 0;  // the draw call it was made in
+    std::array<gl::Buffer, kPartLists> indices;
+    std::array<GLsizeiptr, kPartLists> capacity{};
+    std::array<GLsizei, kPartLists> count{};
+  };
+  const VolumePart* partition(size_t instance, const draw::MeshInstance& m, const Mat4& npcFromSpace);
+
+  GlContext& ctx_;
+  const GladGLContext& gl_;
+  bool es_;  // OpenGL ES: no gl_ClipDistance enables
+  std::array<std::optional<gl::Program>, 2 * 5 * 2> scenePrograms_;
+  GpuMeshCache meshes_;
+  OverlayRenderer overlay_;
+  std::unique_ptr<TextRenderer> text_;
+  /// CPU polygons, fan-triangulated (position, Newell normal per corner), one buffer per polygon
+  /// fill of a list so that filling one never waits for the rasterizer to finish another. Each keeps
+  /// its storage from frame to frame and is written in place through glMapBufferRange.
+  struct PolygonBuffer {
+    gl::VertexArray vao;
+    gl::Buffer vbo;
+    GLsizeiptr capacity = 0;
+  };
+  std::vector<PolygonBuffer> polygonBuffers_;
+  size_t polygonSlot_ = 0;
+  std::vector<VolumePart> parts_;
+  bool partitioned_ = true;
+  uint64_t serial_ = 0;
+  std::array<std::vector<uint32_t>, kPartLists> partIndices_;  // scratch
+  std::vector<uint8_t> vertexSides_;                          // scratch
+};
+
+}  // namespace vplab
