@@ -5,6 +5,7 @@
 
 #include "app/views/number_text.h"
 #include "app/views/theme.h"
+#include "pipeline/device_mapping.h"
 #include "pipeline/view_mapping.h"
 
 #include <algorithm>
@@ -25,6 +26,9 @@ const glm::vec4 kNpcCurve = rgba(140, 220, 255), kGlCurve = rgba(255, 200, 90), 
 const glm::vec4 kLegendNpc = rgba(140, 220, 255), kLegendGl = rgba(255, 200, 90);
 constexpr int kTicks = 10;     // equal VRC steps from B to F
 constexpr int kSegments = 120; // the curves' segments; GL's window depth is dashed by leaving out every other one
+// The chart is flat: every mark at the depth half way (z = 0.5, inside the GL backend's depth range,
+// as the views' other pixel overlays; z = 0 would lie on its far plane and be cut).
+constexpr double kFlat = 0.5;
 
 std::string number(double v) { return formatNumber(v, {4, 0}); }
 
@@ -97,7 +101,10 @@ DepthPlot depthPlot(const PipelineRun& run, int width, int plotHeight, const Tex
   list.width = width;
   list.height = int(std::ceil(float(plotHeight) + depthPlotExtraHeight(run, width, text, options)));
   list.background = theme::kViewBackground;
+  // The chart looks at its own pixels: the device mapping of a width × height device undone
+  // (a backend that draws observer-space batches through the observer then needs no special case).
   list.observer.space = Space::pixels;
+  list.observer.camera.npcFromVrc = glm::inverse(dcFromNpc(Device{width, list.height}));
   // No multisampling: the lines bring their own smooth edges, the bars are whole-pixel rectangles.
   list.antialiased = false;
 
@@ -118,18 +125,18 @@ DepthPlot depthPlot(const PipelineRun& run, int width, int plotHeight, const Tex
   const float pad = float(text.measure("0.5", TextSize::label).x) + 8;
   out.plot = {{pad, top + m.line * 0.5f}, {float(width) - 8, top + float(plotHeight)}};
   const glm::vec2 p0 = out.plot.min, p1 = out.plot.max;
-  auto pixel = [&](double z, double d) { return Vec3(Vec2(out.at(z, d)), 0); };
+  auto pixel = [&](double z, double d) { return Vec3(Vec2(out.at(z, d)), kFlat); };
   Lines thin;  // the frame and the ticks
   thin.space = Space::pixels;
   thin.widthPx = 1.f * m.scale;
-  const Vec3 corners[4] = {{p0.x, p0.y, 0}, {p1.x, p0.y, 0}, {p1.x, p1.y, 0}, {p0.x, p1.y, 0}};
+  const Vec3 corners[4] = {{p0.x, p0.y, kFlat}, {p1.x, p0.y, kFlat}, {p1.x, p1.y, kFlat}, {p0.x, p1.y, kFlat}};
   thin.polyline(corners, true, kGrid);
   // Equal VRC steps and their NPC depth: the ticks crowd at the back plane.
   for (int i = 0; i <= kTicks; ++i) {
     const double z = c.back + (c.front - c.back) * i / double(kTicks);
     const double d = npcDepthOfVrcZ(c, f, z);
-    thin.line({pixel(z, 0).x, p1.y, 0}, pixel(z, d), kTick);
-    thin.line({p0.x, pixel(z, d).y, 0}, pixel(z, d), kTickNpc);
+    thin.line({pixel(z, 0).x, p1.y, kFlat}, pixel(z, d), kTick);
+    thin.line({p0.x, pixel(z, d).y, kFlat}, pixel(z, d), kTickNpc);
   }
   list.add(std::move(thin));
   // GL's window depth 1 − z (dashed: every other segment) under NPC z (solid).
@@ -184,7 +191,8 @@ DepthPlot depthPlot(const PipelineRun& run, int width, int plotHeight, const Tex
     DepthPlot::Bar bar{o.name, {{0, rowTop}, {float(width), rowTop + m.line}},
                        {{x0, std::round(rowTop + m.line * 0.25f)}, {x1, std::round(rowTop + m.line * 0.75f)}}, lo, hi};
     const glm::vec4 color(glm::vec3(o.color), 0.9f);
-    bars.quad({x0, bar.bar.min.y, 0}, {x1, bar.bar.min.y, 0}, {x1, bar.bar.max.y, 0}, {x0, bar.bar.max.y, 0}, color);
+    bars.quad({x0, bar.bar.min.y, kFlat}, {x1, bar.bar.min.y, kFlat}, {x1, bar.bar.max.y, kFlat}, {x0, bar.bar.max.y, kFlat},
+              color);
     // The name beside the bar, on whichever side has room.
     const float nameWidth = float(text.measure(o.name, TextSize::label).x);
     const float nameX = x1 + 6 + nameWidth <= p1.x ? x1 + 6 : std::max(0.f, x0 - 6 - nameWidth);
@@ -205,6 +213,7 @@ DisplayList depthPlotView(const ViewInput& in) {
   const int plotHeight = std::max(int(std::floor(float(in.height) - extra)), int(std::ceil(4 * line)));
   DisplayList list = std::move(depthPlot(in.run, in.width, plotHeight, in.text, options).list);
   list.height = in.height;  // what does not fit a small view is cut off at its bottom
+  list.observer.camera.npcFromVrc = glm::inverse(dcFromNpc(Device{in.width, in.height}));
   return list;
 }
 

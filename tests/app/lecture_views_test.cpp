@@ -109,5 +109,27 @@ TEST(LectureViews, DivideFirstDrawsThePointBehindTheEyeFlipped) {
   EXPECT_GT(rightOnly, 500u) << "the right picture reaches the right edge, the wrong one does not";
 }
 
+// The depth plot drawn by the GL backend: its curves in their colours, every object's bar in the
+// object's colour, on the chart's background (the PNG is left in the test output to look at).
+TEST(LectureViews, DepthPlotDrawsTheChart) {
+  const Scene scene = defaultScene();
+  const Image png = drawn(ViewKind::depth, scene, ClipStrategy::npc, 640, 480);
+  writePng(png, test::outputDir() / "depth-plot.png");
+  ASSERT_EQ(png.width, 640);
+  ASSERT_EQ(png.height, 480);
+  auto count = [&](const Rgba& c) {
+    size_t n = 0;
+    for (const Rgba& p : png.pixels) n += std::abs(p.r - c.r) <= 24 && std::abs(p.g - c.g) <= 24 && std::abs(p.b - c.b) <= 24;
+    return n;
+  };
+  EXPECT_GT(count({140, 220, 255, 255}), 600u) << "NPC z, 2 px wide across the plot";
+  EXPECT_GT(count({255, 200, 90, 255}), 300u) << "GL window depth, dashed";
+  EXPECT_GT(count(rgbaFromColor(Vec3(0.085, 0.09, 0.11))), png.pixels.size() / 2) << "the background";
+  for (const SceneObject& o : scene.objects) {
+    // A bar at alpha 0.9 over the background: its colour within the count's 24 levels.
+    EXPECT_GT(count(rgbaFromColor(o.color * 0.9 + Vec3(0.085, 0.09, 0.11) * 0.1)), 200u) << o.name << "'s bar";
+  }
+}
+
 }  // namespace
 }  // namespace vplab

@@ -148,6 +148,14 @@ TEST(DepthPlot, ViewFillsItsSize) {
   EXPECT_LE(plot.list.height, 480);
   EXPECT_GE(plot.list.height, 479);
   EXPECT_THROW(depthPlot(f.run, 4, 100, f.text), std::invalid_argument);
+  // It looks at its own pixels: the observer maps each pixel to itself (a backend drawing the
+  // observer's space through the observer's camera puts the chart where it belongs).
+  EXPECT_EQ(list.observer.space, Space::pixels);
+  for (const Vec3& p : {Vec3(0, 0, 0.5), Vec3(640, 480, 0.5), Vec3(123.5, 47.25, 0.5)}) {
+    const Projected q = projectToPixels(list.observer.camera, p, 640, 480);
+    EXPECT_TRUE(q.visible);
+    EXPECT_NEAR(glm::length(q.pixel - Vec2(p)), 0, 1e-9);
+  }
 }
 
 }  // namespace
