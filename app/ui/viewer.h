@@ -11,6 +11,7 @@
 #include "app/ui/loader.h"
 #include "app/ui/view_worker.h"
 #include "app/ui/viewer_state.h"
+#include "app/render/gl_backend.h"
 #include "app/render/view_renderer.h"
 
 #include <algorithm>
@@ -135,8 +136,12 @@ class Viewer {
   ImGuiContext* imgui_ = nullptr;
   ViewRenderer renderer_;
   ViewerState s_;
-  gl::RenderTarget world_, camera_, npc_, morph_;
-  gl::Texture differenceTexture_, divideFirstTexture_;
+  gl::RenderTarget world_, camera_, npc_, morph_, divideFirst_;
+  gl::Texture differenceTexture_;
+  /// The divide-first comparison (divideFirstView's display list) is drawn by a GL backend of its
+  /// own (made on first use) into divideFirst_, again only after a new run of the pipeline.
+  std::unique_ptr<GlBackend> listBackend_;
+  unsigned divideFirstRevision_ = 0;  // the run it was drawn from (0: none yet)
   FileDialog dialog_;
   float uiScale_;
   int lastWidth_ = 0, lastHeight_ = 0;
