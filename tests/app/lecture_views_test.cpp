@@ -131,5 +131,31 @@ TEST(LectureViews, DepthPlotDrawsTheChart) {
   }
 }
 
+// The command line, whatever --strategy says: the divide-first run, as the raster fills it.
+TEST(LectureViews, RenderDivideFirstPngMatchesTheCpuRaster) {
+  const Scene scene = defaultScene();
+  const Image cpu = oracle(scene);
+  ASSERT_GT(coloured(cpu, rgbaFromColor(scene.background)), cpu.pixels.size() / 10) << "the oracle shows the scene";
+  for (const char* strategy : {"npc", "divide-first"}) {
+    const std::filesystem::path out = test::outputDir() / ("render-divide-first-" + std::string(strategy) + ".png");
+    const std::string command =
+        std::string(VPLAB_EXE) + " render --view divide-first --strategy " + strategy + " --out " + out.string();
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    expectMatches(readPng(out), cpu, strategy);
+  }
+}
+
+
+// The command line's depth plot is the chart the GL backend draws from depthPlotView's list.
+TEST(LectureViews, RenderDepthPlotPngIsTheChart) {
+  const std::filesystem::path out = test::outputDir() / "render-depth-plot.png";
+  const std::string command = std::string(VPLAB_EXE) + " render --view depth-plot --size 640x480 --out " + out.string();
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  const Image png = readPng(out), chart = drawn(ViewKind::depth, defaultScene(), ClipStrategy::npc, 640, 480);
+  ASSERT_EQ(png.width, 640);
+  ASSERT_EQ(png.height, 480);
+  EXPECT_EQ(test::differingPixels(png, chart), 0u);
+}
+
 }  // namespace
 }  // namespace vplab

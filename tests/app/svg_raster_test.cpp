@@ -59,7 +59,7 @@ std::string name(ViewKind v, Style s) { return std::string(toString(v)) + "-" + 
 void maskLabels(Image& image, const Scene& scene, const RenderRequest& request) {
   const int w = request.width > 0 ? request.width : scene.device.width;
   const int h = request.height > 0 ? request.height : scene.device.height;
-  const PipelineRun run = runPipeline(scene, request.pipeline);
+  const PipelineRun run = runPipeline(scene, pipelineOptionsOf(request));
   FrameSettings settings = frameSettingsFor(scene, request.style, double(w) / h);
   settings.morphing.t = request.morphT;
   const FontAtlas fonts(1.f);
@@ -174,6 +174,16 @@ std::vector<Case> everyViewAndStyle() {
 INSTANTIATE_TEST_SUITE_P(EveryViewAndStyle, SvgMatchesGl, ::testing::ValuesIn(everyViewAndStyle()),
                          [](const ::testing::TestParamInfo<Case>& i) {
                            std::string n = name(i.param.view, i.param.style);
+                           for (char& c : n)
+                             if (c == '-') c = '_';
+                           return n;
+                         });
+
+// The lecture's two views without styles: the divide-first comparison and the depth plot.
+INSTANTIATE_TEST_SUITE_P(LectureViews, SvgMatchesGl,
+                         ::testing::Values(Case{ViewKind::divideFirst, Style::flat}, Case{ViewKind::depth, Style::flat}),
+                         [](const ::testing::TestParamInfo<Case>& i) {
+                           std::string n(toString(i.param.view));
                            for (char& c : n)
                              if (c == '-') c = '_';
                            return n;
