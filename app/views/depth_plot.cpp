@@ -6,11 +6,11 @@
 #include "app/views/number_text.h"
 #include "app/views/theme.h"
 #include "pipeline/device_mapping.h"
+#include "pipeline/error.h"
 #include "pipeline/view_mapping.h"
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace vplab {
 
@@ -24,6 +24,7 @@ glm::vec4 rgba(int r, int g, int b, int a = 255) { return glm::vec4(r, g, b, a) 
 const glm::vec4 kGrid = rgba(90, 95, 110), kTick = rgba(90, 95, 110, 120), kTickNpc = rgba(120, 200, 230, 110);
 const glm::vec4 kNpcCurve = rgba(140, 220, 255), kGlCurve = rgba(255, 200, 90), kLabel = rgba(200, 205, 215);
 const glm::vec4 kLegendNpc = rgba(140, 220, 255), kLegendGl = rgba(255, 200, 90);
+constexpr int kMinSidePx = 8;  // the chart's width and its plot's height, at least
 constexpr int kTicks = 10;     // equal VRC steps from B to F
 constexpr int kSegments = 120; // the curves' segments; GL's window depth is dashed by leaving out every other one
 // The chart is flat: every mark at the depth half way (z = 0.5, inside the GL backend's depth range,
@@ -88,9 +89,9 @@ float depthPlotExtraHeight(const PipelineRun& run, int width, const TextMetrics&
 
 DepthPlot depthPlot(const PipelineRun& run, int width, int plotHeight, const TextMetrics& text,
                     const DepthPlotOptions& options) {
-  if (width < 8 || plotHeight < 8)
-    throw std::invalid_argument("depthPlot: the chart is " + std::to_string(width) + " px wide with a plot " +
-                                std::to_string(plotHeight) + " px high; both must be at least 8");
+  if (width < kMinSidePx || plotHeight < kMinSidePx)
+    throw Error("the depth plot needs at least " + std::to_string(kMinSidePx) + " pixels for its width and its plot's "
+                "height, not " + std::to_string(width) + " × " + std::to_string(plotHeight) + " (a larger --size)");
   const Camera& c = run.camera;
   const ViewFrame& f = run.frame;
   const Metrics m(text);

@@ -47,8 +47,8 @@ float depthPlotExtraHeight(const PipelineRun& run, int width, const TextMetrics&
 
 /// The chart `width` wide with a plot frame ending `plotHeight` below its top (legend included when
 /// asked): text measured with `text`, lines and bars ×text.scale(). Its height is
-/// plotHeight + depthPlotExtraHeight(…). Throws std::invalid_argument for a width or plot height
-/// below 8 px.
+/// plotHeight + depthPlotExtraHeight(…). Throws vplab::Error, naming both, for a width or plot
+/// height below 8 px.
 DepthPlot depthPlot(const PipelineRun& run, int width, int plotHeight, const TextMetrics& text,
                     const DepthPlotOptions& options = {});
 

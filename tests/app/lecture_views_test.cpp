@@ -18,8 +18,11 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <string>
+
+#include <sys/wait.h>
 
 namespace vplab {
 namespace {
@@ -155,6 +158,23 @@ TEST(LectureViews, RenderDepthPlotPngIsTheChart) {
   ASSERT_EQ(png.width, 640);
   ASSERT_EQ(png.height, 480);
   EXPECT_EQ(test::differingPixels(png, chart), 0u);
+}
+
+// A chart too narrow to draw is an error that says why (exit status 1), not a crash.
+TEST(LectureViews, RenderDepthPlotTooNarrowIsAnError) {
+  const std::filesystem::path out = test::outputDir() / "render-depth-plot-narrow.png";
+  const std::filesystem::path err = test::outputDir() / "render-depth-plot-narrow.txt";
+  std::filesystem::remove(out);
+  const std::string command = std::string(VPLAB_EXE) + " render --view depth-plot --size 4x300 --out " + out.string() +
+                              " 2> " + err.string();
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  std::ifstream in(err);
+  const std::string message((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(message.find("depth plot needs at least 8 pixels"), std::string::npos) << message;
+  EXPECT_NE(message.find("not 4 × "), std::string::npos) << message;
+  EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 }  // namespace

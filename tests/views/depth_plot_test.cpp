@@ -2,6 +2,7 @@
 // the plot's pixels and rises monotonically, GL's window depth is its mirror, the bars span the
 // objects' VRC z ranges, and the labels stay inside the chart without overlapping.
 #include "app/views/depth_plot.h"
+#include "pipeline/error.h"
 #include "pipeline/view_mapping.h"
 #include "tests/views/view_test_support.h"
 
@@ -147,7 +148,8 @@ TEST(DepthPlot, ViewFillsItsSize) {
                                    {true, true});
   EXPECT_LE(plot.list.height, 480);
   EXPECT_GE(plot.list.height, 479);
-  EXPECT_THROW(depthPlot(f.run, 4, 100, f.text), std::invalid_argument);
+  EXPECT_THROW(depthPlot(f.run, 4, 100, f.text), Error);
+  EXPECT_THROW(depthPlot(f.run, 100, 7, f.text), Error);
   // It looks at its own pixels: the observer maps each pixel to itself (a backend drawing the
   // observer's space through the observer's camera puts the chart where it belongs).
   EXPECT_EQ(list.observer.space, Space::pixels);
