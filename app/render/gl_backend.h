@@ -28,6 +28,7 @@ class GlBackend {
   explicit GlBackend(GlContext& context, float textScale = 1.f);
 
   /// Clears `target` (bound, whole viewport) to the list's background and draws its batches in order.
+  /// GL errors are left for the caller's GlContext::checkErrors, which names what it drew.
   void draw(const draw::DisplayList& list, gl::RenderTarget& target);
   /// Each panel into its own target (4× multisampled when its list is antialiased), read back and
   /// put at the panel's place on the picture's background.
@@ -42,6 +43,8 @@ class GlBackend {
   /// The triangles the last partitioned fill drew of mesh instance `i` in its inside and outside
   /// pass ({0, 0} when it was not partitioned).
   std::array<size_t, 2> partitionedTriangles(size_t i) const;
+  /// Where the last draw call put its labels (x0, y0, x1, y1, pixels), for the tests.
+  const std::vector<glm::vec4>& labelsPlaced() const { return labelsPlaced_; }
 
  private:
   struct View {
@@ -95,6 +98,7 @@ class GlBackend {
   std::vector<PolygonBuffer> polygonBuffers_;
   size_t polygonSlot_ = 0;
   std::vector<VolumePart> parts_;
+  std::vector<glm::vec4> labelsPlaced_;
   bool partitioned_ = true;
   uint64_t serial_ = 0;
   std::array<std::vector<uint32_t>, kPartLists> partIndices_;  // scratch

@@ -56,10 +56,6 @@ void TextRenderer::appendText(const PlacedLabel& label, const glm::vec2& origin,
   }
 }
 
-void TextRenderer::draw(const std::vector<TextLabel>& labels, int width, int height) {
-  draw(placeLabels(labels, *atlas_, width, height), width, height);
-}
-
 void TextRenderer::draw(const std::vector<PlacedLabel>& labels, int width, int height) {
   placed_.clear();
   if (labels.empty()) return;

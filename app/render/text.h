@@ -20,9 +20,7 @@ class TextRenderer {
   /// `scale` enlarges all text (lecture mode on a projector).
   TextRenderer(const GladGLContext& gl, float scale = 1.f);
   ~TextRenderer();
-  /// Places (labels.h) and draws the labels into the current viewport of width × height pixels.
-  void draw(const std::vector<TextLabel>& labels, int width, int height);
-  /// Draws labels already placed.
+  /// Draws labels placed by the views (labels.h) into the current viewport of width × height pixels.
   void draw(const std::vector<PlacedLabel>& labels, int width, int height);
   /// Width and height in pixels of a text at a size.
   Vec2 measure(const std::string& text, TextSize size) const { return atlas_->measure(text, size); }
