@@ -1,7 +1,5 @@
 #include "app/headless.h"
 
-#include "app/render/gl_backend.h"
-
 namespace vplab {
 
 FrameSettings frameSettingsFor(const Scene& scene, Style style, double aspect) {
@@ -25,11 +23,6 @@ Image renderImage(ViewRenderer& renderer, const Scene& scene, const RenderReques
   const PipelineRun run = runPipeline(scene, pipelineOptionsOf(request));
   FrameSettings settings = frameSettingsFor(scene, request.style, double(w) / h);
   settings.morphing.t = request.morphT;
-  if (request.view == ViewKind::divideFirst || request.view == ViewKind::depth) {
-    // Display lists only (no drawing of their own in ViewRenderer): the GL backend draws them.
-    GlBackend backend(renderer.context());
-    return backend.render(buildPicture(request.view, ViewInput{scene, run, settings, w, h, backend.text().atlas()}));
-  }
   return renderer.render(request.view, scene, run, settings, w, h);
 }
 

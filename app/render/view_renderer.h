@@ -27,6 +27,8 @@ class ViewRenderer {
   void drawWorld(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
   void drawNpc(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
   void drawMorph(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
+  /// The divide-first comparison: `run` must be the divide-first strategy's (views.h, divideFirstView).
+  void drawDivideFirst(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
 
   /// Renders a view headless into an image: camera at width × height, world and NPC likewise,
   /// all as three panels of width × height with a title strip.

@@ -494,10 +494,8 @@ GLuint Viewer::divideFirstTexture() {
   if (s_.run.options.strategy != ClipStrategy::divideFirst) return 0;
   const Device& d = s_.run.device;
   if (divideFirstRevision_ != runRevision_ || divideFirst_.width() != d.width || divideFirst_.height() != d.height) {
-    if (!listBackend_) listBackend_ = std::make_unique<GlBackend>(ctx_, uiScale_);
     divideFirst_.resize(d.width, d.height, 1);
-    const ViewInput in{s_.doc.shown(), s_.run, s_.frame, d.width, d.height, listBackend_->text().atlas()};
-    listBackend_->draw(divideFirstView(in), divideFirst_);
+    renderer_.drawDivideFirst(s_.doc.shown(), s_.run, s_.frame, divideFirst_);
     divideFirst_.resolve();
     divideFirstRevision_ = runRevision_;
   }

@@ -11,7 +11,6 @@
 #include "app/ui/loader.h"
 #include "app/ui/view_worker.h"
 #include "app/ui/viewer_state.h"
-#include "app/render/gl_backend.h"
 #include "app/render/view_renderer.h"
 
 #include <algorithm>
@@ -138,9 +137,7 @@ class Viewer {
   ViewerState s_;
   gl::RenderTarget world_, camera_, npc_, morph_, divideFirst_;
   gl::Texture differenceTexture_;
-  /// The divide-first comparison (divideFirstView's display list) is drawn by a GL backend of its
-  /// own (made on first use) into divideFirst_, again only after a new run of the pipeline.
-  std::unique_ptr<GlBackend> listBackend_;
+  /// The divide-first comparison is drawn into divideFirst_ again only after a new run of the pipeline.
   unsigned divideFirstRevision_ = 0;  // the run it was drawn from (0: none yet)
   FileDialog dialog_;
   float uiScale_;

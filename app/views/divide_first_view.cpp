@@ -73,4 +73,6 @@ DisplayList divideFirstView(const ViewInput& in) {
   return list;
 }
 
+void divideFirstView(const ViewInput& in, DisplayList& out) { out = divideFirstView(in); }
+
 }  // namespace vplab

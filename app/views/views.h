@@ -132,6 +132,7 @@ void morphView(const ViewInput& in, draw::DisplayList& out);
 /// fills in.width × in.height and z_dc is the depth: the nearer, larger z_dc wins, the first
 /// polygon drawn keeping a tie), as the CPU raster (app/export/cpu_raster.h) fills them.
 draw::DisplayList divideFirstView(const ViewInput& in);
+void divideFirstView(const ViewInput& in, draw::DisplayList& out);
 
 /// The picture of a view kind: one panel, or for ViewKind::all the camera, world and NPC views side
 /// by side under a strip of titles. `out` is overwritten; its storage is reused where it can be
