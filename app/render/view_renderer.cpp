@@ -6,30 +6,30 @@ namespace vplab {
 
 ViewRenderer::ViewRenderer(GlContext& context, float textScale) : ctx_(context), backend_(context, textScale) {}
 
-void ViewRenderer::drawView(Builder build, const Scene& scene, const PipelineRun& run, const FrameSettings& s,
-                            gl::RenderTarget& target) {
+void ViewRenderer::drawView(Builder build, draw::DisplayList& list, const Scene& scene, const PipelineRun& run,
+                            const FrameSettings& s, gl::RenderTarget& target) {
   const ViewInput in{scene, run, s, target.width(), target.height(), backend_.text().atlas()};
-  build(in, list_);
-  backend_.draw(list_, target);
+  build(in, list);
+  backend_.draw(list, target);
 }
 
 void ViewRenderer::drawCamera(const Scene& scene, const PipelineRun& run, const FrameSettings& s,
                               gl::RenderTarget& target) {
-  drawView(&cameraView, scene, run, s, target);
+  drawView(&cameraView, camera_, scene, run, s, target);
 }
 
 void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const FrameSettings& s,
                              gl::RenderTarget& target) {
-  drawView(&worldView, scene, run, s, target);
+  drawView(&worldView, world_, scene, run, s, target);
 }
 
 void ViewRenderer::drawNpc(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target) {
-  drawView(&npcView, scene, run, s, target);
+  drawView(&npcView, npc_, scene, run, s, target);
 }
 
 void ViewRenderer::drawMorph(const Scene& scene, const PipelineRun& run, const FrameSettings& s,
                              gl::RenderTarget& target) {
-  drawView(&morphView, scene, run, s, target);
+  drawView(&morphView, morph_, scene, run, s, target);
 }
 
 void ViewRenderer::drawDivideFirst(const Scene& scene, const PipelineRun& run, const FrameSettings& s,

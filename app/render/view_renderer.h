@@ -50,12 +50,14 @@ class ViewRenderer {
 
  private:
   using Builder = void (*)(const ViewInput&, draw::DisplayList&);
-  void drawView(Builder build, const Scene& scene, const PipelineRun& run, const FrameSettings& s,
-                gl::RenderTarget& target);
+  void drawView(Builder build, draw::DisplayList& list, const Scene& scene, const PipelineRun& run,
+                const FrameSettings& s, gl::RenderTarget& target);
 
   GlContext& ctx_;
   GlBackend backend_;
-  draw::DisplayList list_;  // the last view's, its storage reused by the next
+  // Each view's last list, its storage reused by the view's next (the NPC view's polygons of a
+  // large scene are not allocated anew when the views are drawn in turn).
+  draw::DisplayList camera_, world_, npc_, morph_;
   draw::Picture picture_;
 };
 
