@@ -135,31 +135,30 @@ std::pair<int, int> parseSize(const std::string& s) {
 
 int runRender(const RenderOptions& r) {
   const Scene scene = sceneFrom(r.scene);
-  {
-    // Non-finite results are an error here as in the dump (coordinates so large that a product
-    // overflows), said before the views derive their observers from them.
-    RenderRequest checked;
-    if (r.view != "ui") checked.view = *viewKindFromString(r.view);
-    checked.pipeline.strategy = *clipStrategyFromString(r.strategy);
-    if (auto e = nonFiniteError(runPipeline(scene, pipelineOptionsOf(checked))))
-      throw Error((r.scene.empty() ? std::string("the default scene") : r.scene) + ": " + *e);
-  }
+  // The picture asked for, as the viewer's export and the tests describe one (app/views/render_request.h).
   RenderRequest request;
   if (r.view != "ui") request.view = *viewKindFromString(r.view);
   request.style = *styleFromString(r.style);
   request.pipeline.strategy = *clipStrategyFromString(r.strategy);
   request.morphT = r.morphT;
+  request.scale = r.uiScale;
   if (!r.size.empty()) std::tie(request.width, request.height) = parseSize(r.size);
-  if (r.view == "ui") checkImageSize(r.view, request.width > 0 ? request.width : 1280, request.height > 0 ? request.height : 720);
-  else checkImageSize(r.view, request.width > 0 ? request.width : scene.device.width,
-                      request.height > 0 ? request.height : scene.device.height);
+  // Non-finite results are an error here as in the dump (coordinates so large that a product
+  // overflows), said before the views derive their observers from them.
+  if (auto e = nonFiniteError(runPipeline(scene, pipelineOptionsOf(request))))
+    throw Error((r.scene.empty() ? std::string("the default scene") : r.scene) + ": " + *e);
+  if (r.view == "ui") {
+    checkImageSize(r.view, request.width > 0 ? request.width : 1280, request.height > 0 ? request.height : 720);
+  } else {
+    const PixelSize size = pixelSizeOf(request, scene);
+    checkImageSize(r.view, size.width, size.height);
+  }
   const std::string out = r.out.empty() ? "vplab-" + r.view + ".png" : r.out;
   std::string extension = std::filesystem::path(out).extension().string();
   for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
   if (extension == ".svg") {
-    // Vector lines for slides and lecture notes: made on the CPU, no GL context needed. Without
-    // --style, the hidden-line drawing (a filled style has no lines to export).
-    if (!r.styleGiven) request.style = Style::hiddenLine;
+    // The same picture as the PNG of the same request, as vector graphics for slides and lecture
+    // notes: drawn by the SVG backend on the CPU, no GL context needed.
     if (r.view == "ui") throw Error("--view ui has no SVG form: write a PNG");
     writeSvg(svgOfRequest(scene, request), out);
     return 0;
@@ -173,7 +172,7 @@ int runRender(const RenderOptions& r) {
   if (r.view == "ui") {
     // The whole window, panels included, as `vplab` shows it (1280 × 720 unless --size says).
     HeadlessViewer viewer(*context, scene, request.width > 0 ? request.width : 1280,
-                          request.height > 0 ? request.height : 720, r.uiScale);
+                          request.height > 0 ? request.height : 720, request.scale);
     // What the viewer shows for the same options (its keys 1 … 5 and C set the same).
     viewer.state().pipeline.strategy = request.pipeline.strategy;
     if (r.styleGiven) {
@@ -185,7 +184,7 @@ int runRender(const RenderOptions& r) {
     writePng(viewer.image(), out);
     return 0;
   }
-  ViewRenderer renderer(*context);
+  ViewRenderer renderer(*context, request.scale);
   writePng(renderImage(renderer, scene, request), out);
   return 0;
 }
@@ -211,10 +210,11 @@ int viewerFallback(const ViewerOptions& v, const std::string& why) {
   }
   try {
     auto context = createHeadlessContext(Backend::automatic, false);
-    ViewRenderer renderer(*context);
     RenderRequest request;
     request.view = ViewKind::all;
     request.style = Style::shaded;
+    request.scale = v.uiScale;
+    ViewRenderer renderer(*context, request.scale);
     writePng(renderImage(renderer, scene, request), "vplab-all.png");
   } catch (const Error& e) {
     std::cerr << "vplab: no headless picture either: " << e.what() << "\n";
@@ -312,7 +312,9 @@ int runCommandLine(int argc, char** argv) {
   renderCmd->add_option("--strategy", render.strategy, "Clipping strategy of the CPU overlays: npc, wc or divide-first")
       ->check(CLI::IsMember({"npc", "wc", "divide-first"}));
   renderCmd->add_flag("--gl-debug", render.glDebug, "Turn on KHR_debug and fail on any OpenGL error");
-  renderCmd->add_option("--ui-scale", render.uiScale, "With --view ui: scale fonts and handles")
+  renderCmd->add_option("--ui-scale", render.uiScale,
+                        "Scale the views' text, lines and markers as the viewer's UI scale does (a projector); "
+                        "with --view ui also the panels' fonts and handles")
       ->check(finiteIn(0.5, 4));
   renderCmd->add_option("--tab", render.tabs, "With --view ui: show this tab (repeatable): camera, scene, clipping, "
                                               "display, lecture (controls) or probe, matrices, depth (inspector)")

@@ -474,11 +474,17 @@ void runPipeline(const Scene& scene, const PipelineOptions& options, PipelineRun
   run.dcFromNpc = dcFromNpc(scene.device);
   run.userPlanesWc.clear();
   run.userPlanesNpc.clear();
-  const Mat4 npcToWcTransposed = glm::transpose(glm::inverse(run.npcFromWc));
+  // A plane's coefficients p (a row) keep the points x with p · x ≥ 0. Pulled back from WC to
+  // homogeneous NPC: a point's x_npc = npcFromWc · x_wc with x_wc = (x, y, z, 1), so
+  // x_wc = wcFromNpc · x_npc, and p_wc · x_wc = (p_wc · wcFromNpc) · x_npc: the same value at every
+  // point (in front of the eye or behind it), so the NPC plane is the row p_npc = p_wc · wcFromNpc.
+  // As columns, which is how GLM keeps the coefficients: p_npc = wcFromNpcᵀ · p_wc. Planes map by
+  // the transpose of the inverse of the matrix that maps the points.
+  const Mat4 npcPlaneFromWcPlane = glm::transpose(run.wcFromNpc);
   for (const UserClipPlane& p : scene.clipPlanes) {
     if (!p.enabled || run.userPlanesWc.size() == size_t(kMaxUserPlanes)) continue;
     run.userPlanesWc.push_back(p.coefficients());
-    run.userPlanesNpc.push_back(npcToWcTransposed * p.coefficients());  // plane_wc · wcFromNpc
+    run.userPlanesNpc.push_back(npcPlaneFromWcPlane * p.coefficients());
   }
   run.sceneIndex = visible;
   run.stats = {};

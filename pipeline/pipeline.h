@@ -140,6 +140,12 @@ struct PipelineRun {
   // VRC points to WC (the window, the camera's axes). A homogeneous result needs its division by w.
   Mat4 wcFromVrc{1.0};  // vrcFromWc⁻¹: the rotation's transpose after translating back by VRP
   Mat4 wcFromNpc{1.0};  // npcFromWc⁻¹ = wcFromVrc · npcFromVrc⁻¹
+  /// WC of a point given in NPC after the division (z = 1 front, 0 back): back through wcFromNpc,
+  /// then divided by the w that comes out (1 for parallel projections).
+  Vec3 wcOfNpc(const Vec3& npc) const {
+    const Vec4 p = wcFromNpc * Vec4(npc, 1.0);
+    return Vec3(p) / p.w;
+  }
   // The enabled user clip planes (DGL wiki) as linear forms: in WC on (x, y, z, 1), and pulled back
   // to homogeneous NPC (plane_wc · wcFromNpc), where they clip together with the cube's planes.
   std::vector<Vec4> userPlanesWc, userPlanesNpc;

@@ -27,16 +27,12 @@ constexpr double kInkPx = 1.0;  // the line shader: full coverage over widthPx, 
 /// At most `decimals` decimals, trailing zeros dropped: 12.5, 640, -0.25 (appended: a large mesh
 /// writes millions of coordinates).
 void appendNum(std::string& out, double v, int decimals = 2) {
-  if (!std::isfinite(v)) v = 0;
+  if (!std::isfinite(v) || std::abs(v) < 0.5 * std::pow(10.0, -decimals)) v = 0;  // no "-0"
   char buf[64];
   char* end = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals).ptr;
   if (std::find(buf, end, '.') != end) {
     while (end[-1] == '0') --end;
     if (end[-1] == '.') --end;
-  }
-  if (end - buf == 2 && buf[0] == '-' && buf[1] == '0') {
-    out += '0';
-    return;
   }
   out.append(buf, end);
 }
@@ -88,13 +84,36 @@ class ListWriter {
   void write() {
     out_ += "<rect class=\"background\" width=\"" + std::to_string(list_.width) + "\" height=\"" +
             std::to_string(list_.height) + "\" fill=\"" + hex(list_.background) + "\"/>\n";
-    for (const Batch& b : list_.batches) std::visit([this](const auto& batch) { draw(batch); }, b);
+    // A run of x-ray batches is drawn as GL draws it, in two passes: every hidden part (faint), then
+    // every visible part, so visible lines lie over the hidden lines of the whole run.
+    const std::vector<Batch>& b = list_.batches;
+    auto xray = [](const Batch& x) {  // a Lines, Points or Triangles with Depth::xray
+      return std::visit(
+          [](const auto& y) {
+            if constexpr (requires { y.depth; })
+              return y.depth == Depth::xray;
+            else
+              return false;
+          },
+          x);
+    };
+    for (size_t i = 0; i < b.size();) {
+      size_t j = i;
+      while (j < b.size() && xray(b[j])) ++j;
+      if (j == i) j = i + 1;  // not x-ray: drawn once
+      for (bool hidden : {true, false}) {
+        if (xray(b[i])) pass_ = hidden;
+        if (xray(b[i]) || hidden)
+          for (size_t k = i; k < j; ++k) std::visit([this](const auto& batch) { draw(batch); }, b[k]);
+      }
+      pass_.reset();
+      i = j;
+    }
   }
 
  private:
-  // Faces back to front. Those that write depth (opaque, depth-only) join the depth field first, so
-  // each is drawn where no face of this batch or an earlier one lies in front (GL's depth test: faces
-  // that intersect or enclose come out right); translucent ones do not write depth, as in GL.
+  // Faces back to front; those that write depth (opaque, depth-only) join the depth field first: each is
+  // drawn where no face of this batch or an earlier one is in front (faces that intersect, enclose).
   void draw(const Fill& fill) {
     const std::vector<PaintedPolygon> faces = paintedPolygons(fill, list_);
     if (fill.depthOnly || fill.alpha >= 1.f)
@@ -109,44 +128,37 @@ class ListWriter {
 
   void draw(const Triangles& t) {
     const ViewProjection proj(list_, t.space);
-    std::vector<Vec4> h;
     out_ += std::string("<g class=\"triangles\"") + crisp() + ">\n";
-    inPasses(t.depth, [&] {
-      for (size_t i = 0; i + 2 < t.vertices.size(); i += 3) {
-        h = {proj.npcH(t.vertices[i].position), proj.npcH(t.vertices[i + 1].position),
-             proj.npcH(t.vertices[i + 2].position)};
-        const std::vector<PixelPoint> p = proj.polygon(h);
-        if (p.empty()) continue;
-        const glm::vec4& c = t.vertices[i].color;
-        const double push = t.pushedBack ? DepthField::polygonOffset(p[0], p[1], p[2]) : 0.0;
-        for (const DepthField::Part& part :
-             t.depth == Depth::ignore ? std::vector<DepthField::Part>{{p, false}} : depth_.parts(p, push))
-          if (const auto a = alphaFor(t.depth, part.hidden))
-            polygon(part.polygon, c * glm::vec4(1, 1, 1, *a), false);
-      }
-    });
+    for (size_t i = 0; i + 2 < t.vertices.size(); i += 3) {
+      const std::vector<Vec4> h = {proj.npcH(t.vertices[i].position), proj.npcH(t.vertices[i + 1].position),
+                                   proj.npcH(t.vertices[i + 2].position)};
+      const std::vector<PixelPoint> p = proj.polygon(h);
+      if (p.empty()) continue;
+      const glm::vec4& c = t.vertices[i].color;
+      const double push = t.pushedBack ? DepthField::polygonOffset(p[0], p[1], p[2]) : 0.0;
+      for (const DepthField::Part& part :
+           t.depth == Depth::ignore ? std::vector<DepthField::Part>{{p, false}} : depth_.parts(p, push))
+        if (const auto a = alphaFor(t.depth, part.hidden))
+          polygon(part.polygon, c * glm::vec4(1, 1, 1, *a), false);
+    }
     out_ += "</g>\n";
   }
 
   void draw(const Lines& l) {
     // The class names the depth mode (readers and tests find the hidden-line passes by it).
     const char* depth[] = {"", " depth-test", " hidden-only", " x-ray"};
+    const std::string cap =
+        l.dashPx > 0 ? "butt\" stroke-dasharray=\"" + num(l.dashPx) + ' ' + num(l.dashPx) : "square";
     out_ += std::string("<g class=\"lines") + depth[int(l.depth)] + "\" stroke-width=\"" +
-            num(l.widthPx + kInkPx) + '"' +
-            (l.dashPx > 0
-                 ? " stroke-linecap=\"butt\" stroke-dasharray=\"" + num(l.dashPx) + ' ' + num(l.dashPx) + '"'
-                 : std::string(" stroke-linecap=\"square\"")) +
-            ">\n";
+            num(l.widthPx + kInkPx) + "\" stroke-linecap=\"" + cap + "\">\n";
     const ViewProjection proj(list_, l.space), clipped(list_, l.space, l.clipPlanes);
-    inPasses(l.depth, [&] {
-      for (size_t i = 0; i + 1 < l.segments.size(); i += 2)
-        segment(l, proj.segment(l.segments[i].position, l.segments[i + 1].position), l.segments[i].color);
-      for (const MeshInstance& m : l.meshEdges) {
-        if (!m.mesh) continue;
-        auto at = [&](uint32_t v) { return clipped.npcH(m.spaceFromMc * Vec4(m.mesh->positions[v], 1.0)); };
-        for (const Edge& e : uniqueEdges(*m.mesh)) segment(l, clipped.segment(at(e.a), at(e.b)), m.color);
-      }
-    });
+    for (size_t i = 0; i + 1 < l.segments.size(); i += 2)
+      segment(l, proj.segment(l.segments[i].position, l.segments[i + 1].position), l.segments[i].color);
+    for (const MeshInstance& m : l.meshEdges) {
+      if (!m.mesh) continue;
+      auto at = [&](uint32_t v) { return clipped.npcH(m.spaceFromMc * Vec4(m.mesh->positions[v], 1.0)); };
+      for (const Edge& e : uniqueEdges(*m.mesh)) segment(l, clipped.segment(at(e.a), at(e.b)), m.color);
+    }
     closeStroke();
     out_ += "</g>\n";
   }
@@ -154,18 +166,16 @@ class ListWriter {
   void draw(const Points& p) {
     const ViewProjection proj(list_, p.space);
     const double radius = 0.5 * p.sizePx;
-    inPasses(p.depth, [&] {
-      for (const Vertex& v : p.points) {
-        const std::optional<PixelPoint> at = proj.point(v.position);
-        if (!at) continue;  // behind the eye, before the front or beyond the back plane
-        const auto a = alphaFor(p.depth, p.depth != Depth::ignore && depth_.hides(*at));
-        if (!a) continue;
-        // The point shader: a disc sizePx across, its outer 1.5 px darkened to 35 %.
-        out_ += "<circle cx=\"" + num(at->x) + "\" cy=\"" + num(at->y) + "\" r=\"" + num(radius - 0.75) +
-                "\" fill=\"" + hex(glm::vec3(v.color)) + "\" stroke=\"" + hex(glm::vec3(v.color) * 0.35f) +
-                "\" stroke-width=\"1.5\"" + opacity("opacity", v.color.a * *a) + "/>\n";
-      }
-    });
+    for (const Vertex& v : p.points) {
+      const std::optional<PixelPoint> at = proj.point(v.position);
+      if (!at) continue;  // behind the eye, before the front or beyond the back plane
+      const auto a = alphaFor(p.depth, p.depth != Depth::ignore && depth_.hides(*at));
+      if (!a) continue;
+      // The point shader: a disc sizePx across, its outer 1.5 px darkened to 35 %.
+      out_ += "<circle cx=\"" + num(at->x) + "\" cy=\"" + num(at->y) + "\" r=\"" + num(radius - 0.75) +
+              "\" fill=\"" + hex(glm::vec3(v.color)) + "\" stroke=\"" + hex(glm::vec3(v.color) * 0.35f) +
+              "\" stroke-width=\"1.5\"" + opacity("opacity", v.color.a * *a) + "/>\n";
+    }
   }
 
   void draw(const Text& t) {
@@ -181,14 +191,6 @@ class ListWriter {
     out_ += "</g>\n";
   }
 
-  // X-ray batches are drawn as GL draws them, in two passes: every hidden part (faint), then every
-  // visible part, so a visible line lies over the hidden lines of its own batch.
-  template <class Body>
-  void inPasses(Depth depth, const Body& body) {
-    if (depth != Depth::xray) return body();
-    for (bool hidden : {true, false}) pass_ = hidden, body();
-    pass_.reset();
-  }
   std::optional<float> alphaFor(Depth depth, bool hidden) const {
     if (pass_ && hidden != *pass_) return std::nullopt;
     return depthAlpha(depth, hidden);
@@ -272,14 +274,12 @@ size_t svgFaceCount(const draw::Picture& picture) {
 }
 
 std::string svgOfPicture(const draw::Picture& picture, const FontAtlas& fonts, std::string_view title) {
-  if (picture.width < 1 || picture.height < 1)
-    throw Error("SVG export: the size " + std::to_string(picture.width) + " x " +
-                std::to_string(picture.height) + " is not at least 1 x 1 pixels");
-  if (const size_t faces = svgFaceCount(picture); faces > kMaxSvgFaces)
-    throw Error("SVG export: the picture has " + std::to_string(faces) + " filled faces, more than the " +
-                std::to_string(kMaxSvgFaces) +
-                " an SVG document can hold and still open; export a PNG instead");
   const std::string w = std::to_string(picture.width), h = std::to_string(picture.height);
+  if (picture.width < 1 || picture.height < 1)
+    throw Error("SVG export: the picture is " + w + " x " + h + " pixels, not at least 1 x 1");
+  if (const size_t faces = svgFaceCount(picture); faces > kMaxSvgFaces)
+    throw Error("SVG export: " + std::to_string(faces) + " filled faces, more than the " +
+                std::to_string(kMaxSvgFaces) + " a document can hold and still open; export a PNG instead");
   std::string out =
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
       "version=\"1.1\" width=\"" +

@@ -55,7 +55,8 @@ std::optional<std::string> svgExportError(ViewKind view, const Scene& scene, con
 std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run,
                       const FrameSettings& settings, int width, int height, float scale = 1.f);
 
-/// The SVG of what renderImage draws for the request (same pipeline run, same frame settings).
+/// The SVG of what renderImage draws for the request (same pipeline run, frame settings and scale;
+/// app/views/render_request.h).
 std::string svgOfRequest(const Scene& scene, const RenderRequest& request);
 
 /// Writes the SVG text to a file. Throws vplab::Error naming the file when it cannot be written.

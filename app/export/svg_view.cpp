@@ -4,7 +4,7 @@
 
 #include "app/export/svg.h"
 #include "app/fonts/font_atlas.h"
-#include "app/headless.h"
+#include "app/views/render_request.h"
 #include "pipeline/error.h"
 
 namespace vplab {
@@ -24,7 +24,6 @@ std::optional<std::string> svgExportError(ViewKind view, const Scene& scene, con
   if (view == ViewKind::world || view == ViewKind::all) panel(settings.world.style, worldPasses);
   if (view == ViewKind::npc || view == ViewKind::all) panel(settings.npc.style, 1);
   if (view == ViewKind::morph) panel(settings.morph.style, 1);
-  if (view == ViewKind::divideFirst) panel(Style::flat, 1);  // the clipped faces, flat
   if (faces <= kMaxSvgFaces) return std::nullopt;
   return "SVG export: the " + std::string(toString(view)) + " view draws about " + std::to_string(faces) +
          " filled faces, more than the " + std::to_string(kMaxSvgFaces) +
@@ -44,12 +43,10 @@ std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run,
 }
 
 std::string svgOfRequest(const Scene& scene, const RenderRequest& request) {
-  const int w = request.width > 0 ? request.width : scene.device.width;
-  const int h = request.height > 0 ? request.height : scene.device.height;
+  const PixelSize size = pixelSizeOf(request, scene);
   const PipelineRun run = runPipeline(scene, pipelineOptionsOf(request));
-  FrameSettings settings = frameSettingsFor(scene, request.style, double(w) / h);
-  settings.morphing.t = request.morphT;
-  return svgOfView(request.view, scene, run, settings, w, h);
+  return svgOfView(request.view, scene, run, frameSettingsOf(request, scene), size.width, size.height,
+                   request.scale);
 }
 
 void writeSvg(const std::string& svg, const std::filesystem::path& file) {

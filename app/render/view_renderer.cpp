@@ -34,7 +34,7 @@ void ViewRenderer::drawMorph(const Scene& scene, const PipelineRun& run, const F
 
 void ViewRenderer::drawDivideFirst(const Scene& scene, const PipelineRun& run, const FrameSettings& s,
                                    gl::RenderTarget& target) {
-  drawView(&divideFirstView, scene, run, s, target);
+  drawView(&divideFirstView, divideFirst_, scene, run, s, target);
 }
 
 Image ViewRenderer::render(ViewKind kind, const Scene& scene, const PipelineRun& run, const FrameSettings& s,

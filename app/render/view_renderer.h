@@ -57,7 +57,7 @@ class ViewRenderer {
   GlBackend backend_;
   // Each view's last list, its storage reused by the view's next (the NPC view's polygons of a
   // large scene are not allocated anew when the views are drawn in turn).
-  draw::DisplayList camera_, world_, npc_, morph_;
+  draw::DisplayList camera_, world_, npc_, morph_, divideFirst_;
   draw::Picture picture_;
 };
 

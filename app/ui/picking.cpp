@@ -4,12 +4,6 @@ namespace vplab {
 
 namespace {
 
-// WC of a point in NPC (after the division): back through the run's wcFromNpc, then divided by w.
-Vec3 wcOfNpc(const PipelineRun& run, const Vec3& npc) {
-  const Vec4 p = run.wcFromNpc * Vec4(npc, 1.0);
-  return Vec3(p) / p.w;
-}
-
 const ObjectRun* objectOf(const PipelineRun& run, size_t sceneIndex) {
   for (size_t i = 0; i < run.sceneIndex.size(); ++i)
     if (run.sceneIndex[i] == sceneIndex) return &run.objects[i];
@@ -52,8 +46,8 @@ Vec3 handlePosition(const PipelineRun& run, Handle h) {
     case Handle::windowRight: return transformAffine(wcFromVrc, {w.xmax, cy, 0});
     case Handle::windowBottom: return transformAffine(wcFromVrc, {cx, w.ymin, 0});
     case Handle::windowTop: return transformAffine(wcFromVrc, {cx, w.ymax, 0});
-    case Handle::front: return wcOfNpc(run, {0.5, 0.5, 1});
-    case Handle::back: return wcOfNpc(run, {0.5, 0.5, 0});
+    case Handle::front: return run.wcOfNpc({0.5, 0.5, 1});
+    case Handle::back: return run.wcOfNpc({0.5, 0.5, 0});
     case Handle::none: break;
   }
   return run.camera.vrp;

@@ -8,6 +8,7 @@
 #include "app/ui/layout.h"
 #include "app/ui/panels.h"
 #include "app/ui/widgets.h"
+#include "app/views/render_request.h"
 #include "pipeline/error.h"
 #include "pipeline/scene_io.h"
 
@@ -486,7 +487,27 @@ void Viewer::quitDialog() {
   ImGui::EndPopup();
 }
 
-// Each view as it is shown, to PNG, and the wireframe styles also as SVG (vector lines).
+namespace {
+
+// A view as the viewer shows it, as a request (app/views/render_request.h): its size, every view
+// setting (styles, observers, overlays, probe, step-through, morph), the pipeline's options and
+// the UI scale: what the render thread draws it from.
+RenderRequest shownViewRequest(const ViewerState& s, ViewKind kind, int width, int height, float scale) {
+  RenderRequest r;
+  r.view = kind;
+  r.width = width;
+  r.height = height;
+  r.pipeline = s.pipeline;
+  r.scale = scale;
+  r.frame = s.frame;
+  return r;
+}
+
+}  // namespace
+
+// Each view as it is shown, to PNG, and the wireframe styles also as SVG (vector lines). The PNG is
+// the image on screen, read back (drawn by the render thread from the same settings: drawing it
+// again here would make the window wait for a large scene); the SVG is made from the view's request.
 void Viewer::exportMenu() {
   struct Entry {
     ViewKind kind;
@@ -516,7 +537,7 @@ void Viewer::exportMenu() {
       dialog_.open("Export the " + std::string(e.name) + " view", FileDialog::Mode::save, {".svg"},
                    "vplab-" + std::string(toString(kind)) + ".svg", [this, kind, w, h](const std::filesystem::path& f) {
                      try {
-                       writeSvg(svgOfView(kind, s_.doc.shown(), s_.run, s_.frame, w, h, uiScale_), f);
+                       writeSvg(svgOfRequest(s_.doc.shown(), shownViewRequest(s_, kind, w, h, uiScale_)), f);
                        setStatus("exported " + f.string(), false);
                      } catch (const Error& err) {
                        setStatus(err.what(), true);

@@ -422,8 +422,8 @@ double totalLength(const std::vector<SvgLine>& lines) {
 TEST(SvgExport, IsWellFormedWithThePngsSize) {
   const Scene scene = defaultScene();
   const PipelineRun run = runPipeline(scene, RenderRequest{}.pipeline);
-  for (ViewKind view : {ViewKind::camera, ViewKind::world, ViewKind::npc, ViewKind::all})
-    for (Style style : {Style::wire, Style::hiddenLine, Style::hiddenRemoved}) {
+  for (ViewKind view : {ViewKind::camera, ViewKind::world, ViewKind::npc, ViewKind::morph, ViewKind::all})
+    for (Style style : {Style::flat, Style::shaded, Style::wire, Style::hiddenLine, Style::hiddenRemoved}) {
       SCOPED_TRACE(name(view, style));
       const int w = 400, h = 300;
       const std::string text =
@@ -446,7 +446,12 @@ TEST(SvgExport, IsWellFormedWithThePngsSize) {
       EXPECT_EQ(*svg.root.attribute("height"), std::to_string(totalH));
       EXPECT_EQ(*svg.root.attribute("viewBox"),
                 "0 0 " + std::to_string(totalW) + " " + std::to_string(totalH));
-      EXPECT_GT(svg.lines.size(), 50u);
+      // The morph view draws every style filled (frameSettingsFor), with its polygons' outlines.
+      if (isFilled(style) || view == ViewKind::morph)
+        EXPECT_GT(svg.polygons.size(), 5u);
+      else  // no faces: the translucent overlays only (the window, the volume's faces, the cube's front)
+        for (const SvgPolygon& p : svg.polygons) EXPECT_LT(p.opacity, 1.0);
+      if (!isFilled(style) || view != ViewKind::camera) EXPECT_GT(svg.lines.size(), 50u);
       // Every line is clipped to its view: nothing outside the canvas (to the 2 decimals written).
       for (const SvgLine& l : svg.lines)
         for (const Vec2& p : {l.a, l.b}) {

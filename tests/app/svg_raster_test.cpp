@@ -57,13 +57,12 @@ std::string name(ViewKind v, Style s) { return std::string(toString(v)) + "-" + 
 /// The labels' boxes of the request's picture (as svgOfRequest and renderImage build it), grown by
 /// kTextMarginPx, painted black in the image.
 void maskLabels(Image& image, const Scene& scene, const RenderRequest& request) {
-  const int w = request.width > 0 ? request.width : scene.device.width;
-  const int h = request.height > 0 ? request.height : scene.device.height;
+  const PixelSize size = pixelSizeOf(request, scene);
   const PipelineRun run = runPipeline(scene, pipelineOptionsOf(request));
-  FrameSettings settings = frameSettingsFor(scene, request.style, double(w) / h);
-  settings.morphing.t = request.morphT;
-  const FontAtlas fonts(1.f);
-  const draw::Picture picture = buildPicture(request.view, ViewInput{scene, run, settings, w, h, fonts});
+  const FrameSettings settings = frameSettingsOf(request, scene);
+  const FontAtlas fonts(request.scale);
+  const draw::Picture picture =
+      buildPicture(request.view, ViewInput{scene, run, settings, size.width, size.height, fonts});
   for (const draw::Panel& panel : picture.panels)
     for (const PlacedLabel& l : panel.list.labels()) {
       const int x0 = panel.x + int(std::floor(l.topLeft.x)) - kTextMarginPx;
@@ -241,25 +240,29 @@ TEST(SvgMatchesGlLimits, AWrongPictureFails) {
 }
 
 // `vplab render --out x.svg` and `--out x.png` of the same request show the same picture.
+// With --ui-scale 2 (lecture mode: text, lines and markers twice as large) as well.
 TEST(SvgMatchesGlCli, RenderToSvgAndPngShowTheSamePicture) {
   const std::filesystem::path dir = test::outputDir() / "svg-raster-cli";
   std::filesystem::create_directories(dir);
   const std::string scene = std::string(VPLAB_ASSETS) + "/scenes/clip-planes.json";
-  for (const std::string style : {"shaded", "hidden-line"}) {
-    SCOPED_TRACE(style);
-    const std::string args =
-        " render --scene '" + scene + "' --view all --style " + style + " --size 320x240 --out '";
-    const std::filesystem::path svgFile = dir / (style + ".svg"), pngFile = dir / (style + ".png");
+  for (const auto& [style, scale] : {std::pair("shaded", 1.f), {"hidden-line", 1.f}, {"wire", 2.f}}) {
+    const std::string what = std::string(style) + "-" + std::to_string(int(scale));
+    SCOPED_TRACE(what);
+    const std::string args = " render --scene '" + scene + "' --view all --style " + style +
+                             " --size 320x240 --ui-scale " + std::to_string(int(scale)) + " --out '";
+    const std::filesystem::path svgFile = dir / (what + ".svg"), pngFile = dir / (what + ".png");
     ASSERT_EQ(std::system((std::string(VPLAB_EXE) + args + svgFile.string() + "'").c_str()), 0);
     ASSERT_EQ(std::system((std::string(VPLAB_EXE) + args + pngFile.string() + "'").c_str()), 0);
     std::ifstream in(svgFile, std::ios::binary);
     const std::string svgText((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    Image svg = test::rasteriseSvg(svgText, "cli-" + style), png = readPng(pngFile);
+    Image svg = test::rasteriseSvg(svgText, "cli-" + what), png = readPng(pngFile);
     const Scene s = loadScene(scene);
-    const RenderRequest request{ViewKind::all, *styleFromString(style), 320, 240};
+    RenderRequest request{ViewKind::all, *styleFromString(style), 320, 240};
+    request.scale = scale;
     maskLabels(svg, s, request);
     maskLabels(png, s, request);
     const ImageComparison c = compareFiltered(svg, png);
+    std::cout << what << ": " << c.differingShare * 100 << " %, mean " << c.meanChannelDelta << "\n";
     EXPECT_TRUE(agree(c)) << describe(c);
   }
 }

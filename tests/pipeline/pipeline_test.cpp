@@ -180,11 +180,10 @@ TEST(Pipeline, StoresTheInversesOfItsMatrices) {
       const Vec3 wc = c.vrp + rng.inBox(-10, 10);
       const Vec4 npcH = run.npcFromWc * Vec4(wc, 1);
       if (npcH.w <= 1e-3) continue;  // on the eye's plane (perspective): the division is meaningless
-      const Vec4 back = run.wcFromNpc * Vec4(divideByW(npcH), 1);
       // Relative 1e-12: the round trips come out within 1e-15; the margin is for the division by a
       // small w (down to 1e-3), which magnifies the inverse's error.
       const double tolerance = 1e-12 * (1 + glm::length(wc));
-      EXPECT_NEAR(glm::length(Vec3(back) / back.w - wc), 0, tolerance) << "through NPC";
+      EXPECT_NEAR(glm::length(run.wcOfNpc(divideByW(npcH)) - wc), 0, tolerance) << "through NPC";
       EXPECT_NEAR(glm::length(transformAffine(run.wcFromVrc, transformAffine(run.vrcFromWc, wc)) - wc), 0, tolerance)
           << "through VRC";
     }

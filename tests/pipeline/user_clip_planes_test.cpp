@@ -53,6 +53,27 @@ TEST(UserClipPlanes, OutputLiesOnTheKeptSideOfEveryPlane) {
   EXPECT_GT(cutByAPlane, 100) << "the planes must create vertices";
 }
 
+// Each plane pulled back to homogeneous NPC (npcPlaneFromWcPlane = wcFromNpcᵀ) takes at a point's
+// homogeneous NPC the value the WC plane takes at the point, in front of the eye and behind it.
+TEST(UserClipPlanes, NpcFormsTakeTheWcPlanesValues) {
+  Rng rng(1204);
+  for (int k = 0; k < 20; ++k) {
+    const Scene scene = sceneWithPlanes(rng, 1 + k % 6);
+    const PipelineRun run = runPipeline(scene);
+    ASSERT_EQ(run.userPlanesNpc.size(), run.userPlanesWc.size());
+    for (int i = 0; i < 10; ++i) {
+      const Vec4 wc(scene.camera.vrp + rng.inBox(-10, 10), 1);
+      const Vec4 npcH = run.npcFromWc * wc;
+      for (size_t p = 0; p < run.userPlanesWc.size(); ++p) {
+        const double expected = glm::dot(run.userPlanesWc[p], wc);
+        // Relative 1e-12 of the terms' size: two ways of summing products of the same matrices.
+        const double size = glm::length(run.userPlanesWc[p]) * glm::length(wc) + glm::length(run.userPlanesNpc[p]) * glm::length(npcH);
+        EXPECT_NEAR(glm::dot(run.userPlanesNpc[p], npcH), expected, 1e-12 * size) << "plane " << p;
+      }
+    }
+  }
+}
+
 TEST(UserClipPlanes, WcAndNpcStrategiesAgree) {
   Rng rng(3004);
   for (int k = 0; k < 20; ++k) {

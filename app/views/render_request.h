@@ -1,0 +1,47 @@
+// One picture of a view, however it is asked for: `vplab render` (app/cli.cpp), the viewer's export
+// menu (app/ui/viewer.cpp) and the tests all describe it with a RenderRequest, and two backends draw
+// it: renderImage (app/headless.h, a PNG through GL) and svgOfRequest (app/export/svg.h, an SVG).
+// GL-free: the request names what to draw, not how.
+#pragma once
+
+#include "app/views/views.h"
+#include "pipeline/pipeline.h"
+
+#include <optional>
+
+namespace vplab {
+
+struct RenderRequest {
+  ViewKind view = ViewKind::camera;
+  Style style = Style::flat;  // of every view (without `frame`)
+  int width = 0, height = 0;  // pixels of the view (ViewKind::all: of each of its panels); 0: the scene's device
+  double morphT = 0;          // the stage morph's t, 0 (MC) to 4 (DC) (ViewKind::morph; without `frame`)
+  /// The CPU pipeline's run the view shows (with clipEdges: the wireframe styles and overlays draw
+  /// the clipped edges).
+  PipelineOptions pipeline{ClipStrategy::npc, false, true};
+  float scale = 1.f;  // text, line widths and markers (lecture mode on a projector, the viewer's UI scale)
+  /// Every view setting as the viewer shows it (each view's style and observer, the overlays, the
+  /// probe, the step-through, the morph); nullopt: `vplab render`'s, from `style` and `morphT`
+  /// (frameSettingsFor).
+  std::optional<FrameSettings> frame = std::nullopt;
+};
+
+/// The frame settings `vplab render` uses: the style for every view, the default observers framed for
+/// views of the given aspect ratio (width / height).
+FrameSettings frameSettingsFor(const Scene& scene, Style style, double aspect);
+
+/// The view's size in pixels: the request's, the scene's device W × H where the request says 0.
+struct PixelSize {
+  int width = 0, height = 0;
+};
+PixelSize pixelSizeOf(const RenderRequest& request, const Scene& scene);
+
+/// The pipeline options the request's view is drawn from: the request's, except that the
+/// divide-first comparison is always the divide-first strategy's run (what the viewer shows it from).
+PipelineOptions pipelineOptionsOf(const RenderRequest& request);
+
+/// The frame settings the request is drawn with: its `frame`, or frameSettingsFor its style at its
+/// size's aspect ratio with its morph t.
+FrameSettings frameSettingsOf(const RenderRequest& request, const Scene& scene);
+
+}  // namespace vplab
