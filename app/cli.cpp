@@ -145,7 +145,7 @@ int runRender(const RenderOptions& r) {
   if (!r.size.empty()) std::tie(request.width, request.height) = parseSize(r.size);
   // Non-finite results are an error here as in the dump (coordinates so large that a product
   // overflows), said before the views derive their observers from them.
-  if (auto e = nonFiniteError(runPipeline(scene, request.pipeline)))
+  if (auto e = nonFiniteError(runPipeline(scene, pipelineOptionsOf(request))))
     throw Error((r.scene.empty() ? std::string("the default scene") : r.scene) + ": " + *e);
   if (r.view == "ui") {
     checkImageSize(r.view, request.width > 0 ? request.width : 1280, request.height > 0 ? request.height : 720);
@@ -287,8 +287,11 @@ int runCommandLine(int argc, char** argv) {
                         "camera (what the synthetic camera sees, W × H, pixel-aligned with DC), world (an "
                         "observer's view of scene, camera and view volume), npc (the unit cube after view "
                         "mapping, clipping and division), all (the three side by side), morph (the stage "
-                        "morph at --morph-t) or ui (the whole viewer window with its panels; needs EGL)")
-      ->check(CLI::IsMember({"camera", "world", "npc", "all", "morph", "ui"}));
+                        "morph at --morph-t), divide-first (what dividing by w before clipping draws, the "
+                        "Clipping lesson's wrong picture; always the divide-first strategy's run), depth-plot "
+                        "(NPC z and GL window depth against VRC z, the objects' depth ranges) or ui (the whole "
+                        "viewer window with its panels; needs EGL)")
+      ->check(CLI::IsMember({"camera", "world", "npc", "all", "morph", "divide-first", "depth-plot", "ui"}));
   renderCmd->add_option("--morph-t", render.morphT,
                         "With --view morph: 0 MC, 1 WC, 2 VRC, 2.5 homogeneous NPC, 3 NPC, 4 DC, or between")
       ->check(finiteIn(0, 4));

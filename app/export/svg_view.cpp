@@ -44,7 +44,7 @@ std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run,
 
 std::string svgOfRequest(const Scene& scene, const RenderRequest& request) {
   const PixelSize size = pixelSizeOf(request, scene);
-  const PipelineRun run = runPipeline(scene, request.pipeline);
+  const PipelineRun run = runPipeline(scene, pipelineOptionsOf(request));
   return svgOfView(request.view, scene, run, frameSettingsOf(request, scene), size.width, size.height,
                    request.scale);
 }

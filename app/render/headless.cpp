@@ -4,7 +4,7 @@ namespace vplab {
 
 Image renderImage(ViewRenderer& renderer, const Scene& scene, const RenderRequest& request) {
   const PixelSize size = pixelSizeOf(request, scene);
-  const PipelineRun run = runPipeline(scene, request.pipeline);
+  const PipelineRun run = runPipeline(scene, pipelineOptionsOf(request));
   if (renderer.scale() != request.scale) renderer.setScale(request.scale);
   return renderer.render(request.view, scene, run, frameSettingsOf(request, scene), size.width, size.height);
 }

@@ -32,6 +32,11 @@ void ViewRenderer::drawMorph(const Scene& scene, const PipelineRun& run, const F
   drawView(&morphView, morph_, scene, run, s, target);
 }
 
+void ViewRenderer::drawDivideFirst(const Scene& scene, const PipelineRun& run, const FrameSettings& s,
+                                   gl::RenderTarget& target) {
+  drawView(&divideFirstView, divideFirst_, scene, run, s, target);
+}
+
 Image ViewRenderer::render(ViewKind kind, const Scene& scene, const PipelineRun& run, const FrameSettings& s,
                            int width, int height) {
   const ViewInput in{scene, run, s, width, height, backend_.text().atlas()};

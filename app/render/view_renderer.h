@@ -27,6 +27,8 @@ class ViewRenderer {
   void drawWorld(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
   void drawNpc(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
   void drawMorph(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
+  /// The divide-first comparison: `run` must be the divide-first strategy's (views.h, divideFirstView).
+  void drawDivideFirst(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
 
   /// Renders a view headless into an image: camera at width × height, world and NPC likewise,
   /// all as three panels of width × height with a title strip.
@@ -55,7 +57,7 @@ class ViewRenderer {
   GlBackend backend_;
   // Each view's last list, its storage reused by the view's next (the NPC view's polygons of a
   // large scene are not allocated anew when the views are drawn in turn).
-  draw::DisplayList camera_, world_, npc_, morph_;
+  draw::DisplayList camera_, world_, npc_, morph_, divideFirst_;
   draw::Picture picture_;
 };
 

@@ -2,10 +2,12 @@
 // one Sutherland–Hodgman pass at a time), vanishing points (lecture notes 14.2) and lecture mode; and the
 // depth plot (lecture notes 15.2.4) in the inspector.
 #define IMGUI_DEFINE_MATH_OPERATORS
+#include "app/ui/imdrawlist_backend.h"
 #include "app/ui/panels.h"
 #include "app/ui/vanishing_text.h"
 #include "app/ui/widgets.h"
 
+#include "app/views/depth_plot.h"
 #include "pipeline/clip_steps.h"
 #include "pipeline/clipping.h"
 #include "pipeline/vanishing_points.h"
@@ -210,74 +212,30 @@ void depthPanel(ViewerState& s) {
   ImGui::PopStyleColor();
   ImGui::EndGroup();
   recordRect(s, "depth.legend");
+  // The chart (app/views/depth_plot.h), drawn from its display list with ImGui's font; invisible
+  // items over its plot and each bar's row give the hover boxes and tooltips.
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const float width = std::max(line * 10, ImGui::GetContentRegionAvail().x);
   // At least ten lines of text high, so the curves read at any UI scale.
   const float height = std::clamp(ImGui::GetContentRegionAvail().y - line * 9, line * 10, line * 22);
-  const float pad = ImGui::CalcTextSize("0.5").x + 8;
-  ImDrawList* dl = ImGui::GetWindowDrawList();
-  const ImVec2 p0 = origin + ImVec2(pad, line * 0.5f), p1 = origin + ImVec2(width - 8, height);
-  auto at = [&](double vrcZ, double depth) {  // x: VRC z from B (left) to F (right); y: 0..1 upwards
-    const float x = p0.x + float((vrcZ - c.back) / (c.front - c.back)) * (p1.x - p0.x);
-    return ImVec2(x, p1.y - float(depth) * (p1.y - p0.y));
-  };
-  const ImU32 grid = IM_COL32(90, 95, 110, 255), text = IM_COL32(200, 205, 215, 255);
-  dl->AddRect(p0, p1, grid);
-  // Equal VRC steps and their NPC depth: the ticks crowd at the back plane.
-  for (int i = 0; i <= 10; ++i) {
-    const double z = c.back + (c.front - c.back) * i / 10.0;
-    const double d = npcDepthOfVrcZ(c, f, z);
-    dl->AddLine(ImVec2(at(z, 0).x, p1.y), at(z, d), IM_COL32(90, 95, 110, 120));
-    dl->AddLine(ImVec2(p0.x, at(z, d).y), at(z, d), IM_COL32(120, 200, 230, 110));
-  }
-  // NPC z (solid) and GL's window depth 1 − z (dashed).
-  ImVec2 prev = at(c.back, npcDepthOfVrcZ(c, f, c.back)), prevGl = at(c.back, 1 - npcDepthOfVrcZ(c, f, c.back));
-  for (int i = 1; i <= 120; ++i) {
-    const double z = c.back + (c.front - c.back) * i / 120.0;
-    const ImVec2 p = at(z, npcDepthOfVrcZ(c, f, z)), q = at(z, 1 - npcDepthOfVrcZ(c, f, z));
-    dl->AddLine(prev, p, IM_COL32(140, 220, 255, 255), 2.f);
-    if (i % 2) dl->AddLine(prevGl, q, IM_COL32(255, 200, 90, 255), 1.5f);
-    prev = p;
-    prevGl = q;
-  }
-  dl->AddText(ImVec2(origin.x, p0.y - line * 0.5f), text, "1");
-  dl->AddText(ImVec2(origin.x, p1.y - line * 0.5f), text, "0");
-  ImGui::Dummy(ImVec2(width, height + 2));
+  const ImGuiTextMetrics text(s.uiScale);
+  const DepthPlot plot = depthPlot(s.run, int(width), int(height), text, {false, false});
+  drawDisplayList(*ImGui::GetWindowDrawList(), plot.list, origin);
+  ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(ImGui::GetStyle().ItemSpacing.x, 0));
+  ImGui::Dummy(ImVec2(width, plot.plot.max.y + 2));
   recordRect(s, "depth.plot");
-  // The axis: B at the left, F at the right.
-  const std::string b = "B = " + num(c.back), fr = "F = " + num(c.front);
-  ImGui::SetCursorScreenPos(ImVec2(p0.x, ImGui::GetCursorScreenPos().y));
-  ImGui::TextUnformatted(b.c_str());
-  ImGui::SameLine(0, 0);
-  ImGui::SetCursorScreenPos(ImVec2(std::max(ImGui::GetCursorScreenPos().x + line, p1.x - ImGui::CalcTextSize(fr.c_str()).x),
-                                   ImGui::GetCursorScreenPos().y));
-  ImGui::TextUnformatted(fr.c_str());
-  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-  ImGui::TextWrapped("VRC z (the eye is at z = VPD = %s, beyond F)", num(f.vpd).c_str());
-  ImGui::PopStyleColor();
-  // The objects' depth ranges (VRC z of their vertices), one named bar each along the same axis.
-  for (const ObjectRun& o : s.run.objects) {
-    if (o.vertexCount() == 0) continue;
-    double lo = 1e300, hi = -1e300;
-    for (uint32_t v = 0; v < o.vertexCount(); ++v) {
-      const double z = o.vrc(v).z;
-      lo = std::min(lo, z);
-      hi = std::max(hi, z);
-    }
-    const double shownLo = std::clamp(lo, c.back, c.front), shownHi = std::clamp(hi, c.back, c.front);
-    const ImVec2 row = ImGui::GetCursorScreenPos();
-    const float x0 = at(shownLo, 0).x, x1 = std::max(at(shownHi, 0).x, x0 + 2);
-    const ImU32 col = ImGui::ColorConvertFloat4ToU32(ImVec4(float(o.color.r), float(o.color.g), float(o.color.b), 0.9f));
-    dl->AddRectFilled(ImVec2(x0, row.y + line * 0.25f), ImVec2(x1, row.y + line * 0.75f), col);
-    // The name beside the bar, on whichever side has room.
-    const float nameWidth = ImGui::CalcTextSize(o.name.c_str()).x;
-    const float nameX = x1 + 6 + nameWidth <= p1.x ? x1 + 6 : std::max(origin.x, x0 - 6 - nameWidth);
-    dl->AddText(ImVec2(nameX, row.y), text, o.name.c_str());
-    ImGui::Dummy(ImVec2(width, line));
-    recordRect(s, ("depth.bar." + o.name).c_str());
+  for (const DepthPlot::Bar& bar : plot.bars) {
+    ImGui::SetCursorScreenPos(origin + ImVec2(0, bar.row.min.y));
+    ImGui::Dummy(ImVec2(width, bar.row.max.y - bar.row.min.y));
+    recordRect(s, ("depth.bar." + bar.name).c_str());
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("%s: VRC z from %s to %s", o.name.c_str(), num(lo).c_str(), num(hi).c_str());
+      ImGui::SetTooltip("%s: VRC z from %s to %s", bar.name.c_str(), num(bar.lo).c_str(), num(bar.hi).c_str());
   }
+  ImGui::SetCursorScreenPos(origin + ImVec2(0, float(plot.list.height)));
+  ImGui::PopStyleVar();
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("VRC z: B at the left, F at the right; the eye is at z = VPD = %s, beyond F", num(f.vpd).c_str());
+  ImGui::PopStyleColor();
   // The smallest VRC step a depth buffer resolves, as sentences (they wrap; a table would not fit
   // a narrow inspector at a large UI scale).
   ImGui::TextWrapped("Smallest VRC step a depth buffer resolves:");

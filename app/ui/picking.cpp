@@ -81,7 +81,9 @@ std::optional<Vec3> probePosition(const PipelineRun& run, const Probe& probe, Vi
       if (h.w <= 0) return std::nullopt;
       return Vec3(run.dcFromNpc * Vec4(Vec3(h) / h.w, 1.0));
     case ViewKind::all:
-    case ViewKind::morph: break;
+    case ViewKind::morph:
+    case ViewKind::divideFirst:
+    case ViewKind::depth: break;
   }
   return std::nullopt;
 }

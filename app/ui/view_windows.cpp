@@ -179,6 +179,8 @@ GLuint Viewer::drawViewNow(ViewKind kind, int w, int h) {
       renderer_.drawCamera(scene, s_.run, s_.frame, camera_);
       if (s_.frame.overlays.difference) return differenceTexture();
       return camera_.colorTexture();
+    case ViewKind::divideFirst:
+    case ViewKind::depth: break;  // drawn by the panels that show them (cameraWindowContents, depthPanel)
   }
   return 0;
 }
@@ -287,8 +289,11 @@ void Viewer::cameraWindowContents() {
   const GLuint texture = drawView(ViewKind::camera, size);
   if (demo) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
-    // Uploaded bottom row first, like the views' textures: flipped the same way.
-    ImGui::Image(textureId(divideFirstTexture()), size, ImVec2(0, 1), ImVec2(1, 0));
+    // A render target's texture like the views': flipped the same way (GL's rows go up).
+    if (const GLuint divided = divideFirstTexture())
+      ImGui::Image(textureId(divided), size, ImVec2(0, 1), ImVec2(1, 0));
+    else  // the strategy's run failed (its error is in the status line): no picture of it
+      ImGui::Dummy(size);
     ui::recordRect(s_, "view.divideFirst");
     caption(at, size.x, IM_COL32(255, 120, 110, 255), {"divide first, then clip (wrong)", "divide first (wrong)", "wrong"});
     ImGui::SameLine();
@@ -483,9 +488,18 @@ GLuint Viewer::differenceTexture() {
 }
 
 GLuint Viewer::divideFirstTexture() {
-  // The GPU always clips correctly; the wrong strategy's result exists only on the CPU.
-  const Device& d = s_.doc.shown().device;
-  return uploadImage(divideFirstTexture_, rasterizeClippedPolygons(s_.run, s_.doc.shown().background, d.width, d.height));
+  // The GPU always clips correctly; the wrong strategy's result exists only as the CPU's clipped
+  // polygons: divideFirstView's display list, drawn at the device's size (pixel-aligned with DC,
+  // as the camera view beside it). Drawn again only for a new run.
+  if (s_.run.options.strategy != ClipStrategy::divideFirst) return 0;
+  const Device& d = s_.run.device;
+  if (divideFirstRevision_ != runRevision_ || divideFirst_.width() != d.width || divideFirst_.height() != d.height) {
+    divideFirst_.resize(d.width, d.height, 1);
+    renderer_.drawDivideFirst(s_.doc.shown(), s_.run, s_.frame, divideFirst_);
+    divideFirst_.resolve();
+    divideFirstRevision_ = runRevision_;
+  }
+  return divideFirst_.colorTexture();
 }
 
 }  // namespace vplab

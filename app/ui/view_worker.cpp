@@ -80,6 +80,8 @@ GLuint drawViewInto(GlContext& context, ViewRenderer& renderer, ViewTargets& t, 
         const Image cpu = rasterizeClippedPolygons(run, r.scene.background, gpu.width, gpu.height);
         return uploadImageTo(context.gl(), t.difference, differenceImage(gpu, cpu, 0));
       }
+    case ViewKind::divideFirst:
+    case ViewKind::depth: break;  // drawn by the panels that show them, not as view windows
   }
   return 0;
 }

@@ -71,6 +71,7 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
       camera_(context.gl()),
       npc_(context.gl()),
       morph_(context.gl()),
+      divideFirst_(context.gl()),
       uiScale_(uiScale) {
   IMGUI_CHECKVERSION();
   imgui_ = ImGui::CreateContext();

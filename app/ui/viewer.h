@@ -135,8 +135,10 @@ class Viewer {
   ImGuiContext* imgui_ = nullptr;
   ViewRenderer renderer_;
   ViewerState s_;
-  gl::RenderTarget world_, camera_, npc_, morph_;
-  gl::Texture differenceTexture_, divideFirstTexture_;
+  gl::RenderTarget world_, camera_, npc_, morph_, divideFirst_;
+  gl::Texture differenceTexture_;
+  /// The divide-first comparison is drawn into divideFirst_ again only after a new run of the pipeline.
+  unsigned divideFirstRevision_ = 0;  // the run it was drawn from (0: none yet)
   FileDialog dialog_;
   float uiScale_;
   int lastWidth_ = 0, lastHeight_ = 0;

@@ -1,5 +1,6 @@
 // The picture of a view kind: one view, or "all": the camera, world and NPC views side by side under
 // a strip of titles (for slides, the README and the tests).
+#include "app/views/depth_plot.h"
 #include "app/views/theme.h"
 #include "app/views/views.h"
 
@@ -19,6 +20,8 @@ void buildView(ViewKind kind, const ViewInput& in, DisplayList& out) {
     case ViewKind::world: worldView(in, out); return;
     case ViewKind::npc: npcView(in, out); return;
     case ViewKind::morph: morphView(in, out); return;
+    case ViewKind::divideFirst: out = divideFirstView(in); return;
+    case ViewKind::depth: out = depthPlotView(in); return;
     case ViewKind::all: break;
   }
   throw std::logic_error("buildView: not a single view");

@@ -16,6 +16,12 @@ PixelSize pixelSizeOf(const RenderRequest& request, const Scene& scene) {
           request.height > 0 ? request.height : scene.device.height};
 }
 
+PipelineOptions pipelineOptionsOf(const RenderRequest& request) {
+  PipelineOptions options = request.pipeline;
+  if (request.view == ViewKind::divideFirst) options.strategy = ClipStrategy::divideFirst;
+  return options;
+}
+
 FrameSettings frameSettingsOf(const RenderRequest& request, const Scene& scene) {
   if (request.frame) return *request.frame;
   const PixelSize size = pixelSizeOf(request, scene);

@@ -36,6 +36,10 @@ struct PixelSize {
 };
 PixelSize pixelSizeOf(const RenderRequest& request, const Scene& scene);
 
+/// The pipeline options the request's view is drawn from: the request's, except that the
+/// divide-first comparison is always the divide-first strategy's run (what the viewer shows it from).
+PipelineOptions pipelineOptionsOf(const RenderRequest& request);
+
 /// The frame settings the request is drawn with: its `frame`, or frameSettingsFor its style at its
 /// size's aspect ratio with its morph t.
 FrameSettings frameSettingsOf(const RenderRequest& request, const Scene& scene);

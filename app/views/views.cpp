@@ -10,12 +10,15 @@ std::string_view toString(ViewKind v) {
     case ViewKind::npc: return "npc";
     case ViewKind::all: return "all";
     case ViewKind::morph: return "morph";
+    case ViewKind::divideFirst: return "divide-first";
+    case ViewKind::depth: return "depth-plot";
   }
   return "?";
 }
 
 std::optional<ViewKind> viewKindFromString(std::string_view s) {
-  for (ViewKind v : {ViewKind::camera, ViewKind::world, ViewKind::npc, ViewKind::all, ViewKind::morph})
+  for (ViewKind v : {ViewKind::camera, ViewKind::world, ViewKind::npc, ViewKind::all, ViewKind::morph,
+                     ViewKind::divideFirst, ViewKind::depth})
     if (toString(v) == s) return v;
   return std::nullopt;
 }

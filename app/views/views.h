@@ -6,6 +6,10 @@
 //   npc     the unit cube of NPC with the scene after view mapping, clipping and division
 //   all     the three side by side, with titles (for slides and tests)
 //   morph   the stage morph: the visible scene moving from MC through WC, VRC and NPC to DC
+//   divide-first  what the wrong strategy draws: the divide-first run's clipped polygons in DC, flat
+//           (the Clipping lesson's comparison beside the camera view; Hill 7.4)
+//   depth-plot    NPC z and GL's window depth against VRC z between B and F, and the objects'
+//           depth ranges (lecture notes 15.2.4; the inspector's Depth tab)
 #pragma once
 
 #include "app/views/display_list.h"
@@ -20,7 +24,7 @@
 
 namespace vplab {
 
-enum class ViewKind { camera, world, npc, all, morph };
+enum class ViewKind { camera, world, npc, all, morph, divideFirst, depth };
 std::string_view toString(ViewKind v);
 std::optional<ViewKind> viewKindFromString(std::string_view s);
 
@@ -120,6 +124,15 @@ void cameraView(const ViewInput& in, draw::DisplayList& out);
 void worldView(const ViewInput& in, draw::DisplayList& out);
 void npcView(const ViewInput& in, draw::DisplayList& out);
 void morphView(const ViewInput& in, draw::DisplayList& out);
+
+/// The divide-first comparison (app/views/divide_first_view.cpp): what the wrong strategy draws,
+/// the clipped polygons of `in.run`, which must be a run of ClipStrategy::divideFirst (else
+/// std::invalid_argument), each object's flat colour, on the scene's background. One unlit Fill in
+/// Space::dc (the run's DC), seen through the device mapping undone (observer: npcFromDc, so DC
+/// fills in.width × in.height and z_dc is the depth: the nearer, larger z_dc wins, the first
+/// polygon drawn keeping a tie), as the CPU raster (app/export/cpu_raster.h) fills them.
+draw::DisplayList divideFirstView(const ViewInput& in);
+void divideFirstView(const ViewInput& in, draw::DisplayList& out);
 
 /// The picture of a view kind: one panel, or for ViewKind::all the camera, world and NPC views side
 /// by side under a strip of titles. `out` is overwritten; its storage is reused where it can be

@@ -58,7 +58,7 @@ std::string name(ViewKind v, Style s) { return std::string(toString(v)) + "-" + 
 /// kTextMarginPx, painted black in the image.
 void maskLabels(Image& image, const Scene& scene, const RenderRequest& request) {
   const PixelSize size = pixelSizeOf(request, scene);
-  const PipelineRun run = runPipeline(scene, request.pipeline);
+  const PipelineRun run = runPipeline(scene, pipelineOptionsOf(request));
   const FrameSettings settings = frameSettingsOf(request, scene);
   const FontAtlas fonts(request.scale);
   const draw::Picture picture =
@@ -173,6 +173,16 @@ std::vector<Case> everyViewAndStyle() {
 INSTANTIATE_TEST_SUITE_P(EveryViewAndStyle, SvgMatchesGl, ::testing::ValuesIn(everyViewAndStyle()),
                          [](const ::testing::TestParamInfo<Case>& i) {
                            std::string n = name(i.param.view, i.param.style);
+                           for (char& c : n)
+                             if (c == '-') c = '_';
+                           return n;
+                         });
+
+// The lecture's two views without styles: the divide-first comparison and the depth plot.
+INSTANTIATE_TEST_SUITE_P(LectureViews, SvgMatchesGl,
+                         ::testing::Values(Case{ViewKind::divideFirst, Style::flat}, Case{ViewKind::depth, Style::flat}),
+                         [](const ::testing::TestParamInfo<Case>& i) {
+                           std::string n(toString(i.param.view));
                            for (char& c : n)
                              if (c == '-') c = '_';
                            return n;
