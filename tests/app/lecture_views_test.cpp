@@ -9,7 +9,7 @@
 // within ~1/256 px of an edge, and depths within float precision where polygons cross, may go
 // either way.
 #include "app/export/cpu_raster.h"
-#include "app/headless.h"
+#include "app/render/headless.h"
 #include "app/render/gl_backend.h"
 #include "app/views/depth_plot.h"
 #include "tests/app/gl_test_support.h"
