@@ -157,8 +157,10 @@ void GlBackend::drawFill(const draw::Fill& fill, const View& view) {
     gl_.PolygonOffset(1.f, 2.f);
   }
   if (blended) {
+    // Colour blended over what is there; alpha accumulated (1 over the opaque background), so a
+    // PNG of a view is opaque everywhere and looks the same on a slide of any colour.
     gl_.Enable(GL_BLEND);
-    gl_.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     gl_.DepthMask(GL_FALSE);
   }
   if (!fill.meshes.empty()) drawMeshes(fill, camera, view.samples);
@@ -411,7 +413,7 @@ void GlBackend::drawMeshEdges(const draw::Lines& lines, const View& view) {
   const ViewCamera& camera = view.cameraFor(lines.space);
   overlay_.setUserPlanes(lines.clipPlanes);
   gl_.Enable(GL_BLEND);
-  gl_.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   gl_.DepthMask(GL_FALSE);
   auto pass = [&](GLenum depthFunc, float alphaScale) {
     gl_.DepthFunc(depthFunc);

@@ -107,7 +107,7 @@ void OverlayRenderer::draw(const OverlayBatch& batch, const ViewCamera& view, in
   const GladGLContext& gl = *gl_;
   gl.DepthMask(GL_FALSE);
   gl.Enable(GL_BLEND);
-  gl.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   gl.Disable(GL_CULL_FACE);
   switch (depth) {
     case OverlayDepth::ignore:

@@ -72,7 +72,7 @@ void TextRenderer::draw(const std::vector<PlacedLabel>& labels, int width, int h
   const GladGLContext& gl = *gl_;
   gl.Disable(GL_DEPTH_TEST);
   gl.Enable(GL_BLEND);
-  gl.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   program_.use();
   program_.set("glClipFromDc", glClipFromPixels(width, height));
   program_.set("atlas", 0);

@@ -44,6 +44,25 @@ void expectSamePictures(const Scene& scene, const std::string& name) {
   }
 }
 
+// Translucent batches blend their colour but accumulate alpha: every pixel of every view's picture is
+// opaque, so a PNG pasted on a white or a dark slide shows the same colours (before the fix, faded
+// parts, lines' smooth edges and labels left alpha as low as 61 in the morph view).
+TEST(ViewRenderer, EveryPictureIsOpaque) {
+  ViewRenderer& renderer = *test::egl().renderer;
+  const Scene scene = defaultScene();
+  const PipelineRun run = runPipeline(scene, {ClipStrategy::npc, false, true});
+  for (ViewKind kind : {ViewKind::camera, ViewKind::world, ViewKind::npc, ViewKind::morph, ViewKind::all}) {
+    for (Style style : {Style::shaded, Style::hiddenLine}) {
+      FrameSettings settings = frameSettingsFor(scene, style, 400.0 / 300.0);
+      settings.morphing.t = 2.5;
+      const Image image = renderer.render(kind, scene, run, settings, 400, 300);
+      size_t translucent = 0;
+      for (const Rgba& p : image.pixels) translucent += p.a != 255;
+      EXPECT_EQ(translucent, 0u) << toString(kind) << ", " << toString(style);
+    }
+  }
+}
+
 TEST(WorldViewPartition, SamePixelsInEveryPreset) {
   for (const auto& entry : fs::directory_iterator(fs::path(VPLAB_ASSETS) / "scenes")) {
     if (entry.path().extension() != ".json" || entry.path().stem() == "large-mesh") continue;  // slow
