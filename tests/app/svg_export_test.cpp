@@ -447,10 +447,11 @@ TEST(SvgExport, IsWellFormedWithThePngsSize) {
       EXPECT_EQ(*svg.root.attribute("viewBox"),
                 "0 0 " + std::to_string(totalW) + " " + std::to_string(totalH));
       // The morph view draws every style filled (frameSettingsFor), with its polygons' outlines.
-      if (isFilled(style) || view == ViewKind::morph)
+      if (isFilled(style) || view == ViewKind::morph) {
         EXPECT_GT(svg.polygons.size(), 5u);
-      else  // no faces: the translucent overlays only (the window, the volume's faces, the cube's front)
+      } else {  // no faces: the translucent overlays only (the window, the volume's faces, the cube's front)
         for (const SvgPolygon& p : svg.polygons) EXPECT_LT(p.opacity, 1.0);
+      }
       if (!isFilled(style) || view != ViewKind::camera) EXPECT_GT(svg.lines.size(), 50u);
       // Every line is clipped to its view: nothing outside the canvas (to the 2 decimals written).
       for (const SvgLine& l : svg.lines)
