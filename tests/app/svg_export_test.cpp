@@ -452,7 +452,9 @@ TEST(SvgExport, IsWellFormedWithThePngsSize) {
       } else {  // no faces: the translucent overlays only (the window, the volume's faces, the cube's front)
         for (const SvgPolygon& p : svg.polygons) EXPECT_LT(p.opacity, 1.0);
       }
-      if (!isFilled(style) || view != ViewKind::camera) EXPECT_GT(svg.lines.size(), 50u);
+      if (!isFilled(style) || view != ViewKind::camera) {
+        EXPECT_GT(svg.lines.size(), 50u);
+      }
       // Every line is clipped to its view: nothing outside the canvas (to the 2 decimals written).
       for (const SvgLine& l : svg.lines)
         for (const Vec2& p : {l.a, l.b}) {
