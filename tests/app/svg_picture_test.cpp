@@ -7,20 +7,18 @@
 #include "app/fonts/font_atlas.h"
 #include "pipeline/error.h"
 #include "svg_test_support.h"
+#include "tests/views/hand_made_lists.h"
 
 namespace vplab {
 namespace {
 
 using namespace draw;
+using draw::lists::square;
 
-// 400 × 300 of WC through the pipeline's default camera: WC (0, 0, 0) is pixel (200, 150), one WC
-// unit is 200 px across and 200 px up.
+// 400 × 300 of WC through the pipeline's default camera on black (tests/views/hand_made_lists.h).
 DisplayList wcList() {
-  DisplayList list;
-  list.width = 400;
-  list.height = 300;
+  DisplayList list = lists::wcList();
   list.background = {0, 0, 0};
-  list.observer = {Space::wc, viewCameraOf(Camera{})};
   return list;
 }
 
@@ -30,14 +28,6 @@ Picture onePanel(DisplayList list) {
   p.height = list.height;
   p.panels.push_back({0, 0, std::move(list)});
   return p;
-}
-
-PolygonSet square(double z, double half, const glm::vec3& color) {
-  PolygonSet s;
-  s.color = color;
-  const Vec3 q[4] = {{-half, -half, z}, {half, -half, z}, {half, half, z}, {-half, half, z}};
-  s.add(q);
-  return s;
 }
 
 const FontAtlas& fonts() {

@@ -5,7 +5,7 @@
 
 #include "app/views/display_list.h"
 
-namespace vplab::draw::test {
+namespace vplab::draw::lists {
 
 inline DisplayList wcList(int width = 400, int height = 300) {
   DisplayList list;
@@ -15,4 +15,13 @@ inline DisplayList wcList(int width = 400, int height = 300) {
   return list;
 }
 
-}  // namespace vplab::draw::test
+/// A square of half-size `half` around the z axis at depth z, in one colour.
+inline PolygonSet square(double z, double half, const glm::vec3& color) {
+  PolygonSet s;
+  s.color = color;
+  const Vec3 q[4] = {{-half, -half, z}, {half, -half, z}, {half, half, z}, {-half, half, z}};
+  s.add(q);
+  return s;
+}
+
+}  // namespace vplab::draw::lists

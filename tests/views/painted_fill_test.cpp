@@ -9,6 +9,8 @@
 namespace vplab::draw {
 namespace {
 
+using lists::square;
+
 double area(const std::vector<PixelPoint>& p) {
   double a = 0;
   for (size_t i = 0; i < p.size(); ++i)
@@ -16,16 +18,8 @@ double area(const std::vector<PixelPoint>& p) {
   return std::abs(a) / 2;
 }
 
-PolygonSet square(double z, double half, const glm::vec3& color) {
-  PolygonSet s;
-  s.color = color;
-  const Vec3 q[4] = {{-half, -half, z}, {half, -half, z}, {half, half, z}, {-half, half, z}};
-  s.add(q);
-  return s;
-}
-
 TEST(PaintedFill, FacesComeBackToFront) {
-  const DisplayList list = test::wcList();
+  const DisplayList list = lists::wcList();
   Fill f;
   f.polygons.push_back(square(1, 0.2, {1, 0, 0}));   // near, listed first
   f.polygons.push_back(square(-1, 0.5, {0, 0, 1}));  // far
@@ -38,7 +32,7 @@ TEST(PaintedFill, FacesComeBackToFront) {
 }
 
 TEST(PaintedFill, FlatIsTheColourAndAlpha) {
-  const DisplayList list = test::wcList();
+  const DisplayList list = lists::wcList();
   Fill f;
   f.alpha = 0.4f;
   MeshInstance m{std::make_shared<Mesh>(), Mat4(1.0), {0.2f, 0.5f, 0.8f, 1.f}};
@@ -80,7 +74,7 @@ TEST(PaintedFill, LitIsBlinnPhongOfTheShader) {
 }
 
 TEST(PaintedFill, TheVolumeSplitsEachFaceIntoInsideAndOutside) {
-  const DisplayList list = test::wcList();
+  const DisplayList list = lists::wcList();
   // "The other camera": a parallel box x, y, z ∈ [0, 1] of WC is its unit cube (npcFromSpace = 1).
   Fill inside, outside;
   inside.polygons.push_back(square(0.5, 0.5, {1, 1, 1}));  // x, y ∈ [−0.5, 0.5] at z = 0.5
@@ -99,7 +93,7 @@ TEST(PaintedFill, TheVolumeSplitsEachFaceIntoInsideAndOutside) {
 }
 
 TEST(PaintedFill, UserClipPlanesCutTheFaces) {
-  const DisplayList list = test::wcList();
+  const DisplayList list = lists::wcList();
   Fill f;
   f.polygons.push_back(square(0, 0.5, {1, 1, 1}));
   const double whole = area(paintedPolygons(f, list)[0].points);

@@ -9,7 +9,7 @@ namespace vplab::draw {
 namespace {
 
 TEST(Projection, MapsTheObserversSpaceToPixelsYDown) {
-  const DisplayList list = test::wcList();
+  const DisplayList list = lists::wcList();
   const ViewProjection p(list, Space::wc);
   const PixelPoint centre = p.pixel(p.npcH(Vec3(0, 0, 0)));
   EXPECT_NEAR(centre.x, 200, 1e-9);
@@ -24,7 +24,7 @@ TEST(Projection, MapsTheObserversSpaceToPixelsYDown) {
 }
 
 TEST(Projection, PixelsAreTheirOwnSpace) {
-  const DisplayList list = test::wcList();
+  const DisplayList list = lists::wcList();
   const ViewProjection p(list, Space::pixels);
   const auto s = p.segment(Vec3(10, 20, 0), Vec3(390, 280, 0));
   ASSERT_TRUE(s);
@@ -40,7 +40,7 @@ TEST(Projection, PixelsAreTheirOwnSpace) {
 }
 
 TEST(Projection, CutsWhatLiesBeforeTheFrontPlaneAndBehindTheEye) {
-  const DisplayList list = test::wcList();
+  const DisplayList list = lists::wcList();
   const ViewProjection p(list, Space::wc);
   // From the centre of the view volume to a point behind the eye (z = 8): after a naive division it
   // would land inside the view; clipped before the division it ends at the front plane z = 2.
@@ -61,7 +61,7 @@ TEST(Projection, CutsWhatLiesBeforeTheFrontPlaneAndBehindTheEye) {
 }
 
 TEST(Projection, PolygonsAreClippedByTheUserPlanesToo) {
-  const DisplayList list = test::wcList();
+  const DisplayList list = lists::wcList();
   const Vec4 keepRight(1, 0, 0, 0);  // x ≥ 0 kept
   const ViewProjection p(list, Space::wc, std::span(&keepRight, 1));
   const std::vector<Vec4> square = {p.npcH(Vec3(-0.5, -0.5, 0)), p.npcH(Vec3(0.5, -0.5, 0)),
@@ -77,7 +77,7 @@ TEST(Projection, PolygonsAreClippedByTheUserPlanesToo) {
 }
 
 TEST(Projection, RefusesABatchInAnotherSpace) {
-  const DisplayList list = test::wcList();
+  const DisplayList list = lists::wcList();
   try {
     ViewProjection(list, Space::npc);
     FAIL() << "no error";
@@ -85,7 +85,7 @@ TEST(Projection, RefusesABatchInAnotherSpace) {
     EXPECT_NE(std::string(e.what()).find("NPC"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("WC"), std::string::npos) << e.what();
   }
-  DisplayList empty = test::wcList(0, 0);
+  DisplayList empty = lists::wcList(0, 0);
   EXPECT_THROW(ViewProjection(empty, Space::wc), Error);
 }
 
