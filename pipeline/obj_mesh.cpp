@@ -7,7 +7,11 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cerrno>
 #include <charconv>
+#include <cstdlib>
+#include <string>
 
 namespace vplab {
 
@@ -28,8 +32,20 @@ std::vector<std::string_view> tokens(std::string_view line) {
 
 bool parseNumber(std::string_view s, double& v) {
   if (!s.empty() && s[0] == '+') s.remove_prefix(1);
+#if defined(__cpp_lib_to_chars)
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   return ec == std::errc() && end == s.data() + s.size() && std::isfinite(v);
+#else
+  // The browser build's libc++ (LLVM 14) has no from_chars for double: strtod, given only what
+  // from_chars takes (no sign but '-', no whitespace, no hexadecimal), reads the same numbers.
+  if (s.empty() || !(s[0] == '-' || s[0] == '.' || std::isdigit(static_cast<unsigned char>(s[0])))) return false;
+  if (s.find_first_of("xX") != std::string_view::npos || (s[0] == '-' && s.size() > 1 && s[1] == '+')) return false;
+  const std::string text(s);
+  char* end = nullptr;
+  errno = 0;
+  v = std::strtod(text.c_str(), &end);
+  return errno != ERANGE && end == text.c_str() + text.size() && std::isfinite(v);
+#endif
 }
 
 bool parseIndex(std::string_view s, long& v) {

@@ -28,8 +28,14 @@ constexpr double kInkPx = 1.0;  // the line shader: full coverage over widthPx, 
 /// writes millions of coordinates).
 void appendNum(std::string& out, double v, int decimals = 2) {
   if (!std::isfinite(v) || std::abs(v) < 0.5 * std::pow(10.0, -decimals)) v = 0;  // no "-0"
+#if defined(__cpp_lib_to_chars)
   char buf[64];
   char* end = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals).ptr;
+#else  // the browser build's libc++ (LLVM 14) has no to_chars with a precision; printf rounds the same
+  char buf[512];
+  const int n = std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  char* end = buf + std::clamp(n, 0, int(sizeof buf) - 1);
+#endif
   if (std::find(buf, end, '.') != end) {
     while (end[-1] == '0') --end;
     if (end[-1] == '.') --end;

@@ -361,8 +361,15 @@ void GlBackend::drawPolygons(const draw::Fill& fill, const ViewCamera& camera) {
     buffer.capacity = bytes + bytes / 4;
     gl_.BufferData(GL_ARRAY_BUFFER, buffer.capacity, nullptr, GL_STREAM_DRAW);
   }
-  auto* out = static_cast<glm::vec3*>(
-      gl_.MapBufferRange(GL_ARRAY_BUFFER, 0, bytes, GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_RANGE_BIT));
+  // OpenGL maps the buffer and the loop writes into it; WebGL2 has no mapping (OpenGL ES's path
+  // writes into memory of its own and hands it over with glBufferSubData).
+  glm::vec3* out = nullptr;
+  if (es_) {
+    polygonStaging_.resize(size_t(vertices) * 2);
+    out = polygonStaging_.data();
+  } else {
+    out = static_cast<glm::vec3*>(gl_.MapBufferRange(GL_ARRAY_BUFFER, 0, bytes, GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_RANGE_BIT));
+  }
   if (!out) throw Error("could not map the polygon buffer (" + std::to_string(bytes) + " bytes)");
   for (const draw::PolygonSet& set : fill.polygons) {
     for (size_t k = 0; k < set.polygonCount(); ++k) {
@@ -387,7 +394,8 @@ void GlBackend::drawPolygons(const draw::Fill& fill, const ViewCamera& camera) {
       }
     }
   }
-  gl_.UnmapBuffer(GL_ARRAY_BUFFER);
+  if (es_) gl_.BufferSubData(GL_ARRAY_BUFFER, 0, bytes, polygonStaging_.data());
+  else gl_.UnmapBuffer(GL_ARRAY_BUFFER);
 
   const int lights = fill.lit ? int(std::clamp<size_t>(fill.lights.size(), 1, 4)) : 0;
   const gl::Program& p = sceneProgram(false, lights, false);

@@ -97,6 +97,7 @@ class GlBackend {
   };
   std::vector<PolygonBuffer> polygonBuffers_;
   size_t polygonSlot_ = 0;
+  std::vector<glm::vec3> polygonStaging_;  // OpenGL ES (WebGL2): the polygons' vertices before glBufferSubData
   std::vector<VolumePart> parts_;
   std::vector<glm::vec4> labelsPlaced_;
   bool partitioned_ = true;

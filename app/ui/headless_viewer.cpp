@@ -7,7 +7,7 @@
 namespace vplab {
 
 HeadlessViewer::HeadlessViewer(GlContext& context, Scene scene, int width, int height, float uiScale)
-    : ctx_(context), viewer_(context, std::move(scene), uiScale), target_(context.gl()), width_(width), height_(height) {
+    : viewer_(context, std::move(scene), uiScale), target_(context.gl()), width_(width), height_(height) {
   target_.resize(width, height, 1);
   viewer_.makeCurrent();
   ImGuiIO& io = ImGui::GetIO();

@@ -41,7 +41,6 @@ class HeadlessViewer {
   std::pair<double, double> centreOf(const std::string& id) const;
 
  private:
-  GlContext& ctx_;
   Viewer viewer_;
   gl::RenderTarget target_;
   int width_, height_;

@@ -14,7 +14,7 @@
 namespace vplab {
 
 namespace {
-constexpr int kNice = 5;
+[[maybe_unused]] constexpr int kNice = 5;
 }  // namespace
 
 Image readTexture(const GladGLContext& gl, GLuint texture) {
@@ -146,7 +146,9 @@ size_t ViewWorker::freeBuffer(size_t view) const {
 void ViewWorker::run() {
   // Below the window's thread: its frames come first when both want a core (the nice value of a
   // thread on Linux; the window's frames take a few ms, a view of a large mesh seconds).
+#ifdef SYS_gettid  // Linux; the browser build has no render thread at all
   setpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)), kNice);
+#endif
   ctx_->makeCurrent();
   {
     ViewRenderer renderer(*ctx_);
