@@ -127,7 +127,7 @@ void clipPlanesEditor(ViewerState& s) {
 
 }  // namespace
 
-void scenePanel(ViewerState& s, FileDialog& dialog) {
+void scenePanel(ViewerState& s, FileChooser& dialog) {
   Scene& scene = s.doc.scene();
   ImGui::TextDisabled("objects");
   if (ImGui::BeginListBox("##objects", ImVec2(-1, ImGui::GetTextLineHeightWithSpacing() * 5.5f))) {
@@ -148,7 +148,7 @@ void scenePanel(ViewerState& s, FileDialog& dialog) {
   if (ImGui::Button("+ polygon")) addObject(s, Shape::polygon);
   sameLineIfFits("+ OBJ mesh file");
   if (ImGui::Button("+ OBJ mesh file"))
-    dialog.open("Load an OBJ mesh", FileDialog::Mode::open, {".obj"}, scene.path.parent_path(),
+    dialog.open("Load an OBJ mesh", FileChooser::Mode::open, {".obj"}, scene.path.parent_path(),
                 [&s](const std::filesystem::path& file) {
                   // Relative to the scene file where there is one, as the scene format expects.
                   const std::filesystem::path base = s.doc.scene().path.parent_path();

@@ -8,7 +8,7 @@
 namespace vplab::ui {
 
 void cameraPanel(ViewerState& s);
-void scenePanel(ViewerState& s, FileDialog& dialog);
+void scenePanel(ViewerState& s, FileChooser& dialog);
 void clippingPanel(ViewerState& s);
 void displayPanel(ViewerState& s);
 void matricesPanel(ViewerState& s);

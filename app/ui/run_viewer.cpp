@@ -7,13 +7,13 @@
 
 #include "app/context/context_glfw.h"
 #include "app/gl/render_target.h"
-#include "app/ui/input_queue.h"
+#include "app/ui/window_input.h"
 #include "app/ui/viewer.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
-#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_glfw.h>  // ImGui_ImplGlfw_NewFrame
 
 #include <fcntl.h>
 #include <poll.h>
@@ -33,48 +33,6 @@ namespace {
 constexpr double kAutosaveDelay = 3.0;  // seconds after the last change
 constexpr double kLongestWait = 60.0;   // glfwWaitEventsTimeout needs a finite timeout
 constexpr int kSettleFrames = 3;        // ImGui shows the effect of input (hover, popups) over ~2 frames
-
-// ImGui's GLFW backend is set up after the viewer made the ImGui context and shut down before the
-// viewer destroys it. Its own callbacks stay off: WindowInput queues the input instead.
-struct GlfwBackend {
-  explicit GlfwBackend(GLFWwindow* w) { ImGui_ImplGlfw_InitForOpenGL(w, false); }
-  ~GlfwBackend() { ImGui_ImplGlfw_Shutdown(); }
-};
-
-/// The window's input callbacks feed a queue; `changed` says something arrived (input, a resize, an
-/// expose) since the loop last looked.
-struct WindowInput {
-  InputQueue queue;
-  bool changed = true;
-  GLFWwindow* window;
-
-  explicit WindowInput(GLFWwindow* handle) : window(handle) {
-    GLFWwindow* const h = handle;
-    glfwSetWindowUserPointer(h, this);
-    glfwSetCursorPosCallback(h, [](GLFWwindow* w, double x, double y) { of(w).queue.mouseMove(x, y); });
-    glfwSetCursorEnterCallback(h, [](GLFWwindow* w, int entered) {
-      if (!entered) of(w).queue.mouseMove(-1e30, -1e30);  // ImGui: no mouse over the window
-      of(w).changed = true;
-    });
-    glfwSetMouseButtonCallback(h, [](GLFWwindow* w, int button, int action, int) {
-      of(w).queue.mouseButton(button, action == GLFW_PRESS);
-    });
-    glfwSetScrollCallback(h, [](GLFWwindow* w, double dx, double dy) { of(w).queue.wheel(dx, dy); });
-    glfwSetKeyCallback(h, [](GLFWwindow* w, int key, int, int action, int) {
-      if (action != GLFW_REPEAT) of(w).queue.key(key, action == GLFW_PRESS);
-      else of(w).changed = true;  // ImGui repeats held keys itself, given frames
-    });
-    glfwSetCharCallback(h, [](GLFWwindow* w, unsigned c) { of(w).queue.character(c); });
-    glfwSetWindowFocusCallback(h, [](GLFWwindow* w, int focused) {
-      if (!focused) of(w).queue.focusLost();
-      of(w).changed = true;
-    });
-    glfwSetWindowRefreshCallback(h, [](GLFWwindow* w) { of(w).changed = true; });
-    glfwSetFramebufferSizeCallback(h, [](GLFWwindow* w, int, int) { of(w).changed = true; });
-  }
-  ~WindowInput() { glfwSetWindowUserPointer(window, nullptr); }
-  static WindowInput& of(GLFWwindow* w) { return *static_cast<WindowInput*>(glfwGetWindowUserPointer(w)); }
-};
 
 // The only process-wide state: a signal handler can reach nothing else. The handler does only
 // async-signal-safe things (an atomic store, write(2)); a watcher thread turns the byte on the

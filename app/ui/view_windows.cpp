@@ -16,6 +16,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -248,7 +249,9 @@ void Viewer::viewWindows() {
       const bool hovered = viewImage("world", texture, size);
       ui::recordRect(s_, "view.world");
       busyMark(ViewKind::world);
-      worldInteraction(hovered, observer, cachedWidth(ViewKind::world), cachedHeight(ViewKind::world), mouseIn(ImGui::GetItemRectMin(), fbScale));
+      const ImVec2 origin = ImGui::GetItemRectMin();
+      worldInteraction(hovered, observer, cachedWidth(ViewKind::world), cachedHeight(ViewKind::world), mouseIn(origin, fbScale));
+      recordHandles(origin, observer, fbScale);
     }
   }
   ImGui::End();
@@ -337,7 +340,6 @@ void Viewer::morphWindow() {
       const bool hovered = viewImage("morph", texture, size);
       busyMark(ViewKind::morph);
       ui::recordRect(s_, "view.morph");
-      const ViewCamera none;
       morphInteraction(hovered);
     }
   }
@@ -444,6 +446,21 @@ void Viewer::morphInteraction(bool hovered) {
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) s_.drag = {Drag::Kind::orbit, ViewKind::morph, Handle::none};
   if (s_.drag.view == ViewKind::morph && s_.drag.kind == Drag::Kind::orbit)
     orbitBy(s_.frame.morphing.orbit, io.MouseDelta.x * 0.4, io.MouseDelta.y * 0.4);
+}
+
+// Where the world view's handles are, in screen units (ViewerState::rects "handle.vrp", "handle.prp",
+// "handle.xmin", …, "handle.front-f"): the UI tests and the browser tests grab them there.
+void Viewer::recordHandles(ImVec2 origin, const ViewCamera& observer, ImVec2 fbScale) {
+  const int w = cachedWidth(ViewKind::world), h = cachedHeight(ViewKind::world);
+  const float r = float(kPickRadiusPx) / fbScale.x;
+  for (Handle handle : kHandles) {
+    const Projected p = projectToPixels(observer, handlePosition(s_.run, handle), w, h);
+    if (!p.visible) continue;
+    std::string id = std::string("handle.") + handleName(handle);
+    for (char& c : id) c = c == ' ' ? '-' : char(std::tolower(static_cast<unsigned char>(c)));
+    const float x = origin.x + float(p.pixel.x) / fbScale.x, y = origin.y + float(p.pixel.y) / fbScale.y;
+    s_.rects[id] = ImVec4(x - r, y - r, 2 * r, 2 * r);
+  }
 }
 
 void Viewer::worldInteraction(bool hovered, const ViewCamera& observer, int w, int h, Vec2 mouse) {

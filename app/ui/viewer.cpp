@@ -2,7 +2,9 @@
 //        4 menus, shortcuts and dialogs  5 files: open, save, autosave and recovery
 #include "app/ui/viewer.h"
 
+#include "app/gl/shader.h"
 #include "app/ui/assets.h"
+#include "app/render/headless.h"
 #include "app/export/svg.h"
 #include "app/ui/keys.h"
 #include "app/ui/layout.h"
@@ -17,6 +19,7 @@
 #include <imgui_internal.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -81,7 +84,9 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
   io.ConfigWindowsMoveFromTitleBarOnly = true;
   setUpFonts(uiScale);
   setUpStyle(uiScale);
-  if (!ImGui_ImplOpenGL3_Init("#version 330 core")) {
+  // WebGL2 (the browser) and OpenGL ES are GLSL ES 3.00; the desktop's window is OpenGL 3.3 core.
+  const bool es = gl::dialectOf(context.gl()) == gl::GlslDialect::es300;
+  if (!ImGui_ImplOpenGL3_Init(es ? "#version 300 es" : "#version 330 core")) {
     ImGui::DestroyContext(imgui_);
     throw Error("ImGui's OpenGL3 renderer could not be initialised on the " + std::string(context.backend()) +
                 " context (it loads OpenGL through libGL.so.1: use a window or the EGL backend)");
@@ -232,7 +237,7 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   recoveryDialog();
   quitDialog();
   discardDialog();
-  dialog_.draw();
+  dialog_->draw();
   relayout_ = false;
   for (ViewCache& c : viewCache_)
     if (!c.asked) c.pending = c.busy = false;  // not shown any more: its image is not waited for
@@ -289,7 +294,7 @@ void Viewer::controlsWindow() {
   if (ImGui::BeginChild("panel", ImVec2(0, -footer))) {
     switch (s_.controlsTab) {
       case ViewerState::cameraTab: ui::cameraPanel(s_); break;
-      case ViewerState::sceneTab: ui::scenePanel(s_, dialog_); break;
+      case ViewerState::sceneTab: ui::scenePanel(s_, *dialog_); break;
       case ViewerState::clippingTab: ui::clippingPanel(s_); break;
       case ViewerState::displayTab: ui::displayPanel(s_); break;
       default: ui::lecturePanel(s_); break;
@@ -378,13 +383,20 @@ void Viewer::menuBar() {
   const bool fileMenu = ImGui::BeginMenu("File");
   ui::recordRect(s_, "menu.file");
   if (fileMenu) {
-    if (ImGui::MenuItem("New (default lecture scene)", "Ctrl+N")) unlessUnsaved([this] { startDocument(defaultScene()); });
+    // The browser owns Ctrl+N, Ctrl+O, Ctrl+S, Ctrl+W and F11, F12: the page offers these here only.
+    auto key = [this](const char* shortcut) { return browser_ ? nullptr : shortcut; };
+    if (ImGui::MenuItem("New (default lecture scene)", key("Ctrl+N"))) unlessUnsaved([this] { startDocument(defaultScene()); });
     ui::recordRect(s_, "menu.new");
-    if (ImGui::MenuItem("Open scene…", "Ctrl+O"))
-      dialog_.open("Open a scene", FileDialog::Mode::open, {".json"}, s_.doc.path(),
-                   [this](const std::filesystem::path& f) { unlessUnsaved([this, f] { openScene(f); }); });
-    if (ImGui::MenuItem("Save", "Ctrl+S")) saveScene(s_.doc.path());
-    if (ImGui::MenuItem("Save as…", "Ctrl+Shift+S")) saveAs();
+    if (browser_) {
+      if (ImGui::MenuItem("Open a scene or an OBJ mesh…")) chooseFileToOpen();
+      ui::recordRect(s_, "menu.open");
+      if (ImGui::MenuItem("Save (download)")) saveScene(s_.doc.path());
+      ui::recordRect(s_, "menu.save");
+    } else {
+      if (ImGui::MenuItem("Open scene…", "Ctrl+O")) chooseFileToOpen();
+      if (ImGui::MenuItem("Save", "Ctrl+S")) saveScene(s_.doc.path());
+      if (ImGui::MenuItem("Save as…", "Ctrl+Shift+S")) saveAs();
+    }
     if (ImGui::BeginMenu("Presets", !s_.presets.empty())) {
       for (const SceneFileInfo& p : s_.presets)
         if (ImGui::MenuItem(p.title.c_str())) {
@@ -398,8 +410,8 @@ void Viewer::menuBar() {
       exportMenu();
       ImGui::EndMenu();
     }
-    if (ImGui::MenuItem("Screenshot", "F12")) screenshotRequested_ = true;
-    if (ImGui::MenuItem("Quit", "Ctrl+Q")) requestQuit();
+    if (ImGui::MenuItem("Screenshot", key("F12"))) screenshotRequested_ = true;
+    if (!browser_ && ImGui::MenuItem("Quit", "Ctrl+Q")) requestQuit();  // a page is closed by its tab
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Edit")) {
@@ -422,24 +434,23 @@ void Viewer::shortcuts() {
     if (pressed(keys::kZ) && io.KeyShift) s_.doc.redo();
     else if (pressed(keys::kZ)) s_.doc.undo();
     if (pressed(keys::kY)) s_.doc.redo();
+    if (browser_) return;  // Ctrl+S, Ctrl+O, Ctrl+N, Ctrl+W, Ctrl+Q are the browser's: the File menu has them
     if (pressed(keys::kS)) {
       if (io.KeyShift) saveAs();
       else saveScene(s_.doc.path());
     }
     if (pressed(keys::kN)) unlessUnsaved([this] { startDocument(defaultScene()); });
-    if (pressed(keys::kO))
-      dialog_.open("Open a scene", FileDialog::Mode::open, {".json"}, s_.doc.path(),
-                   [this](const std::filesystem::path& f) { unlessUnsaved([this, f] { openScene(f); }); });
+    if (pressed(keys::kO)) chooseFileToOpen();
     if (pressed(keys::kQ)) requestQuit();
     return;
   }
-  if (pressed(keys::kF11)) s_.lectureMode = !s_.lectureMode;
+  if (pressed(keys::kF11) && !browser_) s_.lectureMode = !s_.lectureMode;
   if (pressed(keys::kEscape) && s_.lectureMode) {
     s_.lectureMode = false;
     return;
   }
   if (pressed(keys::kF1)) s_.showHelp = !s_.showHelp;
-  if (pressed(keys::kF12)) screenshotRequested_ = true;
+  if (pressed(keys::kF12) && !browser_) screenshotRequested_ = true;
   if (pressed(keys::kEscape)) s_.probe.reset();
   for (int i = 0; i < 5; ++i)
     if (pressed(keys::kDigit1 + i)) s_.frame.camera.style = s_.frame.world.style = s_.frame.npc.style = Style(i);
@@ -464,7 +475,7 @@ void Viewer::quitDialog() {
     ImGui::CloseCurrentPopup();
     if (s_.doc.path().empty() || isBundled(s_.doc.path())) {
       s_.quitRequested = false;
-      dialog_.open("Save a copy of the scene", FileDialog::Mode::save, {".json"}, copyName(s_.doc.path()), [this](const std::filesystem::path& f) {
+      dialog_->open("Save a copy of the scene", FileChooser::Mode::save, {".json"}, copyName(s_.doc.path()), [this](const std::filesystem::path& f) {
         saveScene(f);
         if (!s_.doc.dirty()) s_.quitConfirmed = true;
       });
@@ -519,7 +530,7 @@ void Viewer::exportMenu() {
     const GLuint texture = viewCache_[size_t(e.kind)].texture;
     const std::string png = std::string(e.name) + " view as PNG…";
     if (ImGui::MenuItem(png.c_str(), nullptr, false, texture != 0)) {
-      dialog_.open("Export the " + std::string(e.name) + " view", FileDialog::Mode::save, {".png"},
+      dialog_->open("Export the " + std::string(e.name) + " view", FileChooser::Mode::save, {".png"},
                    "vplab-" + std::string(toString(e.kind)) + ".png", [this, texture](const std::filesystem::path& f) {
                      try {
                        writePng(readTexture(ctx_.gl(), texture), f);
@@ -534,7 +545,7 @@ void Viewer::exportMenu() {
     if (ImGui::MenuItem(svg.c_str(), nullptr, false, !why && texture != 0)) {
       const ViewKind kind = e.kind;
       const int w = cachedWidth(kind), h = cachedHeight(kind);
-      dialog_.open("Export the " + std::string(e.name) + " view", FileDialog::Mode::save, {".svg"},
+      dialog_->open("Export the " + std::string(e.name) + " view", FileChooser::Mode::save, {".svg"},
                    "vplab-" + std::string(toString(kind)) + ".svg", [this, kind, w, h](const std::filesystem::path& f) {
                      try {
                        writeSvg(svgOfRequest(s_.doc.shown(), shownViewRequest(s_, kind, w, h, uiScale_)), f);
@@ -643,25 +654,129 @@ bool Viewer::isBundled(const std::filesystem::path& file) const {
 }
 
 void Viewer::saveAs() {
-  dialog_.open("Save the scene", FileDialog::Mode::save, {".json"}, isBundled(s_.doc.path()) ? copyName(s_.doc.path()) : s_.doc.path(),
+  dialog_->open("Save the scene", FileChooser::Mode::save, {".json"}, isBundled(s_.doc.path()) ? copyName(s_.doc.path()) : s_.doc.path(),
                [this](const std::filesystem::path& f) { saveScene(f); });
 }
 
 void Viewer::saveScene(const std::filesystem::path& file) {
+  if (dialog_->downloads()) {  // the browser: every save is a new download, named after the scene
+    dialog_->open("Save the scene", FileChooser::Mode::save, {".json"},
+                  file.empty() ? std::filesystem::path("lecture-scene.json") : file.filename(),
+                  [this](const std::filesystem::path& f) { writeScene(f); });
+    return;
+  }
   if (file.empty() || isBundled(file)) {  // never over a scene shipped with vplab: save a copy
-    dialog_.open("Save a copy of the scene", FileDialog::Mode::save, {".json"}, copyName(file),
+    dialog_->open("Save a copy of the scene", FileChooser::Mode::save, {".json"}, copyName(file),
                  [this](const std::filesystem::path& f) {
                    if (isBundled(f)) setStatus(f.string() + " is a scene shipped with vplab: save the copy elsewhere", true);
                    else saveScene(f);
                  });
     return;
   }
+  writeScene(file);
+}
+
+void Viewer::writeScene(const std::filesystem::path& file) {
   try {
     s_.doc.save(file);
     setStatus("saved " + file.string(), false);
   } catch (const Error& e) {
     setStatus(e.what(), true);
   }
+}
+
+void Viewer::chooseFileToOpen() {
+  if (browser_) {
+    dialog_->open("Open a scene or an OBJ mesh", FileChooser::Mode::open, {".json", ".obj"}, s_.doc.path(),
+                  [this](const std::filesystem::path& f) { openFile(f); });
+    return;
+  }
+  dialog_->open("Open a scene", FileChooser::Mode::open, {".json"}, s_.doc.path(),
+                [this](const std::filesystem::path& f) { unlessUnsaved([this, f] { openScene(f); }); });
+}
+
+void Viewer::openFile(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != ".obj") {
+    unlessUnsaved([this, file] { openScene(file); });
+    return;
+  }
+  // An OBJ joins the open scene as a mesh object where the camera looks (as the scene panel's
+  // "+ OBJ mesh…"), read by the loader.
+  SceneObject o;
+  o.shape = Shape::mesh;
+  o.name = file.stem().string();
+  o.file = file.string();
+  o.color = {0.75, 0.75, 0.78};
+  o.transform.translate = s_.doc.scene().camera.vrp;
+  s_.objectToLoad = std::move(o);
+  setStatus("adding " + file.string() + " …", false);
+  requestFrames(2);
+}
+
+void Viewer::useFileChooser(std::unique_ptr<FileChooser> chooser, bool browser) {
+  dialog_ = std::move(chooser);
+  browser_ = browser;
+}
+
+Image Viewer::exportImage(ViewKind kind, int width, int height) {
+  const GLint previous = [&] {
+    GLint fb = 0;
+    ctx_.gl().GetIntegerv(GL_FRAMEBUFFER_BINDING, &fb);
+    return fb;
+  }();
+  Image image = renderImage(renderer_, s_.doc.shown(), shownViewRequest(s_, kind, width, height, uiScale_));
+  ctx_.gl().BindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+  return image;
+}
+
+UrlState Viewer::urlState() const {
+  UrlState u;
+  if (!s_.doc.path().empty() && isBundled(s_.doc.path())) u.scene = s_.doc.path().stem().string();
+  u.camera = s_.doc.scene().camera;
+  u.cameraStyle = s_.frame.camera.style;
+  u.worldStyle = s_.frame.world.style;
+  u.npcStyle = s_.frame.npc.style;
+  u.worldOrbit = s_.frame.world.orbit;
+  u.npcOrbit = s_.frame.npc.orbit;
+  u.strategy = s_.pipeline.strategy;
+  return u;
+}
+
+void Viewer::showUrlState(const UrlState& link, bool atStart) {
+  auto showViews = [this, link] {
+    if (link.cameraStyle) s_.frame.camera.style = *link.cameraStyle;
+    if (link.worldStyle) s_.frame.world.style = *link.worldStyle;
+    if (link.npcStyle) s_.frame.npc.style = *link.npcStyle;
+    if (link.worldOrbit) s_.frame.world.orbit = *link.worldOrbit;
+    if (link.npcOrbit) s_.frame.npc.orbit = *link.npcOrbit;
+    if (link.strategy) s_.pipeline.strategy = *link.strategy;
+    runPipeline();
+    requestFrames(2);
+  };
+  const bool otherScene = !link.scene.empty() && link.scene != urlState().scene;
+  if (otherScene || (atStart && link.camera)) {
+    Scene scene = s_.doc.scene();
+    if (!link.scene.empty()) {
+      const auto preset = std::find_if(s_.presets.begin(), s_.presets.end(),
+                                       [&](const SceneFileInfo& p) { return p.file.stem() == link.scene; });
+      if (preset == s_.presets.end()) throw Error("the link's scene \"" + link.scene + "\" is not one of vplab's bundled scenes");
+      scene = loadScene(preset->file);
+    }
+    if (link.camera) scene.camera = *link.camera;
+    unlessUnsaved([this, scene = std::move(scene), showViews]() mutable {
+      startDocument(std::move(scene));
+      showViews();
+    });
+    return;
+  }
+  if (link.camera && *link.camera != s_.doc.scene().camera) s_.doc.scene().camera = *link.camera;
+  showViews();
+}
+
+void Viewer::forgetViewImages() {
+  for (ViewCache& c : viewCache_) c.stamp = {};
 }
 
 void Viewer::enableAutosave(const std::filesystem::path& directory, double delaySeconds) {

@@ -9,6 +9,7 @@
 #include "app/ui/autosave.h"
 #include "app/ui/file_dialog.h"
 #include "app/ui/loader.h"
+#include "app/ui/url_state.h"
 #include "app/ui/view_worker.h"
 #include "app/ui/viewer_state.h"
 #include "app/render/view_renderer.h"
@@ -83,7 +84,25 @@ class Viewer {
 
   /// Whether `file` is one of the scenes shipped with vplab (assets/scenes/): Save never writes there.
   bool isBundled(const std::filesystem::path& file) const;
-  const FileDialog& fileDialog() const { return dialog_; }
+  const FileChooser& fileDialog() const { return *dialog_; }
+  /// Replaces the ImGui file dialog (the browser's picker and downloads); `browser`: the shortcuts
+  /// the browser owns (Ctrl+S, Ctrl+O, Ctrl+N, Ctrl+Q, F11, F12) are left to it and Quit is not offered.
+  void useFileChooser(std::unique_ptr<FileChooser> chooser, bool browser);
+  /// Opens a file given by the platform (a drop, the browser's picker): an OBJ joins the scene as a
+  /// mesh object, anything else is opened as a scene (asking first when changes would be lost).
+  void openFile(const std::filesystem::path& file);
+  /// The view as File > Export draws it (the shown settings) at width × height pixels, with this
+  /// viewer's GL backend; the bound framebuffer stays bound.
+  Image exportImage(ViewKind kind, int width, int height);
+  /// What is shown, for a link (app/ui/url_state.h): the bundled scene's name, the camera, the
+  /// views' styles and observers, the clipping strategy.
+  UrlState urlState() const;
+  /// Shows a link's state. A named bundled scene starts a new document with the link's camera (at
+  /// start, or asking first when changes would be lost); a camera alone is an edit of the open
+  /// scene (undoable). Throws vplab::Error when the scene is not bundled or cannot be read.
+  void showUrlState(const UrlState& link, bool atStart);
+  /// Every view is drawn again in the next frame (the browser's frame-time benchmark).
+  void forgetViewImages();
 
   /// Written by F12 into the working directory; the runner reads the window back.
   bool screenshotRequested() const { return screenshotRequested_; }
@@ -107,12 +126,15 @@ class Viewer {
   /// far too slow for the new one; README "The viewer").
   void startDocument(Scene scene, bool dirty = false);
   void saveScene(const std::filesystem::path& file);
+  void writeScene(const std::filesystem::path& file);
+  void chooseFileToOpen();
   void saveAs();
   void loadingWindow();
   void recoveryDialog();
   void setStatus(std::string message, bool error);
   std::optional<Vec3> probePositionOf(ViewKind view) const;
   void orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const ViewCamera& observer, int w, int h, Vec2 mouse);
+  void recordHandles(ImVec2 origin, const ViewCamera& observer, ImVec2 fbScale);
   void worldInteraction(bool hovered, const ViewCamera& observer, int w, int h, Vec2 mouse);
   void morphInteraction(bool hovered);
   void cameraWindowContents();
@@ -139,7 +161,8 @@ class Viewer {
   gl::Texture differenceTexture_;
   /// The divide-first comparison is drawn into divideFirst_ again only after a new run of the pipeline.
   unsigned divideFirstRevision_ = 0;  // the run it was drawn from (0: none yet)
-  FileDialog dialog_;
+  std::unique_ptr<FileChooser> dialog_ = std::make_unique<FileDialog>();
+  bool browser_ = false;
   float uiScale_;
   int lastWidth_ = 0, lastHeight_ = 0;
   bool relayout_ = true;

@@ -267,6 +267,12 @@ TEST(Ui, DraggingThePrpHandleChangesPrpAndUndoRedoWork) {
     const ImVec4 r = v->state().rects.at("view.world");
     ASSERT_EQ(pickHandle(v->state().run, observer, w, h, Vec2(x - r.x, y - r.y), 12), Handle::prp);
   }
+  {  // The browser tests grab the handle at its recorded rect (ViewerState::rects "handle.prp").
+    const ImVec4 r = v->state().rects.at("handle.prp");
+    EXPECT_NEAR(r.x + r.z / 2, x, 1e-3);
+    EXPECT_NEAR(r.y + r.w / 2, y, 1e-3);
+    EXPECT_TRUE(v->state().rects.count("handle.vrp") && v->state().rects.count("handle.xmin"));
+  }
   const double dx = 40, dy = 25;
   v->drag(x, y, x + dx, y + dy);
   v->frames(1);
