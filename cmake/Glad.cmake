@@ -33,6 +33,9 @@ add_library(glad_gl STATIC "${GLAD_OUT}/gl/src/gl.c")
 target_include_directories(glad_gl SYSTEM PUBLIC "${GLAD_OUT}/gl/include")
 set_target_properties(glad_gl PROPERTIES POSITION_INDEPENDENT_CODE ON)
 
+if(EMSCRIPTEN)
+  return()  # the browser has WebGL2 only: no EGL
+endif()
 add_library(glad_egl STATIC "${GLAD_OUT}/egl/src/egl.c")
 target_include_directories(glad_egl SYSTEM PUBLIC "${GLAD_OUT}/egl/include")
 target_link_libraries(glad_egl PUBLIC ${CMAKE_DL_LIBS})

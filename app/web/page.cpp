@@ -1,0 +1,279 @@
+// The lab as a web page (README "In the browser"): the browser's counterpart of `vplab` (app/cli.cpp)
+// and of the window's event loop (app/ui/run_viewer.cpp). The viewer, its panels, views and GL
+// backend are the desktop's; what differs is only how frames are driven and where files go.
+//
+// Frames: the browser calls `tick` before each repaint (requestAnimationFrame). Like the window's
+// loop it draws only when something changed (input, a resize, the viewer's wakeIn: an animation,
+// ImGui settling, the text cursor), so an idle page costs a few checks per repaint and no drawing.
+//
+// index.html calls the exported functions at the end (vplab_*) with the Page's address, which it
+// gets at start: the page's state lives in one owned struct, not in globals.
+#include "app/context/context_glfw.h"
+#include "app/gl/render_target.h"
+#include "app/ui/viewer.h"
+#include "app/ui/window_input.h"
+#include "app/web/page_services.h"
+#include "pipeline/dump.h"
+#include "pipeline/error.h"
+#include "pipeline/scene_io.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <emscripten.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <memory>
+
+namespace vplab {
+
+namespace {
+
+constexpr int kSettleFrames = 3;  // as the window's loop: ImGui shows the effect of input over ~2 frames
+constexpr double kLongestWait = 60.0;
+
+}  // namespace
+
+struct Page {
+  // The canvas's pixels are screen pixels (devicePixelRatio × CSS pixels); the UI scale follows
+  // the ratio, so text and handles keep their size on a high-DPI screen.
+  double pixelRatio = std::clamp(page::devicePixelRatio(), 1.0, 4.0);
+  GlfwWindow window{1280, 720, "vplab", false};
+  Viewer viewer{window, defaultScene(), float(pixelRatio)};
+  GlfwBackend backend{window.handle()};
+  WindowInput input{window.handle()};
+  page::BrowserFiles* files = nullptr;  // owned by the viewer
+  double nextWake = 0;                  // emscripten_get_now() ms at which the viewer wants a frame
+  unsigned frames = 0;
+  std::string shownHash, shownTitle;
+  bool shownUnsaved = false;
+  std::string reply;  // the last string handed to JavaScript (valid until the next call)
+
+  Page() {
+    auto chooser = std::make_unique<page::BrowserFiles>();
+    files = chooser.get();
+    viewer.useFileChooser(std::move(chooser), /*browser=*/true);
+    showLink(page::locationHash(), /*atStart=*/true);
+  }
+
+  /// A link's state (app/ui/url_state.h); a fragment that is not understood is said in the status line.
+  void showLink(const std::string& fragment, bool atStart) {
+    if (fragment.empty() || fragment == shownHash) return;
+    try {
+      viewer.showUrlState(decodeUrlState(fragment), atStart);
+    } catch (const Error& e) {
+      viewer.state().status = e.what();
+      viewer.state().statusIsError = true;
+    }
+    input.changed = true;
+  }
+
+  /// Follows devicePixelRatio (browser zoom, a window moved to another screen) with the UI scale.
+  void followPixelRatio() {
+    const double ratio = std::clamp(page::devicePixelRatio(), 1.0, 4.0);
+    if (ratio == pixelRatio) return;
+    viewer.state().uiScale = float(viewer.state().uiScale * ratio / pixelRatio);
+    pixelRatio = ratio;
+    input.changed = true;
+  }
+
+  void tick() {
+    followPixelRatio();
+    int w = 0, h = 0;
+    window.framebufferSize(w, h);  // resizes the canvas to the page first
+    const double now = emscripten_get_now();
+    if (input.changed || !input.queue.empty()) viewer.requestFrames(kSettleFrames);
+    const bool due = input.changed || !input.queue.empty() || viewer.wakeIn() <= 0 || now >= nextWake;
+    if (!due) return;  // idle: nothing is drawn
+    input.changed = false;
+    drawFrame(w, h);
+    nextWake = emscripten_get_now() + 1000 * std::min(viewer.wakeIn(), kLongestWait);
+  }
+
+  void drawFrame(int w, int h) {
+    viewer.makeCurrent();
+    ImGui_ImplGlfw_NewFrame();
+    input.queue.feed(ImGui::GetIO());
+    if (w > 0 && h > 0) viewer.frame(0, w, h);
+    ++frames;
+    if (viewer.screenshotRequested()) {
+      const std::filesystem::path file = "/downloads/vplab-screenshot.png";
+      std::error_code ec;
+      std::filesystem::create_directories(file.parent_path(), ec);
+      writePng(gl::readPixels(window.gl(), 0, w, h), file);
+      page::download(file, file.filename().string());
+      viewer.screenshotTaken(file.filename().string());
+    }
+    afterFrame();
+  }
+
+  /// The page around the canvas follows what the frame showed: the title, the link, the warning
+  /// before leaving with unsaved changes; and the first frame resolves window.vplab.ready.
+  void afterFrame() {
+    if (viewer.title() != shownTitle) page::setPageTitle(shownTitle = viewer.title());
+    const std::string hash = encodeUrlState(viewer.urlState());
+    if (hash != shownHash) page::replaceLocationHash(shownHash = hash);
+    const bool unsaved = viewer.state().doc.dirty();
+    if (unsaved != shownUnsaved) page::setUnsavedChanges(shownUnsaved = unsaved);
+    if (frames == 1) page::firstFrameDrawn();
+  }
+
+  /// The state the browser tests read (window.vplab.state()).
+  std::string stateJson() {
+    const ViewerState& s = viewer.state();
+    const Camera& c = s.doc.scene().camera;
+    nlohmann::json j;
+    j["frames"] = frames;
+    j["viewsDrawn"] = viewer.viewsDrawn();
+    j["title"] = viewer.title();
+    j["scene"] = s.doc.path().string();
+    j["dirty"] = s.doc.dirty();
+    j["status"] = s.status;
+    j["statusIsError"] = s.statusIsError;
+    j["hash"] = shownHash;
+    j["camera"] = {{"vrp", {c.vrp.x, c.vrp.y, c.vrp.z}},
+                   {"prp", {c.prp.x, c.prp.y, c.prp.z}},
+                   {"vup", {c.vup.x, c.vup.y, c.vup.z}},
+                   {"window", {c.window.xmin, c.window.xmax, c.window.ymin, c.window.ymax}},
+                   {"front", c.front},
+                   {"back", c.back},
+                   {"projection", toString(c.projection)}};
+    nlohmann::json rects = nlohmann::json::object();
+    for (const auto& [id, r] : s.rects) rects[id] = {r.x, r.y, r.z, r.w};
+    j["rects"] = std::move(rects);
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window.handle(), &w, &h);
+    j["canvas"] = {w, h};
+    j["devicePixelRatio"] = pixelRatio;
+    j["loading"] = viewer.loader().busy();
+    return j.dump();
+  }
+};
+
+namespace {
+
+void tick(void* arg) {
+  auto* p = static_cast<Page*>(arg);
+  try {
+    p->tick();
+  } catch (const std::exception& e) {
+    emscripten_cancel_main_loop();
+    page::showFatalError(std::string("vplab stopped: ") + e.what());
+  }
+}
+
+}  // namespace
+
+}  // namespace vplab
+
+using vplab::Page;
+
+int main() {
+  try {
+    auto* page = new Page();  // lives as long as the page: the browser drives it from now on
+    EM_ASM({ vplabPage.started($0); }, page);
+    emscripten_set_main_loop_arg(vplab::tick, page, 0, false);
+  } catch (const std::exception& e) {
+    vplab::page::showFatalError(std::string("vplab could not start: ") + e.what());
+    return 1;
+  }
+  return 0;
+}
+
+// ---------------------------------------------------------------- called by index.html
+extern "C" {
+
+/// The user picked `file` (copied to /uploads) in the picker the viewer opened; a drop when it opened none.
+EMSCRIPTEN_KEEPALIVE void vplab_file_chosen(Page* p, const char* file) {
+  if (!p->files->chosen(file)) p->viewer.openFile(file);
+  p->input.changed = true;
+}
+
+/// A file dropped on the page (copied to /uploads).
+EMSCRIPTEN_KEEPALIVE void vplab_file_dropped(Page* p, const char* file) {
+  p->viewer.openFile(file);
+  p->input.changed = true;
+}
+
+/// A message from the page's side (a file too large to read, a file that could not be read).
+EMSCRIPTEN_KEEPALIVE void vplab_status(Page* p, const char* message, int error) {
+  p->viewer.state().status = message;
+  p->viewer.state().statusIsError = error != 0;
+  p->input.changed = true;
+}
+
+/// A touch as the mouse: one finger moves the pointer (canvas pixels) with the left button held
+/// (`down` 1) or released (0); -1 moves only.
+EMSCRIPTEN_KEEPALIVE void vplab_pointer(Page* p, double x, double y, int down) {
+  p->input.queue.mouseMove(x, y);
+  if (down >= 0) p->input.queue.mouseButton(0, down == 1);
+}
+
+/// A pinch as the mouse wheel: steps > 0 zoom in.
+EMSCRIPTEN_KEEPALIVE void vplab_wheel(Page* p, double x, double y, double steps) {
+  p->input.queue.mouseMove(x, y);
+  p->input.queue.wheel(0, steps);
+}
+
+/// The address's fragment changed (a link pasted, the back button): shown unless it is the page's own.
+EMSCRIPTEN_KEEPALIVE void vplab_hash_changed(Page* p, const char* fragment) { p->showLink(fragment, false); }
+
+EMSCRIPTEN_KEEPALIVE const char* vplab_state_json(Page* p) { return (p->reply = p->stateJson()).c_str(); }
+
+/// Writes a PNG of `view` at width × height as File > Export draws it; returns its path in the
+/// in-memory file system, or "" with the error in the status line.
+EMSCRIPTEN_KEEPALIVE const char* vplab_export_png(Page* p, const char* view, int width, int height) {
+  p->reply.clear();
+  try {
+    const auto kind = vplab::viewKindFromString(view);
+    if (!kind) throw vplab::Error(std::string("no view \"") + view + "\"");
+    if (width < 1 || height < 1 || width > 8192 || height > 8192)
+      throw vplab::Error("an exported view has 1 to 8192 pixels a side, not " + std::to_string(width) + " × " + std::to_string(height));
+    p->window.makeCurrent();
+    const std::filesystem::path file = "/exports/vplab-" + std::string(view) + ".png";
+    std::error_code ec;
+    std::filesystem::create_directories(file.parent_path(), ec);
+    vplab::writePng(p->viewer.exportImage(*kind, width, height), file);
+    p->reply = file.string();
+  } catch (const std::exception& e) {
+    vplab_status(p, e.what(), 1);
+  }
+  return p->reply.c_str();
+}
+
+/// The open scene as File > Save writes it.
+EMSCRIPTEN_KEEPALIVE const char* vplab_scene_text(Page* p) {
+  return (p->reply = vplab::sceneToJson(p->viewer.state().doc.scene())).c_str();
+}
+
+/// The CPU pipeline's dump of the open scene, as `vplab dump --scene FILE` prints it for its file.
+EMSCRIPTEN_KEEPALIVE const char* vplab_dump(Page* p) {
+  try {
+    p->reply = vplab::dumpJson(vplab::runPipeline(p->viewer.state().doc.scene(), vplab::PipelineOptions{}), 2);
+  } catch (const std::exception& e) {
+    p->reply = std::string("error: ") + e.what();
+  }
+  return p->reply.c_str();
+}
+
+/// Draws `frames` frames that each draw the three views again; returns the milliseconds per frame
+/// (the GPU's work included: each frame ends with glFinish).
+EMSCRIPTEN_KEEPALIVE double vplab_bench_frames(Page* p, int frames) {
+  frames = std::clamp(frames, 1, 1000);
+  int w = 0, h = 0;
+  p->window.framebufferSize(w, h);
+  const double start = emscripten_get_now();
+  for (int i = 0; i < frames; ++i) {
+    p->viewer.forgetViewImages();
+    p->drawFrame(w, h);
+    p->window.gl().Finish();
+  }
+  return (emscripten_get_now() - start) / frames;
+}
+
+}  // extern "C"

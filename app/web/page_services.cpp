@@ -1,0 +1,82 @@
+#include "app/web/page_services.h"
+
+#include <emscripten.h>
+#include <emscripten/html5.h>
+
+#include <cstdlib>
+#include <memory>
+#include <system_error>
+
+namespace vplab::page {
+
+namespace {
+
+// The JavaScript halves (index.html defines window.vplabPage). Strings cross as UTF-8 pointers.
+// clang-format off
+EM_JS(void, jsPickFile, (const char* accept), { vplabPage.pickFile(UTF8ToString(accept)); });
+EM_JS(void, jsDownload, (const char* file, const char* name), { vplabPage.download(UTF8ToString(file), UTF8ToString(name)); });
+EM_JS(char*, jsLocationHash, (), {
+  var s = location.hash.replace(/^#/, ""); var n = lengthBytesUTF8(s) + 1; var p = _malloc(n);
+  stringToUTF8(s, p, n); return p;
+});
+EM_JS(void, jsReplaceLocationHash, (const char* fragment), { vplabPage.replaceHash(UTF8ToString(fragment)); });
+EM_JS(void, jsSetUnsaved, (int unsaved), { vplabPage.unsaved = !!unsaved; });
+EM_JS(void, jsFirstFrame, (), { vplabPage.firstFrame(); });
+EM_JS(void, jsSetTitle, (const char* title), { document.title = UTF8ToString(title); });
+EM_JS(void, jsFatal, (const char* message), { vplabPage.fatal(UTF8ToString(message)); });
+// clang-format on
+
+/// A file name the in-memory file system and the browser both take: the last path part, without
+/// control characters or slashes.
+std::string safeName(const std::filesystem::path& suggested, const char* fallback) {
+  std::string name = suggested.filename().string();
+  std::string out;
+  for (char c : name)
+    if (static_cast<unsigned char>(c) >= 0x20 && c != '/' && c != '\\' && c != 0x7f) out += c;
+  if (out.empty() || out == "." || out == "..") out = fallback;
+  return out.substr(0, 200);
+}
+
+}  // namespace
+
+void BrowserFiles::open(std::string /*title*/, Mode mode, std::vector<std::string> extensions,
+                        std::filesystem::path start, std::function<void(const std::filesystem::path&)> onChosen) {
+  if (mode == Mode::open) {
+    std::string accept;
+    for (const std::string& e : extensions) accept += (accept.empty() ? "" : ",") + e;
+    pending_ = std::move(onChosen);
+    jsPickFile(accept.c_str());
+    return;
+  }
+  const std::string name = safeName(start, extensions.empty() ? "vplab-file" : ("vplab" + extensions.front()).c_str());
+  const std::filesystem::path dir = "/downloads";
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  const std::filesystem::path file = dir / name;
+  onChosen(file);  // writes it (and says so in the status line, or the error)
+  if (std::filesystem::exists(file, ec)) download(file, name);
+}
+
+bool BrowserFiles::chosen(const std::filesystem::path& file) {
+  if (!pending_) return false;
+  auto callback = std::move(pending_);
+  pending_ = nullptr;
+  callback(file);
+  return true;
+}
+
+void download(const std::filesystem::path& file, const std::string& name) { jsDownload(file.c_str(), name.c_str()); }
+
+std::string locationHash() {
+  std::unique_ptr<char, decltype(&std::free)> text(jsLocationHash(), &std::free);
+  return text ? std::string(text.get()) : std::string();
+}
+
+void replaceLocationHash(const std::string& fragment) { jsReplaceLocationHash(fragment.c_str()); }
+void setUnsavedChanges(bool unsaved) { jsSetUnsaved(unsaved ? 1 : 0); }
+void firstFrameDrawn() { jsFirstFrame(); }
+void setPageTitle(const std::string& title) { jsSetTitle(title.c_str()); }
+void showFatalError(const std::string& message) { jsFatal(message.c_str()); }
+double devicePixelRatio() { return emscripten_get_device_pixel_ratio(); }
+
+}  // namespace vplab::page

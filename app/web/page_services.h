@@ -1,0 +1,50 @@
+// The page's services, the browser's side of what the desktop does with files and its window title
+// (README "In the browser"): the file picker and drag and drop (the files land in the in-memory file
+// system under /uploads), downloads (saved scenes and exported views are written under /downloads,
+// handed to the browser and removed), the address's fragment (the link to what is shown), and the
+// warning before a page with unsaved changes is left. The DOM side is in index.html (vplabPage).
+#pragma once
+
+#include "app/ui/file_dialog.h"
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace vplab::page {
+
+/// The browser's FileChooser: open mode clicks the page's hidden file input and calls back when the
+/// picked file has been copied into /uploads; save mode writes the file under /downloads, then the
+/// browser downloads it under the suggested name.
+class BrowserFiles final : public FileChooser {
+ public:
+  void open(std::string title, Mode mode, std::vector<std::string> extensions, std::filesystem::path start,
+            std::function<void(const std::filesystem::path&)> onChosen) override;
+  bool isOpen() const override { return false; }  // the browser's picker is the browser's
+  bool downloads() const override { return true; }
+  /// The page copied the picked file to `file`: the pending open goes on. Returns false when no
+  /// open was asked for (the file is then opened as a dropped one).
+  bool chosen(const std::filesystem::path& file);
+
+ private:
+  std::function<void(const std::filesystem::path&)> pending_;
+};
+
+/// Hands `file` (in the in-memory file system) to the browser as a download named `name`, then removes it.
+void download(const std::filesystem::path& file, const std::string& name);
+/// location.hash without '#'.
+std::string locationHash();
+/// Replaces the fragment without a new history entry (the back button does not step through drags).
+void replaceLocationHash(const std::string& fragment);
+/// The page asks before it is left (closed, reloaded, navigated away) while `unsaved`.
+void setUnsavedChanges(bool unsaved);
+/// The first frame is on the canvas: resolves window.vplab.ready and notes the time.
+void firstFrameDrawn();
+/// The page's document.title.
+void setPageTitle(const std::string& title);
+/// Says on the page, over the canvas, that the lab stopped (an unexpected error); also console.error.
+void showFatalError(const std::string& message);
+/// window.devicePixelRatio (1 on a plain screen, 2 on most laptops' and tablets' screens).
+double devicePixelRatio();
+
+}  // namespace vplab::page
