@@ -3,13 +3,16 @@
 #include "pipeline/error.h"
 #include "pipeline/scene_io.h"
 
+#include <system_error>
+
 namespace vplab {
 
 SceneLoader::SceneLoader() : reader_([](const std::filesystem::path& f) { return loadScene(f); }) {}
 
 SceneLoader::~SceneLoader() {
   cancel();
-  for (auto& j : abandoned_) j->worker.join();
+  for (auto& j : abandoned_)
+    if (j->worker.joinable()) j->worker.join();
 }
 
 void SceneLoader::start(std::filesystem::path file) {
@@ -30,14 +33,19 @@ void SceneLoader::run(std::filesystem::path file, std::function<void(Loaded&)> w
   job->file = std::move(file);
   job->started = std::chrono::steady_clock::now();
   Job* j = job.get();  // owned by job_ or abandoned_ until the worker has been joined
-  j->worker = std::thread([j, work = std::move(work)] {
+  auto load = [j, work = std::move(work)] {
     try {
       work(j->result);
     } catch (const std::exception& e) {  // vplab::Error names the file; anything else gets named here
       j->result.error = dynamic_cast<const Error*>(&e) ? e.what() : j->file.string() + ": " + e.what();
     }
     j->done.store(true, std::memory_order_release);
-  });
+  };
+  try {
+    j->worker = std::thread(load);
+  } catch (const std::system_error&) {
+    load();  // no thread can be started (the browser build has none): the load runs here, at once
+  }
   job_ = std::move(job);
 }
 
@@ -49,7 +57,7 @@ void SceneLoader::cancel() {
 void SceneLoader::reap() {
   for (auto it = abandoned_.begin(); it != abandoned_.end();) {
     if ((*it)->done.load(std::memory_order_acquire)) {
-      (*it)->worker.join();
+      if ((*it)->worker.joinable()) (*it)->worker.join();
       it = abandoned_.erase(it);
     } else {
       ++it;
@@ -70,7 +78,7 @@ double SceneLoader::elapsed() const {
 std::optional<SceneLoader::Loaded> SceneLoader::poll() {
   reap();
   if (!job_ || !job_->done.load(std::memory_order_acquire)) return std::nullopt;
-  job_->worker.join();
+  if (job_->worker.joinable()) job_->worker.join();
   std::unique_ptr<Job> job = std::move(job_);
   return std::move(job->result);
 }
