@@ -432,7 +432,11 @@ void Viewer::orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const V
     s_.drag = {Drag::Kind::orbit, view, Handle::none};
   if (hovered && (ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsMouseClicked(ImGuiMouseButton_Middle)))
     s_.drag = {Drag::Kind::pan, view, Handle::none};
-  if (s_.drag.view == view) {
+  // The frame of the press moves nothing: a touch lands far from where the last one lifted, and
+  // MouseDelta holds that jump, not a drag.
+  const bool pressedNow = ImGui::IsMouseClicked(ImGuiMouseButton_Left) || ImGui::IsMouseClicked(ImGuiMouseButton_Right) ||
+                          ImGui::IsMouseClicked(ImGuiMouseButton_Middle);
+  if (s_.drag.view == view && !pressedNow) {
     if (s_.drag.kind == Drag::Kind::orbit) orbitBy(orbit, io.MouseDelta.x * 0.4, io.MouseDelta.y * 0.4);
     if (s_.drag.kind == Drag::Kind::pan) panBy(orbit, io.MouseDelta.x / h, io.MouseDelta.y / h);
   }
@@ -444,7 +448,7 @@ void Viewer::morphInteraction(bool hovered) {
   // The morph's observer frames the scene by itself: only its angles are dragged.
   ImGuiIO& io = ImGui::GetIO();
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) s_.drag = {Drag::Kind::orbit, ViewKind::morph, Handle::none};
-  if (s_.drag.view == ViewKind::morph && s_.drag.kind == Drag::Kind::orbit)
+  if (s_.drag.view == ViewKind::morph && s_.drag.kind == Drag::Kind::orbit && !ImGui::IsMouseClicked(ImGuiMouseButton_Left))
     orbitBy(s_.frame.morphing.orbit, io.MouseDelta.x * 0.4, io.MouseDelta.y * 0.4);
 }
 
@@ -471,7 +475,7 @@ void Viewer::worldInteraction(bool hovered, const ViewCamera& observer, int w, i
     s_.drag = {Drag::Kind::handle, ViewKind::world, s_.hovered};
   if (s_.drag.kind == Drag::Kind::handle) {
     const ImVec2 d = ImGui::GetIO().MouseDelta;
-    if (d.x != 0 || d.y != 0)
+    if ((d.x != 0 || d.y != 0) && !ImGui::IsMouseClicked(ImGuiMouseButton_Left))  // as orbitInteraction
       dragHandle(s_.doc.scene().camera, s_.run, s_.drag.handle, observer, h, Vec2(d.x, d.y),
                  s_.keepAspect ? std::optional(s_.doc.scene().device.aspect()) : std::nullopt);
     return;

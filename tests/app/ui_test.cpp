@@ -473,3 +473,30 @@ TEST(Ui, StyleKeysSetEveryView) {
 
 }  // namespace
 }  // namespace vplab
+
+namespace vplab {
+namespace {
+
+// A touch lands far from where the last one lifted: the frame of the press holds that jump in
+// ImGui's MouseDelta, which must not turn the observer (only the motion after the press does).
+TEST(Ui, APressFarFromTheLastPointerPositionDoesNotTurnTheWorldView) {
+  auto v = makeViewer();
+  const PixelRect r = rectOf(*v, "view.world");
+  const double x0 = r.x + r.w * 0.2, y0 = r.y + r.h * 0.85, x1 = r.x + r.w * 0.8, y1 = r.y + r.h * 0.15;
+  v->mouseMove(x0, y0);
+  v->frames(2);
+  const Orbit before = v->state().frame.world.orbit;
+  v->mouseMove(x1, y1);  // the jump and the press in one frame, as a touch arrives
+  v->mouseButton(0, true);
+  v->frame();
+  EXPECT_EQ(v->state().frame.world.orbit, before);
+  v->mouseMove(x1 + 10, y1);
+  v->frame();
+  v->mouseButton(0, false);
+  v->frame();
+  EXPECT_NEAR(v->state().frame.world.orbit.yawDeg, before.yawDeg - 4, 1e-9) << "10 px at 0.4 degrees per pixel";
+  EXPECT_EQ(v->state().frame.world.orbit.pitchDeg, before.pitchDeg);
+}
+
+}  // namespace
+}  // namespace vplab
