@@ -453,3 +453,63 @@ TEST(Autosave, DefaultDirectoryFollowsXdgStateHome) {
 
 }  // namespace
 }  // namespace vplab
+
+// ---------------------------------------------------------------- the browser's files (issue 13)
+
+namespace vplab {
+namespace {
+
+/// A FileChooser as the page's: saving downloads (a new file each time, under the suggested name in
+/// `dir`), opening gives back `toOpen`. Records what it was asked.
+struct DownloadingChooser final : FileChooser {
+  fs::path dir, toOpen;
+  std::vector<std::pair<Mode, fs::path>> asked;
+  void open(std::string, Mode mode, std::vector<std::string>, fs::path start,
+            std::function<void(const fs::path&)> onChosen) override {
+    asked.emplace_back(mode, start);
+    onChosen(mode == Mode::save ? dir / start.filename() : toOpen);
+  }
+  bool isOpen() const override { return false; }
+  bool downloads() const override { return true; }
+};
+
+TEST(Browser, SaveIsANewDownloadEveryTimeAndTheBrowsersShortcutsAreLeftToIt) {
+  TempDir tmp;
+  auto v = makeViewer();
+  auto chooser = std::make_unique<DownloadingChooser>();
+  DownloadingChooser& c = *chooser;
+  c.dir = tmp.path;
+  c.toOpen = preset("parallel.json");
+  v->viewer().useFileChooser(std::move(chooser), /*browser=*/true);
+  v->frames(2);
+  v->key(keys::kS, /*ctrl=*/true);  // the browser's own "save page": the viewer does nothing
+  v->key(keys::kO, /*ctrl=*/true);
+  EXPECT_TRUE(c.asked.empty());
+
+  v->key(keys::kP);  // an edit
+  clickId(*v, "menu.file");
+  v->frames(2);
+  clickId(*v, "menu.save");
+  v->frames(2);
+  ASSERT_EQ(c.asked.size(), 1u);
+  EXPECT_EQ(c.asked[0].second, "lecture-scene.json") << "the built-in scene downloads under a name of its own";
+  EXPECT_EQ(loadScene(tmp.path / "lecture-scene.json").camera, v->state().doc.scene().camera);
+  EXPECT_FALSE(v->state().doc.dirty());
+
+  clickId(*v, "menu.file");  // again: a second download, though the document now has a path
+  v->frames(2);
+  clickId(*v, "menu.save");
+  v->frames(2);
+  EXPECT_EQ(c.asked.size(), 2u);
+
+  clickId(*v, "menu.file");  // Open asks the page's picker for a scene or an OBJ
+  v->frames(2);
+  clickId(*v, "menu.open");
+  framesWhileLoading(*v);
+  ASSERT_EQ(c.asked.size(), 3u);
+  EXPECT_EQ(c.asked[2].first, FileChooser::Mode::open);
+  EXPECT_EQ(v->state().doc.path(), preset("parallel.json"));
+}
+
+}  // namespace
+}  // namespace vplab
