@@ -17,12 +17,14 @@ namespace {
 
 std::string reason() { return std::strerror(errno); }
 
-/// The mode a newly created file gets (0666 less the umask). umask can only be read by setting it,
-/// so it is set back at once; the viewer has a single thread writing files.
+/// The mode a newly created file gets (0666 less the umask), always readable and writable by its
+/// owner: emscripten's file system (the browser build) reports a umask of 0777, which would leave
+/// a saved scene unreadable. umask can only be read by setting it, so it is set back at once; the
+/// viewer has a single thread writing files.
 mode_t newFileMode() {
   const mode_t mask = ::umask(0);
   ::umask(mask);
-  return 0666 & ~mask;
+  return (0666 & ~mask) | S_IRUSR | S_IWUSR;
 }
 
 }  // namespace

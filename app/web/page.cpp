@@ -27,6 +27,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <iostream>
 #include <memory>
 
@@ -36,6 +38,12 @@ namespace {
 
 constexpr int kSettleFrames = 3;  // as the window's loop: ImGui shows the effect of input over ~2 frames
 constexpr double kLongestWait = 60.0;
+constexpr double kAutosaveDelay = 3.0;  // seconds after the last change, as the desktop's
+// The autosave's directory in the in-memory file system, mirrored to localStorage after each frame.
+// A recovery file brought back from localStorage is named for process 0, which never runs: the
+// viewer's Autosave::find offers it, as a file left by a session that ended.
+const std::filesystem::path kStateDir = "/state/vplab";
+const std::filesystem::path kKeptRecovery = kStateDir / "recovery-0.json";
 
 }  // namespace
 
@@ -52,6 +60,7 @@ struct Page {
   unsigned frames = 0;
   std::string shownHash, shownTitle;
   bool shownUnsaved = false;
+  std::string storedAutosave;  // what localStorage holds (empty: nothing)
   std::string reply;  // the last string handed to JavaScript (valid until the next call)
 
   Page() {
@@ -59,6 +68,42 @@ struct Page {
     files = chooser.get();
     viewer.useFileChooser(std::move(chooser), /*browser=*/true);
     showLink(page::locationHash(), /*atStart=*/true);
+    startAutosave();
+  }
+
+  /// Unsaved changes of an earlier visit are offered back (the recovery dialog); from now on this
+  /// visit's are autosaved.
+  void startAutosave() {
+    std::error_code ec;
+    std::filesystem::create_directories(kStateDir, ec);
+    const std::string kept = page::storedRecovery();
+    if (!kept.empty()) {
+      std::ofstream(kKeptRecovery, std::ios::binary) << kept;
+      storedAutosave = kept;
+      if (auto recovery = Autosave::find(kStateDir)) viewer.offerRecovery(*recovery);
+    }
+    viewer.enableAutosave(kStateDir, kAutosaveDelay);
+  }
+
+  /// localStorage follows the autosave file: written when it was, removed when the session has
+  /// nothing unsaved any more (saved, discarded, recovered and saved). Frames are drawn only on a
+  /// change, and the file is a scene without its meshes (a few kB): it is read and compared.
+  void mirrorAutosave() {
+    const Autosave* autosave = viewer.autosave();
+    if (!autosave) return;
+    std::ifstream in(autosave->file(), std::ios::binary);
+    if (in) {
+      std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      if (text == storedAutosave) return;
+      if (!page::storeRecovery(text)) {
+        viewer.state().status = "the browser keeps no autosave of this scene (its localStorage is full or disabled)";
+        viewer.state().statusIsError = true;
+      }
+      storedAutosave = std::move(text);
+    } else if (!storedAutosave.empty() && !viewer.recoveryOffered()) {
+      page::storeRecovery("");
+      storedAutosave.clear();
+    }
   }
 
   /// A link's state (app/ui/url_state.h); a fragment that is not understood is said in the status line.
@@ -115,6 +160,7 @@ struct Page {
   /// The page around the canvas follows what the frame showed: the title, the link, the warning
   /// before leaving with unsaved changes; and the first frame resolves window.vplab.ready.
   void afterFrame() {
+    mirrorAutosave();
     if (viewer.title() != shownTitle) page::setPageTitle(shownTitle = viewer.title());
     const std::string hash = encodeUrlState(viewer.urlState());
     if (hash != shownHash) page::replaceLocationHash(shownHash = hash);
@@ -151,6 +197,7 @@ struct Page {
     j["canvas"] = {w, h};
     j["devicePixelRatio"] = pixelRatio;
     j["loading"] = viewer.loader().busy();
+    j["recoveryOffered"] = viewer.recoveryOffered();
     return j.dump();
   }
 };

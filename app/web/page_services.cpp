@@ -19,6 +19,19 @@ EM_JS(char*, jsLocationHash, (), {
   var s = location.hash.replace(/^#/, ""); var n = lengthBytesUTF8(s) + 1; var p = _malloc(n);
   stringToUTF8(s, p, n); return p;
 });
+EM_JS(char*, jsStoredRecovery, (), {
+  var s = null;
+  try { s = localStorage.getItem("vplab.recovery"); } catch (e) {}
+  if (s === null) return 0;
+  var n = lengthBytesUTF8(s) + 1; var p = _malloc(n); stringToUTF8(s, p, n); return p;
+});
+EM_JS(int, jsStoreRecovery, (const char* text), {
+  try {
+    var s = UTF8ToString(text);
+    if (s === "") localStorage.removeItem("vplab.recovery"); else localStorage.setItem("vplab.recovery", s);
+    return 1;
+  } catch (e) { return 0; }
+});
 EM_JS(void, jsReplaceLocationHash, (const char* fragment), { vplabPage.replaceHash(UTF8ToString(fragment)); });
 EM_JS(void, jsSetUnsaved, (int unsaved), { vplabPage.unsaved = !!unsaved; });
 EM_JS(void, jsFirstFrame, (), { vplabPage.firstFrame(); });
@@ -71,6 +84,13 @@ std::string locationHash() {
   std::unique_ptr<char, decltype(&std::free)> text(jsLocationHash(), &std::free);
   return text ? std::string(text.get()) : std::string();
 }
+
+std::string storedRecovery() {
+  std::unique_ptr<char, decltype(&std::free)> text(jsStoredRecovery(), &std::free);
+  return text ? std::string(text.get()) : std::string();
+}
+
+bool storeRecovery(const std::string& text) { return jsStoreRecovery(text.c_str()) != 0; }
 
 void replaceLocationHash(const std::string& fragment) { jsReplaceLocationHash(fragment.c_str()); }
 void setUnsavedChanges(bool unsaved) { jsSetUnsaved(unsaved ? 1 : 0); }

@@ -1,8 +1,8 @@
 // The page's services, the browser's side of what the desktop does with files and its window title
 // (README "In the browser"): the file picker and drag and drop (the files land in the in-memory file
 // system under /uploads), downloads (saved scenes and exported views are written under /downloads,
-// handed to the browser and removed), the address's fragment (the link to what is shown), and the
-// warning before a page with unsaved changes is left. The DOM side is in index.html (vplabPage).
+// handed to the browser and removed), the address's fragment (the link to what is shown), the
+// autosave kept in localStorage, and the warning before a page with unsaved changes is left. The DOM side is in index.html (vplabPage).
 #pragma once
 
 #include "app/ui/file_dialog.h"
@@ -44,6 +44,13 @@ void firstFrameDrawn();
 void setPageTitle(const std::string& title);
 /// Says on the page, over the canvas, that the lab stopped (an unexpected error); also console.error.
 void showFatalError(const std::string& message);
+/// The recovery file kept in the browser's localStorage (under "vplab.recovery"), the page's
+/// counterpart of the desktop's state directory: the autosave of unsaved changes survives a closed
+/// tab, a crash or a reload. Empty when none is kept.
+std::string storedRecovery();
+/// Keeps `text` (the autosave file's content) in localStorage; an empty text removes it. Returns
+/// false when the browser refused (storage full or disabled).
+bool storeRecovery(const std::string& text);
 /// window.devicePixelRatio (1 on a plain screen, 2 on most laptops' and tablets' screens).
 double devicePixelRatio();
 
