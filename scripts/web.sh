@@ -45,7 +45,7 @@ if [ ! -f "$imgui/imgui.cpp" ]; then
   printf 'Types: deb-src\nURIs: %s\nSuites: %s\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' \
     "$uri" "$suite" > "$apt_dir/sources/debian-src.sources"
   apt_opts=(-o Dir::Etc::SourceList=/dev/null -o "Dir::Etc::SourceParts=$apt_dir/sources"
-            -o "Dir::State::Lists=$apt_dir/lists" -o Debug::NoLocking=1)
+            -o "Dir::State::Lists=$apt_dir/lists" -o "Dir::Cache=$apt_dir/cache" -o Debug::NoLocking=1)
   apt-get "${apt_opts[@]}" update -q >&2
   # The version the desktop links (libimgui-dev), from the same suite.
   version=$(dpkg-query -W -f='${source:Version}' libimgui-dev 2>/dev/null || true)
