@@ -733,7 +733,9 @@ Image Viewer::exportImage(ViewKind kind, int width, int height) {
 
 UrlState Viewer::urlState() const {
   UrlState u;
-  if (!s_.doc.path().empty() && isBundled(s_.doc.path())) u.scene = s_.doc.path().stem().string();
+  // The built-in scene is the bundled default.json (the same dump): a link names it as "default".
+  if (s_.doc.path().empty()) u.scene = "default";
+  else if (isBundled(s_.doc.path())) u.scene = s_.doc.path().stem().string();
   u.camera = s_.doc.scene().camera;
   u.cameraStyle = s_.frame.camera.style;
   u.worldStyle = s_.frame.world.style;

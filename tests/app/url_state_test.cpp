@@ -106,6 +106,7 @@ TEST(UrlState, HostileFragmentsAreNamedErrors) {
 TEST(UrlState, AViewerShowsALinkAsItWasWritten) {
   HeadlessViewer a(*test::egl().context, defaultScene(), 1280, 720);
   a.frames(2);
+  EXPECT_EQ(a.viewer().urlState().scene, "default") << "the built-in scene is the bundled default.json";
   a.viewer().showUrlState(decodeUrlState("scene=perspective&camera-style=wire&strategy=wc"), true);
   a.frames(2);
   Camera& c = a.state().doc.scene().camera;
