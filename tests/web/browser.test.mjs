@@ -1,0 +1,259 @@
+// vplab in a real browser (issue 13, section 3): the page scripts/web.sh builds, served from
+// 127.0.0.1 and driven in headless Chromium (WebGL2 on SwiftShader) through puppeteer-core, checked
+// against the desktop build's `vplab render` and `vplab dump`.
+//
+// VPLAB_WEB_DIR (default build-web/) is the page's directory, VPLAB_BIN (default build/vplab) the
+// desktop program. The tests run in order in one browser and share what they changed: (b) drags the
+// camera, (c) reopens that camera from its URL, (d) fails to open a file over it, (e) saves it.
+// A failed picture comparison writes actual, expected and difference PNGs into VPLAB_WEB_ARTIFACTS
+// (default $TMPDIR/vplab-web-artifacts) and names them.
+
+import assert from 'node:assert/strict';
+import { copyFileSync, existsSync, readFileSync, writeFileSync } from 'node:fs';
+import path from 'node:path';
+import { after, before, describe, test } from 'node:test';
+import { fileURLToPath } from 'node:url';
+
+import {
+  catchDownloads, click, comparePngs, cssRect, distinctColours, drag, exportPng, formatComparison,
+  keepArtifacts, launchBrowser, openPage, rectPoint, runVplab, startServer, tempDir, vplabBin, vplabState,
+  waitFrames, webDir,
+} from './support.mjs';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const scenesDir = path.resolve(here, '..', '..', 'assets', 'scenes');
+
+// The camera view's comparison with the desktop's `vplab render` (Mesa llvmpipe): the page draws with
+// ANGLE on SwiftShader. Both rasterise the same triangles with the same matrices (GLSL ES 3.00 from the
+// same shader sources), but the two rasterisers round edge coverage and interpolated values
+// differently: a pixel whose centre lies within a fraction of a pixel of an edge is covered by one and
+// not the other, so single edge pixels take the colour of the other side (a large channel difference,
+// hence the loose maximum), while the mean over the whole picture stays small. Measured against the
+// lead's build: see MEASURED below; the thresholds keep a margin above it, and the negative checks (a
+// moved camera, another scene) must exceed them.
+const MAX_CHANNEL_DIFF = 255; // edge pixels may flip between two unrelated colours
+const MEAN_CHANNEL_DIFF = 0.5; // mean |Δ| over every channel of every pixel, 0..255
+const MEASURED = 'not measured yet';
+
+const viewSize = [640, 480];
+
+/** Fails with the comparison's report (and keeps the pictures) when it exceeds the thresholds. */
+async function assertSimilar(name, actual, expected, { max = MAX_CHANNEL_DIFF, mean = MEAN_CHANNEL_DIFF } = {}) {
+  const comparison = comparePngs(actual, expected);
+  const report = formatComparison(comparison, { maxThreshold: max, meanThreshold: mean, label: name });
+  if (comparison.max > max || comparison.mean > mean) {
+    const kept = await keepArtifacts(name, { actual, expected, comparison });
+    assert.fail(`${report}\n  pictures: ${kept.join(', ')}`);
+  }
+  return { comparison, report };
+}
+
+/** Asserts that the comparison of two pictures that should differ exceeds the thresholds. */
+function assertDistinguished(name, actual, expected) {
+  const comparison = comparePngs(actual, expected);
+  const report = formatComparison(comparison, { maxThreshold: MAX_CHANNEL_DIFF, meanThreshold: MEAN_CHANNEL_DIFF, label: name });
+  assert.ok(comparison.max > MAX_CHANNEL_DIFF || comparison.mean > MEAN_CHANNEL_DIFF,
+    `the thresholds cannot tell a wrong picture from the right one:\n${report}`);
+  return report;
+}
+
+/** The desktop's `vplab render` of `scene` (a file; the built-in default scene when undefined). */
+async function desktopRender(dir, name, { scene, view = 'camera', size = viewSize } = {}) {
+  const out = path.join(dir, `${name}.png`);
+  await runVplab(['render', ...(scene ? ['--scene', scene] : []), '--view', view, '--size', `${size[0]}x${size[1]}`, '--out', out]);
+  return readFileSync(out);
+}
+
+function assertCleanConsole(messages, when) {
+  assert.deepEqual(messages, [], `the page logged errors or warnings ${when}:\n` +
+    messages.map((m) => `  ${m.type}: ${m.text} ${m.location}`).join('\n'));
+}
+
+describe('vplab in the browser', { concurrency: 1 }, () => {
+  let server;
+  let browser;
+  let work;
+  let page; // the page the tests drive, in turn replaced by (c)'s fresh page
+  let pageConsole;
+  let defaultCamera; // exportPng('camera') of the default scene as loaded (a)
+  let draggedHash; // state().hash after (b)'s drags
+
+  before(async () => {
+    assert.ok(existsSync(path.join(webDir, 'index.html')),
+      `${webDir}/index.html is missing: build the page with scripts/web.sh (or set VPLAB_WEB_DIR)`);
+    assert.ok(existsSync(vplabBin), `${vplabBin} is missing: build the desktop vplab (or set VPLAB_BIN)`);
+    work = tempDir('web-test');
+    server = await startServer(webDir);
+    browser = await launchBrowser();
+  });
+
+  after(async () => {
+    await browser?.close();
+    await server?.close();
+    work?.remove();
+  });
+
+  test('(a) the page loads cleanly, its canvas shows the UI, and its camera view matches vplab render', { timeout: 180_000 }, async () => {
+    ({ page, console: pageConsole } = await openPage(browser, server.url));
+    await waitFrames(page, 5);
+    const state = await vplabState(page);
+    assert.equal(state.scene, 'default', `state().scene of a page opened without a hash`);
+    assert.ok(state.viewsDrawn > 0, `state().viewsDrawn is ${state.viewsDrawn} after the first frame`);
+    const missing = server.requests.filter((r) => r.status !== 200);
+    assert.deepEqual(missing, [], 'the page asked the server for files it does not have');
+
+    // The canvas shows the UI: the window's screenshot has panels, text and three views, not one colour.
+    const screenshot = await page.screenshot({ type: 'png' });
+    writeFileSync(path.join(work.dir, 'page.png'), screenshot);
+    const colours = distinctColours(screenshot);
+    assert.ok(colours >= 32, `the page's screenshot has only ${colours} colours: the canvas is blank or nearly`);
+    for (const id of ['view.camera', 'view.world', 'view.npc', 'camera.vrp', 'menu.file']) {
+      assert.ok(state.rects?.[id], `state().rects has no "${id}": the UI is not drawn as the contract says`);
+    }
+
+    // The camera view as File > Export draws it, against the desktop's headless rendering.
+    defaultCamera = await exportPng(page, 'camera', ...viewSize);
+    const desktop = await desktopRender(work.dir, 'desktop-default');
+    const { report } = await assertSimilar('camera-vs-desktop', defaultCamera, desktop);
+    console.log(`# ${report.split('\n')[0]} (measured when the thresholds were set: ${MEASURED})`);
+
+    // The thresholds tell a wrong picture: the same scene with the camera moved a little, and another
+    // bundled scene, both from the same desktop renderer.
+    const scene = JSON.parse(await page.evaluate(() => window.vplab.sceneText()));
+    const moved = structuredClone(scene);
+    const width = moved.camera.window.xmax - moved.camera.window.xmin;
+    moved.camera.vrp[0] += 0.02 * width; // 2 % of the window: the picture slides by ~13 of 640 pixels
+    const movedFile = path.join(work.dir, 'moved-camera.json');
+    writeFileSync(movedFile, JSON.stringify(moved));
+    const wrongCamera = await desktopRender(work.dir, 'desktop-moved', { scene: movedFile });
+    console.log(`# ${assertDistinguished('moved-camera', defaultCamera, wrongCamera).split('\n')[0]}`);
+    const otherScene = await desktopRender(work.dir, 'desktop-perspective', { scene: path.join(scenesDir, 'perspective.json') });
+    console.log(`# ${assertDistinguished('another-scene', defaultCamera, otherScene).split('\n')[0]}`);
+
+    assertCleanConsole(pageConsole, 'while loading and drawing the default scene');
+  });
+
+  test('(b) dragging a panel field and a world-view handle changes the camera and the views', { timeout: 180_000 }, async () => {
+    assert.ok(page, 'needs the page of (a)');
+    const before = await vplabState(page);
+
+    // The VRP field: three drag fields side by side; a horizontal drag on the first changes x alone.
+    const field = await cssRect(page, before, 'camera.vrp');
+    const from = rectPoint(field, 1 / 6, 0.5);
+    await drag(page, from, { x: from.x + 40, y: from.y }, { steps: 10 });
+    const afterField = await vplabState(page);
+    assert.notEqual(afterField.camera.vrp[0], before.camera.vrp[0],
+      `dragging the VRP field's x by 40 px left state().camera.vrp at ${JSON.stringify(before.camera.vrp)}`);
+    assert.ok(afterField.camera.vrp[0] > before.camera.vrp[0], `a drag to the right increases VRP x: ${before.camera.vrp[0]} -> ${afterField.camera.vrp[0]}`);
+    assert.deepEqual(afterField.camera.vrp.slice(1), before.camera.vrp.slice(1), 'the drag on x changed VRP y or z');
+    assert.ok(afterField.viewsDrawn > before.viewsDrawn,
+      `the views were not drawn again after the VRP changed (viewsDrawn ${before.viewsDrawn} -> ${afterField.viewsDrawn})`);
+    assert.equal(afterField.dirty, true, 'the scene is not marked changed after the drag');
+    const cameraAfterField = await exportPng(page, 'camera', ...viewSize);
+    const fieldChange = comparePngs(cameraAfterField, defaultCamera);
+    assert.ok(fieldChange.differing > 0, 'the camera view did not change when VRP x changed');
+
+    // A handle in the world view: PRP, dragged there, moves the eye.
+    const handle = await cssRect(page, afterField, 'handle.prp');
+    const view = await cssRect(page, afterField, 'view.world');
+    const grab = rectPoint(handle);
+    assert.ok(grab.x > view.x && grab.x < view.x + view.w && grab.y > view.y && grab.y < view.y + view.h,
+      `the PRP handle ${JSON.stringify(handle)} is not inside the world view ${JSON.stringify(view)}`);
+    const towardsCentre = { x: grab.x + Math.sign(view.x + view.w / 2 - grab.x) * 30, y: grab.y + Math.sign(view.y + view.h / 2 - grab.y) * 20 };
+    await drag(page, grab, towardsCentre, { steps: 10 });
+    const afterHandle = await vplabState(page);
+    assert.notDeepEqual(afterHandle.camera.prp, afterField.camera.prp,
+      `dragging the PRP handle left state().camera.prp at ${JSON.stringify(afterField.camera.prp)}`);
+    assert.deepEqual(afterHandle.camera.vrp, afterField.camera.vrp, 'dragging the PRP handle moved the VRP');
+    assert.ok(afterHandle.viewsDrawn > afterField.viewsDrawn, 'the views were not drawn again after the PRP changed');
+    const cameraAfterHandle = await exportPng(page, 'camera', ...viewSize);
+    assert.ok(comparePngs(cameraAfterHandle, cameraAfterField).differing > 0, 'the camera view did not change when PRP changed');
+
+    draggedHash = afterHandle.hash;
+    assert.match(draggedHash, /^#scene=default&/, 'state().hash names the scene first');
+    assert.match(draggedHash, /[#&]vrp=/, 'state().hash carries the VRP');
+    assert.match(draggedHash, /[#&]prp=/, 'state().hash carries the PRP');
+    assertCleanConsole(pageConsole, 'while dragging');
+  });
+
+  test('(c) a URL with a state reproduces the same picture in a fresh page', { timeout: 180_000 }, async () => {
+    assert.ok(draggedHash, 'needs the URL state of (b)');
+    const old = await vplabState(page);
+    const expected = await exportPng(page, 'camera', ...viewSize);
+    await page.close(); // one page drawing at a time
+    ({ page, console: pageConsole } = await openPage(browser, server.url + draggedHash));
+    await waitFrames(page, 3);
+    const fresh = await vplabState(page);
+    assert.equal(fresh.scene, old.scene, 'the fresh page opened another scene');
+    assert.deepEqual(fresh.camera, old.camera, `the fresh page's camera differs from the one of its URL ${draggedHash}`);
+    const actual = await exportPng(page, 'camera', ...viewSize);
+    await assertSimilar('url-state', actual, expected, { max: 0, mean: 0 });
+    assert.ok(comparePngs(actual, defaultCamera).differing > 0, 'the URL\'s picture is the default scene\'s: the hash was ignored');
+    assertCleanConsole(pageConsole, 'while loading a URL with a state');
+  });
+
+  test('(d) a malformed scene given to the file picker shows the error and keeps the open scene', { timeout: 120_000 }, async () => {
+    assert.ok(page, 'needs a page');
+    const before = await vplabState(page);
+    const pictureBefore = await exportPng(page, 'camera', ...viewSize);
+
+    // The default scene with one number of the VRP replaced by a string: a file a student mistyped.
+    const scene = JSON.parse(readFileSync(path.join(scenesDir, 'default.json'), 'utf8'));
+    scene.camera.vrp[2] = 'zero';
+    const file = path.join(work.dir, 'mistyped-scene.json');
+    writeFileSync(file, JSON.stringify(scene, null, 2));
+    // What the desktop says about it, without its path and the "vplab: error: " prefix.
+    const desktop = await runVplab(['dump', '--scene', file]).then(
+      () => assert.fail(`the desktop vplab accepted ${file}`), (error) => error.stderr.trim());
+    const problem = desktop.slice(desktop.indexOf(file) + file.length).replace(/^:\s*/, '');
+    assert.ok(problem.length > 0, `cannot find the problem in the desktop's message: ${desktop}`);
+
+    const input = await page.$('#vplab-file');
+    assert.ok(input, 'the page has no <input type=file id="vplab-file">');
+    await input.uploadFile(file);
+    await page.waitForFunction(() => window.vplab.state().statusIsError, { timeout: 30_000, polling: 100 });
+    await waitFrames(page, 3);
+    const after = await vplabState(page);
+    assert.ok(after.status.includes('mistyped-scene.json'), `state().status does not name the file: "${after.status}"`);
+    assert.ok(after.status.includes(problem), `state().status "${after.status}" does not say what the desktop says: "${problem}"`);
+    assert.equal(after.scene, before.scene, 'the open scene was replaced by the malformed one');
+    assert.deepEqual(after.camera, before.camera, 'the camera changed when the malformed scene failed to load');
+    assert.equal(after.hash, before.hash, 'the URL state changed when the malformed scene failed to load');
+    const pictureAfter = await exportPng(page, 'camera', ...viewSize);
+    await assertSimilar('after-failed-open', pictureAfter, pictureBefore, { max: 0, mean: 0 });
+  });
+
+  test('(e) File > Save downloads the scene, and the desktop vplab dump of it prints the page\'s dump', { timeout: 120_000 }, async () => {
+    assert.ok(page, 'needs a page');
+    const downloads = await catchDownloads(browser);
+    try {
+      const state = await vplabState(page);
+      await click(page, rectPoint(await cssRect(page, state, 'menu.file')));
+      const menu = await vplabState(page);
+      await click(page, rectPoint(await cssRect(page, menu, 'menu.save')));
+      const download = await downloads.next(30_000);
+      assert.match(download.name, /\.json$/, `File > Save downloaded "${download.name}", not a .json scene`);
+      const saved = path.join(work.dir, `saved-${path.basename(download.name)}`);
+      copyFileSync(download.file, saved);
+      const text = readFileSync(saved, 'utf8');
+      assert.equal(text, await page.evaluate(() => window.vplab.sceneText()), 'the download is not vplab.sceneText()');
+
+      const pageDump = await page.evaluate(() => window.vplab.dump());
+      const { stdout } = await runVplab(['dump', '--scene', saved]);
+      assert.ok(stdout.length > 1000, `vplab dump printed only ${stdout.length} characters`);
+      if (stdout !== pageDump) {
+        const a = stdout.split('\n');
+        const b = pageDump.split('\n');
+        const line = a.findIndex((l, i) => l !== b[i]);
+        assert.fail(`vplab dump --scene ${saved} differs from vplab.dump() first at line ${line + 1}:\n` +
+          `  desktop: ${a[line]}\n  page:    ${b[line]}`);
+      }
+      // The saved scene is the dragged one, not the default scene.
+      const savedCamera = JSON.parse(text).camera;
+      assert.ok(savedCamera.vrp[0] !== 0, `the saved scene's VRP ${JSON.stringify(savedCamera.vrp)} lost (b)'s drag`);
+      assertCleanConsole(pageConsole, 'while saving');
+    } finally {
+      await downloads.remove();
+    }
+  });
+});
