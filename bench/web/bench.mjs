@@ -85,7 +85,7 @@ async function firstFrames(url) {
     }
   }
   const s = summary(ms);
-  return { ...s, goal_ms: FIRST_FRAME_GOAL_MS, met: s.median <= FIRST_FRAME_GOAL_MS };
+  return { ...s, goal_ms: FIRST_FRAME_GOAL_MS, met: s.median <= FIRST_FRAME_GOAL_MS, every_load_met: s.max <= FIRST_FRAME_GOAL_MS };
 }
 
 // ------------------------------------------------------------------------------------ 3 frames
@@ -164,7 +164,7 @@ const lines = [
   `                   total ${mb(size.gzip_total)} (${size.gzip_total} bytes); goal <= ${mb(size.goal_bytes)}: ${size.met ? 'met' : 'NOT met'}` +
     (size.data_bytes === null ? '' : `; vplab.data (scenes, meshes) ${mb(size.data_bytes)} uncompressed, not counted`),
   `  first frame:     median ${round(first.median)} ms (min ${round(first.min)}, max ${round(first.max)}) over ${first.samples.length} fresh loads; ` +
-    `goal <= ${first.goal_ms} ms: ${first.met ? 'met' : 'NOT met'}`,
+    `goal <= ${first.goal_ms} ms: ${first.met ? 'met' : 'NOT met'} by the median, ${first.every_load_met ? 'and' : 'NOT'} by every load`,
   `  three views:     page ${round(frames.page.median, 2)} ms/frame (median of ${frames.page.samples.length} runs of ${frames.page.frames_per_run} frames; ` +
     `min ${round(frames.page.min, 2)}, max ${round(frames.page.max, 2)}), canvas ${frames.page.canvas?.join('x')} ` +
     `(camera ${frames.page.view_sizes.camera?.join('x') ?? '?'}, world ${frames.page.view_sizes.world?.join('x') ?? '?'}, npc ${frames.page.view_sizes.npc?.join('x') ?? '?'}), ${frames.page.renderer}`,
