@@ -184,24 +184,43 @@ export async function openPage(browser, url, { timeout = 60_000 } = {}) {
       messages.push({ type, text: message.text(), location: where?.url ? `${where.url}${where.lineNumber === undefined ? '' : `:${where.lineNumber + 1}`}` : '' });
     }
   });
-  page.on('pageerror', (error) => messages.push({ type: 'pageerror', text: String(error?.stack ?? error), location: '' }));
+  let failed;
+  const pageFailed = new Promise((resolve) => { failed = resolve; });
+  page.on('pageerror', (error) => {
+    messages.push({ type: 'pageerror', text: String(error?.stack ?? error), location: '' });
+    failed(); // an uncaught exception before the first frame: no use waiting for it
+  });
   page.on('requestfailed', (request) => messages.push({
     type: 'requestfailed', text: `${request.url()}: ${request.failure()?.errorText}`, location: '',
   }));
   page.setDefaultTimeout(timeout);
   await page.goto(url, { waitUntil: 'load', timeout });
-  await waitReady(page, messages, timeout);
+  await waitReady(page, messages, timeout, pageFailed);
   return { page, console: messages };
 }
 
-/** Waits for `window.vplab.ready`; on a time-out the error lists what the console said. */
-export async function waitReady(page, messages = [], timeout = 60_000) {
+/**
+ * Waits for `window.vplab.ready`; on a time-out, a rejection or an uncaught exception of the page
+ * (`pageFailed` resolves) the error lists what the console said.
+ */
+export async function waitReady(page, messages = [], timeout = 60_000, pageFailed = new Promise(() => {})) {
   try {
     await page.waitForFunction(() => Boolean(window.vplab && window.vplab.ready), { timeout, polling: 100 });
-    await page.evaluate(() => window.vplab.ready.then(() => undefined));
+    // A flag the polling below can see: the page's main thread may be busy or stuck, and a bare
+    // evaluate of the promise would wait for the protocol's time-out instead of this one.
+    await page.evaluate(() => {
+      window.vplab.ready.then(() => { window.__vplabTestReady = 'resolved'; },
+        (error) => { window.__vplabTestReady = `rejected: ${error}`; });
+    });
+    const outcome = await Promise.race([
+      page.waitForFunction(() => window.__vplabTestReady, { timeout, polling: 100 }),
+      pageFailed.then(() => { throw new Error('the page threw an uncaught exception'); }),
+    ]);
+    const value = await outcome.jsonValue();
+    if (value !== 'resolved') throw new Error(`window.vplab.ready ${value}`);
   } catch (error) {
     const said = messages.map((m) => `  ${m.type}: ${m.text} ${m.location}`).join('\n') || '  (nothing)';
-    error.message = `window.vplab.ready did not resolve within ${timeout} ms (${error.message}); the console said:\n${said}`;
+    error.message = `the page did not get ready (window.vplab.ready, waited up to ${timeout} ms): ${error.message}; the console said:\n${said}`;
     throw error;
   }
 }
