@@ -7,7 +7,7 @@
 // Index
 //   1. Paths and processes        (webDir, vplabBin, runVplab)
 //   2. The server                 (startServer)
-//   3. The browser and the page   (launchBrowser, openPage, waitFrames, vplabState)
+//   3. The browser and the page   (launchBrowser, openPage, waitFrames, afterInput, vplabState)
 //   4. The mouse                  (cssRect, rectPoint, drag)
 //   5. Downloads                  (catchDownloads)
 //   6. Pictures                   (decodePng, comparePngs, formatComparison, isBlank)
@@ -225,16 +225,68 @@ export async function waitReady(page, messages = [], timeout = 60_000, pageFaile
   }
 }
 
+/**
+ * Races `promise` against an uncaught exception of the page appearing in `messages` (openPage's
+ * console list) from `since` on (default: now): a page that threw will not finish what the test waits for.
+ */
+export async function unlessPageFails(promise, messages, what, since = messages.length) {
+  let timer;
+  const failed = new Promise((resolve, reject) => {
+    timer = setInterval(() => {
+      const error = messages.slice(since).find((m) => m.type === 'pageerror');
+      if (error) reject(new Error(`the page threw while waiting for ${what}: ${error.text}`));
+    }, 100);
+  });
+  try {
+    return await Promise.race([promise, failed]);
+  } finally {
+    clearInterval(timer);
+  }
+}
+
 /** `vplab.state()` of the page (see the web contract). */
 export function vplabState(page) {
   return page.evaluate(() => window.vplab.state());
 }
 
-/** Waits until the page drew `count` more frames (state().frames), so that input has been handled. */
-export async function waitFrames(page, count = 3, { timeout = 30_000 } = {}) {
-  const start = (await vplabState(page)).frames;
-  await page.waitForFunction((target) => window.vplab.state().frames >= target,
-    { timeout, polling: 'raf' }, start + count);
+/**
+ * Lets the page settle: waits until it drew `count` more frames (state().frames), or until it went
+ * idle (no frame for `quietMs`). The page draws only when something changed (input, a due wake-up) plus
+ * a few frames for ImGui to settle, as the desktop window does, so an idle page draws nothing.
+ * Resolves to the number of frames drawn meanwhile.
+ */
+export async function waitFrames(page, count = 3, { quietMs = 300, timeout = 30_000 } = {}) {
+  return page.evaluate(async (count, quietMs, timeout) => {
+    const frames = () => window.vplab.state().frames;
+    const start = frames();
+    let last = start;
+    let lastChange = performance.now();
+    const begin = lastChange;
+    for (;;) {
+      await new Promise((resolve) => setTimeout(resolve, 20));
+      const now = performance.now();
+      const drawn = frames();
+      if (drawn >= start + count) return drawn - start;
+      if (drawn !== last) { last = drawn; lastChange = now; } else if (now - lastChange >= quietMs) return drawn - start;
+      if (now - begin > timeout) throw new Error(`the page kept drawing for ${timeout} ms without settling`);
+    }
+  }, count, quietMs, timeout);
+}
+
+/**
+ * Does `action` (input), then waits for the page to draw a frame for it (up to `timeout` ms: input
+ * that changes nothing may draw none) and to settle after it. Resolves to the frames drawn.
+ */
+export async function afterInput(page, action, { settleFrames = 3, timeout = 2000 } = {}) {
+  const before = (await vplabState(page)).frames;
+  await action();
+  try {
+    await page.waitForFunction((n) => window.vplab.state().frames > n, { timeout, polling: 20 }, before);
+  } catch {
+    // no frame: the input changed nothing the page draws (the caller's assertions say whether it should)
+  }
+  await waitFrames(page, settleFrames);
+  return (await vplabState(page)).frames - before;
 }
 
 /** `vplab.exportPng(view, width, height)` as a Node Buffer holding the PNG file. */
@@ -281,31 +333,24 @@ export function rectPoint(rect, fx = 0.5, fy = 0.5) {
 
 /**
  * Drags the left mouse button from `from` to `to` (CSS pixels) in `steps` moves, letting the page
- * draw `framesPerStep` frames after the press, each move and the release: ImGui sees each event in a
- * frame of its own, as a hand on a real mouse gives it.
+ * draw and settle after the press, each move and the release: ImGui sees each event in a frame of its
+ * own, as a hand on a real mouse gives it.
  */
-export async function drag(page, from, to, { steps = 10, framesPerStep = 1, button = 'left' } = {}) {
-  await page.mouse.move(from.x, from.y);
-  await waitFrames(page, framesPerStep + 1);
-  await page.mouse.down({ button });
-  await waitFrames(page, framesPerStep + 1);
+export async function drag(page, from, to, { steps = 10, button = 'left' } = {}) {
+  await afterInput(page, () => page.mouse.move(from.x, from.y));
+  await afterInput(page, () => page.mouse.down({ button }));
   for (let i = 1; i <= steps; ++i) {
     const t = i / steps;
-    await page.mouse.move(from.x + (to.x - from.x) * t, from.y + (to.y - from.y) * t);
-    await waitFrames(page, framesPerStep);
+    await afterInput(page, () => page.mouse.move(from.x + (to.x - from.x) * t, from.y + (to.y - from.y) * t));
   }
-  await page.mouse.up({ button });
-  await waitFrames(page, framesPerStep + 2);
+  await afterInput(page, () => page.mouse.up({ button }));
 }
 
-/** Clicks at `point` (CSS pixels) and lets the page draw a few frames. */
-export async function click(page, point, { frames = 3 } = {}) {
-  await page.mouse.move(point.x, point.y);
-  await waitFrames(page, 2);
-  await page.mouse.down();
-  await waitFrames(page, 2);
-  await page.mouse.up();
-  await waitFrames(page, frames);
+/** Clicks at `point` (CSS pixels): move, press and release, each in frames of its own. */
+export async function click(page, point) {
+  await afterInput(page, () => page.mouse.move(point.x, point.y));
+  await afterInput(page, () => page.mouse.down());
+  await afterInput(page, () => page.mouse.up());
 }
 
 // ---------------------------------------------------------------------------------------------------
