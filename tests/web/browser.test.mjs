@@ -311,4 +311,31 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
       await downloads.remove();
     }
   });
+
+  test('(f) the canvas follows the window\'s size and devicePixelRatio, and the mouse lands where the UI is', { timeout: 120_000 }, async () => {
+    await page?.close();
+    ({ page, console: pageConsole } = await openPage(browser, server.url, { viewport: { width: 1024, height: 640, deviceScaleFactor: 2 } }));
+    const hiDpi = await vplabState(page);
+    assert.equal(hiDpi.devicePixelRatio, 2, 'state().devicePixelRatio on a screen of ratio 2');
+    assert.deepEqual(hiDpi.canvas, [2048, 1280], 'the canvas of a 1024 × 640 window at ratio 2 has 2048 × 1280 pixels');
+    const [x, y, w, h] = hiDpi.rects['camera.vrp'];
+    assert.ok(x >= 0 && y >= 0 && x + w <= 2048 && y + h <= 1280, `the VRP field ${JSON.stringify(hiDpi.rects['camera.vrp'])} lies outside the canvas`);
+    // The rects are canvas pixels: a drag at their CSS position (÷ 2) grabs the field.
+    const field = await cssRect(page, hiDpi, 'camera.vrp');
+    const from = rectPoint(field, 1 / 6, 0.5);
+    await drag(page, from, { x: from.x + 40, y: from.y });
+    const dragged = await vplabState(page);
+    assert.ok(dragged.camera.vrp[0] > hiDpi.camera.vrp[0], `a drag on the VRP field at ratio 2 left VRP x at ${dragged.camera.vrp[0]}`);
+
+    await afterInput(page, () => page.setViewport({ width: 900, height: 600, deviceScaleFactor: 1 }));
+    await waitForState(page, (s) => s.canvas[0] === 900 && s.canvas[1] === 600 && s.devicePixelRatio === 1,
+      'the canvas to follow the window to 900 × 600 at ratio 1', pageConsole);
+    const resized = await vplabState(page);
+    const view = resized.rects['view.camera'];
+    assert.ok(view && view[0] + view[2] <= 900 + 1 && view[1] + view[3] <= 600 + 1,
+      `the camera view ${JSON.stringify(view)} lies outside the resized 900 × 600 canvas`);
+    const screenshot = await page.screenshot({ type: 'png' });
+    assert.ok(distinctColours(screenshot) >= 32, 'the resized page is blank');
+    assertCleanConsole(pageConsole, 'at ratio 2 and after the resize');
+  });
 });

@@ -170,12 +170,14 @@ export async function launchBrowser({ viewport = { width: 1280, height: 720, dev
 }
 
 /**
- * Opens `url` in a new tab and waits until `window.vplab.ready` resolved (the first frame drawn).
+ * Opens `url` in a new tab (of `viewport`'s size and deviceScaleFactor, if given) and waits until
+ * `window.vplab.ready` resolved (the first frame drawn).
  * Resolves to {page, console}: `console` collects the page's messages of level error and warning and
  * its uncaught exceptions ({type, text, location}) from before the navigation on.
  */
-export async function openPage(browser, url, { timeout = 60_000 } = {}) {
+export async function openPage(browser, url, { timeout = 60_000, viewport } = {}) {
   const page = await browser.newPage();
+  if (viewport) await page.setViewport(viewport);
   const messages = [];
   page.on('console', (message) => {
     const type = message.type();
