@@ -370,6 +370,7 @@ export async function catchDownloads(browser) {
   const begun = new Map(); // guid -> suggested file name
   const finished = [];
   const waiting = [];
+  const timers = new Set();
   session.on('Browser.downloadWillBegin', (event) => begun.set(event.guid, event.suggestedFilename));
   session.on('Browser.downloadProgress', (event) => {
     if (event.state !== 'completed' && event.state !== 'canceled') return;
@@ -386,14 +387,21 @@ export async function catchDownloads(browser) {
     dir: target.dir,
     async next(timeout = 30_000) {
       const done = finished.shift() ?? await new Promise((resolve, reject) => {
-        const timer = setTimeout(() => reject(new Error(
-          `no download completed within ${timeout} ms (in ${target.dir}: ${readdirSync(target.dir).join(', ') || 'nothing'})`)), timeout);
-        waiting.push((value) => { clearTimeout(timer); resolve(value); });
+        const timer = setTimeout(() => {
+          timers.delete(timer);
+          let there = 'nothing';
+          try { there = readdirSync(target.dir).join(', ') || there; } catch { /* removed meanwhile */ }
+          reject(new Error(`no download completed within ${timeout} ms (in ${target.dir}: ${there})`));
+        }, timeout);
+        timers.add(timer);
+        waiting.push((value) => { clearTimeout(timer); timers.delete(timer); resolve(value); });
       });
       if (done.state !== 'completed') throw new Error(`the download of ${done.name} was canceled`);
       return { file: path.join(target.dir, done.guid), name: done.name };
     },
     async remove() {
+      for (const timer of timers) clearTimeout(timer); // a wait given up on (the page failed first)
+      timers.clear();
       await session.detach().catch(() => {});
       target.remove();
     },
