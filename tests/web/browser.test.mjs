@@ -236,7 +236,14 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
 
   test('(d) a malformed scene given to the file picker shows the error and keeps the open scene', { timeout: 120_000 }, async () => {
     assert.ok(page, 'needs a page');
+    // Unsaved changes first (VRP y, the field's middle third): a failed open must not lose them either.
+    const clean = await vplabState(page);
+    const field = await cssRect(page, clean, 'camera.vrp');
+    const from = rectPoint(field, 0.5, 0.5);
+    await drag(page, from, { x: from.x + 20, y: from.y }, { steps: 5 });
     const before = await vplabState(page);
+    assert.ok(before.dirty && before.camera.vrp[1] !== clean.camera.vrp[1], 'dragging VRP y made no unsaved change');
+    await afterInput(page, () => page.mouse.move(2, page.viewport().height - 2)); // off the field
     const pictureBefore = await exportPng(page, 'camera', ...viewSize);
 
     // The default scene with one number of the VRP replaced by a string: a file a student mistyped.
@@ -258,8 +265,8 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     await waitForState(page, (state) => state.statusIsError || Boolean(state.rects['discard.confirm']),
       'the error or the question whether to discard the changes', pageConsole);
     const asked = await vplabState(page);
-    if (asked.dirty) assert.ok(asked.rects['discard.confirm'], 'opening a file over unsaved changes did not ask first');
-    if (asked.rects['discard.confirm']) {
+    assert.ok(asked.rects['discard.confirm'], 'opening a file over unsaved changes did not ask first');
+    {
       await click(page, rectPoint(await cssRect(page, asked, 'discard.confirm')));
       await waitForState(page, (state) => state.statusIsError, 'the error after discarding the changes', pageConsole);
     }
@@ -269,6 +276,7 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     assert.ok(after.status.includes(problem), `state().status "${after.status}" does not say what the desktop says: "${problem}"`);
     assert.equal(after.scene, before.scene, 'the open scene was replaced by the malformed one');
     assert.deepEqual(after.camera, before.camera, 'the camera changed when the malformed scene failed to load');
+    assert.equal(after.dirty, true, 'the unsaved changes are no longer marked as such');
     assert.equal(after.hash, before.hash, 'the URL state changed when the malformed scene failed to load');
     const pictureAfter = await exportPng(page, 'camera', ...viewSize);
     await assertSimilar('after-failed-open', pictureAfter, pictureBefore, { max: 0, mean: 0, largePixels: 0 });
