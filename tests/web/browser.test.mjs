@@ -106,7 +106,8 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
   let server;
   let browser;
   let work;
-  let page; // the page the tests drive, in turn replaced by (c)'s fresh page
+  let context; // each page opens in a browser context of its own: another visitor, with no autosave
+  let page; // the page the tests drive, in turn replaced by (c)'s, (e)'s and (f)'s fresh pages
   let pageConsole;
   let defaultCamera; // exportPng('camera') of the default scene as loaded (a)
   let draggedHash; // state().hash after (b)'s drags
@@ -120,6 +121,14 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     browser = await launchBrowser();
   });
 
+  /** Closes the page and its context, and opens `url` in a new context (no localStorage, no autosave). */
+  async function freshPage(url, options) {
+    await page?.close();
+    await context?.close();
+    context = await browser.createBrowserContext();
+    ({ page, console: pageConsole } = await openPage(context, url, options));
+  }
+
   after(async () => {
     await browser?.close();
     await server?.close();
@@ -127,7 +136,7 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
   });
 
   test('(a) the page loads cleanly, its canvas shows the UI, and its camera view matches vplab render', { timeout: 180_000 }, async () => {
-    ({ page, console: pageConsole } = await openPage(browser, server.url));
+    await freshPage(server.url);
     await waitFrames(page, 5);
     const state = await vplabState(page);
     assert.ok(state.viewsDrawn > 0, `state().viewsDrawn is ${state.viewsDrawn} after the first frame`);
@@ -221,8 +230,7 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     const old = await vplabState(page);
     const expected = await exportPng(page, 'camera', ...viewSize);
     const expectedWorld = await exportPng(page, 'world', ...viewSize); // the link carries the observer too
-    await page.close(); // one page drawing at a time
-    ({ page, console: pageConsole } = await openPage(browser, server.url + draggedHash));
+    await freshPage(server.url + draggedHash); // as a student opens the lecturer's link
     await waitFrames(page, 3);
     const fresh = await vplabState(page);
     assert.equal(fresh.scene, old.scene, 'the fresh page opened another scene');
@@ -284,9 +292,8 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
 
   test('(e) File > Save downloads the scene, and the desktop vplab dump of it prints the page\'s dump', { timeout: 120_000 }, async () => {
     // A fresh page with (b)'s camera: (d) may have left its page unusable.
-    await page?.close();
-    ({ page, console: pageConsole } = await openPage(browser, server.url + (draggedHash ?? '')));
-    const downloads = await catchDownloads(browser);
+    await freshPage(server.url + (draggedHash ?? ''));
+    const downloads = await catchDownloads(browser, context);
     try {
       const state = await vplabState(page);
       await click(page, rectPoint(await cssRect(page, state, 'menu.file')));
@@ -308,8 +315,9 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
         const a = stdout.split('\n');
         const b = pageDump.split('\n');
         const line = a.findIndex((l, i) => l !== b[i]);
-        assert.fail(`vplab dump --scene ${saved} differs from vplab.dump() first at line ${line + 1}:\n` +
-          `  desktop: ${a[line]}\n  page:    ${b[line]}`);
+        const differing = a.filter((l, i) => l !== b[i]).length + Math.max(0, b.length - a.length);
+        assert.fail(`vplab dump --scene ${saved} differs from vplab.dump() in ${differing} of ${a.length} lines, ` +
+          `first at line ${line + 1}:\n  desktop: ${a[line]}\n  page:    ${b[line]}`);
       }
       // The saved scene is the dragged one, not the default scene.
       const savedCamera = JSON.parse(text).camera;
@@ -321,8 +329,7 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
   });
 
   test('(f) the canvas follows the window\'s size and devicePixelRatio, and the mouse lands where the UI is', { timeout: 120_000 }, async () => {
-    await page?.close();
-    ({ page, console: pageConsole } = await openPage(browser, server.url, { viewport: { width: 1024, height: 640, deviceScaleFactor: 2 } }));
+    await freshPage(server.url, { viewport: { width: 1024, height: 640, deviceScaleFactor: 2 } });
     const hiDpi = await vplabState(page);
     assert.equal(hiDpi.devicePixelRatio, 2, 'state().devicePixelRatio on a screen of ratio 2');
     assert.deepEqual(hiDpi.canvas, [2048, 1280], 'the canvas of a 1024 × 640 window at ratio 2 has 2048 × 1280 pixels');

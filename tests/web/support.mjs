@@ -170,13 +170,14 @@ export async function launchBrowser({ viewport = { width: 1280, height: 720, dev
 }
 
 /**
- * Opens `url` in a new tab (of `viewport`'s size and deviceScaleFactor, if given) and waits until
+ * Opens `url` in a new tab of `browser` (a puppeteer Browser, or a BrowserContext: a profile of its
+ * own, as another visitor's) of `viewport`'s size and deviceScaleFactor, if given, and waits until
  * `window.vplab.ready` resolved (the first frame drawn).
  * Resolves to {page, console}: `console` collects the page's messages of level error and warning and
  * its uncaught exceptions ({type, text, location}) from before the navigation on.
  */
 export async function openPage(browser, url, { timeout = 60_000, viewport } = {}) {
-  const page = await browser.newPage();
+  const page = await browser.newPage(); // a Browser or a BrowserContext
   if (viewport) await page.setViewport(viewport);
   const messages = [];
   page.on('console', (message) => {
@@ -361,10 +362,10 @@ export async function click(page, point) {
 // ---------------------------------------------------------------------------------------------------
 
 /**
- * Sends the browser's downloads into a fresh temporary directory. Resolves to
+ * Sends the downloads of `browser` (of its BrowserContext `context`, if given) into a fresh temporary directory. Resolves to
  * {dir, next(timeout) -> Promise<{file, name}>, remove()}; `next` waits for the next completed download.
  */
-export async function catchDownloads(browser) {
+export async function catchDownloads(browser, context = undefined) {
   const target = tempDir('downloads');
   const session = await browser.target().createCDPSession();
   const begun = new Map(); // guid -> suggested file name
@@ -382,6 +383,7 @@ export async function catchDownloads(browser) {
     behavior: 'allowAndName', // saved as DIR/GUID: no clash with earlier files, the name reported apart
     downloadPath: target.dir,
     eventsEnabled: true,
+    ...(context?.id ? { browserContextId: context.id } : {}),
   });
   return {
     dir: target.dir,
