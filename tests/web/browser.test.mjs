@@ -4,7 +4,9 @@
 //
 // VPLAB_WEB_DIR (default build-web/) is the page's directory, VPLAB_BIN (default build/vplab) the
 // desktop program. The tests run in order in one browser and share what they changed: (b) drags the
-// camera, (c) reopens that camera from its URL, (d) fails to open a file over it, (e) saves it.
+// camera, (c) reopens that camera from its URL, (d) fails to open a file over it, (e) saves it; (f)
+// leaves unsaved changes and comes back, (g) changes the window's size and pixel ratio. Each fresh
+// page opens in a browser context of its own (another visitor: its own localStorage).
 // A failed picture comparison writes actual, expected and difference PNGs into VPLAB_WEB_ARTIFACTS
 // (default $TMPDIR/vplab-web-artifacts) and names them.
 
@@ -333,7 +335,36 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     }
   });
 
-  test('(f) the canvas follows the window\'s size and devicePixelRatio, and the mouse lands where the UI is', { timeout: 120_000 }, async () => {
+  test('(f) unsaved changes outlive the visit: the next visit offers them back', { timeout: 120_000 }, async () => {
+    await freshPage(server.url);
+    const start = await vplabState(page);
+    assert.equal(start.recoveryOffered, false, 'a first visit is offered a recovery');
+    const field = await cssRect(page, start, 'camera.vrp');
+    const from = rectPoint(field, 5 / 6, 0.5); // VRP z
+    await drag(page, from, { x: from.x + 30, y: from.y }, { steps: 5 });
+    const changed = await vplabState(page);
+    assert.ok(changed.dirty && changed.camera.vrp[2] > start.camera.vrp[2], 'dragging VRP z made no unsaved change');
+    // The autosave comes 3 s after the last change (as the desktop's), into the origin's localStorage.
+    const stored = () => page.evaluate(() => Object.keys(localStorage).map((k) => localStorage.getItem(k)).join(''));
+    const before = await stored();
+    await page.waitForFunction((text) => Object.keys(localStorage).map((k) => localStorage.getItem(k)).join('') !== text,
+      { timeout: 15_000, polling: 200 }, before).catch(() => assert.fail('no autosave reached localStorage within 15 s of the change'));
+
+    await page.close(); // the tab is closed without saving (no beforeunload prompt in a test)
+    ({ page, console: pageConsole } = await openPage(context, server.url));
+    await waitFrames(page, 3);
+    const next = await vplabState(page);
+    assert.equal(next.recoveryOffered, true, 'the next visit does not offer the unsaved changes back');
+    assert.deepEqual(next.camera, start.camera, 'the next visit opens with the changed camera before it was asked');
+    await click(page, rectPoint(await cssRect(page, next, 'recovery.recover')));
+    await waitForState(page, (s) => !s.recoveryOffered, 'the recovery dialog to close', pageConsole);
+    const recovered = await vplabState(page);
+    assert.deepEqual(recovered.camera, changed.camera, 'the recovered camera is not the one left unsaved');
+    assert.equal(recovered.dirty, true, 'recovered changes are not marked unsaved');
+    assertCleanConsole(pageConsole, 'while recovering');
+  });
+
+  test('(g) the canvas follows the window\'s size and devicePixelRatio, and the mouse lands where the UI is', { timeout: 120_000 }, async () => {
     await freshPage(server.url, { viewport: { width: 1024, height: 640, deviceScaleFactor: 2 } });
     const hiDpi = await vplabState(page);
     assert.equal(hiDpi.devicePixelRatio, 2, 'state().devicePixelRatio on a screen of ratio 2');
