@@ -109,7 +109,7 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
   let browser;
   let work;
   let context; // each page opens in a browser context of its own: another visitor, with no autosave
-  let page; // the page the tests drive, in turn replaced by (c)'s, (e)'s and (f)'s fresh pages
+  let page; // the page the tests drive, a fresh one in (a), (c), (e), (f) and (g)
   let pageConsole;
   let defaultCamera; // exportPng('camera') of the default scene as loaded (a)
   let draggedHash; // state().hash after (b)'s drags
