@@ -5,8 +5,9 @@
 // VPLAB_WEB_DIR (default build-web/) is the page's directory, VPLAB_BIN (default build/vplab) the
 // desktop program. The tests run in order in one browser and share what they changed: (b) drags the
 // camera, (c) reopens that camera from its URL, (d) fails to open a file over it, (e) saves it; (f)
-// leaves unsaved changes and comes back, (g) changes the window's size and pixel ratio. Each fresh
-// page opens in a browser context of its own (another visitor: its own localStorage).
+// leaves unsaved changes and comes back, (g) drops a scene file, (h) changes the window's size and
+// pixel ratio. Each fresh page opens in a browser context of its own (another visitor: its own
+// localStorage).
 // A failed picture comparison writes actual, expected and difference PNGs into VPLAB_WEB_ARTIFACTS
 // (default $TMPDIR/vplab-web-artifacts) and names them.
 
@@ -109,7 +110,7 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
   let browser;
   let work;
   let context; // each page opens in a browser context of its own: another visitor, with no autosave
-  let page; // the page the tests drive, a fresh one in (a), (c), (e), (f) and (g)
+  let page; // the page the tests drive, a fresh one in (a), (c), (e), (f), (g) and (h)
   let pageConsole;
   let defaultCamera; // exportPng('camera') of the default scene as loaded (a)
   let draggedHash; // state().hash after (b)'s drags
@@ -364,7 +365,36 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     assertCleanConsole(pageConsole, 'while recovering');
   });
 
-  test('(g) the canvas follows the window\'s size and devicePixelRatio, and the mouse lands where the UI is', { timeout: 120_000 }, async () => {
+  test('(g) a scene dropped onto the page opens, and its camera view matches vplab render of that file', { timeout: 120_000 }, async () => {
+    await freshPage(server.url);
+    const file = path.join(scenesDir, 'perspective.json');
+    const text = readFileSync(file, 'utf8');
+    // What a file dragged from the desktop delivers: a drop event whose DataTransfer holds the file.
+    await afterInput(page, () => page.evaluate((name, content) => {
+      const transfer = new DataTransfer();
+      transfer.items.add(new File([content], name, { type: 'application/json' }));
+      for (const type of ['dragenter', 'dragover', 'drop']) {
+        window.dispatchEvent(new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }));
+      }
+    }, 'perspective.json', text));
+    await waitForState(page, (s) => s.title.includes('perspective') && !s.loading, 'the dropped scene to open', pageConsole);
+    const state = await vplabState(page);
+    const { camera } = JSON.parse(text);
+    const w = camera.window;
+    assert.deepEqual(
+      [state.camera.vrp, state.camera.prp, state.camera.vup, state.camera.window, state.camera.front, state.camera.back, state.camera.projection],
+      [camera.vrp, camera.prp, camera.vup, [w.xmin, w.xmax, w.ymin, w.ymax], camera.front, camera.back, camera.projection],
+      'the page\'s camera is not the dropped file\'s');
+    assert.equal(state.statusIsError, false, `opening the dropped scene failed: ${state.status}`);
+    const style = new URLSearchParams(state.hash.replace(/^#/, '')).get('camera-style') ?? 'shaded';
+    const picture = await exportPng(page, 'camera', ...viewSize);
+    const desktop = await desktopRender(work.dir, 'desktop-perspective-dropped', { scene: file, style });
+    const { report } = await assertSimilar('dropped-vs-desktop', picture, desktop);
+    console.log(`# ${report.split('\n')[0]}`);
+    assertCleanConsole(pageConsole, 'while opening a dropped scene');
+  });
+
+  test('(h) the canvas follows the window\'s size and devicePixelRatio, and the mouse lands where the UI is', { timeout: 120_000 }, async () => {
     await freshPage(server.url, { viewport: { width: 1024, height: 640, deviceScaleFactor: 2 } });
     const hiDpi = await vplabState(page);
     assert.equal(hiDpi.devicePixelRatio, 2, 'state().devicePixelRatio on a screen of ratio 2');
