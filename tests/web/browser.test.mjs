@@ -81,12 +81,13 @@ async function desktopRender(dir, name, { scene, view = 'camera', style, size = 
 }
 
 /**
- * Waits until `predicate(state())` holds in the page; on a time-out the error says `what` was awaited,
+ * Waits until `predicate(state())` holds in the page (a function, or its source text to carry values
+ * in); on a time-out the error says `what` was awaited,
  * the page's last state (without its rects) and what its console said.
  */
 async function waitForState(page, predicate, what, messages, timeout = 30_000) {
   try {
-    await unlessPageFails(page.waitForFunction(`(${predicate})(window.vplab.state())`, { timeout, polling: 100 }),
+    await unlessPageFails(page.waitForFunction(`(${String(predicate)})(window.vplab.state())`, { timeout, polling: 100 }),
       messages, what);
   } catch (error) {
     const state = await vplabState(page).then((s) => JSON.stringify({ ...s, rects: undefined }), (e) => `unreadable (${e.message})`);
@@ -182,8 +183,8 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     console.log(`# ${assertDistinguished('another-scene', defaultCamera, otherScene)}`);
 
     assertCleanConsole(pageConsole, 'while loading and drawing the default scene');
-    // The web contract: the bundled scene's file stem, in state() and first in the link.
-    assert.equal(state.scene, 'default', 'state().scene of a page opened without a hash');
+    // The web contract: the link names the bundled scene first (else a link followed by a page that
+    // shows another scene would keep that scene's objects).
     assert.match(withHashSign(state.hash), /^#scene=default&/, 'state().hash names the scene first');
   });
 
@@ -247,6 +248,15 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     await assertSimilar('url-state', actual, expected, { max: 0, mean: 0, largePixels: 0 });
     await assertSimilar('url-state-world', await exportPng(page, 'world', ...viewSize), expectedWorld, { max: 0, mean: 0, largePixels: 0 });
     if (defaultCamera) assert.ok(comparePngs(actual, defaultCamera).differing > 0, 'the URL\'s picture is the default scene\'s: the hash was ignored');
+
+    // The page follows a link given while it is open (hashchange): another bundled scene, by name.
+    const perspective = JSON.parse(readFileSync(path.join(scenesDir, 'perspective.json'), 'utf8')).camera;
+    await afterInput(page, () => page.evaluate(() => window.vplab.setHash('#scene=perspective')));
+    await waitForState(page, `(s) => JSON.stringify(s.camera.vrp) === '${JSON.stringify(perspective.vrp)}'`,
+      'the camera of the linked scene perspective.json', pageConsole);
+    const linked = await vplabState(page);
+    assert.match(withHashSign(linked.hash), /^#scene=perspective&/, 'the link of the opened scene names it');
+    assert.deepEqual(linked.camera.prp, perspective.prp, 'the linked scene\'s PRP');
     assertCleanConsole(pageConsole, 'while loading a URL with a state');
   });
 
