@@ -9,5 +9,5 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 source "$root/scripts/web-tools.sh"
 
 export VPLAB_WEB_DIR="${VPLAB_WEB_DIR:-$root/build-web}"
-export VPLAB_BIN="${VPLAB_BIN:-$root/build/vplab}"
+export VPLAB_BIN="${VPLAB_BIN:-${VPLAB_BUILD:-$root/build}/vplab}"
 node "$root/bench/web/bench.mjs" "$@"
