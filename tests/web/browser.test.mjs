@@ -1,0 +1,432 @@
+// vplab in a real browser (issue 13, section 3): the page scripts/web.sh builds, served from
+// 127.0.0.1 and driven in headless Chromium (WebGL2 on SwiftShader) through puppeteer-core, checked
+// against the desktop build's `vplab render` and `vplab dump`.
+//
+// VPLAB_WEB_DIR (default build-web/) is the page's directory, VPLAB_BIN (default build/vplab) the
+// desktop program. The tests run in order in one browser and share what they changed: (b) drags the
+// camera, (c) reopens that camera from its URL, (d) fails to open a file over it, (e) saves it; (f)
+// leaves unsaved changes and comes back, (g) drops a scene file, (h) changes the window's size and
+// pixel ratio. Each fresh page opens in a browser context of its own (another visitor: its own
+// localStorage).
+// A failed picture comparison writes actual, expected and difference PNGs into VPLAB_WEB_ARTIFACTS
+// (default $TMPDIR/vplab-web-artifacts) and names them.
+
+import assert from 'node:assert/strict';
+import { copyFileSync, existsSync, readFileSync, writeFileSync } from 'node:fs';
+import path from 'node:path';
+import { after, before, describe, test } from 'node:test';
+import { fileURLToPath } from 'node:url';
+
+import {
+  catchDownloads, click, comparePngs, cssRect, distinctColours, drag, exportPng, formatComparison,
+  afterInput, keepArtifacts, launchBrowser, openPage, rectPoint, runVplab, startServer, tempDir, unlessPageFails,
+  vplabBin, vplabState, waitFrames, webDir,
+} from './support.mjs';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const scenesDir = path.resolve(here, '..', '..', 'assets', 'scenes');
+
+// The camera view's comparison with the desktop's `vplab render` (Mesa llvmpipe) in the page's own
+// style (shaded): the page draws with ANGLE on SwiftShader. Both rasterise the same triangles with the
+// same matrices and the same shaders (GLSL ES 3.00 from the same sources), but the two rasterisers
+// round edge coverage and interpolated values differently: most pixels are equal or differ by 1 (the
+// rounding of the lighting), and a pixel whose centre lies within a hair of an edge is covered by one
+// and not by the other, so a few edge pixels take the colour of the other side: a channel difference
+// up to the full contrast of the picture (max 220 measured). The maximum therefore says nothing here;
+// what does is the mean and the number of pixels that differ by more than 32.
+// Measured against the lead's build (SwiftShader in Chromium 156 vs llvmpipe, Mesa 22.3.6):
+//   mean 0.0067, max 220, 3122 pixels differ, 27 by more than 32;
+// the camera moved by 0.2 % of the window's width (1.3 pixels): mean 0.51, 1797 pixels over 32;
+// the flat style instead of shaded: mean 6.0; another scene (perspective.json): mean 34.
+// The thresholds keep a margin of 15× (mean) and 11× (pixels) above the measured agreement and stay
+// below the 1.3-pixel move; the test checks that a moved camera and another scene fail them.
+const MAX_CHANNEL_DIFF = 255; // edge pixels may flip between two unrelated colours (see above)
+const MEAN_CHANNEL_DIFF = 0.1; // mean |Δ| over every channel of every pixel, 0..255
+const LARGE_DIFF = 32; // a pixel differing by more than this in a channel is "large"
+const MAX_LARGE_PIXELS = 300; // at most this many such pixels (0.1 % of 640 × 480)
+
+const viewSize = [640, 480];
+
+/** Fails with the comparison's report (and keeps the pictures) when it exceeds the thresholds. */
+async function assertSimilar(name, actual, expected,
+  { max = MAX_CHANNEL_DIFF, mean = MEAN_CHANNEL_DIFF, largePixels = MAX_LARGE_PIXELS } = {}) {
+  const comparison = comparePngs(actual, expected);
+  const large = comparison.pixelsOver(LARGE_DIFF);
+  const report = `${formatComparison(comparison, { maxThreshold: max, meanThreshold: mean, label: name })}\n` +
+    `  ${large} pixels differ by more than ${LARGE_DIFF} (allowed ${largePixels})`;
+  if (comparison.max > max || comparison.mean > mean || large > largePixels) {
+    const kept = await keepArtifacts(name, { actual, expected, comparison });
+    assert.fail(`${report}\n  pictures: ${kept.join(', ')}`);
+  }
+  return { comparison, report };
+}
+
+/** Asserts that the comparison of two pictures that should differ exceeds the thresholds. */
+function assertDistinguished(name, actual, expected) {
+  const comparison = comparePngs(actual, expected);
+  const large = comparison.pixelsOver(LARGE_DIFF);
+  const full = formatComparison(comparison, { maxThreshold: MAX_CHANNEL_DIFF, meanThreshold: MEAN_CHANNEL_DIFF, label: name });
+  const report = `${full.split('\n')[0]}, ${large} by more than ${LARGE_DIFF} (allowed ${MAX_LARGE_PIXELS})`;
+  assert.ok(comparison.max > MAX_CHANNEL_DIFF || comparison.mean > MEAN_CHANNEL_DIFF || large > MAX_LARGE_PIXELS,
+    `the thresholds cannot tell a wrong picture from the right one:\n${report}\n${full}`);
+  return report;
+}
+
+/** The desktop's `vplab render` of `scene` (a file; the built-in default scene when undefined). */
+async function desktopRender(dir, name, { scene, view = 'camera', style, size = viewSize } = {}) {
+  const out = path.join(dir, `${name}.png`);
+  await runVplab(['render', ...(scene ? ['--scene', scene] : []), '--view', view, ...(style ? ['--style', style] : []),
+    '--size', `${size[0]}x${size[1]}`, '--out', out]);
+  return readFileSync(out);
+}
+
+/**
+ * Waits until `predicate(state())` holds in the page (a function, or its source text to carry values
+ * in); on a time-out the error says `what` was awaited,
+ * the page's last state (without its rects) and what its console said.
+ */
+async function waitForState(page, predicate, what, messages, timeout = 30_000) {
+  try {
+    await unlessPageFails(page.waitForFunction(`(${String(predicate)})(window.vplab.state())`, { timeout, polling: 100 }),
+      messages, what);
+  } catch (error) {
+    const state = await vplabState(page).then((s) => JSON.stringify({ ...s, rects: undefined }), (e) => `unreadable (${e.message})`);
+    assert.fail(`waited for ${what} in vain (${error.message}); state(): ${state}; the console said:\n` +
+      (messages.map((m) => `  ${m.type}: ${m.text} ${m.location}`).join('\n') || '  (nothing)'));
+  }
+}
+
+/** state().hash with its '#' (the contract's examples have it; a fragment without one gets it). */
+function withHashSign(hash) {
+  return hash.startsWith('#') ? hash : `#${hash}`;
+}
+
+function assertCleanConsole(messages, when) {
+  assert.deepEqual(messages, [], `the page logged errors or warnings ${when}:\n` +
+    messages.map((m) => `  ${m.type}: ${m.text} ${m.location}`).join('\n'));
+}
+
+describe('vplab in the browser', { concurrency: 1 }, () => {
+  let server;
+  let browser;
+  let work;
+  let context; // each page opens in a browser context of its own: another visitor, with no autosave
+  let page; // the page the tests drive, a fresh one in (a), (c), (e), (f), (g) and (h)
+  let pageConsole;
+  let defaultCamera; // exportPng('camera') of the default scene as loaded (a)
+  let draggedHash; // state().hash after (b)'s drags
+
+  before(async () => {
+    assert.ok(existsSync(path.join(webDir, 'index.html')),
+      `${webDir}/index.html is missing: build the page with scripts/web.sh (or set VPLAB_WEB_DIR)`);
+    assert.ok(existsSync(vplabBin), `${vplabBin} is missing: build the desktop vplab (or set VPLAB_BIN)`);
+    work = tempDir('web-test');
+    server = await startServer(webDir);
+    browser = await launchBrowser();
+  });
+
+  /** Closes the page and its context, and opens `url` in a new context (no localStorage, no autosave). */
+  async function freshPage(url, options) {
+    await page?.close();
+    await context?.close();
+    context = await browser.createBrowserContext();
+    ({ page, console: pageConsole } = await openPage(context, url, options));
+  }
+
+  after(async () => {
+    await browser?.close();
+    await server?.close();
+    work?.remove();
+  });
+
+  test('(a) the page loads cleanly, its canvas shows the UI, and its camera view matches vplab render', { timeout: 180_000 }, async () => {
+    await freshPage(server.url);
+    await waitFrames(page, 5);
+    const state = await vplabState(page);
+    assert.ok(state.viewsDrawn > 0, `state().viewsDrawn is ${state.viewsDrawn} after the first frame`);
+    const missing = server.requests.filter((r) => r.status !== 200);
+    assert.deepEqual(missing, [], 'the page asked the server for files it does not have');
+
+    // The canvas shows the UI: the window's screenshot has panels, text and three views, not one colour.
+    const screenshot = await page.screenshot({ type: 'png' });
+    writeFileSync(path.join(work.dir, 'page.png'), screenshot);
+    const colours = distinctColours(screenshot);
+    assert.ok(colours >= 32, `the page's screenshot has only ${colours} colours: the canvas is blank or nearly`);
+    for (const id of ['view.camera', 'view.world', 'view.npc', 'camera.vrp', 'menu.file']) {
+      assert.ok(state.rects?.[id], `state().rects has no "${id}": the UI is not drawn as the contract says`);
+      // Where the page says the view or the field is, the screen shows one: a picture, or text on a frame.
+      const r = await cssRect(page, state, id);
+      const part = await page.screenshot({ type: 'png', clip: { x: r.x, y: r.y, width: r.w, height: r.h } });
+      const least = id.startsWith('view.') ? 32 : 4;
+      assert.ok(distinctColours(part) >= least, `the screen shows ${distinctColours(part)} colours where "${id}" is (at least ${least} expected)`);
+    }
+
+    // The camera view as File > Export draws it, against the desktop's headless rendering.
+    // In the page's style of the camera view (the link's camera-style), as vplab render draws it.
+    const style = new URLSearchParams(state.hash.replace(/^#/, '')).get('camera-style') ?? 'shaded';
+    defaultCamera = await exportPng(page, 'camera', ...viewSize);
+    const desktop = await desktopRender(work.dir, 'desktop-default', { style });
+    const { report } = await assertSimilar('camera-vs-desktop', defaultCamera, desktop);
+    console.log(`# ${report.replace(/\n/g, '\n# ')}`);
+
+    // The thresholds tell a wrong picture: the same scene with the camera moved a little, and another
+    // bundled scene, both from the same desktop renderer.
+    const scene = JSON.parse(await page.evaluate(() => window.vplab.sceneText()));
+    const moved = structuredClone(scene);
+    const width = moved.camera.window.xmax - moved.camera.window.xmin;
+    moved.camera.vrp[0] += 0.005 * width; // 0.5 % of the window: the picture slides by ~3 of 640 pixels
+    const movedFile = path.join(work.dir, 'moved-camera.json');
+    writeFileSync(movedFile, JSON.stringify(moved));
+    const wrongCamera = await desktopRender(work.dir, 'desktop-moved', { scene: movedFile, style });
+    console.log(`# ${assertDistinguished('moved-camera', defaultCamera, wrongCamera)}`);
+    const otherScene = await desktopRender(work.dir, 'desktop-perspective', { scene: path.join(scenesDir, 'perspective.json'), style });
+    console.log(`# ${assertDistinguished('another-scene', defaultCamera, otherScene)}`);
+
+    assertCleanConsole(pageConsole, 'while loading and drawing the default scene');
+    // The web contract: the link names the bundled scene first (else a link followed by a page that
+    // shows another scene would keep that scene's objects).
+    assert.match(withHashSign(state.hash), /^#scene=default&/, 'state().hash names the scene first');
+  });
+
+  test('(b) dragging a panel field and a world-view handle changes the camera and the views', { timeout: 180_000 }, async () => {
+    assert.ok(page, 'needs the page of (a)');
+    const before = await vplabState(page);
+    const cameraBefore = await exportPng(page, 'camera', ...viewSize);
+
+    // The VRP field: three drag fields side by side; a horizontal drag on the first changes x alone.
+    const field = await cssRect(page, before, 'camera.vrp');
+    const from = rectPoint(field, 1 / 6, 0.5);
+    await drag(page, from, { x: from.x + 40, y: from.y }, { steps: 10 });
+    const afterField = await vplabState(page);
+    assert.notEqual(afterField.camera.vrp[0], before.camera.vrp[0],
+      `dragging the VRP field's x by 40 px left state().camera.vrp at ${JSON.stringify(before.camera.vrp)}`);
+    assert.ok(afterField.camera.vrp[0] > before.camera.vrp[0], `a drag to the right increases VRP x: ${before.camera.vrp[0]} -> ${afterField.camera.vrp[0]}`);
+    assert.deepEqual(afterField.camera.vrp.slice(1), before.camera.vrp.slice(1), 'the drag on x changed VRP y or z');
+    assert.ok(afterField.viewsDrawn > before.viewsDrawn,
+      `the views were not drawn again after the VRP changed (viewsDrawn ${before.viewsDrawn} -> ${afterField.viewsDrawn})`);
+    assert.equal(afterField.dirty, true, 'the scene is not marked changed after the drag');
+    const cameraAfterField = await exportPng(page, 'camera', ...viewSize);
+    const fieldChange = comparePngs(cameraAfterField, cameraBefore);
+    assert.ok(fieldChange.differing > 0, 'the camera view did not change when VRP x changed');
+
+    // A handle in the world view: PRP, dragged there, moves the eye.
+    const handle = await cssRect(page, afterField, 'handle.prp');
+    const view = await cssRect(page, afterField, 'view.world');
+    const grab = rectPoint(handle);
+    assert.ok(grab.x > view.x && grab.x < view.x + view.w && grab.y > view.y && grab.y < view.y + view.h,
+      `the PRP handle ${JSON.stringify(handle)} is not inside the world view ${JSON.stringify(view)}`);
+    const towardsCentre = { x: grab.x + Math.sign(view.x + view.w / 2 - grab.x) * 30, y: grab.y + Math.sign(view.y + view.h / 2 - grab.y) * 20 };
+    await drag(page, grab, towardsCentre, { steps: 10 });
+    const afterHandle = await vplabState(page);
+    assert.notDeepEqual(afterHandle.camera.prp, afterField.camera.prp,
+      `dragging the PRP handle left state().camera.prp at ${JSON.stringify(afterField.camera.prp)}`);
+    assert.deepEqual(afterHandle.camera.vrp, afterField.camera.vrp, 'dragging the PRP handle moved the VRP');
+    assert.ok(afterHandle.viewsDrawn > afterField.viewsDrawn, 'the views were not drawn again after the PRP changed');
+    const cameraAfterHandle = await exportPng(page, 'camera', ...viewSize);
+    assert.ok(comparePngs(cameraAfterHandle, cameraAfterField).differing > 0, 'the camera view did not change when PRP changed');
+
+    draggedHash = withHashSign(afterHandle.hash);
+    assert.match(draggedHash, /[#&]vrp=/, 'state().hash carries the VRP');
+    assert.match(draggedHash, /[#&]prp=/, 'state().hash carries the PRP');
+    assertCleanConsole(pageConsole, 'while dragging');
+  });
+
+  test('(c) a URL with a state reproduces the same picture in a fresh page', { timeout: 180_000 }, async () => {
+    assert.ok(draggedHash, 'needs the URL state of (b)');
+    // The mouse leaves the views first: the handle it rests on after (b)'s drag is drawn highlighted,
+    // which is the pointer's state, not the link's.
+    await afterInput(page, () => page.mouse.move(2, page.viewport().height - 2));
+    const old = await vplabState(page);
+    const expected = await exportPng(page, 'camera', ...viewSize);
+    const expectedWorld = await exportPng(page, 'world', ...viewSize); // the link carries the observer too
+    await freshPage(server.url + draggedHash); // as a student opens the lecturer's link
+    await waitFrames(page, 3);
+    const fresh = await vplabState(page);
+    assert.equal(fresh.scene, old.scene, 'the fresh page opened another scene');
+    assert.deepEqual(fresh.camera, old.camera, `the fresh page's camera differs from the one of its URL ${draggedHash}`);
+    const actual = await exportPng(page, 'camera', ...viewSize);
+    await assertSimilar('url-state', actual, expected, { max: 0, mean: 0, largePixels: 0 });
+    await assertSimilar('url-state-world', await exportPng(page, 'world', ...viewSize), expectedWorld, { max: 0, mean: 0, largePixels: 0 });
+    if (defaultCamera) assert.ok(comparePngs(actual, defaultCamera).differing > 0, 'the URL\'s picture is the default scene\'s: the hash was ignored');
+
+    // The page follows a link given while it is open (hashchange): another bundled scene, by name.
+    const perspective = JSON.parse(readFileSync(path.join(scenesDir, 'perspective.json'), 'utf8')).camera;
+    await afterInput(page, () => page.evaluate(() => window.vplab.setHash('#scene=perspective')));
+    await waitForState(page, `(s) => JSON.stringify(s.camera.vrp) === '${JSON.stringify(perspective.vrp)}'`,
+      'the camera of the linked scene perspective.json', pageConsole);
+    const linked = await vplabState(page);
+    assert.match(withHashSign(linked.hash), /^#scene=perspective&/, 'the link of the opened scene names it');
+    assert.deepEqual(linked.camera.prp, perspective.prp, 'the linked scene\'s PRP');
+    assertCleanConsole(pageConsole, 'while loading a URL with a state');
+  });
+
+  test('(d) a malformed scene given to the file picker shows the error and keeps the open scene', { timeout: 120_000 }, async () => {
+    assert.ok(page, 'needs a page');
+    // Unsaved changes first (VRP y, the field's middle third): a failed open must not lose them either.
+    const clean = await vplabState(page);
+    const field = await cssRect(page, clean, 'camera.vrp');
+    const from = rectPoint(field, 0.5, 0.5);
+    await drag(page, from, { x: from.x + 20, y: from.y }, { steps: 5 });
+    const before = await vplabState(page);
+    assert.ok(before.dirty && before.camera.vrp[1] !== clean.camera.vrp[1], 'dragging VRP y made no unsaved change');
+    await afterInput(page, () => page.mouse.move(2, page.viewport().height - 2)); // off the field
+    const pictureBefore = await exportPng(page, 'camera', ...viewSize);
+
+    // The default scene with one number of the VRP replaced by a string: a file a student mistyped.
+    const scene = JSON.parse(readFileSync(path.join(scenesDir, 'default.json'), 'utf8'));
+    scene.camera.vrp[2] = 'zero';
+    const file = path.join(work.dir, 'mistyped-scene.json');
+    writeFileSync(file, JSON.stringify(scene, null, 2));
+    // What the desktop says about it, without its path and the "vplab: error: " prefix.
+    const desktop = await runVplab(['dump', '--scene', file]).then(
+      () => assert.fail(`the desktop vplab accepted ${file}`), (error) => error.stderr.trim());
+    const problem = desktop.slice(desktop.indexOf(file) + file.length).replace(/^:\s*/, '');
+    assert.ok(problem.length > 0, `cannot find the problem in the desktop's message: ${desktop}`);
+
+    const input = await page.$('#vplab-file');
+    assert.ok(input, 'the page has no <input type=file id="vplab-file">');
+    await input.uploadFile(file);
+    // The open scene has (b)'s unsaved changes: as on the desktop, the page asks first whether to
+    // discard them; the student says yes, and the file then fails to load.
+    await waitForState(page, (state) => state.statusIsError || Boolean(state.rects['discard.confirm']),
+      'the error or the question whether to discard the changes', pageConsole);
+    const asked = await vplabState(page);
+    assert.ok(asked.rects['discard.confirm'], 'opening a file over unsaved changes did not ask first');
+    {
+      await click(page, rectPoint(await cssRect(page, asked, 'discard.confirm')));
+      await waitForState(page, (state) => state.statusIsError, 'the error after discarding the changes', pageConsole);
+    }
+    await waitFrames(page, 3);
+    const after = await vplabState(page);
+    assert.ok(after.status.includes('mistyped-scene.json'), `state().status does not name the file: "${after.status}"`);
+    assert.ok(after.status.includes(problem), `state().status "${after.status}" does not say what the desktop says: "${problem}"`);
+    assert.equal(after.scene, before.scene, 'the open scene was replaced by the malformed one');
+    assert.deepEqual(after.camera, before.camera, 'the camera changed when the malformed scene failed to load');
+    assert.equal(after.dirty, true, 'the unsaved changes are no longer marked as such');
+    assert.equal(after.hash, before.hash, 'the URL state changed when the malformed scene failed to load');
+    const pictureAfter = await exportPng(page, 'camera', ...viewSize);
+    await assertSimilar('after-failed-open', pictureAfter, pictureBefore, { max: 0, mean: 0, largePixels: 0 });
+  });
+
+  test('(e) File > Save downloads the scene, and the desktop vplab dump of it prints the page\'s dump', { timeout: 120_000 }, async () => {
+    // A fresh page with (b)'s camera: (d) may have left its page unusable.
+    await freshPage(server.url + (draggedHash ?? ''));
+    const downloads = await catchDownloads(browser, context);
+    try {
+      const state = await vplabState(page);
+      await click(page, rectPoint(await cssRect(page, state, 'menu.file')));
+      await waitForState(page, (s) => Boolean(s.rects['menu.save']), 'the File menu\'s Save item', pageConsole, 5000);
+      const menu = await vplabState(page);
+      const since = pageConsole.length;
+      await click(page, rectPoint(await cssRect(page, menu, 'menu.save')));
+      const download = await unlessPageFails(downloads.next(30_000), pageConsole, 'the download of File > Save', since);
+      assert.match(download.name, /\.json$/, `File > Save downloaded "${download.name}", not a .json scene`);
+      const saved = path.join(work.dir, `saved-${path.basename(download.name)}`);
+      copyFileSync(download.file, saved);
+      const text = readFileSync(saved, 'utf8');
+      assert.equal(text, await page.evaluate(() => window.vplab.sceneText()), 'the download is not vplab.sceneText()');
+
+      const pageDump = await page.evaluate(() => window.vplab.dump());
+      const { stdout } = await runVplab(['dump', '--scene', saved]);
+      assert.ok(stdout.length > 1000, `vplab dump printed only ${stdout.length} characters`);
+      if (stdout !== pageDump) {
+        const a = stdout.split('\n');
+        const b = pageDump.split('\n');
+        const line = a.findIndex((l, i) => l !== b[i]);
+        const differing = a.filter((l, i) => l !== b[i]).length + Math.max(0, b.length - a.length);
+        assert.fail(`vplab dump --scene ${saved} differs from vplab.dump() in ${differing} of ${a.length} lines, ` +
+          `first at line ${line + 1}:\n  desktop: ${a[line]}\n  page:    ${b[line]}`);
+      }
+      // The saved scene is the dragged one, not the default scene.
+      const savedCamera = JSON.parse(text).camera;
+      assert.ok(savedCamera.vrp[0] !== 0, `the saved scene's VRP ${JSON.stringify(savedCamera.vrp)} lost (b)'s drag`);
+      assertCleanConsole(pageConsole, 'while saving');
+    } finally {
+      await downloads.remove();
+    }
+  });
+
+  test('(f) unsaved changes outlive the visit: the next visit offers them back', { timeout: 120_000 }, async () => {
+    await freshPage(server.url);
+    const start = await vplabState(page);
+    assert.equal(start.recoveryOffered, false, 'a first visit is offered a recovery');
+    const field = await cssRect(page, start, 'camera.vrp');
+    const from = rectPoint(field, 5 / 6, 0.5); // VRP z
+    await drag(page, from, { x: from.x + 30, y: from.y }, { steps: 5 });
+    const changed = await vplabState(page);
+    assert.ok(changed.dirty && changed.camera.vrp[2] > start.camera.vrp[2], 'dragging VRP z made no unsaved change');
+    // The autosave comes 3 s after the last change (as the desktop's), into the origin's localStorage.
+    const stored = () => page.evaluate(() => Object.keys(localStorage).map((k) => localStorage.getItem(k)).join(''));
+    const before = await stored();
+    await page.waitForFunction((text) => Object.keys(localStorage).map((k) => localStorage.getItem(k)).join('') !== text,
+      { timeout: 15_000, polling: 200 }, before).catch(() => assert.fail('no autosave reached localStorage within 15 s of the change'));
+
+    await page.close(); // the tab is closed without saving (no beforeunload prompt in a test)
+    ({ page, console: pageConsole } = await openPage(context, server.url));
+    await waitFrames(page, 3);
+    const next = await vplabState(page);
+    assert.equal(next.recoveryOffered, true, 'the next visit does not offer the unsaved changes back');
+    assert.deepEqual(next.camera, start.camera, 'the next visit opens with the changed camera before it was asked');
+    await click(page, rectPoint(await cssRect(page, next, 'recovery.recover')));
+    await waitForState(page, (s) => !s.recoveryOffered, 'the recovery dialog to close', pageConsole);
+    const recovered = await vplabState(page);
+    assert.deepEqual(recovered.camera, changed.camera, 'the recovered camera is not the one left unsaved');
+    assert.equal(recovered.dirty, true, 'recovered changes are not marked unsaved');
+    assertCleanConsole(pageConsole, 'while recovering');
+  });
+
+  test('(g) a scene dropped onto the page opens, and its camera view matches vplab render of that file', { timeout: 120_000 }, async () => {
+    await freshPage(server.url);
+    const file = path.join(scenesDir, 'perspective.json');
+    const text = readFileSync(file, 'utf8');
+    // What a file dragged from the desktop delivers: a drop event whose DataTransfer holds the file.
+    await afterInput(page, () => page.evaluate((name, content) => {
+      const transfer = new DataTransfer();
+      transfer.items.add(new File([content], name, { type: 'application/json' }));
+      for (const type of ['dragenter', 'dragover', 'drop']) {
+        window.dispatchEvent(new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }));
+      }
+    }, 'perspective.json', text));
+    await waitForState(page, (s) => s.title.includes('perspective') && !s.loading, 'the dropped scene to open', pageConsole);
+    const state = await vplabState(page);
+    const { camera } = JSON.parse(text);
+    const w = camera.window;
+    assert.deepEqual(
+      [state.camera.vrp, state.camera.prp, state.camera.vup, state.camera.window, state.camera.front, state.camera.back, state.camera.projection],
+      [camera.vrp, camera.prp, camera.vup, [w.xmin, w.xmax, w.ymin, w.ymax], camera.front, camera.back, camera.projection],
+      'the page\'s camera is not the dropped file\'s');
+    assert.equal(state.statusIsError, false, `opening the dropped scene failed: ${state.status}`);
+    const style = new URLSearchParams(state.hash.replace(/^#/, '')).get('camera-style') ?? 'shaded';
+    const picture = await exportPng(page, 'camera', ...viewSize);
+    const desktop = await desktopRender(work.dir, 'desktop-perspective-dropped', { scene: file, style });
+    const { report } = await assertSimilar('dropped-vs-desktop', picture, desktop);
+    console.log(`# ${report.split('\n')[0]}`);
+    assertCleanConsole(pageConsole, 'while opening a dropped scene');
+  });
+
+  test('(h) the canvas follows the window\'s size and devicePixelRatio, and the mouse lands where the UI is', { timeout: 120_000 }, async () => {
+    await freshPage(server.url, { viewport: { width: 1024, height: 640, deviceScaleFactor: 2 } });
+    const hiDpi = await vplabState(page);
+    assert.equal(hiDpi.devicePixelRatio, 2, 'state().devicePixelRatio on a screen of ratio 2');
+    assert.deepEqual(hiDpi.canvas, [2048, 1280], 'the canvas of a 1024 × 640 window at ratio 2 has 2048 × 1280 pixels');
+    const [x, y, w, h] = hiDpi.rects['camera.vrp'];
+    assert.ok(x >= 0 && y >= 0 && x + w <= 2048 && y + h <= 1280, `the VRP field ${JSON.stringify(hiDpi.rects['camera.vrp'])} lies outside the canvas`);
+    // The rects are canvas pixels: a drag at their CSS position (÷ 2) grabs the field.
+    const field = await cssRect(page, hiDpi, 'camera.vrp');
+    const from = rectPoint(field, 1 / 6, 0.5);
+    await drag(page, from, { x: from.x + 40, y: from.y });
+    const dragged = await vplabState(page);
+    assert.ok(dragged.camera.vrp[0] > hiDpi.camera.vrp[0], `a drag on the VRP field at ratio 2 left VRP x at ${dragged.camera.vrp[0]}`);
+
+    await afterInput(page, () => page.setViewport({ width: 900, height: 600, deviceScaleFactor: 1 }));
+    await waitForState(page, (s) => s.canvas[0] === 900 && s.canvas[1] === 600 && s.devicePixelRatio === 1,
+      'the canvas to follow the window to 900 × 600 at ratio 1', pageConsole);
+    const resized = await vplabState(page);
+    const view = resized.rects['view.camera'];
+    assert.ok(view && view[0] + view[2] <= 900 + 1 && view[1] + view[3] <= 600 + 1,
+      `the camera view ${JSON.stringify(view)} lies outside the resized 900 × 600 canvas`);
+    const screenshot = await page.screenshot({ type: 'png' });
+    assert.ok(distinctColours(screenshot) >= 32, 'the resized page is blank');
+    assertCleanConsole(pageConsole, 'at ratio 2 and after the resize');
+  });
+});
