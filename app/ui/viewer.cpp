@@ -760,7 +760,7 @@ void Viewer::showUrlState(const UrlState& link, bool atStart) {
   const bool otherScene = !link.scene.empty() && link.scene != urlState().scene;
   if (otherScene || (atStart && link.camera)) {
     Scene scene = s_.doc.scene();
-    if (!link.scene.empty()) {
+    if (otherScene) {
       const auto preset = std::find_if(s_.presets.begin(), s_.presets.end(),
                                        [&](const SceneFileInfo& p) { return p.file.stem() == link.scene; });
       if (preset == s_.presets.end()) throw Error("the link's scene \"" + link.scene + "\" is not one of vplab's bundled scenes");

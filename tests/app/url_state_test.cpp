@@ -127,6 +127,15 @@ TEST(UrlState, AViewerShowsALinkAsItWasWritten) {
   EXPECT_EQ(b.image().pixels, a.image().pixels) << "the same link draws the same window";
 }
 
+TEST(UrlState, ALinkToTheOpenSceneKeepsItsDocument) {
+  HeadlessViewer v(*test::egl().context, defaultScene(), 1280, 720);
+  v.frames(2);
+  v.viewer().showUrlState(decodeUrlState("scene=default&prp=1,2,9"), true);
+  v.frames(2);
+  EXPECT_EQ(v.state().doc.path(), "") << "the built-in scene stays the built-in one, not default.json";
+  EXPECT_EQ(v.state().doc.scene().camera.prp, Vec3(1, 2, 9));
+}
+
 TEST(UrlState, ACameraAloneIsAnEditAndAnUnknownSceneIsAnError) {
   HeadlessViewer v(*test::egl().context, defaultScene(), 1280, 720);
   v.frames(2);
