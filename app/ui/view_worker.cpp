@@ -18,6 +18,8 @@ namespace {
 }  // namespace
 
 Image readTexture(const GladGLContext& gl, GLuint texture) {
+  if (!gl.GetTexLevelParameteriv || !gl.GetTexImage)  // OpenGL ES and WebGL2 have neither
+    throw Error("this OpenGL cannot read a view's texture back (OpenGL ES has no glGetTexImage)");
   GLint w = 0, h = 0;
   gl.BindTexture(GL_TEXTURE_2D, texture);
   gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);

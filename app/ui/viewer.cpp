@@ -406,7 +406,9 @@ void Viewer::menuBar() {
       ImGui::EndMenu();
     }
     ImGui::Separator();
-    if (ImGui::BeginMenu("Export a view")) {
+    const bool exportOpen = ImGui::BeginMenu("Export a view");
+    ui::recordRect(s_, "menu.export");
+    if (exportOpen) {
       exportMenu();
       ImGui::EndMenu();
     }
@@ -528,12 +530,20 @@ void Viewer::exportMenu() {
   for (const Entry& e : entries) {
     // The image shown (drawn in this thread or on the views' render thread: textures are shared).
     const GLuint texture = viewCache_[size_t(e.kind)].texture;
+    const ViewKind kind = e.kind;
+    const int w = cachedWidth(kind), h = cachedHeight(kind);
     const std::string png = std::string(e.name) + " view as PNG…";
-    if (ImGui::MenuItem(png.c_str(), nullptr, false, texture != 0)) {
+    const bool pngChosen = ImGui::MenuItem(png.c_str(), nullptr, false, texture != 0);
+    ui::recordRect(s_, ("export." + std::string(toString(e.kind)) + ".png").c_str());
+    if (pngChosen) {
       dialog_->open("Export the " + std::string(e.name) + " view", FileChooser::Mode::save, {".png"},
-                   "vplab-" + std::string(toString(e.kind)) + ".png", [this, texture](const std::filesystem::path& f) {
+                   "vplab-" + std::string(toString(e.kind)) + ".png", [this, texture, kind, w, h](const std::filesystem::path& f) {
                      try {
-                       writePng(readTexture(ctx_.gl(), texture), f);
+                       // OpenGL ES (the browser's WebGL2) cannot read a texture back, and the page has
+                       // no render thread to wait for: the view is drawn again, as it is shown.
+                       const bool es = gl::dialectOf(ctx_.gl()) == gl::GlslDialect::es300;
+                       const bool camera = kind == ViewKind::camera;  // shown at the device's W × H
+                       writePng(es ? exportImage(kind, camera ? 0 : w, camera ? 0 : h) : readTexture(ctx_.gl(), texture), f);
                        setStatus("exported " + f.string(), false);
                      } catch (const Error& err) {
                        setStatus(err.what(), true);
@@ -542,9 +552,9 @@ void Viewer::exportMenu() {
     }
     const std::optional<std::string> why = svgExportError(e.kind, s_.doc.shown(), s_.frame);
     const std::string svg = std::string(e.name) + " view as SVG…";
-    if (ImGui::MenuItem(svg.c_str(), nullptr, false, !why && texture != 0)) {
-      const ViewKind kind = e.kind;
-      const int w = cachedWidth(kind), h = cachedHeight(kind);
+    const bool svgChosen = ImGui::MenuItem(svg.c_str(), nullptr, false, !why && texture != 0);
+    ui::recordRect(s_, ("export." + std::string(toString(e.kind)) + ".svg").c_str());
+    if (svgChosen) {
       dialog_->open("Export the " + std::string(e.name) + " view", FileChooser::Mode::save, {".svg"},
                    "vplab-" + std::string(toString(kind)) + ".svg", [this, kind, w, h](const std::filesystem::path& f) {
                      try {
