@@ -18,7 +18,7 @@ import { after, before, describe, test } from 'node:test';
 import { fileURLToPath } from 'node:url';
 
 import {
-  catchDownloads, click, comparePngs, cssRect, distinctColours, drag, exportPng, formatComparison,
+  catchDownloads, click, comparePngs, cssRect, decodePng, distinctColours, drag, exportPng, formatComparison,
   afterInput, keepArtifacts, launchBrowser, openPage, rectPoint, runVplab, startServer, tempDir, unlessPageFails,
   vplabBin, vplabState, waitFrames, webDir,
 } from './support.mjs';
@@ -418,6 +418,47 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     assert.deepEqual(recovered.camera, changed.camera, 'the recovered camera is not the one left unsaved');
     assert.equal(recovered.dirty, true, 'recovered changes are not marked unsaved');
     assertCleanConsole(pageConsole, 'while recovering');
+  });
+
+  test('(i) File > Export a view downloads the camera view as PNG and the world view as SVG', { timeout: 120_000 }, async () => {
+    await freshPage(server.url);
+    const downloads = await catchDownloads(browser, context);
+    try {
+      const got = {};
+      for (const item of ['export.camera.png', 'export.world.svg']) {
+        await click(page, rectPoint(await cssRect(page, await vplabState(page), 'menu.file')));
+        await waitForState(page, (s) => Boolean(s.rects['menu.export']), 'the File menu\'s Export item', pageConsole, 5000);
+        await afterInput(page, async () => {  // hovering opens the submenu
+          const r = await cssRect(page, await vplabState(page), 'menu.export');
+          for (const f of [0.3, 0.6]) {
+            const p = rectPoint(r, f);
+            await page.mouse.move(p.x, p.y);
+          }
+        });
+        await waitForState(page, `(s) => Boolean(s.rects['${item}'])`, `the Export submenu's ${item}`, pageConsole, 5000);
+        const since = pageConsole.length;
+        await click(page, rectPoint(await cssRect(page, await vplabState(page), item)));
+        got[item] = await unlessPageFails(downloads.next(30_000), pageConsole, `the download of ${item}`, since);
+      }
+      // The PNG is the camera view at the device's W × H as the page draws it (the same renderer as
+      // vplab.exportPng): equal pixels.
+      const png = readFileSync(got['export.camera.png'].file);
+      assert.equal(got['export.camera.png'].name, 'vplab-camera.png');
+      const { width, height } = decodePng(png);
+      assert.deepEqual([width, height], [640, 480], 'the default scene\'s device is 640 × 480');
+      await assertSimilar('export-menu-png', png, await exportPng(page, 'camera', width, height), { max: 0, mean: 0, largePixels: 0 });
+      // The SVG is a whole document of the world view's lines and labels.
+      const svg = readFileSync(got['export.world.svg'].file, 'utf8');
+      assert.equal(got['export.world.svg'].name, 'vplab-world.svg');
+      assert.match(svg, /^<\?xml[^>]*>\s*<svg[^>]*width="\d+"[^>]*height="\d+"/);
+      assert.match(svg, /<\/svg>\s*$/);
+      for (const label of ['PRP', 'VRP', 'window']) assert.ok(svg.includes(`>${label}<`), `the SVG has no label ${label}`);
+      const state = await vplabState(page);
+      assert.equal(state.statusIsError, false, state.status);
+      assertCleanConsole(pageConsole, 'while exporting');
+    } finally {
+      await downloads.remove();
+    }
   });
 
   test('(g) a scene dropped onto the page opens, and its camera view matches vplab render of that file', { timeout: 120_000 }, async () => {
