@@ -95,16 +95,15 @@ std::string shortestNumber(double v) {
 std::string encodeUrlState(const UrlState& s) {
   std::vector<std::string> parts;
   if (!s.scene.empty()) parts.push_back("scene=" + s.scene);
-  if (const auto& c = s.camera) {
-    parts.push_back("vrp=" + join({c->vrp.x, c->vrp.y, c->vrp.z}));
-    parts.push_back("prp=" + join({c->prp.x, c->prp.y, c->prp.z}));
-    parts.push_back("vup=" + join({c->vup.x, c->vup.y, c->vup.z}));
-    parts.push_back("window=" + join({c->window.xmin, c->window.xmax, c->window.ymin, c->window.ymax}));
-    parts.push_back("front=" + shortestNumber(c->front));
-    parts.push_back("back=" + shortestNumber(c->back));
-    parts.push_back("projection=" + std::string(toString(c->projection)));
-    if (c->projection == Projection::oblique) parts.push_back("oblique=" + join({c->oblique.d, c->oblique.phiDeg}));
-  }
+  const CameraLink& c = s.camera;
+  if (c.vrp) parts.push_back("vrp=" + join({c.vrp->x, c.vrp->y, c.vrp->z}));
+  if (c.prp) parts.push_back("prp=" + join({c.prp->x, c.prp->y, c.prp->z}));
+  if (c.vup) parts.push_back("vup=" + join({c.vup->x, c.vup->y, c.vup->z}));
+  if (c.window) parts.push_back("window=" + join({c.window->xmin, c.window->xmax, c.window->ymin, c.window->ymax}));
+  if (c.front) parts.push_back("front=" + shortestNumber(*c.front));
+  if (c.back) parts.push_back("back=" + shortestNumber(*c.back));
+  if (c.projection) parts.push_back("projection=" + std::string(toString(*c.projection)));
+  if (c.oblique) parts.push_back("oblique=" + join({c.oblique->d, c.oblique->phiDeg}));
   if (s.cameraStyle) parts.push_back("camera-style=" + std::string(toString(*s.cameraStyle)));
   if (s.worldStyle) parts.push_back("world-style=" + std::string(toString(*s.worldStyle)));
   if (s.npcStyle) parts.push_back("npc-style=" + std::string(toString(*s.npcStyle)));
@@ -122,8 +121,7 @@ UrlState decodeUrlState(std::string_view fragment) {
     throw Error("the link's state is " + std::to_string(fragment.size()) + " characters long; at most " +
                 std::to_string(kMaxUrlStateLength) + " are read");
   UrlState s;
-  Camera c;  // the camera's parts not in the link keep these defaults
-  bool anyCamera = false;
+  CameraLink& c = s.camera;
   size_t start = 0;
   while (start < fragment.size()) {
     const size_t amp = fragment.find('&', start);
@@ -137,9 +135,6 @@ UrlState decodeUrlState(std::string_view fragment) {
       const auto v = numbers(key, value, 3);
       return Vec3(v[0], v[1], v[2]);
     };
-    const bool cameraKey = key == "vrp" || key == "prp" || key == "vup" || key == "window" || key == "front" ||
-                           key == "back" || key == "projection" || key == "oblique";
-    anyCamera |= cameraKey;
     if (key == "scene") {
       if (!plainName(value))
         throw Error("the link's scene=" + quoteForError(value) + " is not the name of a bundled scene (letters, digits, - and _)");
@@ -152,7 +147,7 @@ UrlState decodeUrlState(std::string_view fragment) {
       c.vup = vec3();
     } else if (key == "window") {
       const auto v = numbers(key, value, 4);
-      c.window = {v[0], v[1], v[2], v[3]};
+      c.window = ViewWindow{v[0], v[1], v[2], v[3]};
     } else if (key == "front") {
       c.front = numbers(key, value, 1)[0];
     } else if (key == "back") {
@@ -163,7 +158,7 @@ UrlState decodeUrlState(std::string_view fragment) {
       c.projection = *p;
     } else if (key == "oblique") {
       const auto v = numbers(key, value, 2);
-      c.oblique = {v[0], v[1]};
+      c.oblique = ObliqueParams{v[0], v[1]};
     } else if (key == "camera-style") {
       s.cameraStyle = style(key, value);
     } else if (key == "world-style") {
@@ -183,11 +178,27 @@ UrlState decodeUrlState(std::string_view fragment) {
                   "back, projection, oblique, camera-style, world-style, npc-style, world, npc, strategy)");
     }
   }
-  if (anyCamera) {
-    if (auto e = cameraError(c)) throw Error("the link's camera is not valid: " + *e);
-    s.camera = c;
-  }
   return s;
+}
+
+Camera CameraLink::over(const Camera& base) const {
+  Camera c = base;
+  if (vrp) c.vrp = *vrp;
+  if (prp) c.prp = *prp;
+  if (vup) c.vup = *vup;
+  if (window) c.window = *window;
+  if (front) c.front = *front;
+  if (back) c.back = *back;
+  if (projection) c.projection = *projection;
+  if (oblique) c.oblique = *oblique;
+  if (auto e = cameraError(c)) throw Error("the link's camera is not valid: " + *e);
+  return c;
+}
+
+CameraLink cameraLinkOf(const Camera& c) {
+  CameraLink l{c.vrp, c.prp, c.vup, c.window, c.front, c.back, c.projection, std::nullopt};
+  if (c.projection == Projection::oblique) l.oblique = c.oblique;
+  return l;
 }
 
 }  // namespace vplab

@@ -746,7 +746,7 @@ UrlState Viewer::urlState() const {
   // The built-in scene is the bundled default.json (the same dump): a link names it as "default".
   if (s_.doc.path().empty()) u.scene = "default";
   else if (isBundled(s_.doc.path())) u.scene = s_.doc.path().stem().string();
-  u.camera = s_.doc.scene().camera;
+  u.camera = cameraLinkOf(s_.doc.scene().camera);
   u.cameraStyle = s_.frame.camera.style;
   u.worldStyle = s_.frame.world.style;
   u.npcStyle = s_.frame.npc.style;
@@ -768,7 +768,7 @@ void Viewer::showUrlState(const UrlState& link, bool atStart) {
     requestFrames(2);
   };
   const bool otherScene = !link.scene.empty() && link.scene != urlState().scene;
-  if (otherScene || (atStart && link.camera)) {
+  if (otherScene || (atStart && !link.camera.empty())) {
     Scene scene = s_.doc.scene();
     if (otherScene) {
       const auto preset = std::find_if(s_.presets.begin(), s_.presets.end(),
@@ -776,14 +776,14 @@ void Viewer::showUrlState(const UrlState& link, bool atStart) {
       if (preset == s_.presets.end()) throw Error("the link's scene \"" + link.scene + "\" is not one of vplab's bundled scenes");
       scene = loadScene(preset->file);
     }
-    if (link.camera) scene.camera = *link.camera;
+    scene.camera = link.camera.over(scene.camera);
     unlessUnsaved([this, scene = std::move(scene), showViews]() mutable {
       startDocument(std::move(scene));
       showViews();
     });
     return;
   }
-  if (link.camera && *link.camera != s_.doc.scene().camera) s_.doc.scene().camera = *link.camera;
+  if (const Camera c = link.camera.over(s_.doc.scene().camera); c != s_.doc.scene().camera) s_.doc.scene().camera = c;
   showViews();
 }
 

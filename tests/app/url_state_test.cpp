@@ -31,7 +31,7 @@ UrlState everything() {
   c.back = -3.2;
   c.projection = Projection::oblique;
   c.oblique = kCavalier;
-  s.camera = c;
+  s.camera = cameraLinkOf(c);
   s.cameraStyle = Style::wire;
   s.worldStyle = Style::hiddenLine;
   s.npcStyle = Style::flat;
@@ -66,6 +66,30 @@ TEST(UrlState, ShortestNumberReadsBackExactly) {
   EXPECT_EQ(shortestNumber(1e20), "1e+20");
 }
 
+// A link's camera parts replace only themselves; whether they make a camera is known over the scene's.
+TEST(UrlState, CameraPartsGoOverTheScenesCamera) {
+  Camera base;
+  base.vrp = {1, 2, 3};
+  base.window = {-2, 2, -1.5, 1.5};
+  const Camera c = decodeUrlState("prp=4,5,6&front=1").camera.over(base);
+  EXPECT_EQ(c.prp, Vec3(4, 5, 6));
+  EXPECT_EQ(c.front, 1);
+  EXPECT_EQ(c.vrp, base.vrp);
+  EXPECT_EQ(c.window, base.window);
+  EXPECT_EQ(c.back, base.back);
+  auto invalid = [&](const char* fragment) {
+    try {
+      decodeUrlState(fragment).camera.over(base);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_THAT(invalid("prp=1,2,3"), HasSubstr("the link's camera is not valid"));  // PRP on VRP
+  EXPECT_THAT(invalid("front=-5&back=5"), HasSubstr("the link's camera is not valid"));
+  EXPECT_EQ(decodeUrlState("").camera.over(base), base);
+}
+
 TEST(UrlState, AnEmptyFragmentGivesNothing) {
   EXPECT_EQ(decodeUrlState(""), UrlState{});
   EXPECT_EQ(decodeUrlState("#"), UrlState{});
@@ -87,8 +111,6 @@ TEST(UrlState, HostileFragmentsAreNamedErrors) {
   EXPECT_THAT(error("back=-inf"), HasSubstr("not 1 finite number"));
   EXPECT_THAT(error("back=1e999"), HasSubstr("not 1 finite number"));
   EXPECT_THAT(error("front=3x"), HasSubstr("not 1 finite number"));
-  EXPECT_THAT(error("prp=0,0,0&vrp=0,0,0"), HasSubstr("camera is not valid"));
-  EXPECT_THAT(error("front=-5&back=5"), HasSubstr("camera is not valid"));
   EXPECT_THAT(error("projection=fisheye"), HasSubstr("not perspective, parallel or oblique"));
   EXPECT_THAT(error("camera-style=pretty"), HasSubstr("is not a style"));
   EXPECT_THAT(error("world=0,0,0,0,95,10,40"), HasSubstr("is no observer"));
@@ -143,8 +165,11 @@ TEST(UrlState, ACameraAloneIsAnEditAndAnUnknownSceneIsAnError) {
   v.viewer().showUrlState(decodeUrlState("prp=1,2,9"), false);
   v.frames(2);
   EXPECT_EQ(v.state().doc.scene().camera.prp, Vec3(1, 2, 9));
-  EXPECT_EQ(v.state().doc.scene().camera.vrp, Camera{}.vrp);  // the link's camera is whole: defaults fill it
-  EXPECT_NE(v.state().doc.scene().camera, before);
+  EXPECT_EQ(v.state().doc.scene().camera.window, before.window) << "what the link does not give stays the scene's";
+  EXPECT_EQ(v.state().doc.scene().camera.front, before.front);
+  EXPECT_TRUE(v.state().doc.dirty()) << "a camera alone is an edit of the open scene";
+  EXPECT_THROW(v.viewer().showUrlState(decodeUrlState("prp=0,0,0"), false), Error) << "PRP on VRP";
+  EXPECT_EQ(v.state().doc.scene().camera.prp, Vec3(1, 2, 9)) << "an invalid link changes nothing";
   EXPECT_THROW(v.viewer().showUrlState(decodeUrlState("scene=no-such-scene"), false), Error);
 }
 
