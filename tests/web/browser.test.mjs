@@ -461,6 +461,60 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     }
   });
 
+  test('(j) on a tablet one finger turns the world view and a pinch zooms it; the browser keeps Ctrl+S and Ctrl+O', { timeout: 120_000 }, async () => {
+    await freshPage(server.url, { viewport: { width: 1024, height: 768, deviceScaleFactor: 2, hasTouch: true } });
+    const cdp = await page.createCDPSession();
+    const touch = (type, points) => cdp.send('Input.dispatchTouchEvent',
+      { type, touchPoints: points.map(([x, y], id) => ({ x, y, id })) });
+    const orbit = (s) => new URLSearchParams(s.hash.replace(/^#/, '')).get('world').split(',').map(Number);
+    const world = await cssRect(page, await vplabState(page), 'view.world');
+    const before = await vplabState(page);
+    const [, , , yaw0, pitch0, distance0] = orbit(before);
+
+    // One finger from the lower left of the view (no handle there) 80 CSS px to the right: 160
+    // canvas pixels at ratio 2, 0.4 degrees each.
+    const from = rectPoint(world, 0.15, 0.85);
+    await afterInput(page, () => touch('touchStart', [[from.x, from.y]]));
+    for (let i = 1; i <= 8; ++i) await afterInput(page, () => touch('touchMove', [[from.x + 10 * i, from.y]]));
+    await afterInput(page, () => touch('touchEnd', []));
+    const turned = await vplabState(page);
+    const [, , , yaw1, pitch1, distance1] = orbit(turned);
+    assert.ok(Math.abs(Math.abs(yaw1 - yaw0) - 64) < 1e-6, `one finger turned the yaw from ${yaw0} to ${yaw1}, not by 64 degrees`);
+    assert.equal(pitch1, pitch0, 'a horizontal swipe tilted the view');
+    assert.equal(distance1, distance0);
+    assert.deepEqual(turned.camera, before.camera, 'the swipe moved the camera, not the observer');
+
+    // Two fingers spread apart in the middle of the view: the observer comes closer, nothing turns.
+    const c = rectPoint(world, 0.5, 0.5);
+    await afterInput(page, () => touch('touchStart', [[c.x - 20, c.y], [c.x + 20, c.y]]));
+    for (let i = 1; i <= 6; ++i) await afterInput(page, () => touch('touchMove', [[c.x - 20 - 10 * i, c.y], [c.x + 20 + 10 * i, c.y]]));
+    await afterInput(page, () => touch('touchEnd', []));
+    const [, , , yaw2, pitch2, distance2] = orbit(await vplabState(page));
+    assert.ok(distance2 < distance1 * 0.8, `the pinch left the observer at ${distance2} (was ${distance1})`);
+    assert.equal(yaw2, yaw1, 'the pinch turned the view');
+    assert.equal(pitch2, pitch1, 'the pinch tilted the view');
+
+    // Ctrl+S and Ctrl+O reach the browser untouched (nothing prevents their default) and the lab
+    // does nothing with them.
+    await page.evaluate(() => {
+      window.vplabKeyDefaults = [];
+      window.addEventListener('keydown', (e) => { if (e.ctrlKey) window.vplabKeyDefaults.push(e.defaultPrevented); });
+    });
+    const status = (await vplabState(page)).status;
+    for (const key of ['s', 'o']) {
+      await afterInput(page, async () => {
+        await page.keyboard.down('Control');
+        await page.keyboard.press(key);
+        await page.keyboard.up('Control');
+      });
+    }
+    const prevented = await page.evaluate(() => window.vplabKeyDefaults);  // Control's own keydowns count too
+    assert.equal(prevented.length, 4, `keydowns with Ctrl seen: ${prevented.length}`);
+    assert.ok(prevented.every((p) => p === false), 'the page prevented the browser\'s own Ctrl+S or Ctrl+O');
+    assert.equal((await vplabState(page)).status, status, 'the lab acted on Ctrl+S or Ctrl+O');
+    assertCleanConsole(pageConsole, 'while touching and pressing the browser\'s shortcuts');
+  });
+
   test('(g) a scene dropped onto the page opens, and its camera view matches vplab render of that file', { timeout: 120_000 }, async () => {
     await freshPage(server.url);
     const file = path.join(scenesDir, 'perspective.json');
