@@ -5,9 +5,10 @@
 //                   and nothing cached (a first visit), against the 2 s goal
 //   3. frames:      vplab.benchFrames(n) (n frames that each redraw the default scene's three views) in
 //                   the page, timed from before the call until a 1-pixel readPixels after it returned:
-//                   Chromium's WebGL finish() does not wait for the GPU process (measured: benchFrames
-//                   reported 2.5-5 ms per frame while its pixels took ~41 ms), so only a read-back
-//                   says when the frames were drawn; beside the desktop's `vplab bench --only frames`
+//                   Chromium's WebGL finish() does not wait for the GPU process (measured: a
+//                   benchFrames ending in finish() reported 2.5-5 ms per frame while its pixels took
+//                   ~41 ms), so only a read-back says when the frames were drawn (benchFrames now
+//                   reads a pixel back itself, and its own figure is printed beside); beside the desktop's `vplab bench --only frames`
 //                   figure for the same scene (three_views_default_scene), and their ratio
 // One Chromium at a time; the desktop benchmark runs after the browser has closed.
 //
@@ -187,7 +188,7 @@ const lines = [
   `  three views:     page ${round(frames.page.median, 2)} ms/frame (median of ${frames.page.samples.length} runs of ${frames.page.frames_per_run} frames; ` +
     `min ${round(frames.page.min, 2)}, max ${round(frames.page.max, 2)}), canvas ${frames.page.canvas?.join('x')} ` +
     `(camera ${frames.page.view_sizes.camera?.join('x') ?? '?'}, world ${frames.page.view_sizes.world?.join('x') ?? '?'}, npc ${frames.page.view_sizes.npc?.join('x') ?? '?'}), ${frames.page.renderer}`,
-  `                   (vplab.benchFrames itself reports ${round(frames.page.reported_by_page.median, 2)} ms: WebGL's finish() does not wait for the GPU process)`,
+  `                   (vplab.benchFrames itself reports ${round(frames.page.reported_by_page.median, 2)} ms, timed to its own read-back)`,
   `                   desktop ${round(frames.desktop.median, 2)} ms/frame (median of ${frames.desktop.samples}; each view ${frames.desktop.size_per_view?.join('x')}), ${frames.desktop.renderer}`,
   `                   page / desktop = ${round(frames.page_over_desktop, 2)}`,
 ];
