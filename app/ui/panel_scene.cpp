@@ -10,9 +10,7 @@
 
 namespace vplab::ui {
 
-namespace {
-
-void addObject(ViewerState& s, Shape shape, std::string file = {}) {
+void addObject(ViewerState& s, Shape shape, std::string file) {
   Scene& scene = s.doc.scene();
   SceneObject o;
   o.shape = shape;
@@ -36,6 +34,8 @@ void addObject(ViewerState& s, Shape shape, std::string file = {}) {
   scene.objects.push_back(std::move(o));
   s.selectedObject = int(scene.objects.size()) - 1;
 }
+
+namespace {
 
 void transformEditor(ViewerState& s, SceneObject& o) {
   ModelTransform& t = o.transform;

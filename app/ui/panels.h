@@ -16,4 +16,8 @@ void probePanel(ViewerState& s);
 void lecturePanel(ViewerState& s);
 void depthPanel(ViewerState& s);
 
+/// Adds an object of `shape` where the camera looks, selected (the scene panel's "+ cube" …). A mesh
+/// (an OBJ `file`) is read on the viewer's worker thread: it joins the scene when loaded.
+void addObject(ViewerState& s, Shape shape, std::string file = {});
+
 }  // namespace vplab::ui

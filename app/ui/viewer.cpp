@@ -712,15 +712,7 @@ void Viewer::openFile(const std::filesystem::path& file) {
     unlessUnsaved([this, file] { openScene(file); });
     return;
   }
-  // An OBJ joins the open scene as a mesh object where the camera looks (as the scene panel's
-  // "+ OBJ mesh…"), read by the loader.
-  SceneObject o;
-  o.shape = Shape::mesh;
-  o.name = file.stem().string();
-  o.file = file.string();
-  o.color = {0.75, 0.75, 0.78};
-  o.transform.translate = s_.doc.scene().camera.vrp;
-  s_.objectToLoad = std::move(o);
+  ui::addObject(s_, Shape::mesh, file.string());  // as the scene panel's "+ OBJ mesh…"
   setStatus("adding " + file.string() + " …", false);
   requestFrames(2);
 }
