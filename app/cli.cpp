@@ -193,6 +193,7 @@ struct ViewerOptions {
   std::string scene;
   int quitAfterFrames = 0;
   std::string screenshot;
+  double waitForViews = 30;
   float uiScale = 1.f;
   bool glDebug = false;
   bool reportFrames = false;
@@ -227,6 +228,7 @@ int runViewer(const ViewerOptions& v) {
   launch.scene = sceneFrom(v.scene);
   launch.quitAfterFrames = v.quitAfterFrames;
   launch.screenshotOnQuit = v.screenshot;
+  launch.waitForViews = v.waitForViews;
   launch.uiScale = v.uiScale;
   launch.reportFrames = v.reportFrames;
 #ifndef NDEBUG
@@ -261,6 +263,11 @@ int runCommandLine(int argc, char** argv) {
       ->check(CLI::Range(1, 100000000));
   app.add_option("--screenshot", viewer.screenshot, "Write a PNG of the whole window when quitting")
       ->check(extensionIn({".png"}));
+  app.add_option("--wait-for-views", viewer.waitForViews,
+                 "Seconds that --screenshot, F12 and --quit-after-frames wait for every shown view's current "
+                 "image (never an \"updating…\" frame); past them --quit-after-frames fails (status 1) naming "
+                 "the views (default 30)")
+      ->check(finiteIn(0, 3600));
   app.add_option("--ui-scale", viewer.uiScale, "Scale fonts and handles (1.5 or 2 for a projector)")
       ->check(finiteIn(0.5, 4));
   app.add_flag("--gl-debug", viewer.glDebug, "Turn on KHR_debug and fail on any OpenGL error");

@@ -24,6 +24,8 @@
 #include <atomic>
 #include <ctime>
 #include <iostream>
+#include <optional>
+#include <sstream>
 #include <thread>
 
 namespace vplab {
@@ -98,6 +100,19 @@ class EndSignals {
   struct sigaction oldTerm_ {}, oldInt_ {}, oldHup_ {};
 };
 
+/// "the world and NPC views were not ready after 30 s".
+std::string describeNotReady(const std::vector<ViewKind>& late, double seconds) {
+  std::string names;
+  for (size_t i = 0; i < late.size(); ++i) {
+    if (i > 0) names += i + 1 == late.size() ? " and " : ", ";
+    names += std::string(toString(late[i]));
+  }
+  std::ostringstream out;
+  out << "the " << names << (late.size() == 1 ? " view was" : " views were") << " not ready after " << seconds
+      << " s (still drawn on the render thread)";
+  return out.str();
+}
+
 std::string screenshotName() {
   const std::time_t now = std::time(nullptr);
   char buf[64];
@@ -148,14 +163,17 @@ int runViewerWindow(ViewerLaunch launch) {
 namespace {
 
 int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignals& signals, const ViewerLaunch& launch) {
-  // Smoke tests and scripted screenshots (--quit-after-frames) draw every frame, as fast as vsync.
-  const bool continuous = launch.quitAfterFrames > 0;
   std::string shownTitle;
   int frames = 0;
+  std::optional<double> waitingSince;  // since when a screenshot or the scripted end waits for the views
   auto report = [&] {
     if (launch.reportFrames) std::cerr << "vplab: " << frames << " frames drawn\n";
   };
   for (;;) {
+    const bool scriptedEnd = launch.quitAfterFrames > 0 && frames >= launch.quitAfterFrames;
+    // Smoke tests and scripted screenshots (--quit-after-frames) draw every frame, as fast as vsync;
+    // past their count they wait, as an idle window does, for the render thread's images.
+    const bool continuous = launch.quitAfterFrames > 0 && !scriptedEnd;
     const double wait = continuous || input.changed || !input.queue.empty() ? 0 : viewer.wakeIn();
     // wakeIn() counts from the last frame's time, which stands still while no frame is drawn: the
     // timer's end is kept here in real time (the next autosave, the text cursor's blink).
@@ -186,15 +204,37 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
     window.framebufferSize(w, h);
     if (w > 0 && h > 0) viewer.frame(0, w, h);
     ++frames;
-    const bool last = viewer.shouldQuit() || (launch.quitAfterFrames > 0 && frames >= launch.quitAfterFrames);
-    if (viewer.screenshotRequested() || (last && !launch.screenshotOnQuit.empty())) {
-      const std::string file = viewer.screenshotRequested() ? screenshotName() : launch.screenshotOnQuit;
-      writePng(gl::readPixels(window.gl(), 0, w, h), file);
-      viewer.screenshotTaken(file);
+    const bool scripted = launch.quitAfterFrames > 0 && frames >= launch.quitAfterFrames;
+    const bool quitting = viewer.shouldQuit() || scripted;
+    const bool shot = viewer.screenshotRequested() || (quitting && !launch.screenshotOnQuit.empty());
+    // A screenshot is of what the user asked to see, and a scripted end shows it too: both wait until
+    // every shown view has its current image (README "The viewer", issue 19).
+    if (shot || scripted) {
+      if (const std::vector<ViewKind> late = viewer.viewsNotReady(); !late.empty()) {
+        if (!waitingSince) waitingSince = glfwGetTime();
+        if (glfwGetTime() - *waitingSince < launch.waitForViews) {
+          window.swapBuffers();
+          continue;  // the render thread wakes the wait when an image is finished
+        }
+        const std::string why = describeNotReady(late, launch.waitForViews);
+        waitingSince.reset();
+        if (quitting) {
+          std::cerr << "vplab: " << why << (shot ? "; no screenshot written" : "") << "\n";
+          viewer.endSession();
+          report();
+          return 1;
+        }
+        viewer.screenshotFailed(why);
+      } else if (shot) {
+        waitingSince.reset();
+        const std::string file = viewer.screenshotRequested() ? screenshotName() : launch.screenshotOnQuit;
+        writePng(gl::readPixels(window.gl(), 0, w, h), file);
+        viewer.screenshotTaken(file);
+      }
     }
     window.swapBuffers();
     if (viewer.title() != shownTitle) window.setTitle(shownTitle = viewer.title());
-    if (last) break;
+    if (quitting) break;
   }
   viewer.endSession();
   report();

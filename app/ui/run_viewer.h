@@ -13,12 +13,16 @@ struct ViewerLaunch {
   float uiScale = 1.f;              // larger fonts and handles for projectors
   int quitAfterFrames = 0;          // > 0: quit by itself after that many frames (smoke tests)
   std::string screenshotOnQuit;     // a PNG of the whole window written when quitting
+  /// How long a screenshot (F12, screenshotOnQuit) and the scripted end (quitAfterFrames) wait for
+  /// every shown view's current image; past it the scripted end fails (status 1) naming the views.
+  double waitForViews = 30;
   bool glDebug = false;
   bool reportFrames = false;        // print the number of frames drawn when the viewer ends (tests)
 };
 
 /// Runs until the window is closed (0), or a signal ends it (128 + SIGTERM, SIGINT or SIGHUP, after writing
-/// the recovery file of unsaved changes). Throws vplab::Error when no window can be opened.
+/// the recovery file of unsaved changes), or the scripted end found views not ready within
+/// waitForViews (1). Throws vplab::Error when no window can be opened.
 int runViewerWindow(ViewerLaunch launch);
 
 }  // namespace vplab

@@ -134,6 +134,13 @@ GLuint Viewer::drawViewOnWorker(ViewKind kind, ViewStamp stamp, int w, int h) {
   return cached.texture;
 }
 
+std::vector<ViewKind> Viewer::viewsNotReady() const {
+  std::vector<ViewKind> kinds;
+  for (size_t k = 0; k < viewCache_.size(); ++k)
+    if (viewCache_[k].asked && viewCache_[k].busy) kinds.push_back(ViewKind(k));
+  return kinds;
+}
+
 void Viewer::busyMark(ViewKind kind) {
   if (!viewCache_[size_t(kind)].busy) return;
   const ImVec2 max = ImGui::GetItemRectMax();

@@ -129,6 +129,11 @@ void Viewer::screenshotTaken(const std::string& file) {
   setStatus("screenshot saved: " + file, false);
 }
 
+void Viewer::screenshotFailed(const std::string& why) {
+  screenshotRequested_ = false;
+  setStatus("no screenshot: " + why, true);
+}
+
 void Viewer::setStatus(std::string message, bool error) {
   s_.status = std::move(message);
   s_.statusIsError = error;

@@ -107,6 +107,13 @@ class Viewer {
   /// Written by F12 into the working directory; the runner reads the window back.
   bool screenshotRequested() const { return screenshotRequested_; }
   void screenshotTaken(const std::string& file);
+  /// F12's screenshot could not be taken (`why`: the views not ready in time): said in the status line.
+  void screenshotFailed(const std::string& why);
+  /// The views shown in the last frame with an older image and the busy mark, while the render thread
+  /// draws their current one. A screenshot is taken only when this is empty: it shows what was asked
+  /// for, never an "updating…" frame (on a fresh machine llvmpipe compiles the views' shaders for the
+  /// first ~0.8 s).
+  std::vector<ViewKind> viewsNotReady() const;
 
  private:
   void menuBar();

@@ -146,7 +146,9 @@ struct Page {
     input.queue.feed(ImGui::GetIO());
     if (w > 0 && h > 0) viewer.frame(0, w, h);
     ++frames;
-    if (viewer.screenshotRequested()) {
+    // The page draws its views in the frame (no render thread), so this holds at once; the rule is
+    // the window's: a screenshot shows every view's current image.
+    if (viewer.screenshotRequested() && viewer.viewsNotReady().empty()) {
       const std::filesystem::path file = "/downloads/vplab-screenshot.png";
       std::error_code ec;
       std::filesystem::create_directories(file.parent_path(), ec);
