@@ -21,10 +21,17 @@ cpu_ticks() { local a; read -r -a a < "/proc/$1/stat"; echo $((a[13] + a[14])); 
 "$vplab" --report-frames 2> err1 &
 pid=$!
 wid=$(timeout 30 xdotool search --sync --onlyvisible --name '^vplab' | head -1) || fail "no vplab window appeared"
-sleep 3  # the first frames (fonts, shaders, the pipeline run) are not idle
+# The first frames (fonts, the pipeline run, llvmpipe compiling the shaders with no cache, the
+# render thread's first images) are not idle, and under load they take a while: wait until a whole
+# second passes with < 2 % of a core used (at most 60 s), then measure.
+hz=$(getconf CLK_TCK)
+sleep 1
+for _ in $(seq 60); do
+  a=$(cpu_ticks $pid); sleep 1; b=$(cpu_ticks $pid)
+  (( (b - a) * 100 < 2 * hz )) && break
+done
 
 # 1. Idle CPU over 10 s.
-hz=$(getconf CLK_TCK)
 t0=$(cpu_ticks $pid); s0=$(date +%s%N)
 sleep 10
 t1=$(cpu_ticks $pid); s1=$(date +%s%N)
