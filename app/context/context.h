@@ -32,7 +32,7 @@ class GlContext {
   virtual std::string_view backend() const = 0;  // "egl", "osmesa", "glfw"
   virtual void makeCurrent() = 0;
   /// A second context that shares this one's objects (textures, buffers; not vertex arrays), for a
-  /// render thread (app/ui/view_worker.h); null when the backend cannot make one. Made on the
+  /// render thread (app/render/view_worker.h); null when the backend cannot make one. Made on the
   /// calling thread, which this context stays current on.
   virtual std::unique_ptr<GlContext> createShared() { return nullptr; }
   /// Makes no context current on the calling thread (a render thread does before it ends).

@@ -13,11 +13,13 @@ void Document::refreshShown() {
   } else {
     error_.clear();
     shown_ = scene_;
+    ++shownRevision_;
   }
 }
 
 void Document::endFrame(bool editInProgress) {
-  if (!(scene_ == shown_) || !error_.empty()) refreshShown();
+  // The one comparison of the edited scene per frame: the panels edit scene() in place.
+  if (!error_.empty() || !(scene_ == shown_)) refreshShown();
   if (editInProgress || scene_ == stable_) return;
   undo_.push_back(std::move(stable_));
   if (undo_.size() > kMaxHistory) undo_.erase(undo_.begin());

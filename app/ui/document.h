@@ -50,6 +50,9 @@ class Document {
   unsigned generation() const { return generation_; }
   /// Counts every recorded change (edit steps, undo, redo, replace, save): the autosave compares it.
   unsigned revision() const { return revision_; }
+  /// Counts the changes of shown(), recorded or still under way (a drag): the CPU pipeline runs
+  /// again when it changes.
+  unsigned shownRevision() const { return shownRevision_; }
 
  private:
   void refreshShown();
@@ -60,7 +63,7 @@ class Document {
   std::string error_;
   std::vector<Scene> undo_, redo_;
   bool dirty_ = false;
-  unsigned generation_ = 0, revision_ = 0;
+  unsigned generation_ = 0, revision_ = 0, shownRevision_ = 0;
   static constexpr size_t kMaxHistory = 500;
 };
 

@@ -51,7 +51,7 @@ void clippingPanel(ViewerState& s) {
           "or wholly outside the view volume.",
           "Umgebungsclipping: ein Test des umgebenden Quaders entscheidet für alle Polygone.");
 
-  const PipelineStats& st = s.run.stats;
+  const PipelineStats& st = s.run().stats;
   if (ImGui::BeginTable("stats", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
     ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthStretch);
     ImGui::TableSetupColumn("count", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("00000000").x);

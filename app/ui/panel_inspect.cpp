@@ -75,7 +75,7 @@ void matricesPanel(ViewerState& s) {
   tooltip("The project computes with column vectors (p' = M · p, as GLM). The lecture notes write points as "
           "row vectors; their matrices are the transposes.",
           "Die Vorlesung schreibt Punkte als Zeilenvektoren; ihre Matrizen sind die transponierten.");
-  const PipelineRun& run = s.run;
+  const PipelineRun& run = s.run();
   Mat4 wcFromMc(1.0);
   std::string objectName = "(no object)";
   if (!run.objects.empty()) {
@@ -98,7 +98,7 @@ void probePanel(ViewerState& s) {
     ImGui::TextWrapped("Click a vertex in any view to follow it through the pipeline.");
     return;
   }
-  const PipelineRun& run = s.run;
+  const PipelineRun& run = s.run();
   const ObjectRun* o = nullptr;
   for (size_t i = 0; i < run.sceneIndex.size(); ++i)
     if (run.sceneIndex[i] == s.probe->object) o = &run.objects[i];

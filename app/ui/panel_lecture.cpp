@@ -22,8 +22,8 @@ namespace vplab::ui {
 namespace {
 
 const ObjectRun* runOf(const ViewerState& s, int sceneIndex) {
-  for (size_t i = 0; i < s.run.sceneIndex.size(); ++i)
-    if (int(s.run.sceneIndex[i]) == sceneIndex) return &s.run.objects[i];
+  for (size_t i = 0; i < s.run().sceneIndex.size(); ++i)
+    if (int(s.run().sceneIndex[i]) == sceneIndex) return &s.run().objects[i];
   return nullptr;
 }
 
@@ -86,7 +86,7 @@ void stepThroughSection(ViewerState& s) {
   fitLabel("polygon");
   ImGui::SliderInt("polygon", &st.face, 0, int(o->faceCount()) - 1);
   ImGui::TextDisabled("its fate: %s", std::string(toString(o->fate[size_t(st.face)])).c_str());
-  const std::vector<ClipStep> steps = clipSteps(s.run, *o, size_t(st.face));
+  const std::vector<ClipStep> steps = clipSteps(s.run(), *o, size_t(st.face));
   const int last = int(steps.size());
   st.step = std::clamp(st.step, 0, last);
   ImGui::BeginDisabled(st.step == 0);  // nothing before the first plane
@@ -158,7 +158,7 @@ void vanishingSection(ViewerState& s) {
   if (!s.frame.overlays.vanishingPoints) return;
   const ObjectRun* o = runOf(s, s.selectedObject);
   if (!o) return;
-  const VanishingText t = vanishingText(s.run, *o);
+  const VanishingText t = vanishingText(s.run(), *o);
   ImGui::TextWrapped("%s", t.headline.c_str());
   for (const std::string& axis : t.axes) {
     ImGui::Bullet();
@@ -199,8 +199,8 @@ void lecturePanel(ViewerState& s) {
 // ranges, equal VRC steps and where they land in NPC (crowding near the back plane, lecture notes 15.2.4),
 // and what 16- and 24-bit depth buffers can resolve.
 void depthPanel(ViewerState& s) {
-  const Camera& c = s.run.camera;
-  const ViewFrame& f = s.run.frame;
+  const Camera& c = s.run().camera;
+  const ViewFrame& f = s.run().frame;
   const float line = ImGui::GetTextLineHeight();
   // The legend above the plot, off the curves.
   ImGui::BeginGroup();
@@ -219,7 +219,7 @@ void depthPanel(ViewerState& s) {
   // At least ten lines of text high, so the curves read at any UI scale.
   const float height = std::clamp(ImGui::GetContentRegionAvail().y - line * 9, line * 10, line * 22);
   const ImGuiTextMetrics text(s.uiScale);
-  const DepthPlot plot = depthPlot(s.run, int(width), int(height), text, {false, false});
+  const DepthPlot plot = depthPlot(s.run(), int(width), int(height), text, {false, false});
   drawDisplayList(*ImGui::GetWindowDrawList(), plot.list, origin);
   ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(ImGui::GetStyle().ItemSpacing.x, 0));
   ImGui::Dummy(ImVec2(width, plot.plot.max.y + 2));

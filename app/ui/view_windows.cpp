@@ -3,10 +3,8 @@
 // Shift+click a polygon in the camera view to step through its clipping. Also the stage morph
 // window and lecture mode's full-window view.
 //
-// Index: 1 helpers  2 drawing a view  3 the windows  4 interaction  5 CPU images for the camera view
+// Index: 1 helpers  2 drawing a view  3 the windows  4 interaction
 #define IMGUI_DEFINE_MATH_OPERATORS
-#include "app/export/image_compare.h"
-#include "app/export/cpu_raster.h"
 #include "app/ui/layout.h"
 #include "app/ui/picking.h"
 #include "app/ui/viewer.h"
@@ -75,74 +73,16 @@ bool clicked() {
 
 // ---------------------------------------------------------------- 2 drawing a view
 
-// A view is drawn again only when what it shows changed: the window draws frames for any input
-// (hover, ImGui settling), and a view of a million triangles takes seconds on a software renderer.
-// With the render thread (useViewWorker) the frame does not wait for it beyond a few ms: the view
-// shows its last image with a busy mark until the new one is finished.
+// A view is drawn again only when what it shows changed (app/render/view_images.h).
 GLuint Viewer::drawView(ViewKind kind, ImVec2 size) {
   const ImVec2 fb = ImGui::GetIO().DisplayFramebufferScale;
   const int w = std::max(8, int(size.x * fb.x)), h = std::max(8, int(size.y * fb.y));
-  ViewStamp stamp{s_.doc.shown(), runRevision_, s_.frame, w, h, s_.antialias ? 4 : 1, uiScale_};
-  ViewCache& cached = viewCache_[size_t(kind)];
-  const bool device = kind == ViewKind::camera || kind == ViewKind::all;
-  cached.width = device ? stamp.scene.device.width : w;
-  cached.height = device ? stamp.scene.device.height : h;
   if (kind == ViewKind::world) s_.worldAspect = double(w) / h;
-  cached.busy = false;
-  cached.asked = true;
-  if (cached.texture != 0 && cached.stamp == stamp) return cached.texture;
-  if (worker_) return drawViewOnWorker(kind, std::move(stamp), w, h);
-  cached.texture = drawViewNow(kind, w, h);
-  ++viewsDrawn_;
-  cached.stamp = std::move(stamp);
-  return cached.texture;
-}
-
-GLuint Viewer::drawViewOnWorker(ViewKind kind, ViewStamp stamp, int w, int h) {
-  ViewCache& cached = viewCache_[size_t(kind)];
-  if (!cached.pending || !(cached.requested == stamp)) {
-    // The render thread gets its own copy of the run (made once per run of the pipeline): the
-    // window's may be replaced by the next run while the view is being drawn.
-    if (!workerRun_ || workerRunRevision_ != runRevision_) {
-      workerRun_ = std::make_shared<const PipelineRun>(s_.run);
-      workerRunRevision_ = runRevision_;
-    }
-    cached.ticket = worker_->request({kind, s_.doc.shown(), workerRun_, s_.frame, w, h, stamp.samples, uiScale_});
-    cached.requested = std::move(stamp);
-    cached.pending = true;
-    cached.askedAt = frameNumber_;
-  }
-  // Only the frame that asked for the image waits for it (a small scene's views appear in it); later
-  // frames only look whether it is finished, so they stay as short as the panels make them.
-  const double wait = cached.askedAt == frameNumber_ ? frameWaitLeft_ : 0;
-  const auto start = std::chrono::steady_clock::now();
-  const auto done = worker_->take(kind, cached.ticket, wait);
-  frameWaitLeft_ -= std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (done) {
-    if (!done->error.empty()) {
-      setStatus("drawing the " + std::string(toString(kind)) + " view failed: " + done->error, true);
-    } else {
-      cached.texture = done->texture;  // the newest finished image, maybe of an older request
-      ++viewsDrawn_;
-    }
-    if (done->ticket == cached.ticket) {
-      cached.pending = false;
-      cached.stamp = cached.requested;
-    }
-  }
-  cached.busy = cached.pending;
-  return cached.texture;
-}
-
-std::vector<ViewKind> Viewer::viewsNotReady() const {
-  std::vector<ViewKind> kinds;
-  for (size_t k = 0; k < viewCache_.size(); ++k)
-    if (viewCache_[k].asked && viewCache_[k].busy) kinds.push_back(ViewKind(k));
-  return kinds;
+  return images_.image({kind, s_.doc.shown(), s_.ran, s_.frame, w, h, s_.antialias ? 4 : 1, uiScale_}, runRevision_);
 }
 
 void Viewer::busyMark(ViewKind kind) {
-  if (!viewCache_[size_t(kind)].busy) return;
+  if (!images_.busy(kind)) return;
   const ImVec2 max = ImGui::GetItemRectMax();
   const ImVec2 min = ImGui::GetItemRectMin();
   const char* text = "updating…";
@@ -160,52 +100,19 @@ void Viewer::busyMark(ViewKind kind) {
   draw->AddText(at + ImVec2(pad * 2 + radius * 2, pad), IM_COL32(235, 235, 235, 255), text);
 }
 
-GLuint Viewer::drawViewNow(ViewKind kind, int w, int h) {
-  const Scene& scene = s_.doc.shown();
-  const int samples = s_.antialias ? 4 : 1;
-  switch (kind) {
-    case ViewKind::world:
-      world_.resize(w, h, samples);
-      s_.worldAspect = double(w) / h;
-      renderer_.drawWorld(scene, s_.run, s_.frame, world_);
-      world_.resolve();
-      return world_.colorTexture();
-    case ViewKind::npc:
-      npc_.resize(w, h, samples);
-      renderer_.drawNpc(scene, s_.run, s_.frame, npc_);
-      npc_.resolve();
-      return npc_.colorTexture();
-    case ViewKind::morph:
-      morph_.resize(w, h, samples);
-      renderer_.drawMorph(scene, s_.run, s_.frame, morph_);
-      morph_.resolve();
-      return morph_.colorTexture();
-    case ViewKind::camera:
-    case ViewKind::all:
-      // At the device's W × H: pixel-aligned with DC (shown scaled to fit).
-      camera_.resize(scene.device.width, scene.device.height, 1);
-      renderer_.drawCamera(scene, s_.run, s_.frame, camera_);
-      if (s_.frame.overlays.difference) return differenceTexture();
-      return camera_.colorTexture();
-    case ViewKind::divideFirst:
-    case ViewKind::depth: break;  // drawn by the panels that show them (cameraWindowContents, depthPanel)
-  }
-  return 0;
-}
-
 std::optional<Vec3> Viewer::probePositionOf(ViewKind view) const {
-  return s_.probe ? probePosition(s_.run, *s_.probe, view) : std::nullopt;
+  return s_.probe ? probePosition(s_.run(), *s_.probe, view) : std::nullopt;
 }
 
 // The clipping step-through's current polygon and plane, for the NPC and world views.
 void Viewer::stepHighlight() {
   const StepThrough& st = s_.stepThrough;
   if (!st.active) return;
-  for (size_t i = 0; i < s_.run.sceneIndex.size(); ++i) {
-    if (int(s_.run.sceneIndex[i]) != st.object) continue;
-    const ObjectRun& o = s_.run.objects[i];
+  for (size_t i = 0; i < s_.run().sceneIndex.size(); ++i) {
+    if (int(s_.run().sceneIndex[i]) != st.object) continue;
+    const ObjectRun& o = s_.run().objects[i];
     if (st.face < 0 || size_t(st.face) >= o.faceCount()) return;
-    const std::vector<ClipStep> steps = clipSteps(s_.run, o, size_t(st.face));
+    const std::vector<ClipStep> steps = clipSteps(s_.run(), o, size_t(st.face));
     Highlights::Step h;
     const bool start = st.step == 0;
     const ClipStep& step = steps[size_t(start ? 0 : std::min<int>(st.step, int(steps.size())) - 1)];
@@ -237,7 +144,7 @@ void Viewer::viewWindows() {
     hl.probeDc = probePositionOf(ViewKind::camera);
   }
   for (Handle handle : kHandles)
-    hl.handles.push_back({handlePosition(s_.run, handle), handleName(handle),
+    hl.handles.push_back({handlePosition(s_.run(), handle), handleName(handle),
                           handle == s_.hovered || (s_.drag.kind == Drag::Kind::handle && s_.drag.handle == handle)});
   hl.vanishingObject = s_.selectedObject;
   stepHighlight();
@@ -300,7 +207,7 @@ void Viewer::cameraWindowContents() {
   if (demo) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
     // A render target's texture like the views': flipped the same way (GL's rows go up).
-    if (const GLuint divided = divideFirstTexture())
+    if (const GLuint divided = images_.divideFirst(s_.doc.shown(), s_.run(), s_.frame, runRevision_))
       ImGui::Image(textureId(divided), size, ImVec2(0, 1), ImVec2(1, 0));
     else  // the strategy's run failed (its error is in the status line): no picture of it
       ImGui::Dummy(size);
@@ -325,14 +232,14 @@ void Viewer::cameraWindowContents() {
   if (ImGui::GetIO().KeyShift) {
     // Shift+click: the front-most clipped polygon under the mouse, for the step-through.
     const Vec2 dc = mouse * Vec2(device.width / size.x, device.height / size.y);
-    if (const auto face = pickFace(s_.run, dc)) {
+    if (const auto face = pickFace(s_.run(), dc)) {
       s_.stepThrough = {true, int(face->first), int(face->second), 0};
       s_.showStepThrough = true;  // the Lecture tab's step-through comes forward
     }
     return;
   }
   ViewCamera none;
-  s_.probe = pickVertex(s_.run, ViewKind::camera, none, int(size.x), int(size.y), mouse, kPickRadiusPx);
+  s_.probe = pickVertex(s_.run(), ViewKind::camera, none, int(size.x), int(size.y), mouse, kPickRadiusPx);
 }
 
 void Viewer::morphWindow() {
@@ -448,7 +355,7 @@ void Viewer::orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const V
     if (s_.drag.kind == Drag::Kind::pan) panBy(orbit, io.MouseDelta.x / h, io.MouseDelta.y / h);
   }
   if (hovered && io.MouseWheel != 0) zoomBy(orbit, std::pow(0.88, io.MouseWheel));
-  if (hovered && clicked() && view != ViewKind::morph) s_.probe = pickVertex(s_.run, view, observer, w, h, mouse, kPickRadiusPx);
+  if (hovered && clicked() && view != ViewKind::morph) s_.probe = pickVertex(s_.run(), view, observer, w, h, mouse, kPickRadiusPx);
 }
 
 void Viewer::morphInteraction(bool hovered) {
@@ -465,7 +372,7 @@ void Viewer::recordHandles(ImVec2 origin, const ViewCamera& observer, ImVec2 fbS
   const int w = cachedWidth(ViewKind::world), h = cachedHeight(ViewKind::world);
   const float r = float(kPickRadiusPx) / fbScale.x;
   for (Handle handle : kHandles) {
-    const Projected p = projectToPixels(observer, handlePosition(s_.run, handle), w, h);
+    const Projected p = projectToPixels(observer, handlePosition(s_.run(), handle), w, h);
     if (!p.visible) continue;
     std::string id = std::string("handle.") + handleName(handle);
     for (char& c : id) c = c == ' ' ? '-' : char(std::tolower(static_cast<unsigned char>(c)));
@@ -476,58 +383,18 @@ void Viewer::recordHandles(ImVec2 origin, const ViewCamera& observer, ImVec2 fbS
 
 void Viewer::worldInteraction(bool hovered, const ViewCamera& observer, int w, int h, Vec2 mouse) {
   s_.hovered = hovered && s_.drag.kind == Drag::Kind::none
-                   ? pickHandle(s_.run, observer, w, h, mouse, kPickRadiusPx + 3)
+                   ? pickHandle(s_.run(), observer, w, h, mouse, kPickRadiusPx + 3)
                    : Handle::none;
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && s_.hovered != Handle::none)
     s_.drag = {Drag::Kind::handle, ViewKind::world, s_.hovered};
   if (s_.drag.kind == Drag::Kind::handle) {
     const ImVec2 d = ImGui::GetIO().MouseDelta;
     if ((d.x != 0 || d.y != 0) && !ImGui::IsMouseClicked(ImGuiMouseButton_Left))  // as orbitInteraction
-      dragHandle(s_.doc.scene().camera, s_.run, s_.drag.handle, observer, h, Vec2(d.x, d.y),
+      dragHandle(s_.doc.scene().camera, s_.run(), s_.drag.handle, observer, h, Vec2(d.x, d.y),
                  s_.keepAspect ? std::optional(s_.doc.scene().device.aspect()) : std::nullopt);
     return;
   }
   orbitInteraction(hovered, ViewKind::world, s_.frame.world.orbit, observer, w, h, mouse);
-}
-
-// ---------------------------------------------------------------- 5 CPU images for the camera view
-
-GLuint Viewer::uploadImage(gl::Texture& texture, const Image& image) {
-  // Bottom row first, as the views' textures are.
-  std::vector<Rgba> rows(image.pixels.size());
-  for (int y = 0; y < image.height; ++y)
-    std::copy_n(image.pixels.begin() + ptrdiff_t(y) * image.width, image.width,
-                rows.begin() + ptrdiff_t(image.height - 1 - y) * image.width);
-  const GladGLContext& gl = ctx_.gl();
-  if (!texture) texture = gl::makeTexture(gl);
-  gl.BindTexture(GL_TEXTURE_2D, texture.id());
-  gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
-  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  return texture.id();
-}
-
-GLuint Viewer::differenceTexture() {
-  // The GPU's image against the CPU's clipped polygons filled: differing pixels in magenta.
-  const Image gpu = camera_.read();
-  const Image cpu = rasterizeClippedPolygons(s_.run, s_.doc.shown().background, gpu.width, gpu.height);
-  return uploadImage(differenceTexture_, differenceImage(gpu, cpu, 0));
-}
-
-GLuint Viewer::divideFirstTexture() {
-  // The GPU always clips correctly; the wrong strategy's result exists only as the CPU's clipped
-  // polygons: divideFirstView's display list, drawn at the device's size (pixel-aligned with DC,
-  // as the camera view beside it). Drawn again only for a new run.
-  if (s_.run.options.strategy != ClipStrategy::divideFirst) return 0;
-  const Device& d = s_.run.device;
-  if (divideFirstRevision_ != runRevision_ || divideFirst_.width() != d.width || divideFirst_.height() != d.height) {
-    divideFirst_.resize(d.width, d.height, 1);
-    renderer_.drawDivideFirst(s_.doc.shown(), s_.run, s_.frame, divideFirst_);
-    divideFirst_.resolve();
-    divideFirstRevision_ = runRevision_;
-  }
-  return divideFirst_.colorTexture();
 }
 
 }  // namespace vplab

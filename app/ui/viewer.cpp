@@ -3,6 +3,7 @@
 #include "app/ui/viewer.h"
 
 #include "app/gl/shader.h"
+#include "app/gl/texture_io.h"
 #include "app/ui/assets.h"
 #include "app/render/headless.h"
 #include "app/export/svg.h"
@@ -51,9 +52,6 @@ void setUpStyle(float scale) {
   style.ScaleAllSizes(scale);
 }
 
-/// How long a frame waits for the render thread's images before it shows the views' last ones: a
-/// small scene's views (a few ms each on llvmpipe) appear in the frame that changed them.
-constexpr double kFrameWaitForViews = 0.03;
 /// The busy mark's spinner steps 10 times a second (a frame each, nothing else while idle).
 constexpr double kBusyMarkStep = 0.1;
 
@@ -69,12 +67,8 @@ std::filesystem::path copyName(const std::filesystem::path& bundled) {
 Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
     : ctx_(context),
       renderer_(context, uiScale),
+      images_(context, renderer_),
       s_(std::move(scene)),
-      world_(context.gl()),
-      camera_(context.gl()),
-      npc_(context.gl()),
-      morph_(context.gl()),
-      divideFirst_(context.gl()),
       uiScale_(uiScale) {
   IMGUI_CHECKVERSION();
   imgui_ = ImGui::CreateContext();
@@ -96,7 +90,7 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
   s_.uiScale = uiScale;
   s_.presets = listPresetScenes();
   s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
-  runPipeline();
+  updateRun();
 }
 
 void Viewer::applyUiScale(float scale) {
@@ -141,20 +135,23 @@ void Viewer::setStatus(std::string message, bool error) {
 
 // ---------------------------------------------------------------- 2 the frame
 
-// Runs the CPU pipeline when its input changed: frames drawn for hover and ImGui's settling (the
-// window draws only on input) cost no pipeline run, which on a million triangles takes longer
-// than the frame.
-void Viewer::runPipeline() {
+void Viewer::updateRun() {
   const PipelineOptions& o = s_.pipeline;
-  const bool same = ranOnce_ && s_.doc.shown() == ranScene_ && o.strategy == ranOptions_.strategy &&
+  const bool same = ranOnce_ && s_.doc.shownRevision() == ranShownRevision_ && o.strategy == ranOptions_.strategy &&
                     o.boundingBoxTest == ranOptions_.boundingBoxTest && o.clipEdges == ranOptions_.clipEdges;
   if (same) return;
   ranOnce_ = true;
-  ranScene_ = s_.doc.shown();  // shares the meshes: a cheap copy
+  ranShownRevision_ = s_.doc.shownRevision();
   ranOptions_ = o;
-  ++runRevision_;
+  // Into the run published before the current one when nothing holds it any more: its buffers are
+  // reused (a large scene's arrays are not allocated anew). The render thread may still draw from
+  // it: then a new one.
+  std::shared_ptr<PipelineRun>& into = runs_[0] == s_.ran ? runs_[1] : runs_[0];
+  if (!into || into.use_count() > 1) into = std::make_shared<PipelineRun>();
   try {
-    vplab::runPipeline(s_.doc.shown(), s_.pipeline, s_.run);
+    vplab::runPipeline(s_.doc.shown(), s_.pipeline, *into);
+    s_.ran = into;
+    ++runRevision_;
     s_.runError.clear();
   } catch (const Error& e) {
     s_.runError = e.what();  // the previous run stays
@@ -163,20 +160,14 @@ void Viewer::runPipeline() {
 
 void Viewer::makeCurrent() { ImGui::SetCurrentContext(imgui_); }
 
-void Viewer::useViewWorker(std::unique_ptr<GlContext> context, std::function<void()> wake) {
-  worker_ = std::make_unique<ViewWorker>(std::move(context), std::move(wake));
-  for (ViewCache& c : viewCache_) c = {};
-}
-
 double Viewer::wakeIn() const {
   if (settleFrames_ > 0 || s_.morphPlaying || loader_.busy() || askRecovery_ || s_.animateUntil > imgui_->Time) return 0;
   double wake = 1e9;
   // The busy mark's spinner turns while a view is drawn on the render thread; its new image is
   // shown at once.
-  for (size_t k = 0; k < viewCache_.size(); ++k) {
-    if (!viewCache_[k].pending) continue;
-    if (worker_->hasFinished(ViewKind(k))) return 0;
-    wake = kBusyMarkStep;
+  if (const std::optional<double> views = images_.wakeIn(kBusyMarkStep)) {
+    if (*views <= 0) return 0;
+    wake = *views;
   }
   // ImGui 1.86 blinks the text cursor (on 0.8 s, off 0.4 s): a few frames a second while typing.
   if (imgui_->IO.WantTextInput) wake = std::min(wake, 0.2);
@@ -188,9 +179,7 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   ImGui::SetCurrentContext(imgui_);
   if (s_.uiScale != uiScale_) applyUiScale(s_.uiScale);  // the font atlas is locked during a frame
   if (settleFrames_ > 0) --settleFrames_;
-  frameWaitLeft_ = kFrameWaitForViews;
-  ++frameNumber_;
-  for (ViewCache& c : viewCache_) c.asked = false;
+  images_.beginFrame();
   if (s_.objectToLoad) {  // "+ OBJ mesh…" of the scene panel
     const std::filesystem::path& path = s_.doc.scene().path;
     loader_.startObject(std::move(*s_.objectToLoad), path.empty() ? std::filesystem::path() : path.parent_path());
@@ -226,13 +215,13 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   shortcuts();
   if (s_.lectureMode) {
     s_.doc.endFrame(true);
-    runPipeline();
+    updateRun();
     lectureWindow();
   } else {
     menuBar();
     controlsWindow();
     s_.doc.endFrame(true);  // validate what the panels changed; recorded at the end of the frame
-    runPipeline();
+    updateRun();
     viewWindows();
     inspectWindow();
     morphWindow();
@@ -244,8 +233,8 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   discardDialog();
   dialog_->draw();
   relayout_ = false;
-  for (ViewCache& c : viewCache_)
-    if (!c.asked) c.pending = c.busy = false;  // not shown any more: its image is not waited for
+  images_.endFrame();
+  if (const auto error = images_.takeError()) setStatus(*error, true);
   ImGui::Render();
 
   // Going straight from one field into the next keeps some item active in every frame: the change
@@ -534,7 +523,7 @@ void Viewer::exportMenu() {
   const Entry entries[] = {{ViewKind::camera, "camera"}, {ViewKind::world, "world"}, {ViewKind::npc, "NPC"}};
   for (const Entry& e : entries) {
     // The image shown (drawn in this thread or on the views' render thread: textures are shared).
-    const GLuint texture = viewCache_[size_t(e.kind)].texture;
+    const GLuint texture = images_.texture(e.kind);
     const ViewKind kind = e.kind;
     const int w = cachedWidth(kind), h = cachedHeight(kind);
     const std::string png = std::string(e.name) + " view as PNG…";
@@ -620,7 +609,7 @@ void Viewer::startDocument(Scene scene, bool dirty) {
   s_.frame.camera.style = Style::shaded;
   s_.pipeline = ViewerState(Scene{}).pipeline;
   s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
-  runPipeline();
+  updateRun();
   requestFrames(2);
 }
 
@@ -761,7 +750,7 @@ void Viewer::showUrlState(const UrlState& link, bool atStart) {
     if (link.worldOrbit) s_.frame.world.orbit = *link.worldOrbit;
     if (link.npcOrbit) s_.frame.npc.orbit = *link.npcOrbit;
     if (link.strategy) s_.pipeline.strategy = *link.strategy;
-    runPipeline();
+    updateRun();
     requestFrames(2);
   };
   const bool otherScene = !link.scene.empty() && link.scene != urlState().scene;
@@ -784,9 +773,7 @@ void Viewer::showUrlState(const UrlState& link, bool atStart) {
   showViews();
 }
 
-void Viewer::forgetViewImages() {
-  for (ViewCache& c : viewCache_) c.stamp = {};
-}
+void Viewer::forgetViewImages() { images_.forget(); }
 
 void Viewer::enableAutosave(const std::filesystem::path& directory, double delaySeconds) {
   autosave_ = std::make_unique<Autosave>(directory, delaySeconds);

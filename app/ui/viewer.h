@@ -10,8 +10,8 @@
 #include "app/ui/file_dialog.h"
 #include "app/ui/loader.h"
 #include "app/ui/url_state.h"
-#include "app/ui/view_worker.h"
 #include "app/ui/viewer_state.h"
+#include "app/render/view_images.h"
 #include "app/render/view_renderer.h"
 
 #include <algorithm>
@@ -51,14 +51,16 @@ class Viewer {
   /// uses it as its timeout (README "The viewer": an idle window uses no CPU).
   double wakeIn() const;
   /// How many times a view was drawn (not reused from its last image): tests check hover frames cost none.
-  unsigned viewsDrawn() const { return viewsDrawn_; }
+  unsigned viewsDrawn() const { return images_.drawn(); }
   /// Draws the views on a render thread with `context` (GlContext::createShared of the window's):
   /// a view whose image is not ready within the frame shows its last image with a busy mark.
   /// `wake` wakes the window's event wait (called on the render thread). Without it (headless, the
   /// UI tests) each view is drawn in the frame that needs it.
-  void useViewWorker(std::unique_ptr<GlContext> context, std::function<void()> wake);
+  void useViewWorker(std::unique_ptr<GlContext> context, std::function<void()> wake) {
+    images_.useWorker(std::move(context), std::move(wake));
+  }
   /// Whether `kind` shows an older image while its current one is being drawn.
-  bool viewBusy(ViewKind kind) const { return viewCache_[size_t(kind)].busy; }
+  bool viewBusy(ViewKind kind) const { return images_.busy(kind); }
   /// Asks for `n` more frames (something changed that ImGui shows only after it laid it out again).
   void requestFrames(int n) { settleFrames_ = std::max(settleFrames_, n); }
 
@@ -113,7 +115,7 @@ class Viewer {
   /// draws their current one. A screenshot is taken only when this is empty: it shows what was asked
   /// for, never an "updating…" frame (on a fresh machine llvmpipe compiles the views' shaders for the
   /// first ~0.8 s).
-  std::vector<ViewKind> viewsNotReady() const;
+  std::vector<ViewKind> viewsNotReady() const { return images_.notReady(); }
 
  private:
   void menuBar();
@@ -127,7 +129,9 @@ class Viewer {
   void unlessUnsaved(std::function<void()> action);
   void discardDialog();
   void exportMenu();
-  void runPipeline();
+  /// Runs the CPU pipeline when the shown scene or the options changed (frames drawn for hover and
+  /// ImGui's settling cost none) and publishes the run.
+  void updateRun();
   /// A new document (opened, preset, New, recovered): clean unless recovered, no undo history, and
   /// the view settings of a fresh start (a style chosen for the old scene, e.g. hidden-line, may be
   /// far too slow for the new one; README "The viewer").
@@ -145,9 +149,6 @@ class Viewer {
   void worldInteraction(bool hovered, const ViewCamera& observer, int w, int h, Vec2 mouse);
   void morphInteraction(bool hovered);
   void cameraWindowContents();
-  GLuint differenceTexture();
-  GLuint divideFirstTexture();
-  GLuint uploadImage(gl::Texture& texture, const Image& image);
   void applyUiScale(float scale);
   void morphWindow();
   void lectureWindow();
@@ -155,7 +156,6 @@ class Viewer {
   /// Draws a view into its target for an image of `size` screen units; returns the texture. Reuses
   /// the last image while nothing it shows changed.
   GLuint drawView(ViewKind kind, ImVec2 size);
-  GLuint drawViewNow(ViewKind kind, int w, int h);
   /// A spinner and "updating…" in the top right corner of the last item (a view's image) while
   /// `kind` is busy.
   void busyMark(ViewKind kind);
@@ -163,11 +163,8 @@ class Viewer {
   GlContext& ctx_;
   ImGuiContext* imgui_ = nullptr;
   ViewRenderer renderer_;
+  ViewImages images_;
   ViewerState s_;
-  gl::RenderTarget world_, camera_, npc_, morph_, divideFirst_;
-  gl::Texture differenceTexture_;
-  /// The divide-first comparison is drawn into divideFirst_ again only after a new run of the pipeline.
-  unsigned divideFirstRevision_ = 0;  // the run it was drawn from (0: none yet)
   std::unique_ptr<FileChooser> dialog_ = std::make_unique<FileDialog>();
   bool browser_ = false;
   float uiScale_;
@@ -177,43 +174,16 @@ class Viewer {
   std::function<void()> pendingReplace_;  // waiting for "discard the unsaved changes?"
   bool askDiscard_ = false;
   unsigned lastActive_ = 0;  // the ImGui item active in the previous frame
-  /// What a view's image was drawn from: equal stamps give equal images.
-  struct ViewStamp {
-    Scene scene;
-    unsigned runRevision = 0;
-    FrameSettings frame;
-    int width = 0, height = 0, samples = 0;
-    float uiScale = 0;
-    bool operator==(const ViewStamp&) const = default;
-  };
-  struct ViewCache {
-    ViewStamp stamp;
-    GLuint texture = 0;
-    int width = 0, height = 0;  // of the image asked for last, in pixels
-    // With the render thread: the image asked for and not yet shown.
-    ViewStamp requested;
-    uint64_t ticket = 0;
-    uint64_t askedAt = 0;  // the frame that asked for it
-    bool pending = false;
-    bool busy = false;  // shown with an older image in this frame
-    bool asked = false;  // drawView was called for it in this frame
-  };
-  /// The render thread's image of `kind` if it finishes within what is left of the frame's wait.
-  GLuint drawViewOnWorker(ViewKind kind, ViewStamp stamp, int w, int h);
   /// The pixel size of the image of `kind` asked for last (for picking in it).
-  int cachedWidth(ViewKind kind) const { return viewCache_[size_t(kind)].width; }
-  int cachedHeight(ViewKind kind) const { return viewCache_[size_t(kind)].height; }
-  std::array<ViewCache, 5> viewCache_;  // by ViewKind
-  unsigned runRevision_ = 0;            // counts the runs of the CPU pipeline
-  unsigned viewsDrawn_ = 0;
-  Scene ranScene_;                // the input of s_.run (runPipeline runs only when it changes)
+  int cachedWidth(ViewKind kind) const { return images_.width(kind); }
+  int cachedHeight(ViewKind kind) const { return images_.height(kind); }
+  /// The runs of the CPU pipeline: s_.ran is one of them; the other is run into next, reusing its
+  /// buffers, when nothing else (the render thread) still holds it.
+  std::array<std::shared_ptr<PipelineRun>, 2> runs_;
+  unsigned runRevision_ = 0;      // counts the runs published
+  unsigned ranShownRevision_ = 0; // the shown scene's revision (Document::shownRevision) of s_.ran
   PipelineOptions ranOptions_;
   bool ranOnce_ = false;
-  std::unique_ptr<ViewWorker> worker_;
-  std::shared_ptr<const PipelineRun> workerRun_;  // s_.run of runRevision workerRunRevision_
-  unsigned workerRunRevision_ = 0;
-  double frameWaitLeft_ = 0;
-  uint64_t frameNumber_ = 0;  // seconds this frame may still wait for the render thread
   int settleFrames_ = 2;     // frames still to draw without input (wakeIn)
   SceneLoader loader_;
   std::unique_ptr<Autosave> autosave_;

@@ -2,7 +2,6 @@
 #pragma once
 
 #include "app/ui/assets.h"
-#include "app/gl/render_target.h"
 #include "app/ui/document.h"
 #include "app/views/views.h"
 #include "pipeline/pipeline.h"
@@ -12,6 +11,7 @@
 #include <array>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -49,7 +49,10 @@ struct ViewerState {
   Document doc;
   FrameSettings frame;
   PipelineOptions pipeline{ClipStrategy::npc, false, true};
-  PipelineRun run;              // the CPU pipeline's run of doc.shown(), every frame
+  /// The CPU pipeline's run of doc.shown(), published whole (app/ui/viewer.h, updateRun): the
+  /// render thread draws from the same run, never a copy.
+  std::shared_ptr<const PipelineRun> ran = std::make_shared<const PipelineRun>();
+  const PipelineRun& run() const { return *ran; }
   std::string runError;         // when even the shown scene could not be run
   std::optional<Probe> probe;
   Handle hovered = Handle::none;

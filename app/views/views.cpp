@@ -17,8 +17,7 @@ std::string_view toString(ViewKind v) {
 }
 
 std::optional<ViewKind> viewKindFromString(std::string_view s) {
-  for (ViewKind v : {ViewKind::camera, ViewKind::world, ViewKind::npc, ViewKind::all, ViewKind::morph,
-                     ViewKind::divideFirst, ViewKind::depth})
+  for (ViewKind v : kAllViewKinds)
     if (toString(v) == s) return v;
   return std::nullopt;
 }
@@ -35,7 +34,7 @@ std::string_view toString(Style s) {
 }
 
 std::optional<Style> styleFromString(std::string_view s) {
-  for (Style st : {Style::flat, Style::shaded, Style::wire, Style::hiddenLine, Style::hiddenRemoved})
+  for (Style st : kAllStyles)
     if (toString(st) == s) return st;
   return std::nullopt;
 }

@@ -17,6 +17,7 @@
 #include "app/views/observer.h"
 #include "pipeline/pipeline.h"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -25,6 +26,11 @@
 namespace vplab {
 
 enum class ViewKind { camera, world, npc, all, morph, divideFirst, depth };
+/// Every view kind in the enum's order: the one table behind toString, the command line's choices and
+/// arrays indexed by kind.
+inline constexpr std::array kAllViewKinds = {ViewKind::camera, ViewKind::world,       ViewKind::npc,  ViewKind::all,
+                                             ViewKind::morph,  ViewKind::divideFirst, ViewKind::depth};
+inline constexpr size_t kViewKindCount = kAllViewKinds.size();
 std::string_view toString(ViewKind v);
 std::optional<ViewKind> viewKindFromString(std::string_view s);
 
@@ -32,6 +38,8 @@ std::optional<ViewKind> viewKindFromString(std::string_view s);
 /// hiddenLine: visible edges solid, hidden ones dashed (lecture notes figure 16.1). hiddenRemoved: only the
 /// visible edges (lecture notes figure 16.3).
 enum class Style { flat, shaded, wire, hiddenLine, hiddenRemoved };
+/// Every style in the enum's order (the keys 1 to 5, the command line's choices).
+inline constexpr std::array kAllStyles = {Style::flat, Style::shaded, Style::wire, Style::hiddenLine, Style::hiddenRemoved};
 std::string_view toString(Style s);
 std::optional<Style> styleFromString(std::string_view s);
 inline bool isFilled(Style s) { return s == Style::flat || s == Style::shaded; }

@@ -76,7 +76,7 @@ TEST(UiLecture, DivideFirstComparisonIsUpright) {
   const ImVec4 r = v->state().rects.at("view.divideFirst");
   const Image shown = cropRect(v->image(), r);
   const Device& d = v->state().doc.shown().device;
-  const Image cpu = rasterizeClippedPolygons(v->state().run, v->state().doc.shown().background, d.width, d.height);
+  const Image cpu = rasterizeClippedPolygons(v->state().run(), v->state().doc.shown().background, d.width, d.height);
   const double upright = meanDifference(shown, resampled(cpu, shown.width, shown.height, false));
   const double flipped = meanDifference(shown, resampled(cpu, shown.width, shown.height, true));
   EXPECT_LT(upright, 12.0);
@@ -357,7 +357,7 @@ TEST(UiLecture, ClickingAVertexShowsTheProbeAndShiftClickTheStepThrough) {
   v->frames(2);
   ASSERT_EQ(v->state().inspectTab, ViewerState::matricesTab);
   // A vertex of the run, where the camera view draws it.
-  const PipelineRun& run = v->state().run;
+  const PipelineRun& run = v->state().run();
   const ImVec4 r = v->state().rects.at("view.camera");
   const Device& d = run.device;
   std::optional<std::pair<double, double>> at;
@@ -494,7 +494,7 @@ TEST(UiLecture, DepthPlotLegendIsOffTheCurvesAndTheBarsAreNamed) {
   v->frames(2);
   const ImVec4 legend = v->state().rects.at("depth.legend"), plot = v->state().rects.at("depth.plot");
   EXPECT_LE(legend.y + legend.w, plot.y + 1) << "the legend overlaps the plot";
-  for (const ObjectRun& o : v->state().run.objects)
+  for (const ObjectRun& o : v->state().run().objects)
     EXPECT_EQ(v->state().rects.count("depth.bar." + o.name), 1u) << o.name;
 }
 
@@ -502,7 +502,7 @@ TEST(UiLecture, DepthPlotLegendIsOffTheCurvesAndTheBarsAreNamed) {
 // default scene crosses the window's edges, so some pass over one of its clipped faces creates some.
 TEST(UiLecture, StepThroughListsTheNewVertices) {
   auto v = makeViewer();
-  const PipelineRun& run = v->state().run;
+  const PipelineRun& run = v->state().run();
   std::optional<std::pair<int, int>> clipped;
   for (size_t k = 0; k < run.objects.size() && !clipped; ++k)
     for (size_t f = 0; f < run.objects[k].faceCount() && !clipped; ++f)

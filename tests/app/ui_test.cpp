@@ -104,14 +104,14 @@ size_t errorTextPixels(const Image& image) {
 /// Where a vertex of the run is drawn in the camera view's rect (the device's DC scaled to fit).
 std::pair<double, double> screenOfDc(HeadlessViewer& v, const Vec3& dc) {
   const ImVec4 r = v.state().rects.at("view.camera");
-  const Device& d = v.state().run.device;
+  const Device& d = v.state().run().device;
   return {r.x + dc.x * r.z / d.width, r.y + dc.y * r.w / d.height};
 }
 
 /// Vertices of the run that lie well inside the camera view with no other vertex within `gap`
 /// pixels on screen, so a click on one picks it and nothing else.
 std::vector<Probe> isolatedVertices(HeadlessViewer& v, double gap) {
-  const PipelineRun& run = v.state().run;
+  const PipelineRun& run = v.state().run();
   const ImVec4 r = v.state().rects.at("view.camera");
   std::vector<std::pair<Probe, std::pair<double, double>>> all;
   for (size_t k = 0; k < run.objects.size(); ++k) {
@@ -186,7 +186,7 @@ TEST(Ui, DraggingTheVrpFieldMovesVrpAndChangesTheViews) {
   EXPECT_LE(after.x - before.x, 1.0 + 1e-9);
   EXPECT_EQ(after.y, before.y);
   EXPECT_EQ(after.z, before.z);
-  EXPECT_EQ(v->state().run.camera.vrp, after) << "the views use the new camera";
+  EXPECT_EQ(v->state().run().camera.vrp, after) << "the views use the new camera";
   EXPECT_TRUE(v->state().doc.error().empty());
   EXPECT_TRUE(differsNoticeably(region(*v, rectOf(*v, "view.camera")), cameraBefore));
   EXPECT_TRUE(differsNoticeably(region(*v, rectOf(*v, "view.world")), worldBefore));
@@ -207,7 +207,7 @@ TEST(Ui, ClickingAVertexInTheCameraViewProbesIt) {
   ASSERT_FALSE(v->state().probe);
 
   const Probe first = candidates.front();
-  const Vec3 dc = *probePosition(v->state().run, first, ViewKind::camera);
+  const Vec3 dc = *probePosition(v->state().run(), first, ViewKind::camera);
   const auto [x, y] = screenOfDc(*v, dc);
   v->click(x, y);
   v->frames(1);
@@ -225,7 +225,7 @@ TEST(Ui, ClickingAVertexInTheCameraViewProbesIt) {
 
   // Another vertex: the panel shows other numbers.
   const Probe second = candidates.back();
-  const auto [x2, y2] = screenOfDc(*v, *probePosition(v->state().run, second, ViewKind::camera));
+  const auto [x2, y2] = screenOfDc(*v, *probePosition(v->state().run(), second, ViewKind::camera));
   v->click(x2, y2);
   v->frames(1);
   ASSERT_TRUE(v->state().probe);
@@ -244,7 +244,7 @@ TEST(Ui, ClickingEmptySpaceProbesNothing) {
   // The camera view's top-left corner (background, no vertex within the pick radius there).
   const ImVec4 r = v->state().rects.at("view.camera");
   for (const Probe& p : isolatedVertices(*v, 0)) {
-    const auto [sx, sy] = screenOfDc(*v, *probePosition(v->state().run, p, ViewKind::camera));
+    const auto [sx, sy] = screenOfDc(*v, *probePosition(v->state().run(), p, ViewKind::camera));
     ASSERT_GT(std::hypot(sx - (r.x + 3), sy - (r.y + 3)), 20) << "a vertex near the corner";
   }
   v->click(r.x + 3, r.y + 3);
@@ -260,12 +260,12 @@ TEST(Ui, DraggingThePrpHandleChangesPrpAndUndoRedoWork) {
   const Camera original = v->state().doc.scene().camera;
   const Image worldBefore = region(*v, rectOf(*v, "view.world"));
   const Image cameraBefore = region(*v, rectOf(*v, "view.camera"));
-  const auto [x, y] = screenInWorldView(*v, handlePosition(v->state().run, Handle::prp));
+  const auto [x, y] = screenInWorldView(*v, handlePosition(v->state().run(), Handle::prp));
   {
     int w = 0, h = 0;
     const ViewCamera observer = worldObserver(*v, &w, &h);
     const ImVec4 r = v->state().rects.at("view.world");
-    ASSERT_EQ(pickHandle(v->state().run, observer, w, h, Vec2(x - r.x, y - r.y), 12), Handle::prp);
+    ASSERT_EQ(pickHandle(v->state().run(), observer, w, h, Vec2(x - r.x, y - r.y), 12), Handle::prp);
   }
   {  // The browser tests grab the handle at its recorded rect (ViewerState::rects "handle.prp").
     const ImVec4 r = v->state().rects.at("handle.prp");
@@ -286,21 +286,21 @@ TEST(Ui, DraggingThePrpHandleChangesPrpAndUndoRedoWork) {
   const auto [hx, hy] = screenInWorldView(*v, dragged.prp);
   EXPECT_NEAR(hx, x + dx, 1.0);
   EXPECT_NEAR(hy, y + dy, 1.0);
-  EXPECT_EQ(v->state().run.camera.prp, dragged.prp);
+  EXPECT_EQ(v->state().run().camera.prp, dragged.prp);
   EXPECT_TRUE(differsNoticeably(region(*v, rectOf(*v, "view.world")), worldBefore));
   EXPECT_TRUE(differsNoticeably(region(*v, rectOf(*v, "view.camera")), cameraBefore));
   ASSERT_TRUE(v->state().doc.canUndo());
 
   v->key(keys::kZ, /*ctrl=*/true);
   EXPECT_EQ(v->state().doc.scene().camera, original);
-  EXPECT_EQ(v->state().run.camera, original);
+  EXPECT_EQ(v->state().run().camera, original);
   EXPECT_FALSE(v->state().doc.canUndo()) << "the drag was one step";
   EXPECT_TRUE(v->state().doc.canRedo());
   EXPECT_EQ(test::differingPixels(region(*v, rectOf(*v, "view.camera")), cameraBefore), 0u);
 
   v->key(keys::kZ, /*ctrl=*/true, /*shift=*/true);
   EXPECT_EQ(v->state().doc.scene().camera, dragged);
-  EXPECT_EQ(v->state().run.camera, dragged);
+  EXPECT_EQ(v->state().run().camera, dragged);
   v->key(keys::kZ, true);
   EXPECT_EQ(v->state().doc.scene().camera, original);
   v->key(keys::kY, true);
@@ -326,8 +326,8 @@ TEST(Ui, PrpOnVrpShowsAnErrorAndKeepsTheLastValidCamera) {
   EXPECT_THAT(v->state().doc.error(), HasSubstr("VRP"));
   EXPECT_GT(errorTextPixels(region(*v, controls)), 30u) << "no error text in the camera panel";
   EXPECT_EQ(v->state().doc.shown().camera, valid);
-  EXPECT_EQ(v->state().run.camera, valid);
-  expectRunFinite(v->state().run);
+  EXPECT_EQ(v->state().run().camera, valid);
+  expectRunFinite(v->state().run());
   EXPECT_EQ(test::differingPixels(region(*v, rectOf(*v, "view.camera")), cameraBefore), 0u);
   EXPECT_EQ(test::differingPixels(region(*v, rectOf(*v, "view.world")), worldBefore), 0u);
 
@@ -371,7 +371,7 @@ TEST(Ui, TypingVupParallelToNShowsAnErrorAndKeepsTheLastValidCamera) {
   EXPECT_EQ(v->state().doc.scene().camera.vup, Vec3(3, 2.4, 0));
   EXPECT_TRUE(v->state().doc.error().empty()) << v->state().doc.error();
   const Camera lastValid = v->state().doc.scene().camera;
-  EXPECT_EQ(v->state().run.camera, lastValid);
+  EXPECT_EQ(v->state().run().camera, lastValid);
   const Image cameraValid = region(*v, rectOf(*v, "view.camera"));
 
   typeInto(*v, "camera.vup", "VUP", 2, "7.5", true);
@@ -379,8 +379,8 @@ TEST(Ui, TypingVupParallelToNShowsAnErrorAndKeepsTheLastValidCamera) {
   EXPECT_THAT(v->state().doc.error(), HasSubstr("VUP"));
   EXPECT_THAT(v->state().doc.error(), HasSubstr("parallel"));
   EXPECT_GT(errorTextPixels(region(*v, controls)), 30u) << "no error text in the camera panel";
-  EXPECT_EQ(v->state().run.camera, lastValid);
-  expectRunFinite(v->state().run);
+  EXPECT_EQ(v->state().run().camera, lastValid);
+  expectRunFinite(v->state().run());
   EXPECT_EQ(test::differingPixels(region(*v, rectOf(*v, "view.camera")), cameraValid), 0u);
 
   v->key(keys::kZ, true);  // each finished field edit is one step
@@ -436,7 +436,7 @@ TEST(Ui, OrbitingTheWorldViewChangesTheObserverOnly) {
   {
     int w = 0, h = 0;
     const ViewCamera observer = worldObserver(*v, &w, &h);
-    ASSERT_EQ(pickHandle(v->state().run, observer, w, h, Vec2(30, r.w - 30), 12), Handle::none);
+    ASSERT_EQ(pickHandle(v->state().run(), observer, w, h, Vec2(30, r.w - 30), 12), Handle::none);
   }
   v->drag(x, y, x + 60, y);
   v->frames(1);

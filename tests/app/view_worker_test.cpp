@@ -1,8 +1,9 @@
-// The views drawn on a render thread (app/ui/view_worker.h, README "The viewer"): while a view of a
+// The views drawn on a render thread (app/render/view_worker.h, README "The viewer"): while a view of a
 // large mesh is being drawn again, the window keeps producing frames, each short, with a busy mark
 // on the view, and then shows the same image a synchronous viewer draws.
 #include "app/ui/headless_viewer.h"
-#include "app/ui/view_worker.h"
+#include "app/gl/texture_io.h"
+#include "app/render/view_worker.h"
 #include "tests/app/gl_test_support.h"
 
 #include <gtest/gtest.h>

@@ -1,8 +1,6 @@
 // The views' render thread (view_worker.h).
-#include "app/ui/view_worker.h"
+#include "app/render/view_worker.h"
 
-#include "app/export/image_compare.h"
-#include "app/export/cpu_raster.h"
 #include "pipeline/error.h"
 
 #include <sys/resource.h>
@@ -16,77 +14,6 @@ namespace vplab {
 namespace {
 [[maybe_unused]] constexpr int kNice = 5;
 }  // namespace
-
-Image readTexture(const GladGLContext& gl, GLuint texture) {
-  if (!gl.GetTexLevelParameteriv || !gl.GetTexImage)  // OpenGL ES and WebGL2 have neither
-    throw Error("this OpenGL cannot read a view's texture back (OpenGL ES has no glGetTexImage)");
-  GLint w = 0, h = 0;
-  gl.BindTexture(GL_TEXTURE_2D, texture);
-  gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
-  gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
-  if (w <= 0 || h <= 0) throw Error("the view has no image to export yet");
-  std::vector<Rgba> rows(size_t(w) * size_t(h));
-  gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
-  gl.GetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
-  Image image;
-  image.width = w;
-  image.height = h;
-  image.pixels.resize(rows.size());
-  for (int y = 0; y < h; ++y)
-    std::copy_n(rows.begin() + ptrdiff_t(h - 1 - y) * w, w, image.pixels.begin() + ptrdiff_t(y) * w);
-  return image;
-}
-
-GLuint uploadImageTo(const GladGLContext& gl, gl::Texture& texture, const Image& image) {
-  std::vector<Rgba> rows(image.pixels.size());
-  for (int y = 0; y < image.height; ++y)
-    std::copy_n(image.pixels.begin() + ptrdiff_t(y) * image.width, image.width,
-                rows.begin() + ptrdiff_t(image.height - 1 - y) * image.width);
-  if (!texture) texture = gl::makeTexture(gl);
-  gl.BindTexture(GL_TEXTURE_2D, texture.id());
-  gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                rows.data());
-  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  return texture.id();
-}
-
-GLuint drawViewInto(GlContext& context, ViewRenderer& renderer, ViewTargets& t, const ViewRequest& r) {
-  const PipelineRun& run = *r.run;
-  switch (r.kind) {
-    case ViewKind::world:
-      t.world.resize(r.width, r.height, r.samples);
-      renderer.drawWorld(r.scene, run, r.frame, t.world);
-      t.world.resolve();
-      return t.world.colorTexture();
-    case ViewKind::npc:
-      t.npc.resize(r.width, r.height, r.samples);
-      renderer.drawNpc(r.scene, run, r.frame, t.npc);
-      t.npc.resolve();
-      return t.npc.colorTexture();
-    case ViewKind::morph:
-      t.morph.resize(r.width, r.height, r.samples);
-      renderer.drawMorph(r.scene, run, r.frame, t.morph);
-      t.morph.resolve();
-      return t.morph.colorTexture();
-    case ViewKind::camera:
-    case ViewKind::all:
-      // At the device's W × H: pixel-aligned with DC (shown scaled to fit).
-      t.camera.resize(r.scene.device.width, r.scene.device.height, 1);
-      renderer.drawCamera(r.scene, run, r.frame, t.camera);
-      if (!r.frame.overlays.difference) return t.camera.colorTexture();
-      {
-        // The GPU's image against the CPU's clipped polygons filled: differing pixels in magenta.
-        const Image gpu = t.camera.read();
-        const Image cpu = rasterizeClippedPolygons(run, r.scene.background, gpu.width, gpu.height);
-        return uploadImageTo(context.gl(), t.difference, differenceImage(gpu, cpu, 0));
-      }
-    case ViewKind::divideFirst:
-    case ViewKind::depth: break;  // drawn by the panels that show them, not as view windows
-  }
-  return 0;
-}
 
 ViewWorker::ViewWorker(std::unique_ptr<GlContext> context, std::function<void()> wake)
     : ctx_(std::move(context)), wake_(std::move(wake)) {

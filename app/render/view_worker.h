@@ -1,14 +1,13 @@
-// The views drawn on a render thread (README "The viewer": the window never waits for a view). A
-// view of a million triangles takes seconds on a software renderer; meanwhile the window keeps
-// drawing its panels and shows the view's last finished image with a busy mark. The thread has its
+// The views drawn on a render thread (README "The viewer": the window never waits for a view;
+// app/render/view_images.h decides what is drawn where). A view of a million triangles takes seconds
+// on a software renderer; meanwhile the window keeps drawing its panels and shows the view's last finished image with a busy mark. The thread has its
 // own GL context sharing the window's textures (GlContext::createShared); the ViewRenderer, whose
 // vertex arrays cannot be shared, lives entirely on it. The latest request for a view replaces one
 // not yet started (the latest camera wins: no queue of stale work).
 #pragma once
 
 #include "app/context/context.h"
-#include "app/gl/render_target.h"
-#include "app/render/view_renderer.h"
+#include "app/render/view_images.h"
 
 #include <array>
 #include <condition_variable>
@@ -21,31 +20,6 @@
 #include <thread>
 
 namespace vplab {
-
-/// Everything a view's image is drawn from (the scene shares its meshes: a cheap copy).
-struct ViewRequest {
-  ViewKind kind = ViewKind::world;
-  Scene scene;
-  std::shared_ptr<const PipelineRun> run;
-  FrameSettings frame;
-  int width = 0, height = 0, samples = 1;
-  float uiScale = 1.f;
-};
-
-/// The render targets of one image of each view, and the camera view's difference image.
-struct ViewTargets {
-  explicit ViewTargets(const GladGLContext& gl) : world(gl), camera(gl), npc(gl), morph(gl) {}
-  gl::RenderTarget world, camera, npc, morph;
-  gl::Texture difference;
-};
-
-/// Draws one view into `targets` on the current context; returns the texture that shows it (the
-/// camera view at the device's W × H, or its difference image with the CPU's polygons).
-GLuint drawViewInto(GlContext& context, ViewRenderer& renderer, ViewTargets& targets, const ViewRequest& r);
-/// Reads a view's texture (rows bottom first, as drawn) as an image with the top row first.
-Image readTexture(const GladGLContext& gl, GLuint texture);
-/// Uploads `image` (top row first) into `texture` bottom row first, as the views' textures are.
-GLuint uploadImageTo(const GladGLContext& gl, gl::Texture& texture, const Image& image);
 
 class ViewWorker {
  public:
@@ -75,7 +49,7 @@ class ViewWorker {
   unsigned drawn() const;
 
  private:
-  static constexpr size_t kViews = 5;    // by ViewKind
+  static constexpr size_t kViews = kViewKindCount;
   static constexpr size_t kBuffers = 3;  // shown, finished not yet taken, being drawn
   void run();
   size_t freeBuffer(size_t view) const;

@@ -1,0 +1,167 @@
+// The views' images (view_images.h).
+#include "app/render/view_images.h"
+
+#include "app/export/cpu_raster.h"
+#include "app/export/image_compare.h"
+#include "app/gl/texture_io.h"
+#include "app/render/view_worker.h"
+
+#include <chrono>
+
+namespace vplab {
+
+namespace {
+
+/// How long a frame waits for the render thread's images before it shows the views' last ones: a
+/// small scene's views (a few ms each on llvmpipe) appear in the frame that changed them.
+constexpr double kFrameWaitForViews = 0.03;
+
+}  // namespace
+
+GLuint drawViewInto(GlContext& context, ViewRenderer& renderer, ViewTargets& t, const ViewRequest& r) {
+  const PipelineRun& run = *r.run;
+  switch (r.kind) {
+    case ViewKind::world:
+      t.world.resize(r.width, r.height, r.samples);
+      renderer.drawWorld(r.scene, run, r.settings, t.world);
+      t.world.resolve();
+      return t.world.colorTexture();
+    case ViewKind::npc:
+      t.npc.resize(r.width, r.height, r.samples);
+      renderer.drawNpc(r.scene, run, r.settings, t.npc);
+      t.npc.resolve();
+      return t.npc.colorTexture();
+    case ViewKind::morph:
+      t.morph.resize(r.width, r.height, r.samples);
+      renderer.drawMorph(r.scene, run, r.settings, t.morph);
+      t.morph.resolve();
+      return t.morph.colorTexture();
+    case ViewKind::camera:
+    case ViewKind::all:
+      // At the device's W × H: pixel-aligned with DC (shown scaled to fit).
+      t.camera.resize(r.scene.device.width, r.scene.device.height, 1);
+      renderer.drawCamera(r.scene, run, r.settings, t.camera);
+      if (!r.settings.overlays.difference) return t.camera.colorTexture();
+      {
+        // The GPU's image against the CPU's clipped polygons filled: differing pixels in magenta.
+        const Image gpu = t.camera.read();
+        const Image cpu = rasterizeClippedPolygons(run, r.scene.background, gpu.width, gpu.height);
+        return uploadImageTo(context.gl(), t.difference, differenceImage(gpu, cpu, 0));
+      }
+    case ViewKind::divideFirst:
+    case ViewKind::depth: break;  // drawn by the panels that show them, not as view windows
+  }
+  return 0;
+}
+
+ViewImages::ViewImages(GlContext& context, ViewRenderer& renderer)
+    : ctx_(context), renderer_(renderer), targets_(context.gl()), divideFirst_(context.gl()) {}
+
+ViewImages::~ViewImages() = default;
+
+void ViewImages::useWorker(std::unique_ptr<GlContext> context, std::function<void()> wake) {
+  worker_ = std::make_unique<ViewWorker>(std::move(context), std::move(wake));
+  for (Slot& s : slots_) s = {};
+}
+
+void ViewImages::beginFrame() {
+  frameWaitLeft_ = kFrameWaitForViews;
+  ++frameNumber_;
+  for (Slot& s : slots_) s.asked = false;
+}
+
+void ViewImages::endFrame() {
+  for (Slot& s : slots_)
+    if (!s.asked) s.pending = s.busy = false;  // not shown any more: its image is not waited for
+}
+
+GLuint ViewImages::image(ViewRequest r, unsigned runRevision) {
+  Slot& slot = slots_[size_t(r.kind)];
+  const bool device = r.kind == ViewKind::camera || r.kind == ViewKind::all;  // drawn at the device's W × H
+  slot.width = device ? r.scene.device.width : r.width;
+  slot.height = device ? r.scene.device.height : r.height;
+  slot.busy = false;
+  slot.asked = true;
+  Stamp stamp{runRevision, r.settings, r.width, r.height, r.samples, r.uiScale};
+  if (slot.texture != 0 && slot.stamp == stamp) return slot.texture;
+  if (worker_) return onWorker(slot, std::move(r), std::move(stamp));
+  try {
+    slot.texture = drawViewInto(ctx_, renderer_, targets_, r);
+  } catch (const std::exception& e) {
+    error_ = "drawing the " + std::string(toString(r.kind)) + " view failed: " + e.what();
+  }
+  ++drawn_;
+  slot.stamp = std::move(stamp);
+  return slot.texture;
+}
+
+GLuint ViewImages::onWorker(Slot& slot, ViewRequest r, Stamp stamp) {
+  const ViewKind kind = r.kind;
+  if (!slot.pending || !(slot.requested == stamp)) {
+    slot.ticket = worker_->request(std::move(r));
+    slot.requested = std::move(stamp);
+    slot.pending = true;
+    slot.askedAt = frameNumber_;
+  }
+  // Only the frame that asked for the image waits for it (a small scene's views appear in it); later
+  // frames only look whether it is finished, so they stay as short as the panels make them.
+  const double wait = slot.askedAt == frameNumber_ ? frameWaitLeft_ : 0;
+  const auto start = std::chrono::steady_clock::now();
+  const auto done = worker_->take(kind, slot.ticket, wait);
+  frameWaitLeft_ -= std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (done) {
+    if (!done->error.empty()) {
+      error_ = "drawing the " + std::string(toString(kind)) + " view failed: " + done->error;
+    } else {
+      slot.texture = done->texture;  // the newest finished image, maybe of an older request
+      ++drawn_;
+    }
+    if (done->ticket == slot.ticket) {
+      slot.pending = false;
+      slot.stamp = slot.requested;
+    }
+  }
+  slot.busy = slot.pending;
+  return slot.texture;
+}
+
+GLuint ViewImages::divideFirst(const Scene& scene, const PipelineRun& run, const FrameSettings& settings,
+                               unsigned runRevision) {
+  // The GPU always clips correctly; the wrong strategy's result exists only as the CPU's clipped
+  // polygons: divideFirstView's display list, drawn at the device's size (pixel-aligned with DC,
+  // as the camera view beside it).
+  if (run.options.strategy != ClipStrategy::divideFirst) return 0;
+  const Device& d = run.device;
+  if (divideFirstRevision_ != runRevision || divideFirst_.width() != d.width || divideFirst_.height() != d.height) {
+    divideFirst_.resize(d.width, d.height, 1);
+    renderer_.drawDivideFirst(scene, run, settings, divideFirst_);
+    divideFirst_.resolve();
+    divideFirstRevision_ = runRevision;
+  }
+  return divideFirst_.colorTexture();
+}
+
+std::vector<ViewKind> ViewImages::notReady() const {
+  std::vector<ViewKind> kinds;
+  for (ViewKind kind : kAllViewKinds)
+    if (slots_[size_t(kind)].asked && slots_[size_t(kind)].busy) kinds.push_back(kind);
+  return kinds;
+}
+
+std::optional<double> ViewImages::wakeIn(double busyStep) const {
+  std::optional<double> wake;
+  for (ViewKind kind : kAllViewKinds) {
+    if (!slots_[size_t(kind)].pending) continue;
+    if (worker_->hasFinished(kind)) return 0.0;
+    wake = busyStep;
+  }
+  return wake;
+}
+
+void ViewImages::forget() {
+  for (Slot& s : slots_) s.stamp = {};
+}
+
+std::optional<std::string> ViewImages::takeError() { return std::exchange(error_, std::nullopt); }
+
+}  // namespace vplab

@@ -1,0 +1,128 @@
+// The views' images (README "The viewer"): one render target per view, drawn again only when what it
+// shows changed (its stamp), either in the frame that needs it or, with a render thread
+// (app/render/view_worker.h), while the window goes on drawing its panels. Both paths draw through
+// one function, drawViewInto. A view of a million triangles takes seconds on a software renderer: the
+// window draws frames for any input (hover, ImGui settling) and must not draw the view each time.
+#pragma once
+
+#include "app/context/context.h"
+#include "app/gl/render_target.h"
+#include "app/render/view_renderer.h"
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vplab {
+
+/// Everything a view's image is drawn from. `run` is the CPU pipeline's run of `scene` (published,
+/// never copied: app/ui/viewer.h); the scene shares its meshes, a cheap copy.
+struct ViewRequest {
+  ViewKind kind = ViewKind::world;
+  Scene scene;
+  std::shared_ptr<const PipelineRun> run;
+  FrameSettings settings;
+  int width = 0, height = 0, samples = 1;
+  float uiScale = 1.f;
+};
+
+/// The render targets of one image of each view, and the camera view's difference image.
+struct ViewTargets {
+  explicit ViewTargets(const GladGLContext& gl) : world(gl), camera(gl), npc(gl), morph(gl) {}
+  gl::RenderTarget world, camera, npc, morph;
+  gl::Texture difference;
+};
+
+/// Draws one view into `targets` on the current context; returns the texture that shows it (the
+/// camera view at the device's W × H, or its difference image with the CPU's polygons).
+GLuint drawViewInto(GlContext& context, ViewRenderer& renderer, ViewTargets& targets, const ViewRequest& r);
+
+class ViewWorker;
+
+class ViewImages {
+ public:
+  /// Draws on `context` with `renderer` (the window's) until useWorker.
+  ViewImages(GlContext& context, ViewRenderer& renderer);
+  ~ViewImages();
+  ViewImages(const ViewImages&) = delete;
+  ViewImages& operator=(const ViewImages&) = delete;
+
+  /// Draws the views on a render thread with `context` (GlContext::createShared of the window's):
+  /// a view whose image is not ready within the frame shows its last image, busy. `wake` wakes the
+  /// window's event wait (called on the render thread).
+  void useWorker(std::unique_ptr<GlContext> context, std::function<void()> wake);
+  bool hasWorker() const { return worker_ != nullptr; }
+
+  /// A new frame: no view asked for yet; the frame may wait a little for the render thread.
+  void beginFrame();
+  /// The end of the frame's views: a view not asked for in it is not shown, nor waited for.
+  void endFrame();
+
+  /// The texture that shows `r` (drawn from the run of revision `runRevision`): its last image when
+  /// nothing it shows changed, else drawn now, or on the render thread (then maybe an older image,
+  /// and busy(r.kind)). 0 before its first image. A failure is kept for takeError().
+  GLuint image(ViewRequest r, unsigned runRevision);
+  /// The divide-first comparison at the device's size, drawn again only for a new run.
+  GLuint divideFirst(const Scene& scene, const PipelineRun& run, const FrameSettings& settings, unsigned runRevision);
+
+  /// Whether `kind` shows an older image in this frame while its current one is drawn.
+  bool busy(ViewKind kind) const { return slots_[size_t(kind)].busy; }
+  /// The views asked for in this frame that are busy: a screenshot waits until there are none.
+  std::vector<ViewKind> notReady() const;
+  /// Seconds until the window should draw again for the views: 0 when a render-thread image is
+  /// finished, `busyStep` while one is drawn (the busy mark turns), else nothing (nullopt).
+  std::optional<double> wakeIn(double busyStep) const;
+  /// The image shown last of `kind`, and its size in pixels as asked last (the camera view's is
+  /// the device's).
+  GLuint texture(ViewKind kind) const { return slots_[size_t(kind)].texture; }
+  int width(ViewKind kind) const { return slots_[size_t(kind)].width; }
+  int height(ViewKind kind) const { return slots_[size_t(kind)].height; }
+  /// How many images were drawn (not reused): tests check hover frames cost none.
+  unsigned drawn() const { return drawn_; }
+  /// Every view is drawn again when next asked for.
+  void forget();
+  /// The last failure to draw a view, once.
+  std::optional<std::string> takeError();
+
+ private:
+  /// What an image was drawn from: equal stamps give equal images. The scene is the run's.
+  struct Stamp {
+    unsigned runRevision = 0;
+    FrameSettings settings;
+    int width = 0, height = 0, samples = 0;
+    float uiScale = 0;
+    bool operator==(const Stamp&) const = default;
+  };
+  struct Slot {
+    Stamp stamp;
+    GLuint texture = 0;
+    int width = 0, height = 0;
+    // With the render thread: the image asked for and not yet shown.
+    Stamp requested;
+    uint64_t ticket = 0;
+    uint64_t askedAt = 0;  // the frame that asked for it
+    bool pending = false;
+    bool busy = false;   // shown with an older image in this frame
+    bool asked = false;  // asked for in this frame
+  };
+  GLuint onWorker(Slot& slot, ViewRequest r, Stamp stamp);
+
+  static constexpr size_t kViews = kViewKindCount;
+  GlContext& ctx_;
+  ViewRenderer& renderer_;
+  ViewTargets targets_;           // the images drawn in the window's thread
+  gl::RenderTarget divideFirst_;
+  unsigned divideFirstRevision_ = 0;  // the run it was drawn from (0: none yet)
+  std::array<Slot, kViews> slots_;
+  std::unique_ptr<ViewWorker> worker_;
+  double frameWaitLeft_ = 0;  // seconds this frame may still wait for the render thread
+  uint64_t frameNumber_ = 0;
+  unsigned drawn_ = 0;
+  std::optional<std::string> error_;
+};
+
+}  // namespace vplab
