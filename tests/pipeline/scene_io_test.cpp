@@ -316,13 +316,13 @@ TEST(SceneIo, ShippedScenesLoadAndRun) {
     expectSameScene(s, parseScene(sceneToJson(s), "again", entry.path().parent_path()));
   }
   EXPECT_GT(scenes, 0);
-  if (fs::exists(dir / "default.json")) {
-    Scene fromFile = loadScene(dir / "default.json");
-    Scene builtIn = defaultScene();
-    fromFile.title = builtIn.title;  // presentation only
-    fromFile.caption = builtIn.caption;
-    expectSameScene(builtIn, fromFile);
-  }
+  // A link names the built-in scene "default", i.e. this file (Viewer::urlState): it must be there.
+  ASSERT_TRUE(fs::exists(dir / "default.json"));
+  Scene fromFile = loadScene(dir / "default.json");
+  Scene builtIn = defaultScene();
+  fromFile.title = builtIn.title;  // presentation only
+  fromFile.caption = builtIn.caption;
+  expectSameScene(builtIn, fromFile);
 }
 
 TEST(SceneIo, SaveSceneWritesAtomically) {
