@@ -41,9 +41,6 @@ inline std::array<std::array<double, 4>, 4> rowsOf(const Mat4& m) {
   return rows;
 }
 
-/// M · p for an affine point p (w = 1), keeping the homogeneous result.
-inline Vec4 transformPoint(const Mat4& m, const Vec3& p) { return m * Vec4(p, 1.0); }
-
 /// M · p for an affine transform (bottom row 0 0 0 1): the w component is not computed.
 inline Vec3 transformAffine(const Mat4& m, const Vec3& p) {
   return Vec3(m[0]) * p.x + Vec3(m[1]) * p.y + Vec3(m[2]) * p.z + Vec3(m[3]);

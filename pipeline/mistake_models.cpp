@@ -33,12 +33,6 @@ const std::vector<MistakeModel>& mistakeModels() {
 
 const MistakeModel& mistakeModel(Mistake m) { return mistakeModels().at(size_t(m)); }
 
-std::optional<Mistake> mistakeFromString(std::string_view key) {
-  for (const MistakeModel& m : mistakeModels())
-    if (m.key == key) return m.id;
-  return std::nullopt;
-}
-
 namespace {
 
 Json dumpOf(const Scene& scene, ClipStrategy strategy = ClipStrategy::npc) {

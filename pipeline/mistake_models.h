@@ -23,7 +23,6 @@
 #include "pipeline/scene.h"
 
 #include <nlohmann/json.hpp>
-#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -42,7 +41,6 @@ struct MistakeModel {
 /// All models, in the order above.
 const std::vector<MistakeModel>& mistakeModels();
 const MistakeModel& mistakeModel(Mistake m);
-std::optional<Mistake> mistakeFromString(std::string_view key);
 
 /// The reference run's dump as JSON (`vplab dump` of the scene, strategy npc).
 nlohmann::ordered_json referenceDump(const Scene& scene);

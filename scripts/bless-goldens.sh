@@ -20,16 +20,15 @@ cmake -S "$root" -B "$build" >/dev/null
 cmake --build "$build" -j "$(nproc)" --target test_app vplab
 
 # The golden tests are GoldenDefault (parameterized: Views/GoldenDefault.*), GoldenUi and
-# GoldenScenes; GoldenTolerance skips itself while blessing.
-# On Mesa's llvmpipe, as ctest runs the image tests (tests/CMakeLists.txt, VPLAB_SOFTWARE_GL_ENVIRONMENT),
-# never on a GPU this machine may have: SoftwareRenderer.* stops the script before anything is written.
-export LIBGL_ALWAYS_SOFTWARE=1 GALLIUM_DRIVER=llvmpipe __GLX_VENDOR_LIBRARY_NAME=mesa
-if [ -f /usr/share/glvnd/egl_vendor.d/50_mesa.json ]; then
-  export __EGL_VENDOR_LIBRARY_FILENAMES=/usr/share/glvnd/egl_vendor.d/50_mesa.json
-fi
-"$build/tests/test_app" --gtest_filter='SoftwareRenderer.*' --gtest_brief=1
-VPLAB_BLESS=1 "$build/tests/test_app" --gtest_filter='*Golden*' --gtest_brief=1
-"$build/tests/test_app" --gtest_filter='*Golden*' --gtest_brief=1
+# GoldenScenes; GoldenTolerance skips itself while blessing. ctest runs them as every image test is
+# run: on Mesa's llvmpipe, never on a GPU this machine may have (tests/CMakeLists.txt sets that
+# environment on each test, and a test inherits VPLAB_BLESS from ours). SoftwareRenderer.* checks
+# that environment first and stops the script before anything is written. One test at a time, as
+# blessing also removes goldens; a pattern that selects no test is an error, not a quiet pass.
+run_tests() { ctest --test-dir "$build" --parallel 1 --no-tests=error --output-on-failure -R "$1"; }
+run_tests '^SoftwareRenderer\.'
+VPLAB_BLESS=1 run_tests 'Golden'
+run_tests 'Golden'
 
 echo
 echo "Changed goldens (LOOK at each before committing):"

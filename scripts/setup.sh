@@ -5,6 +5,7 @@ set -euo pipefail
 
 VPLAB_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 VPLAB_BUILD="${VPLAB_BUILD:-$VPLAB_ROOT/build}"
+source "$VPLAB_ROOT/scripts/lib.sh"
 
 packages=(
   cmake g++ make pkg-config python3-glad
@@ -20,17 +21,7 @@ packages+=(texlive-latex-base texlive-latex-recommended poppler-utils)
 # the SVG backend's tests rasterise its documents with rsvg-convert
 packages+=(librsvg2-bin)
 
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "vplab: installing ${missing[*]}" >&2
-  sudo=""
-  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
-  $sudo apt-get update -q
-  $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
-fi
+vplab_install_missing "${packages[@]}"
 
 cmake -S "$VPLAB_ROOT" -B "$VPLAB_BUILD" -DCMAKE_BUILD_TYPE="${VPLAB_BUILD_TYPE:-Release}" >/dev/null
 cmake --build "$VPLAB_BUILD" -j "$(nproc)"

@@ -10,20 +10,11 @@ set -euo pipefail
 VPLAB_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 WEB_BUILD="${VPLAB_WEB_BUILD:-$VPLAB_ROOT/build-web}"
 IMGUI_VERSION=1.86
+source "$VPLAB_ROOT/scripts/lib.sh"
 
 packages=(emscripten nodejs cmake make python3-glad dpkg-dev
           libglm-dev nlohmann-json3-dev libtinyobjloader-dev libstb-dev fonts-dejavu-core)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-sudo=""
-if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
-if ((${#missing[@]})); then
-  echo "web.sh: installing ${missing[*]}" >&2
-  $sudo apt-get update -q
-  $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
-fi
+vplab_install_missing "${packages[@]}"
 
 # ---------------------------------------------------------------- Dear ImGui's sources (Debian's imgui source package)
 deps="$WEB_BUILD/deps"

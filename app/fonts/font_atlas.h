@@ -33,10 +33,9 @@ class FontAtlas final : public TextMetrics {
   };
   Alpha8 alpha8() const;
 
-  /// For SVG: whether the font is DejaVu Sans (else ImGui's built-in bitmap font), its CSS family,
-  /// its em in pixels (Dear ImGui sizes a font by its line height, SVG by its em) and the baseline
-  /// below the top of a line (Dear ImGui puts glyphs at round(ascent)).
-  bool dejaVu() const { return dejaVu_; }
+  /// For SVG: the font's CSS family (DejaVu Sans, else ImGui's built-in bitmap font), its em in
+  /// pixels (Dear ImGui sizes a font by its line height, SVG by its em) and the baseline below the
+  /// top of a line (Dear ImGui puts glyphs at round(ascent)).
   const char* cssFamily() const { return dejaVu_ ? "DejaVu Sans, Verdana, sans-serif" : "monospace"; }
   double emPx(TextSize size) const;
   double baselinePx(TextSize size) const;

@@ -29,7 +29,6 @@ class DepthField {
   /// behind it by more than the two depth-buffer steps of rounding only.
   void addFan(std::span<const PixelPoint> polygon, bool pushedBack = true);
   bool empty() const { return triangles_.empty(); }
-  size_t triangleCount() const { return triangles_.size(); }
 
   /// Whether a face hides the point. `pushBack`: the point's own polygon offset (a pushed-back
   /// translucent face loses the ties it would otherwise win).

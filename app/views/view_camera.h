@@ -15,8 +15,6 @@ struct ViewCamera {
   Vec4 eyeWc{0, 0, 1, 0};  // PRP (w = 1) for perspective; the direction to the viewer (w = 0) otherwise
 
   Mat4 npcFromWc() const { return npcFromVrc * vrcFromWc; }
-  /// All the way to GL clip space: glClipFromNpc · npcFromVrc · vrcFromWc.
-  Mat4 glClipFromWc() const { return glClipFromNpc() * npcFromWc(); }
 };
 
 /// The view camera of a valid synthetic camera. Throws vplab::Error for an invalid one.

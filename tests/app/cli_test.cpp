@@ -8,21 +8,18 @@
 #include "pipeline/dump.h"
 #include "pipeline/scene_io.h"
 #include "tests/app/gl_test_support.h"
+#include "tests/support/files.h"
+#include "tests/support/process.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <iterator>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -32,58 +29,22 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using ::testing::Not;
-
-std::string readFile(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::ProcessResult;
+using test::readFile;
+using test::shellQuoted;
 
 void writeFile(const fs::path& file, const std::string& text) {
   std::ofstream out(file, std::ios::binary);
   out << text;
 }
 
-/// Single quotes for the shell.
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-struct ProcessResult {
-  int exitCode = -1;
-  std::string out, err;
-};
-
-/// A fresh directory per test, removed afterwards unless the test failed.
-class Cli : public ::testing::Test {
+/// Each test in a fresh directory (test::ProcessTest).
+class Cli : public test::ProcessTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("vplab-cli-" + std::string(info->name()) + "-" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    if (!HasFailure()) fs::remove_all(dir_);
-    else std::cout << "left for inspection: " << dir_.string() << "\n";
-  }
-
   /// Runs `vplab ARGS` in the test's directory with the environment prefix `env` (e.g. "env -u
-  /// DISPLAY"), capturing stdout, stderr and the exit code.
+  /// DISPLAY").
   ProcessResult vplab(const std::string& args, const std::string& env = "") {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = "cd " + quoted(dir_.string()) + " && " + env + (env.empty() ? "" : " ") +
-                                quoted(VPLAB_EXE) + " " + args + " >" + quoted(out.string()) + " 2>" +
-                                quoted(err.string());
-    const int status = std::system(command.c_str());
-    ProcessResult r;
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = readFile(out);
-    r.err = readFile(err);
-    fs::remove(out);
-    fs::remove(err);
-    return r;
+    return sh(env + (env.empty() ? "" : " ") + shellQuoted(VPLAB_EXE) + " " + args);
   }
 
   /// The PNG files in the test's directory.
@@ -93,8 +54,6 @@ class Cli : public ::testing::Test {
       if (e.path().extension() == ".png") files.push_back(e.path().filename().string());
     return files;
   }
-
-  fs::path dir_;
 };
 
 // ---------------------------------------------------------------- determinism
@@ -193,7 +152,7 @@ TEST_F(Cli, RenderErrorsAreClearAndFail) {
       {"render --view side --out x.png", {"--view", "side"}},
       {"render --style cartoon --out x.png", {"--style", "cartoon"}},
       {"render --view ui --backend osmesa --out x.png", {"osmesa", "EGL"}},  // ImGui's renderer needs libGL
-      {"render --out " + quoted((dir_ / "no-such-dir" / "x.png").string()), {"no-such-dir"}},
+      {"render --out " + shellQuoted((dir_ / "no-such-dir" / "x.png").string()), {"no-such-dir"}},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.args);

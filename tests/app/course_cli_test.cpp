@@ -5,18 +5,18 @@
 #include "app/views/image.h"
 #include "app/export/cpu_raster.h"
 #include "pipeline/scene_io.h"
+#include "tests/support/files.h"
+#include "tests/support/process.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -26,47 +26,13 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using Json = nlohmann::json;
+using test::ProcessResult;
+using test::readFile;
+using test::shellQuoted;
 
-std::string slurp(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::string shellQuoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-struct Outcome {
-  int exitCode = -1;
-  std::string out, err;
-};
-
-class Course : public ::testing::Test {
+class Course : public test::ProcessTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("vplab-course-" + std::string(info->name()) + "-" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    if (!HasFailure()) fs::remove_all(dir_);
-    else std::cout << "left for inspection: " << dir_.string() << "\n";
-  }
-  Outcome sh(const std::string& command) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string full = "cd " + shellQuoted(dir_.string()) + " && " + command + " >" + shellQuoted(out.string()) +
-                             " 2>" + shellQuoted(err.string());
-    const int status = std::system(full.c_str());
-    Outcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-    fs::remove(out);
-    fs::remove(err);
-    return r;
-  }
-  Outcome vplab(const std::string& args) { return sh(shellQuoted(VPLAB_EXE) + " " + args); }
-  fs::path dir_;
+  ProcessResult vplab(const std::string& args) { return sh(shellQuoted(VPLAB_EXE) + " " + args); }
 };
 
 std::string asset(const char* name) { return std::string(VPLAB_ASSETS) + "/scenes/" + name; }
@@ -79,11 +45,11 @@ TEST_F(Course, ExerciseTwiceWritesTheSameBytes) {
   size_t files = 0;
   for (const auto& e : fs::directory_iterator(dir_ / "a")) {
     ++files;
-    EXPECT_EQ(slurp(e.path()), slurp(dir_ / "b" / e.path().filename())) << e.path().filename();
+    EXPECT_EQ(readFile(e.path()), readFile(dir_ / "b" / e.path().filename())) << e.path().filename();
   }
   EXPECT_EQ(files, 9u);  // sheet and solution .md/.tex, scene.json, world and npc .svg/.png
   ASSERT_EQ(vplab("exercise --seed 8 --topic pipeline --out c").exitCode, 0);
-  EXPECT_NE(slurp(dir_ / "a" / "sheet.md"), slurp(dir_ / "c" / "sheet.md"));
+  EXPECT_NE(readFile(dir_ / "a" / "sheet.md"), readFile(dir_ / "c" / "sheet.md"));
 }
 
 // The numbers of the LaTeX math: "3", "-\frac{3}{10}", "0.7071".
@@ -157,10 +123,10 @@ TEST_F(Course, SolutionNumbersAreThoseOfVplabDump) {
     SCOPED_TRACE(args);
     fs::remove_all(dir_ / "ex");
     ASSERT_EQ(vplab("exercise " + args + " --out ex").exitCode, 0);
-    const Outcome dump = vplab("dump --scene ex/scene.json");
+    const ProcessResult dump = vplab("dump --scene ex/scene.json");
     ASSERT_EQ(dump.exitCode, 0) << dump.err;
     const Json d = Json::parse(dump.out);
-    const std::string md = slurp(dir_ / "ex" / "solution.md");
+    const std::string md = readFile(dir_ / "ex" / "solution.md");
     const auto matrices = matricesOf(md);
     const auto tuples = tuplesOf(md);
     ASSERT_EQ(matrices.size(), 8u);  // each stage matrix in both forms
@@ -184,9 +150,9 @@ TEST_F(Course, SolutionNumbersAreThoseOfVplabDump) {
 
 TEST_F(Course, ExerciseInGermanAndBadOptions) {
   ASSERT_EQ(vplab("exercise --seed 2 --topic clipping --lang de --out de").exitCode, 0);
-  EXPECT_THAT(slurp(dir_ / "de" / "solution.md"), HasSubstr("# Lösung 2: Clipping in homogenen Koordinaten"));
-  EXPECT_THAT(slurp(dir_ / "de" / "sheet.md"), HasSubstr("## Aufgaben"));
-  Outcome r = vplab("exercise --topic shading --out x");
+  EXPECT_THAT(readFile(dir_ / "de" / "solution.md"), HasSubstr("# Lösung 2: Clipping in homogenen Koordinaten"));
+  EXPECT_THAT(readFile(dir_ / "de" / "sheet.md"), HasSubstr("## Aufgaben"));
+  ProcessResult r = vplab("exercise --topic shading --out x");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_THAT(r.err, HasSubstr("--topic \"shading\": orientation, mapping, clipping or pipeline expected"));
   r = vplab("exercise --lang fr --out x");
@@ -217,7 +183,7 @@ TEST_F(Course, TexCompilesWithPdflatexForEveryTopic) {
     ASSERT_EQ(vplab("exercise --seed 3 --topic " + topic + " --projection " + projection + " --lang " +
                     (topic == "mapping" ? "de" : "en") + " --out " + out).exitCode, 0);
     for (const char* doc : {"sheet", "solution"}) {
-      const Outcome tex = sh("cd " + out + " && pdflatex -interaction=nonstopmode -halt-on-error " + doc + ".tex");
+      const ProcessResult tex = sh("cd " + out + " && pdflatex -interaction=nonstopmode -halt-on-error " + doc + ".tex");
       ASSERT_EQ(tex.exitCode, 0) << tex.out.substr(tex.out.size() > 3000 ? tex.out.size() - 3000 : 0);
       const std::string png = (shots / (topic + "-" + doc)).string();
       ASSERT_EQ(sh("pdftoppm -r 50 -png -f 1 -l 1 -singlefile " + out + "/" + doc + ".pdf " + shellQuoted(png)).exitCode, 0);
@@ -233,16 +199,16 @@ TEST_F(Course, TexCompilesWithPdflatexForEveryTopic) {
 
 TEST_F(Course, GradeNumbersExitCodesAndReports) {
   const std::string scene = shellQuoted(asset("behind-the-eye.json"));
-  const Outcome dump = vplab("dump --scene " + scene);
+  const ProcessResult dump = vplab("dump --scene " + scene);
   ASSERT_EQ(dump.exitCode, 0);
   std::ofstream(dir_ / "right.json") << dump.out;
-  Outcome r = vplab("grade numbers --scene " + scene + " --student right.json --junit right.xml");
+  ProcessResult r = vplab("grade numbers --scene " + scene + " --student right.json --junit right.xml");
   EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
   EXPECT_THAT(r.out, HasSubstr("PASSED"));
-  EXPECT_THAT(slurp(dir_ / "right.xml"), HasSubstr("failures=\"0\""));
+  EXPECT_THAT(readFile(dir_ / "right.xml"), HasSubstr("failures=\"0\""));
 
   // y not flipped in the device mapping: every clipped_dc y becomes H − y.
-  Json answer = Json::parse(slurp(dir_ / "right.json"));
+  Json answer = Json::parse(readFile(dir_ / "right.json"));
   const double h = answer["device"]["height"].get<double>();
   answer["matrices"]["dc_from_npc"][1] = {0, h, 0, 0};
   for (Json& o : answer["objects"])
@@ -254,7 +220,7 @@ TEST_F(Course, GradeNumbersExitCodesAndReports) {
   EXPECT_THAT(r.out, HasSubstr("WRONG  /matrices/dc_from_npc: 2 of 16 values wrong"));
   EXPECT_THAT(r.out, HasSubstr("stage 5, device mapping"));
   EXPECT_THAT(r.out, HasSubstr("the mistake model \"y-not-flipped\""));
-  const std::string xml = slurp(dir_ / "flipped.xml");
+  const std::string xml = readFile(dir_ / "flipped.xml");
   EXPECT_THAT(xml, HasSubstr("<testsuite name=\"vplab grade numbers: flipped.json\""));
   EXPECT_THAT(xml, HasSubstr("<failure message=\"2 of 16 values wrong\">"));
 
@@ -266,7 +232,7 @@ TEST_F(Course, GradeNumbersExitCodesAndReports) {
   EXPECT_EQ(report["first_departing_stage"]["stage"], 5);
 
   // A clipped polygon with a vertex missing: wrong (not malformed), and the JSON report stays JSON.
-  Json shorter = Json::parse(slurp(dir_ / "right.json"));
+  Json shorter = Json::parse(readFile(dir_ / "right.json"));
   Json& dc = shorter["objects"][0]["polygons"][0]["clipped_dc"];
   ASSERT_GE(dc.size(), 3u);
   dc.erase(dc.size() - 1);
@@ -285,7 +251,7 @@ TEST_F(Course, GradeNumbersExitCodesAndReports) {
 
 TEST_F(Course, GradeNumbersInputErrorsExitWith2) {
   std::ofstream(dir_ / "bad.json") << R"({"matrices": {"npc_from_vrc": [[1, 0, 0], [0, 1, 0]]}})";
-  Outcome r = vplab("grade numbers --student bad.json");
+  ProcessResult r = vplab("grade numbers --student bad.json");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_THAT(r.err, HasSubstr("bad.json: /matrices/npc_from_vrc: 2 rows where a 4 × 4 matrix"));
   std::ofstream(dir_ / "row.json") << R"({"matrices": {"npc_from_vrc": [[1, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]}})";
@@ -338,7 +304,7 @@ TEST_F(Course, GradeImageNamesTheImageMistakes) {
   const std::string scenePath = asset("behind-the-eye.json");
   const std::string scene = shellQuoted(scenePath);
   ASSERT_EQ(vplab("render --scene " + scene + " --view camera --style flat --size 320x240 --out right.png").exitCode, 0);
-  Outcome r = vplab("grade image --scene " + scene + " --student right.png --junit right.xml");
+  ProcessResult r = vplab("grade image --scene " + scene + " --student right.png --junit right.xml");
   EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
   EXPECT_TRUE(fs::exists(dir_ / "right.png.diff.png"));
 
@@ -377,7 +343,7 @@ TEST_F(Course, GradeImageNamesTheImageMistakes) {
   // A PNG whose header claims 12000 × 12000 pixels (576 MB of RGBA, under stb_image's own limit of
   // 1 GB): refused before anything is allocated or rendered.
   {
-    std::string png = slurp(dir_ / "right.png");
+    std::string png = readFile(dir_ / "right.png");
     ASSERT_GT(png.size(), 24u);
     const unsigned char size[8] = {0, 0, 0x2e, 0xe0, 0, 0, 0x2e, 0xe0};  // IHDR width, height (big endian)
     for (int i = 0; i < 8; ++i) png[size_t(16 + i)] = char(size[i]);

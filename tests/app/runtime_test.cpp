@@ -14,7 +14,6 @@
 #include <csignal>
 #include <fstream>
 #include <future>
-#include <sstream>
 
 #include "app/ui/atomic_file.h"
 #include "app/ui/autosave.h"
@@ -24,12 +23,15 @@
 #include "pipeline/error.h"
 #include "pipeline/scene_io.h"
 #include "tests/app/gl_test_support.h"
+#include "tests/support/files.h"
 
 namespace vplab {
 namespace {
 
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
+using test::readFile;
+using test::TempDir;
 
 constexpr int kWidth = 1280, kHeight = 720;
 
@@ -38,26 +40,6 @@ std::unique_ptr<HeadlessViewer> makeViewer(Scene scene = defaultScene()) {
   v->frames(3);
   return v;
 }
-
-std::string readFile(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-/// A fresh directory under the system's temporary directory, removed at the end of the test.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string pattern = (fs::temp_directory_path() / "vplab-runtime-XXXXXX").string();
-    path = ::mkdtemp(pattern.data());
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
 
 fs::path preset(const char* name) { return fs::path(VPLAB_ASSETS) / "scenes" / name; }
 

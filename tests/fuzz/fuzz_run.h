@@ -9,7 +9,7 @@ namespace vplab::fuzz {
 
 /// The limits of the fuzz targets: the default ones, smaller, so that one input runs in
 /// milliseconds (what exceeds them is refused before anything is allocated, which is what they
-/// test); the defaults themselves are tested in tests/pipeline/limits_test.cpp.
+/// test); the defaults themselves are tested in tests/pipeline/hardening_test.cpp.
 Limits fuzzLimits();
 
 /// Runs the pipeline and the dump's finiteness check over the scene; vplab::Error (a user error) is the only

@@ -9,12 +9,12 @@
 #include "pipeline/read_file.h"
 #include "pipeline/scene_io.h"
 #include "test_util.h"
+#include "tests/support/files.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -27,30 +27,12 @@ namespace fs = std::filesystem;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 using test::errorOf;
+using test::TempDir;
 
 const std::string kCamera = R"("camera": {"vrp": [0, 0, 0], "prp": [0, 0, 5], "vup": [0, 1, 0],
   "window": {"xmin": -1, "xmax": 1, "ymin": -1, "ymax": 1}, "front": 2, "back": -2})";
 
 std::string sceneWithObjects(const std::string& objects) { return "{" + kCamera + ",\n\"objects\": [" + objects + "]}"; }
-
-// A directory of its own under the temporary directory, removed at the end.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() / ("vplab_hardening_" + std::to_string(getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  fs::path write(const std::string& name, const std::string& text) const {
-    std::ofstream(path / name, std::ios::binary) << text;
-    return path / name;
-  }
-};
 
 // ---------------------------------------------------------------- 1 OBJ: what the loader returned
 

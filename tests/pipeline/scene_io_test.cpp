@@ -5,6 +5,7 @@
 #include "pipeline/pipeline.h"
 #include "pipeline/view_mapping.h"
 #include "test_util.h"
+#include "tests/support/files.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -14,13 +15,14 @@
 #include <filesystem>
 #include <functional>
 #include <fstream>
-#include <sstream>
 
 namespace vplab {
 namespace {
 
 namespace fs = std::filesystem;
 using test::errorOf;
+using test::readFile;
+using test::TempDir;
 using testing::HasSubstr;
 
 const std::string kData = VPLAB_TEST_DATA;
@@ -34,29 +36,6 @@ nlohmann::json minimalScene() {
     "objects": [{"shape": "cube"}]
   })");
 }
-
-std::string readFile(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// A fresh directory under the system temp directory, removed at the end of the test.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() /
-           ("vplab_scene_io_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
 
 TEST(SceneIo, MinimalSceneGetsTheDefaults) {
   const Scene s = parseScene(minimalScene().dump(), "min.json", kData);
@@ -316,13 +295,13 @@ TEST(SceneIo, ShippedScenesLoadAndRun) {
     expectSameScene(s, parseScene(sceneToJson(s), "again", entry.path().parent_path()));
   }
   EXPECT_GT(scenes, 0);
-  if (fs::exists(dir / "default.json")) {
-    Scene fromFile = loadScene(dir / "default.json");
-    Scene builtIn = defaultScene();
-    fromFile.title = builtIn.title;  // presentation only
-    fromFile.caption = builtIn.caption;
-    expectSameScene(builtIn, fromFile);
-  }
+  // A link names the built-in scene "default", i.e. this file (Viewer::urlState): it must be there.
+  ASSERT_TRUE(fs::exists(dir / "default.json"));
+  Scene fromFile = loadScene(dir / "default.json");
+  Scene builtIn = defaultScene();
+  fromFile.title = builtIn.title;  // presentation only
+  fromFile.caption = builtIn.caption;
+  expectSameScene(builtIn, fromFile);
 }
 
 TEST(SceneIo, SaveSceneWritesAtomically) {
