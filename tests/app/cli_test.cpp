@@ -306,7 +306,7 @@ TEST_F(Cli, WithoutADisplayTheViewerLeavesADumpAndAPicture) {
 std::string xvfb() { return "xvfb-run -a -s '-screen 0 1280x800x24' env XDG_STATE_HOME=state"; }
 
 TEST_F(Cli, AWindowScreenshotWaitsUntilEveryViewShowsTheCurrentImage) {
-  const std::string scene = quoted(std::string(VPLAB_ASSETS) + "/scenes/large-mesh.json");
+  const std::string scene = test::shellQuoted(std::string(VPLAB_ASSETS) + "/scenes/large-mesh.json");
   // One frame, then the screenshot; 300 s: the wait is the point here, not the machine's speed.
   const ProcessResult r = vplab("--scene " + scene + " --quit-after-frames 1 --wait-for-views 300 --screenshot window.png", xvfb());
   ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -322,7 +322,7 @@ TEST_F(Cli, AWindowScreenshotWaitsUntilEveryViewShowsTheCurrentImage) {
 }
 
 TEST_F(Cli, AScriptedScreenshotWhoseViewsAreNotReadyInTimeFailsNamingThem) {
-  const std::string scene = quoted(std::string(VPLAB_ASSETS) + "/scenes/large-mesh.json");
+  const std::string scene = test::shellQuoted(std::string(VPLAB_ASSETS) + "/scenes/large-mesh.json");
   // 0.2 s: far less than the ~1 s llvmpipe needs for a million triangles on any machine.
   const ProcessResult r = vplab("--scene " + scene + " --quit-after-frames 1 --wait-for-views 0.2 --screenshot window.png", xvfb());
   EXPECT_EQ(r.exitCode, 1) << r.err;
