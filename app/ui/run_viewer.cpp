@@ -144,9 +144,9 @@ int runViewerWindow(ViewerLaunch launch) {
       std::cerr << "vplab: " << recovery->file.string() << " holds unsaved changes of "
                 << (recovery->scenePath.empty() ? std::string("the default lecture scene") : recovery->scenePath.string())
                 << " from a session that did not end normally; the viewer offers to recover them\n";
-      viewer.offerRecovery(*recovery);
+      viewer.session().offerRecovery(*recovery);
     }
-    viewer.enableAutosave(stateDir, kAutosaveDelay);
+    viewer.session().enableAutosave(stateDir, kAutosaveDelay);
   }
   try {
     const int status = loop(window, viewer, input, signals, launch);
@@ -155,7 +155,7 @@ int runViewerWindow(ViewerLaunch launch) {
     glfwHideWindow(window.handle());
     return status;
   } catch (...) {
-    viewer.writeRecoveryNow();  // an unexpected error ends the viewer: keep the work first
+    viewer.session().writeRecoveryNow();  // an unexpected error ends the viewer: keep the work first
     throw;
   }
 }
@@ -181,7 +181,7 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
     if (wait <= 0) glfwPollEvents();
     else glfwWaitEventsTimeout(std::min(wait, kLongestWait));
     if (const int sig = signals.received()) {
-      const std::filesystem::path kept = viewer.writeRecoveryNow();
+      const std::filesystem::path kept = viewer.session().writeRecoveryNow();
       std::cerr << "vplab: ended by " << (sig == SIGTERM ? "SIGTERM" : sig == SIGINT ? "SIGINT" : "SIGHUP");
       if (!kept.empty()) std::cerr << "; the unsaved changes are kept in " << kept.string() << " and offered at the next start";
       std::cerr << "\n";
@@ -220,7 +220,7 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
         waitingSince.reset();
         if (quitting) {
           std::cerr << "vplab: " << why << (shot ? "; no screenshot written" : "") << "\n";
-          viewer.endSession();
+          viewer.session().endSession();
           report();
           return 1;
         }
@@ -236,7 +236,7 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
     if (viewer.title() != shownTitle) window.setTitle(shownTitle = viewer.title());
     if (quitting) break;
   }
-  viewer.endSession();
+  viewer.session().endSession();
   report();
   return 0;
 }

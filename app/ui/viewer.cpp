@@ -1,5 +1,5 @@
 // Index: 1 construction (ImGui context, fonts, style)  2 the frame  3 layout and windows
-//        4 menus, shortcuts and dialogs  5 files: open, save, autosave and recovery
+//        4 menus and shortcuts  5 export
 #include "app/ui/viewer.h"
 
 #include "app/gl/shader.h"
@@ -55,13 +55,6 @@ void setUpStyle(float scale) {
 /// The busy mark's spinner steps 10 times a second (a frame each, nothing else while idle).
 constexpr double kBusyMarkStep = 0.1;
 
-/// Where "save a copy" of a bundled scene starts: its name in the working directory.
-std::filesystem::path copyName(const std::filesystem::path& bundled) {
-  std::error_code ec;
-  const std::filesystem::path cwd = std::filesystem::current_path(ec);
-  return cwd / (bundled.empty() ? std::filesystem::path("lecture-scene.json") : bundled.filename());
-}
-
 }  // namespace
 
 Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
@@ -69,6 +62,11 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
       renderer_(context, uiScale),
       images_(context, renderer_),
       s_(std::move(scene)),
+      session_(s_,
+               [this] {
+                 updateRun();
+                 requestFrames(2);
+               }),
       uiScale_(uiScale) {
   IMGUI_CHECKVERSION();
   imgui_ = ImGui::CreateContext();
@@ -128,10 +126,7 @@ void Viewer::screenshotFailed(const std::string& why) {
   setStatus("no screenshot: " + why, true);
 }
 
-void Viewer::setStatus(std::string message, bool error) {
-  s_.status = std::move(message);
-  s_.statusIsError = error;
-}
+void Viewer::setStatus(std::string message, bool error) { session_.setStatus(std::move(message), error); }
 
 // ---------------------------------------------------------------- 2 the frame
 
@@ -161,7 +156,7 @@ void Viewer::updateRun() {
 void Viewer::makeCurrent() { ImGui::SetCurrentContext(imgui_); }
 
 double Viewer::wakeIn() const {
-  if (settleFrames_ > 0 || s_.morphPlaying || loader_.busy() || askRecovery_ || s_.animateUntil > imgui_->Time) return 0;
+  if (settleFrames_ > 0 || s_.morphPlaying || s_.animateUntil > imgui_->Time) return 0;
   double wake = 1e9;
   // The busy mark's spinner turns while a view is drawn on the render thread; its new image is
   // shown at once.
@@ -171,7 +166,7 @@ double Viewer::wakeIn() const {
   }
   // ImGui 1.86 blinks the text cursor (on 0.8 s, off 0.4 s): a few frames a second while typing.
   if (imgui_->IO.WantTextInput) wake = std::min(wake, 0.2);
-  if (autosave_) wake = std::min(wake, autosave_->dueIn(imgui_->Time));
+  if (const std::optional<double> session = session_.wakeIn(imgui_->Time)) wake = std::min(wake, *session);
   return wake;
 }
 
@@ -180,26 +175,7 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   if (s_.uiScale != uiScale_) applyUiScale(s_.uiScale);  // the font atlas is locked during a frame
   if (settleFrames_ > 0) --settleFrames_;
   images_.beginFrame();
-  if (s_.objectToLoad) {  // "+ OBJ mesh…" of the scene panel
-    const std::filesystem::path& path = s_.doc.scene().path;
-    loader_.startObject(std::move(*s_.objectToLoad), path.empty() ? std::filesystem::path() : path.parent_path());
-    s_.objectToLoad.reset();
-  }
-  if (auto loaded = loader_.poll()) {
-    if (loaded->scene) {
-      const std::string file = loaded->scene->path.string();
-      startDocument(std::move(*loaded->scene));
-      setStatus("opened " + file, false);
-    } else if (loaded->object) {  // one undo step, recorded at the end of this frame
-      Scene& scene = s_.doc.scene();
-      setStatus("added " + loaded->object->file, false);
-      scene.objects.push_back(std::move(*loaded->object));
-      s_.selectedObject = int(scene.objects.size()) - 1;
-    } else {
-      setStatus(loaded->error, true);  // the open scene stays
-    }
-    requestFrames(2);
-  }
+  if (session_.beginFrame()) requestFrames(2);
   const Scene atFrameStart = s_.doc.scene();
   const unsigned generation = s_.doc.generation();
   ImGui_ImplOpenGL3_NewFrame();
@@ -227,11 +203,7 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
     morphWindow();
   }
   helpWindow();
-  loadingWindow();
-  recoveryDialog();
-  quitDialog();
-  discardDialog();
-  dialog_->draw();
+  session_.drawDialogs(uiScale_);
   relayout_ = false;
   images_.endFrame();
   if (const auto error = images_.takeError()) setStatus(*error, true);
@@ -246,13 +218,7 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   lastActive_ = active;
   const bool editing = active != 0 || s_.drag.kind == Drag::Kind::handle;
   s_.doc.endFrame(editing);
-  if (autosave_) {
-    autosave_->update(s_.doc, ImGui::GetTime());
-    if (autosave_->error() != autosaveError_) {  // say it once, not every frame
-      autosaveError_ = autosave_->error();
-      if (!autosaveError_.empty()) setStatus(autosaveError_, true);
-    }
-  }
+  session_.endFrame(ImGui::GetTime());
 
   const GladGLContext& gl = ctx_.gl();
   gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
@@ -288,7 +254,7 @@ void Viewer::controlsWindow() {
   if (ImGui::BeginChild("panel", ImVec2(0, -footer))) {
     switch (s_.controlsTab) {
       case ViewerState::cameraTab: ui::cameraPanel(s_); break;
-      case ViewerState::sceneTab: ui::scenePanel(s_, *dialog_); break;
+      case ViewerState::sceneTab: ui::scenePanel(s_, session_.fileDialog()); break;
       case ViewerState::clippingTab: ui::clippingPanel(s_); break;
       case ViewerState::displayTab: ui::displayPanel(s_); break;
       default: ui::lecturePanel(s_); break;
@@ -370,7 +336,7 @@ void Viewer::helpWindow() {
   ImGui::End();
 }
 
-// ---------------------------------------------------------------- 4 menus, shortcuts and dialogs
+// ---------------------------------------------------------------- 4 menus and shortcuts
 
 void Viewer::menuBar() {
   if (!ImGui::BeginMainMenuBar()) return;
@@ -378,24 +344,24 @@ void Viewer::menuBar() {
   ui::recordRect(s_, "menu.file");
   if (fileMenu) {
     // The browser owns Ctrl+N, Ctrl+O, Ctrl+S, Ctrl+W and F11, F12: the page offers these here only.
-    auto key = [this](const char* shortcut) { return browser_ ? nullptr : shortcut; };
-    if (ImGui::MenuItem("New (default lecture scene)", key("Ctrl+N"))) unlessUnsaved([this] { startDocument(defaultScene()); });
+    auto key = [this](const char* shortcut) { return session_.browser() ? nullptr : shortcut; };
+    if (ImGui::MenuItem("New (default lecture scene)", key("Ctrl+N"))) session_.newDocument();
     ui::recordRect(s_, "menu.new");
-    if (browser_) {
-      if (ImGui::MenuItem("Open a scene or an OBJ mesh…")) chooseFileToOpen();
+    if (session_.browser()) {
+      if (ImGui::MenuItem("Open a scene or an OBJ mesh…")) session_.chooseFileToOpen();
       ui::recordRect(s_, "menu.open");
-      if (ImGui::MenuItem("Save (download)")) saveScene(s_.doc.path());
+      if (ImGui::MenuItem("Save (download)")) session_.save();
       ui::recordRect(s_, "menu.save");
     } else {
-      if (ImGui::MenuItem("Open scene…", "Ctrl+O")) chooseFileToOpen();
-      if (ImGui::MenuItem("Save", "Ctrl+S")) saveScene(s_.doc.path());
-      if (ImGui::MenuItem("Save as…", "Ctrl+Shift+S")) saveAs();
+      if (ImGui::MenuItem("Open scene…", "Ctrl+O")) session_.chooseFileToOpen();
+      if (ImGui::MenuItem("Save", "Ctrl+S")) session_.save();
+      if (ImGui::MenuItem("Save as…", "Ctrl+Shift+S")) session_.saveAs();
     }
     if (ImGui::BeginMenu("Presets", !s_.presets.empty())) {
       for (const SceneFileInfo& p : s_.presets)
         if (ImGui::MenuItem(p.title.c_str())) {
           const std::filesystem::path file = p.file;
-          unlessUnsaved([this, file] { openScene(file); });
+          session_.unlessUnsaved([this, file] { session_.openScene(file); });
         }
       ImGui::EndMenu();
     }
@@ -407,7 +373,7 @@ void Viewer::menuBar() {
       ImGui::EndMenu();
     }
     if (ImGui::MenuItem("Screenshot", key("F12"))) screenshotRequested_ = true;
-    if (!browser_ && ImGui::MenuItem("Quit", "Ctrl+Q")) requestQuit();  // a page is closed by its tab
+    if (!session_.browser() && ImGui::MenuItem("Quit", "Ctrl+Q")) requestQuit();  // a page is closed by its tab
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Edit")) {
@@ -430,23 +396,23 @@ void Viewer::shortcuts() {
     if (pressed(keys::kZ) && io.KeyShift) s_.doc.redo();
     else if (pressed(keys::kZ)) s_.doc.undo();
     if (pressed(keys::kY)) s_.doc.redo();
-    if (browser_) return;  // Ctrl+S, Ctrl+O, Ctrl+N, Ctrl+W, Ctrl+Q are the browser's: the File menu has them
+    if (session_.browser()) return;  // Ctrl+S, Ctrl+O, Ctrl+N, Ctrl+W, Ctrl+Q are the browser's: the File menu has them
     if (pressed(keys::kS)) {
-      if (io.KeyShift) saveAs();
-      else saveScene(s_.doc.path());
+      if (io.KeyShift) session_.saveAs();
+      else session_.save();
     }
-    if (pressed(keys::kN)) unlessUnsaved([this] { startDocument(defaultScene()); });
-    if (pressed(keys::kO)) chooseFileToOpen();
+    if (pressed(keys::kN)) session_.newDocument();
+    if (pressed(keys::kO)) session_.chooseFileToOpen();
     if (pressed(keys::kQ)) requestQuit();
     return;
   }
-  if (pressed(keys::kF11) && !browser_) s_.lectureMode = !s_.lectureMode;
+  if (pressed(keys::kF11) && !session_.browser()) s_.lectureMode = !s_.lectureMode;
   if (pressed(keys::kEscape) && s_.lectureMode) {
     s_.lectureMode = false;
     return;
   }
   if (pressed(keys::kF1)) s_.showHelp = !s_.showHelp;
-  if (pressed(keys::kF12) && !browser_) screenshotRequested_ = true;
+  if (pressed(keys::kF12) && !session_.browser()) screenshotRequested_ = true;
   if (pressed(keys::kEscape)) s_.probe.reset();
   for (int i = 0; i < 5; ++i)
     if (pressed(keys::kDigit1 + i)) s_.frame.camera.style = s_.frame.world.style = s_.frame.npc.style = Style(i);
@@ -460,38 +426,6 @@ void Viewer::shortcuts() {
     s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
     s_.frame.npc.orbit = defaultNpcOrbit();
   }
-}
-
-void Viewer::quitDialog() {
-  if (s_.quitRequested && !s_.doc.dirty()) s_.quitConfirmed = true;
-  if (s_.quitRequested && s_.doc.dirty() && !ImGui::IsPopupOpen("Unsaved changes")) ImGui::OpenPopup("Unsaved changes");
-  if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-  ImGui::Text("The scene has unsaved changes. Save them before quitting?");
-  if (ImGui::Button("Save")) {
-    ImGui::CloseCurrentPopup();
-    if (s_.doc.path().empty() || isBundled(s_.doc.path())) {
-      s_.quitRequested = false;
-      dialog_->open("Save a copy of the scene", FileChooser::Mode::save, {".json"}, copyName(s_.doc.path()), [this](const std::filesystem::path& f) {
-        saveScene(f);
-        if (!s_.doc.dirty()) s_.quitConfirmed = true;
-      });
-    } else {
-      saveScene(s_.doc.path());
-      s_.quitConfirmed = !s_.doc.dirty();
-      s_.quitRequested = s_.quitConfirmed;
-    }
-  }
-  ImGui::SameLine();
-  if (ImGui::Button("Discard them and quit")) {
-    ImGui::CloseCurrentPopup();
-    s_.quitConfirmed = true;
-  }
-  ImGui::SameLine();
-  if (ImGui::Button("Cancel")) {
-    ImGui::CloseCurrentPopup();
-    s_.quitRequested = false;
-  }
-  ImGui::EndPopup();
 }
 
 namespace {
@@ -530,7 +464,7 @@ void Viewer::exportMenu() {
     const bool pngChosen = ImGui::MenuItem(png.c_str(), nullptr, false, texture != 0);
     ui::recordRect(s_, ("export." + std::string(toString(e.kind)) + ".png").c_str());
     if (pngChosen) {
-      dialog_->open("Export the " + std::string(e.name) + " view", FileChooser::Mode::save, {".png"},
+      session_.fileDialog().open("Export the " + std::string(e.name) + " view", FileChooser::Mode::save, {".png"},
                    "vplab-" + std::string(toString(e.kind)) + ".png", [this, texture, kind, w, h](const std::filesystem::path& f) {
                      try {
                        // OpenGL ES (the browser's WebGL2) cannot read a texture back, and the page has
@@ -549,7 +483,7 @@ void Viewer::exportMenu() {
     const bool svgChosen = ImGui::MenuItem(svg.c_str(), nullptr, false, !why && texture != 0);
     ui::recordRect(s_, ("export." + std::string(toString(e.kind)) + ".svg").c_str());
     if (svgChosen) {
-      dialog_->open("Export the " + std::string(e.name) + " view", FileChooser::Mode::save, {".svg"},
+      session_.fileDialog().open("Export the " + std::string(e.name) + " view", FileChooser::Mode::save, {".svg"},
                    "vplab-" + std::string(toString(kind)) + ".svg", [this, kind, w, h](const std::filesystem::path& f) {
                      try {
                        writeSvg(svgOfRequest(s_.doc.shown(), shownViewRequest(s_, kind, w, h, uiScale_)), f);
@@ -563,158 +497,7 @@ void Viewer::exportMenu() {
   }
 }
 
-void Viewer::unlessUnsaved(std::function<void()> action) {
-  if (!s_.doc.dirty()) {
-    action();
-    return;
-  }
-  pendingReplace_ = std::move(action);
-  askDiscard_ = true;
-}
-
-void Viewer::discardDialog() {
-  if (askDiscard_) {
-    ImGui::OpenPopup("Discard unsaved changes?");
-    askDiscard_ = false;
-  }
-  if (!ImGui::BeginPopupModal("Discard unsaved changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-  ImGui::Text("The scene has unsaved changes. They are lost if another scene is opened.");
-  if (ImGui::Button("Discard them")) {
-    ImGui::CloseCurrentPopup();
-    if (pendingReplace_) pendingReplace_();
-    pendingReplace_ = nullptr;
-  }
-  ui::recordRect(s_, "discard.confirm");
-  ImGui::SameLine();
-  if (ImGui::Button("Keep editing")) {
-    ImGui::CloseCurrentPopup();
-    pendingReplace_ = nullptr;
-  }
-  ImGui::EndPopup();
-}
-
-// ---------------------------------------------------------------- 5 files: open, save, autosave and recovery
-
-void Viewer::startDocument(Scene scene, bool dirty) {
-  loader_.cancel();  // an OBJ still loading for the previous document must not land in this one
-  s_.doc.replace(std::move(scene), dirty);
-  s_.probe.reset();
-  s_.selectedObject = 0;
-  s_.stepThrough = {};
-  s_.drag = {};
-  s_.morphPlaying = false;
-  // The view settings of a fresh start (see the constructor); the user's UI scale, aspect lock and
-  // antialiasing are preferences, not choices for a scene, and stay.
-  s_.frame = FrameSettings{};
-  s_.frame.camera.style = Style::shaded;
-  s_.pipeline = ViewerState(Scene{}).pipeline;
-  s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
-  updateRun();
-  requestFrames(2);
-}
-
-void Viewer::openScene(const std::filesystem::path& file) {
-  loader_.start(file);
-  setStatus("opening " + file.string() + " …", false);
-  requestFrames(2);
-}
-
-void Viewer::cancelLoading() {
-  if (!loader_.busy()) return;
-  setStatus("opening " + loader_.file().string() + " cancelled; the open scene stays", false);
-  loader_.cancel();
-  requestFrames(2);
-}
-
-// A small window over the views while a scene loads: the views stay live underneath.
-void Viewer::loadingWindow() {
-  if (!loader_.busy()) return;
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(420 * uiScale_, 0), ImGuiCond_Always);
-  ImGui::Begin("Loading", nullptr,
-               ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
-  ImGui::TextWrapped("Reading and tessellating %s", loader_.file().filename().string().c_str());
-  // The reader reports no fraction: the bar sweeps to show the work goes on, the time counts.
-  const double t = loader_.elapsed();
-  char label[32];
-  std::snprintf(label, sizeof label, "%.1f s", t);
-  ImGui::ProgressBar(float(std::fmod(t, 1.5) / 1.5), ImVec2(-1, 0), label);
-  if (ImGui::Button("Cancel")) cancelLoading();
-  ui::recordRect(s_, "load.cancel");
-  ImGui::End();
-}
-
-bool Viewer::isBundled(const std::filesystem::path& file) const {
-  if (file.empty()) return true;  // the built-in default scene
-  std::error_code ec;
-  for (const SceneFileInfo& p : s_.presets)
-    if (std::filesystem::equivalent(p.file, file, ec)) return true;
-  const std::filesystem::path assets = assetsDirectory();
-  if (assets.empty()) return false;
-  const auto dir = std::filesystem::weakly_canonical(assets / "scenes", ec);
-  const auto parent = std::filesystem::weakly_canonical(file, ec).parent_path();
-  return !ec && parent == dir;
-}
-
-void Viewer::saveAs() {
-  dialog_->open("Save the scene", FileChooser::Mode::save, {".json"}, isBundled(s_.doc.path()) ? copyName(s_.doc.path()) : s_.doc.path(),
-               [this](const std::filesystem::path& f) { saveScene(f); });
-}
-
-void Viewer::saveScene(const std::filesystem::path& file) {
-  if (dialog_->downloads()) {  // the browser: every save is a new download, named after the scene
-    dialog_->open("Save the scene", FileChooser::Mode::save, {".json"},
-                  file.empty() ? std::filesystem::path("lecture-scene.json") : file.filename(),
-                  [this](const std::filesystem::path& f) { writeScene(f); });
-    return;
-  }
-  if (file.empty() || isBundled(file)) {  // never over a scene shipped with vplab: save a copy
-    dialog_->open("Save a copy of the scene", FileChooser::Mode::save, {".json"}, copyName(file),
-                 [this](const std::filesystem::path& f) {
-                   if (isBundled(f)) setStatus(f.string() + " is a scene shipped with vplab: save the copy elsewhere", true);
-                   else saveScene(f);
-                 });
-    return;
-  }
-  writeScene(file);
-}
-
-void Viewer::writeScene(const std::filesystem::path& file) {
-  try {
-    s_.doc.save(file);
-    setStatus("saved " + file.string(), false);
-  } catch (const Error& e) {
-    setStatus(e.what(), true);
-  }
-}
-
-void Viewer::chooseFileToOpen() {
-  if (browser_) {
-    dialog_->open("Open a scene or an OBJ mesh", FileChooser::Mode::open, {".json", ".obj"}, s_.doc.path(),
-                  [this](const std::filesystem::path& f) { openFile(f); });
-    return;
-  }
-  dialog_->open("Open a scene", FileChooser::Mode::open, {".json"}, s_.doc.path(),
-                [this](const std::filesystem::path& f) { unlessUnsaved([this, f] { openScene(f); }); });
-}
-
-void Viewer::openFile(const std::filesystem::path& file) {
-  std::string extension = file.extension().string();
-  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-  if (extension != ".obj") {
-    unlessUnsaved([this, file] { openScene(file); });
-    return;
-  }
-  ui::addObject(s_, Shape::mesh, file.string());  // as the scene panel's "+ OBJ mesh…"
-  setStatus("adding " + file.string() + " …", false);
-  requestFrames(2);
-}
-
-void Viewer::useFileChooser(std::unique_ptr<FileChooser> chooser, bool browser) {
-  dialog_ = std::move(chooser);
-  browser_ = browser;
-}
+// ---------------------------------------------------------------- 5 export
 
 Image Viewer::exportImage(ViewKind kind, int width, int height) {
   const GLint previous = [&] {
@@ -727,102 +510,6 @@ Image Viewer::exportImage(ViewKind kind, int width, int height) {
   return image;
 }
 
-UrlState Viewer::urlState() const {
-  UrlState u;
-  // The built-in scene is the bundled default.json (the same dump): a link names it as "default".
-  if (s_.doc.path().empty()) u.scene = "default";
-  else if (isBundled(s_.doc.path())) u.scene = s_.doc.path().stem().string();
-  u.camera = cameraLinkOf(s_.doc.scene().camera);
-  u.cameraStyle = s_.frame.camera.style;
-  u.worldStyle = s_.frame.world.style;
-  u.npcStyle = s_.frame.npc.style;
-  u.worldOrbit = s_.frame.world.orbit;
-  u.npcOrbit = s_.frame.npc.orbit;
-  u.strategy = s_.pipeline.strategy;
-  return u;
-}
-
-void Viewer::showUrlState(const UrlState& link, bool atStart) {
-  auto showViews = [this, link] {
-    if (link.cameraStyle) s_.frame.camera.style = *link.cameraStyle;
-    if (link.worldStyle) s_.frame.world.style = *link.worldStyle;
-    if (link.npcStyle) s_.frame.npc.style = *link.npcStyle;
-    if (link.worldOrbit) s_.frame.world.orbit = *link.worldOrbit;
-    if (link.npcOrbit) s_.frame.npc.orbit = *link.npcOrbit;
-    if (link.strategy) s_.pipeline.strategy = *link.strategy;
-    updateRun();
-    requestFrames(2);
-  };
-  const bool otherScene = !link.scene.empty() && link.scene != urlState().scene;
-  if (otherScene || (atStart && !link.camera.empty())) {
-    Scene scene = s_.doc.scene();
-    if (otherScene) {
-      const auto preset = std::find_if(s_.presets.begin(), s_.presets.end(),
-                                       [&](const SceneFileInfo& p) { return p.file.stem() == link.scene; });
-      if (preset == s_.presets.end()) throw Error("the link's scene \"" + link.scene + "\" is not one of vplab's bundled scenes");
-      scene = loadScene(preset->file);
-    }
-    scene.camera = link.camera.over(scene.camera);
-    unlessUnsaved([this, scene = std::move(scene), showViews]() mutable {
-      startDocument(std::move(scene));
-      showViews();
-    });
-    return;
-  }
-  if (const Camera c = link.camera.over(s_.doc.scene().camera); c != s_.doc.scene().camera) s_.doc.scene().camera = c;
-  showViews();
-}
-
 void Viewer::forgetViewImages() { images_.forget(); }
-
-void Viewer::enableAutosave(const std::filesystem::path& directory, double delaySeconds) {
-  autosave_ = std::make_unique<Autosave>(directory, delaySeconds);
-}
-
-std::filesystem::path Viewer::writeRecoveryNow() {
-  if (!autosave_ || !autosave_->writeNow(s_.doc)) return {};
-  return autosave_->file();
-}
-
-void Viewer::endSession() {
-  if (autosave_) autosave_->removeFile();
-}
-
-void Viewer::offerRecovery(Recovery recovery) {
-  recovery_ = std::move(recovery);
-  askRecovery_ = true;
-}
-
-void Viewer::recoveryDialog() {
-  if (askRecovery_) {
-    ImGui::OpenPopup("Recover unsaved changes?");
-    askRecovery_ = false;
-  }
-  if (!ImGui::BeginPopupModal("Recover unsaved changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-  const std::string scene = recovery_->scenePath.empty() ? "the default lecture scene" : recovery_->scenePath.string();
-  ImGui::Text("vplab did not end normally. Unsaved changes of %s", scene.c_str());
-  ImGui::Text("were kept at %s (%s).", recovery_->savedAt.c_str(), recovery_->file.string().c_str());
-  if (ImGui::Button("Recover them")) {
-    ImGui::CloseCurrentPopup();
-    try {
-      startDocument(Autosave::load(*recovery_), /*dirty=*/true);
-      Autosave::discard(*recovery_);  // this session's autosave keeps them from now on
-      if (autosave_) autosave_->writeNow(s_.doc);
-      setStatus("recovered the unsaved changes of " + scene, false);
-    } catch (const Error& e) {
-      setStatus(e.what(), true);  // the file stays for another try
-    }
-    recovery_.reset();
-  }
-  ui::recordRect(s_, "recovery.recover");
-  ImGui::SameLine();
-  if (ImGui::Button("Discard them")) {
-    ImGui::CloseCurrentPopup();
-    Autosave::discard(*recovery_);
-    recovery_.reset();
-  }
-  ui::recordRect(s_, "recovery.discard");
-  ImGui::EndPopup();
-}
 
 }  // namespace vplab

@@ -6,10 +6,7 @@
 
 #include "app/context/context.h"
 #include "app/gl/render_target.h"
-#include "app/ui/autosave.h"
-#include "app/ui/file_dialog.h"
-#include "app/ui/loader.h"
-#include "app/ui/url_state.h"
+#include "app/ui/session.h"
 #include "app/ui/viewer_state.h"
 #include "app/render/view_images.h"
 #include "app/render/view_renderer.h"
@@ -35,6 +32,9 @@ class Viewer {
   /// platform has fed ImGui its input, display size and time step before.
   void frame(GLuint framebuffer, int width, int height);
 
+  /// The document's file, autosave, recovery and links (app/ui/session.h).
+  Session& session() { return session_; }
+  const Session& session() const { return session_; }
   /// Makes this viewer's ImGui context the current one (input is fed to the current context).
   void makeCurrent();
   ViewerState& state() { return s_; }
@@ -64,45 +64,9 @@ class Viewer {
   /// Asks for `n` more frames (something changed that ImGui shows only after it laid it out again).
   void requestFrames(int n) { settleFrames_ = std::max(settleFrames_, n); }
 
-  /// Opens a scene file on a worker thread (File > Open, presets); the views keep drawing the open
-  /// scene, with a progress bar and Cancel, until it has loaded.
-  void openScene(const std::filesystem::path& file);
-  const SceneLoader& loader() const { return loader_; }
-  SceneLoader& loader() { return loader_; }
-  /// Cancel of the loading bar.
-  void cancelLoading();
-
-  /// Turns on autosave into `directory` (Autosave::defaultDirectory() in the window).
-  void enableAutosave(const std::filesystem::path& directory, double delaySeconds);
-  const Autosave* autosave() const { return autosave_.get(); }
-  /// Asked to end by a signal: writes the recovery file if there are unsaved changes. Returns it, or
-  /// an empty path when nothing needed saving.
-  std::filesystem::path writeRecoveryNow();
-  /// A normal end (quit): this session leaves no recovery file.
-  void endSession();
-  /// At start: an earlier session left unsaved changes; a dialog offers to recover them.
-  void offerRecovery(Recovery recovery);
-  bool recoveryOffered() const { return recovery_.has_value(); }
-
-  /// Whether `file` is one of the scenes shipped with vplab (assets/scenes/): Save never writes there.
-  bool isBundled(const std::filesystem::path& file) const;
-  const FileChooser& fileDialog() const { return *dialog_; }
-  /// Replaces the ImGui file dialog (the browser's picker and downloads); `browser`: the shortcuts
-  /// the browser owns (Ctrl+S, Ctrl+O, Ctrl+N, Ctrl+Q, F11, F12) are left to it and Quit is not offered.
-  void useFileChooser(std::unique_ptr<FileChooser> chooser, bool browser);
-  /// Opens a file given by the platform (a drop, the browser's picker): an OBJ joins the scene as a
-  /// mesh object, anything else is opened as a scene (asking first when changes would be lost).
-  void openFile(const std::filesystem::path& file);
   /// The view as File > Export draws it (the shown settings) at width × height pixels, with this
   /// viewer's GL backend; the bound framebuffer stays bound.
   Image exportImage(ViewKind kind, int width, int height);
-  /// What is shown, for a link (app/ui/url_state.h): the bundled scene's name, the camera, the
-  /// views' styles and observers, the clipping strategy.
-  UrlState urlState() const;
-  /// Shows a link's state. A named bundled scene starts a new document with the link's camera (at
-  /// start, or asking first when changes would be lost); a camera alone is an edit of the open
-  /// scene (undoable). Throws vplab::Error when the scene is not bundled or cannot be read.
-  void showUrlState(const UrlState& link, bool atStart);
   /// Every view is drawn again in the next frame (the browser's frame-time benchmark).
   void forgetViewImages();
 
@@ -124,24 +88,10 @@ class Viewer {
   void inspectWindow();
   void viewWindows();
   void helpWindow();
-  void quitDialog();
-  /// Runs `action` (which replaces the scene) at once, or after the user agreed to lose unsaved changes.
-  void unlessUnsaved(std::function<void()> action);
-  void discardDialog();
   void exportMenu();
   /// Runs the CPU pipeline when the shown scene or the options changed (frames drawn for hover and
   /// ImGui's settling cost none) and publishes the run.
   void updateRun();
-  /// A new document (opened, preset, New, recovered): clean unless recovered, no undo history, and
-  /// the view settings of a fresh start (a style chosen for the old scene, e.g. hidden-line, may be
-  /// far too slow for the new one; README "The viewer").
-  void startDocument(Scene scene, bool dirty = false);
-  void saveScene(const std::filesystem::path& file);
-  void writeScene(const std::filesystem::path& file);
-  void chooseFileToOpen();
-  void saveAs();
-  void loadingWindow();
-  void recoveryDialog();
   void setStatus(std::string message, bool error);
   std::optional<Vec3> probePositionOf(ViewKind view) const;
   void orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const ViewCamera& observer, int w, int h, Vec2 mouse);
@@ -165,14 +115,11 @@ class Viewer {
   ViewRenderer renderer_;
   ViewImages images_;
   ViewerState s_;
-  std::unique_ptr<FileChooser> dialog_ = std::make_unique<FileDialog>();
-  bool browser_ = false;
+  Session session_;
   float uiScale_;
   int lastWidth_ = 0, lastHeight_ = 0;
   bool relayout_ = true;
   bool screenshotRequested_ = false;
-  std::function<void()> pendingReplace_;  // waiting for "discard the unsaved changes?"
-  bool askDiscard_ = false;
   unsigned lastActive_ = 0;  // the ImGui item active in the previous frame
   /// The pixel size of the image of `kind` asked for last (for picking in it).
   int cachedWidth(ViewKind kind) const { return images_.width(kind); }
@@ -185,11 +132,6 @@ class Viewer {
   PipelineOptions ranOptions_;
   bool ranOnce_ = false;
   int settleFrames_ = 2;     // frames still to draw without input (wakeIn)
-  SceneLoader loader_;
-  std::unique_ptr<Autosave> autosave_;
-  std::string autosaveError_;  // the last one shown
-  std::optional<Recovery> recovery_;
-  bool askRecovery_ = false;
 };
 
 }  // namespace vplab

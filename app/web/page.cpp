@@ -66,7 +66,7 @@ struct Page {
   Page() {
     auto chooser = std::make_unique<page::BrowserFiles>();
     files = chooser.get();
-    viewer.useFileChooser(std::move(chooser), /*browser=*/true);
+    viewer.session().useFileChooser(std::move(chooser), /*browser=*/true);
     showLink(page::locationHash(), /*atStart=*/true);
     startAutosave();
   }
@@ -80,16 +80,16 @@ struct Page {
     if (!kept.empty()) {
       std::ofstream(kKeptRecovery, std::ios::binary) << kept;
       storedAutosave = kept;
-      if (auto recovery = Autosave::find(kStateDir)) viewer.offerRecovery(*recovery);
+      if (auto recovery = Autosave::find(kStateDir)) viewer.session().offerRecovery(*recovery);
     }
-    viewer.enableAutosave(kStateDir, kAutosaveDelay);
+    viewer.session().enableAutosave(kStateDir, kAutosaveDelay);
   }
 
   /// localStorage follows the autosave file: written when it was, removed when the session has
   /// nothing unsaved any more (saved, discarded, recovered and saved). Frames are drawn only on a
   /// change, and the file is a scene without its meshes (a few kB): it is read and compared.
   void mirrorAutosave() {
-    const Autosave* autosave = viewer.autosave();
+    const Autosave* autosave = viewer.session().autosave();
     if (!autosave) return;
     std::ifstream in(autosave->file(), std::ios::binary);
     if (in) {
@@ -100,7 +100,7 @@ struct Page {
         viewer.state().statusIsError = true;
       }
       storedAutosave = std::move(text);
-    } else if (!storedAutosave.empty() && !viewer.recoveryOffered()) {
+    } else if (!storedAutosave.empty() && !viewer.session().recoveryOffered()) {
       page::storeRecovery("");
       storedAutosave.clear();
     }
@@ -110,7 +110,7 @@ struct Page {
   void showLink(const std::string& fragment, bool atStart) {
     if (fragment.empty() || fragment == shownHash) return;
     try {
-      viewer.showUrlState(decodeUrlState(fragment), atStart);
+      viewer.session().showUrlState(decodeUrlState(fragment), atStart);
     } catch (const Error& e) {
       viewer.state().status = e.what();
       viewer.state().statusIsError = true;
@@ -164,7 +164,7 @@ struct Page {
   void afterFrame() {
     mirrorAutosave();
     if (viewer.title() != shownTitle) page::setPageTitle(shownTitle = viewer.title());
-    const std::string hash = encodeUrlState(viewer.urlState());
+    const std::string hash = encodeUrlState(viewer.session().urlState());
     if (hash != shownHash) page::replaceLocationHash(shownHash = hash);
     const bool unsaved = viewer.state().doc.dirty();
     if (unsaved != shownUnsaved) page::setUnsavedChanges(shownUnsaved = unsaved);
@@ -198,8 +198,8 @@ struct Page {
     glfwGetFramebufferSize(window.handle(), &w, &h);
     j["canvas"] = {w, h};
     j["devicePixelRatio"] = pixelRatio;
-    j["loading"] = viewer.loader().busy();
-    j["recoveryOffered"] = viewer.recoveryOffered();
+    j["loading"] = viewer.session().loader().busy();
+    j["recoveryOffered"] = viewer.session().recoveryOffered();
     return j.dump();
   }
 };
@@ -239,13 +239,13 @@ extern "C" {
 
 /// The user picked `file` (copied to /uploads) in the picker the viewer opened; a drop when it opened none.
 EMSCRIPTEN_KEEPALIVE void vplab_file_chosen(Page* p, const char* file) {
-  if (!p->files->chosen(file)) p->viewer.openFile(file);
+  if (!p->files->chosen(file)) p->viewer.session().openFile(file);
   p->input.changed = true;
 }
 
 /// A file dropped on the page (copied to /uploads).
 EMSCRIPTEN_KEEPALIVE void vplab_file_dropped(Page* p, const char* file) {
-  p->viewer.openFile(file);
+  p->viewer.session().openFile(file);
   p->input.changed = true;
 }
 

@@ -47,9 +47,9 @@ fs::path preset(const char* name) { return fs::path(VPLAB_ASSETS) / "scenes" / n
 /// running (a loader that blocked the frame would finish within the first).
 int framesWhileLoading(HeadlessViewer& v, int limit = 3000) {
   int n = 0;
-  for (int i = 0; i < limit && v.viewer().loader().busy(); ++i) {
+  for (int i = 0; i < limit && v.viewer().session().loader().busy(); ++i) {
     v.frame();
-    if (v.viewer().loader().busy()) ++n;
+    if (v.viewer().session().loader().busy()) ++n;
   }
   v.frames(2);
   return n;
@@ -84,7 +84,7 @@ TEST(Document, OpeningAPresetAfterEditsStartsACleanDocumentWithDefaultViewSettin
   v->key(keys::kDigit1 + 3);  // hidden-line in every view: a choice for this scene only
   ASSERT_TRUE(v->state().doc.dirty());
   ASSERT_TRUE(v->state().doc.canUndo());
-  v->viewer().openScene(preset("parallel.json"));
+  v->viewer().session().openScene(preset("parallel.json"));
   framesWhileLoading(*v);
   EXPECT_EQ(v->state().doc.path(), preset("parallel.json"));
   EXPECT_FALSE(v->state().doc.dirty());
@@ -157,10 +157,10 @@ struct GatedReader {
 TEST(Loading, FramesGoOnWhileASceneLoadsAndItArrivesClean) {
   auto v = makeViewer();
   GatedReader gated;
-  v->viewer().loader().setReader(gated.reader());
-  v->viewer().openScene(preset("parallel.json"));
+  v->viewer().session().loader().setReader(gated.reader());
+  v->viewer().session().openScene(preset("parallel.json"));
   v->frames(20);  // each returns while the worker is still reading
-  EXPECT_TRUE(v->viewer().loader().busy());
+  EXPECT_TRUE(v->viewer().session().loader().busy());
   EXPECT_TRUE(v->state().doc.path().empty()) << "the open scene stays until the new one is there";
   EXPECT_THAT(v->state().rects, ::testing::Contains(::testing::Key("load.cancel"))) << "no progress window";
   gated.open();
@@ -172,7 +172,7 @@ TEST(Loading, FramesGoOnWhileASceneLoadsAndItArrivesClean) {
 
 TEST(Loading, TheBundledLargeMeshLoadsWithoutBlockingFrames) {
   auto v = makeViewer();
-  v->viewer().openScene(preset("large-mesh.json"));
+  v->viewer().session().openScene(preset("large-mesh.json"));
   // Tessellating n = 1024 (half a million polygons) takes ~0.2 s, a frame of the settled default
   // scene a few milliseconds (its views are reused; 14 frames measured): a loader that blocked the
   // frame would end within the first one.
@@ -186,17 +186,17 @@ TEST(Loading, CancelKeepsTheOpenScene) {
   v->key(keys::kP);  // unsaved work that Cancel must keep
   const Scene before = v->state().doc.scene();
   GatedReader gated;
-  v->viewer().loader().setReader(gated.reader());
-  v->viewer().openScene(preset("parallel.json"));
+  v->viewer().session().loader().setReader(gated.reader());
+  v->viewer().session().openScene(preset("parallel.json"));
   v->frames(2);  // the loading window lays itself out
-  ASSERT_TRUE(v->viewer().loader().busy());
+  ASSERT_TRUE(v->viewer().session().loader().busy());
   // A quick click (pointer there, press and release at once) on Cancel.
   const auto [x, y] = v->centreOf("load.cancel");
   v->input().mouseMove(x, y);
   v->input().mouseButton(0, true);
   v->input().mouseButton(0, false);
   v->frames(2);
-  EXPECT_FALSE(v->viewer().loader().busy());
+  EXPECT_FALSE(v->viewer().session().loader().busy());
   gated.open();  // the abandoned read ends; its scene must not arrive
   v->frames(5);
   EXPECT_TRUE(v->state().doc.scene() == before);
@@ -213,7 +213,7 @@ TEST(Loading, AnObjMeshFromTheScenePanelIsAddedAsOneUndoStep) {
   o.file = (fs::path(VPLAB_ASSETS) / "meshes" / "house.obj").string();
   v->state().objectToLoad = o;  // what "+ OBJ mesh…" does
   v->frame();
-  EXPECT_TRUE(v->viewer().loader().busy() || v->state().doc.scene().objects.size() == before + 1);
+  EXPECT_TRUE(v->viewer().session().loader().busy() || v->state().doc.scene().objects.size() == before + 1);
   framesWhileLoading(*v);
   ASSERT_EQ(v->state().doc.scene().objects.size(), before + 1);
   EXPECT_GT(v->state().doc.scene().objects.back().mesh->faceCount(), 0u);
@@ -228,7 +228,7 @@ TEST(Loading, AnUnreadableFileIsAnErrorAndTheSceneStays) {
   const fs::path bad = dir.path / "bad.json";
   std::ofstream(bad) << "{ \"camera\": 3 }";
   auto v = makeViewer();
-  v->viewer().openScene(bad);
+  v->viewer().session().openScene(bad);
   framesWhileLoading(*v);
   EXPECT_TRUE(v->state().statusIsError);
   EXPECT_THAT(v->state().status, HasSubstr("bad.json"));
@@ -332,12 +332,12 @@ TEST(Save, ABundledSceneIsNeverOverwrittenSaveAsksForACopy) {
   v->key(keys::kP);
   ASSERT_TRUE(v->state().doc.dirty());
   v->key(keys::kS, /*ctrl=*/true);
-  EXPECT_TRUE(v->viewer().fileDialog().isOpen());
+  EXPECT_TRUE(v->viewer().session().fileDialog().isOpen());
   EXPECT_TRUE(v->state().doc.dirty());
   EXPECT_EQ(readFile(file), original);
-  EXPECT_TRUE(v->viewer().isBundled(file));
-  EXPECT_TRUE(v->viewer().isBundled({}));  // the built-in default scene
-  EXPECT_FALSE(v->viewer().isBundled(fs::temp_directory_path() / "mine.json"));
+  EXPECT_TRUE(v->viewer().session().isBundled(file));
+  EXPECT_TRUE(v->viewer().session().isBundled({}));  // the built-in default scene
+  EXPECT_FALSE(v->viewer().session().isBundled(fs::temp_directory_path() / "mine.json"));
 }
 
 // ---------------------------------------------------------------- autosave and recovery
@@ -345,8 +345,8 @@ TEST(Save, ABundledSceneIsNeverOverwrittenSaveAsksForACopy) {
 TEST(Autosave, WritesAfterTheDelayAndRemovesTheFileWhenSaved) {
   TempDir dir;
   auto v = makeViewer();
-  v->viewer().enableAutosave(dir.path / "state", 0.1);  // 6 frames of 1/60 s
-  const fs::path file = v->viewer().autosave()->file();
+  v->viewer().session().enableAutosave(dir.path / "state", 0.1);  // 6 frames of 1/60 s
+  const fs::path file = v->viewer().session().autosave()->file();
   v->frames(10);
   EXPECT_FALSE(fs::exists(file)) << "nothing changed, nothing to save";
   v->key(keys::kP);
@@ -385,8 +385,8 @@ TEST(Autosave, ARecoveryFileOfAnEndedProcessIsOfferedAndRecovered) {
   EXPECT_EQ(r->scenePath, preset("perspective.json"));
 
   auto v = makeViewer();
-  v->viewer().enableAutosave(state, 3);
-  v->viewer().offerRecovery(*r);
+  v->viewer().session().enableAutosave(state, 3);
+  v->viewer().session().offerRecovery(*r);
   v->frames(3);
   clickId(*v, "recovery.recover");
   v->frames(2);
@@ -395,7 +395,7 @@ TEST(Autosave, ARecoveryFileOfAnEndedProcessIsOfferedAndRecovered) {
   EXPECT_TRUE(v->state().doc.dirty()) << "recovered changes are still unsaved";
   EXPECT_FALSE(v->state().doc.canUndo());
   EXPECT_FALSE(fs::exists(r->file)) << "the old session's file is taken over";
-  EXPECT_TRUE(fs::exists(v->viewer().autosave()->file())) << "this session keeps the changes at once";
+  EXPECT_TRUE(fs::exists(v->viewer().session().autosave()->file())) << "this session keeps the changes at once";
 }
 
 TEST(Autosave, AFailureIsShownNotSwallowed) {
@@ -403,7 +403,7 @@ TEST(Autosave, AFailureIsShownNotSwallowed) {
   const fs::path notADirectory = dir.path / "file";
   std::ofstream(notADirectory) << "x";
   auto v = makeViewer();
-  v->viewer().enableAutosave(notADirectory / "vplab", 0);
+  v->viewer().session().enableAutosave(notADirectory / "vplab", 0);
   v->key(keys::kP);
   v->frames(2);
   EXPECT_TRUE(v->state().statusIsError);
@@ -462,7 +462,7 @@ TEST(Browser, SaveIsANewDownloadEveryTimeAndTheBrowsersShortcutsAreLeftToIt) {
   DownloadingChooser& c = *chooser;
   c.dir = tmp.path;
   c.toOpen = preset("parallel.json");
-  v->viewer().useFileChooser(std::move(chooser), /*browser=*/true);
+  v->viewer().session().useFileChooser(std::move(chooser), /*browser=*/true);
   v->frames(2);
   v->key(keys::kS, /*ctrl=*/true);  // the browser's own "save page": the viewer does nothing
   v->key(keys::kO, /*ctrl=*/true);

@@ -1,0 +1,377 @@
+// Index: 1 commands  2 each frame  3 dialogs  4 files and links  5 autosave and recovery
+#include "app/ui/session.h"
+
+#include "app/ui/assets.h"
+#include "app/ui/panels.h"
+#include "app/ui/widgets.h"
+#include "pipeline/error.h"
+#include "pipeline/scene_io.h"
+
+#define IMGUI_DEFINE_MATH_OPERATORS
+#include <imgui.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+namespace vplab {
+
+namespace {
+
+/// Where "save a copy" of a bundled scene starts: its name in the working directory.
+std::filesystem::path copyName(const std::filesystem::path& bundled) {
+  std::error_code ec;
+  const std::filesystem::path cwd = std::filesystem::current_path(ec);
+  return cwd / (bundled.empty() ? std::filesystem::path("lecture-scene.json") : bundled.filename());
+}
+
+}  // namespace
+
+Session::Session(ViewerState& state, std::function<void()> changed) : state_(state), changed_(std::move(changed)) {}
+
+void Session::setStatus(std::string message, bool error) {
+  state_.status = std::move(message);
+  state_.statusIsError = error;
+}
+
+// ---------------------------------------------------------------- 1 commands
+
+void Session::newDocument() {
+  unlessUnsaved([this] { startDocument(defaultScene()); });
+}
+
+// ---------------------------------------------------------------- 2 each frame
+
+bool Session::beginFrame() {
+  if (state_.objectToLoad) {  // "+ OBJ mesh…" of the scene panel
+    const std::filesystem::path& path = state_.doc.scene().path;
+    loader_.startObject(std::move(*state_.objectToLoad), path.empty() ? std::filesystem::path() : path.parent_path());
+    state_.objectToLoad.reset();
+  }
+  std::optional<SceneLoader::Loaded> loaded = loader_.poll();
+  if (!loaded) return false;
+  if (loaded->scene) {
+    const std::string file = loaded->scene->path.string();
+    startDocument(std::move(*loaded->scene));
+    setStatus("opened " + file, false);
+  } else if (loaded->object) {  // one undo step, recorded at the end of this frame
+    Scene& scene = state_.doc.scene();
+    setStatus("added " + loaded->object->file, false);
+    scene.objects.push_back(std::move(*loaded->object));
+    state_.selectedObject = int(scene.objects.size()) - 1;
+  } else {
+    setStatus(loaded->error, true);  // the open scene stays
+  }
+  return true;
+}
+
+void Session::endFrame(double now) {
+  if (!autosave_) return;
+  autosave_->update(state_.doc, now);
+  if (autosave_->error() != autosaveError_) {  // say it once, not every frame
+    autosaveError_ = autosave_->error();
+    if (!autosaveError_.empty()) setStatus(autosaveError_, true);
+  }
+}
+
+void Session::drawDialogs(float scale) {
+  loadingWindow(scale);
+  recoveryDialog();
+  quitDialog();
+  discardDialog();
+  dialog_->draw();
+}
+
+std::optional<double> Session::wakeIn(double now) const {
+  if (loader_.busy() || askRecovery_) return 0.0;
+  if (autosave_) return autosave_->dueIn(now);
+  return std::nullopt;
+}
+
+// ---------------------------------------------------------------- 3 dialogs
+
+void Session::quitDialog() {
+  if (state_.quitRequested && !state_.doc.dirty()) state_.quitConfirmed = true;
+  if (state_.quitRequested && state_.doc.dirty() && !ImGui::IsPopupOpen("Unsaved changes")) ImGui::OpenPopup("Unsaved changes");
+  if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::Text("The scene has unsaved changes. Save them before quitting?");
+  if (ImGui::Button("Save")) {
+    ImGui::CloseCurrentPopup();
+    if (state_.doc.path().empty() || isBundled(state_.doc.path())) {
+      state_.quitRequested = false;
+      dialog_->open("Save a copy of the scene", FileChooser::Mode::save, {".json"}, copyName(state_.doc.path()), [this](const std::filesystem::path& f) {
+        saveScene(f);
+        if (!state_.doc.dirty()) state_.quitConfirmed = true;
+      });
+    } else {
+      saveScene(state_.doc.path());
+      state_.quitConfirmed = !state_.doc.dirty();
+      state_.quitRequested = state_.quitConfirmed;
+    }
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Discard them and quit")) {
+    ImGui::CloseCurrentPopup();
+    state_.quitConfirmed = true;
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel")) {
+    ImGui::CloseCurrentPopup();
+    state_.quitRequested = false;
+  }
+  ImGui::EndPopup();
+}
+
+void Session::unlessUnsaved(std::function<void()> action) {
+  if (!state_.doc.dirty()) {
+    action();
+    return;
+  }
+  pendingReplace_ = std::move(action);
+  askDiscard_ = true;
+}
+
+void Session::discardDialog() {
+  if (askDiscard_) {
+    ImGui::OpenPopup("Discard unsaved changes?");
+    askDiscard_ = false;
+  }
+  if (!ImGui::BeginPopupModal("Discard unsaved changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::Text("The scene has unsaved changes. They are lost if another scene is opened.");
+  if (ImGui::Button("Discard them")) {
+    ImGui::CloseCurrentPopup();
+    if (pendingReplace_) pendingReplace_();
+    pendingReplace_ = nullptr;
+  }
+  ui::recordRect(state_, "discard.confirm");
+  ImGui::SameLine();
+  if (ImGui::Button("Keep editing")) {
+    ImGui::CloseCurrentPopup();
+    pendingReplace_ = nullptr;
+  }
+  ImGui::EndPopup();
+}
+
+// ---------------------------------------------------------------- 1 commands (continued)
+
+void Session::startDocument(Scene scene, bool dirty) {
+  loader_.cancel();  // an OBJ still loading for the previous document must not land in this one
+  state_.doc.replace(std::move(scene), dirty);
+  state_.probe.reset();
+  state_.selectedObject = 0;
+  state_.stepThrough = {};
+  state_.drag = {};
+  state_.morphPlaying = false;
+  // The view settings of a fresh start (see the constructor); the user's UI scale, aspect lock and
+  // antialiasing are preferences, not choices for a scene, and stay.
+  state_.frame = FrameSettings{};
+  state_.frame.camera.style = Style::shaded;
+  state_.pipeline = ViewerState(Scene{}).pipeline;
+  state_.frame.world.orbit = defaultWorldOrbit(state_.doc.shown(), state_.worldAspect);
+  changed_();
+}
+
+void Session::openScene(const std::filesystem::path& file) {
+  loader_.start(file);
+  setStatus("opening " + file.string() + " …", false);
+  changed_();
+}
+
+void Session::cancelLoading() {
+  if (!loader_.busy()) return;
+  setStatus("opening " + loader_.file().string() + " cancelled; the open scene stays", false);
+  loader_.cancel();
+  changed_();
+}
+
+// A small window over the views while a scene loads: the views stay live underneath.
+void Session::loadingWindow(float scale) {
+  if (!loader_.busy()) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(420 * scale, 0), ImGuiCond_Always);
+  ImGui::Begin("Loading", nullptr,
+               ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::TextWrapped("Reading and tessellating %s", loader_.file().filename().string().c_str());
+  // The reader reports no fraction: the bar sweeps to show the work goes on, the time counts.
+  const double t = loader_.elapsed();
+  char label[32];
+  std::snprintf(label, sizeof label, "%.1f s", t);
+  ImGui::ProgressBar(float(std::fmod(t, 1.5) / 1.5), ImVec2(-1, 0), label);
+  if (ImGui::Button("Cancel")) cancelLoading();
+  ui::recordRect(state_, "load.cancel");
+  ImGui::End();
+}
+
+// ---------------------------------------------------------------- 4 files and links
+
+bool Session::isBundled(const std::filesystem::path& file) const {
+  if (file.empty()) return true;  // the built-in default scene
+  std::error_code ec;
+  for (const SceneFileInfo& p : state_.presets)
+    if (std::filesystem::equivalent(p.file, file, ec)) return true;
+  const std::filesystem::path assets = assetsDirectory();
+  if (assets.empty()) return false;
+  const auto dir = std::filesystem::weakly_canonical(assets / "scenes", ec);
+  const auto parent = std::filesystem::weakly_canonical(file, ec).parent_path();
+  return !ec && parent == dir;
+}
+
+void Session::saveAs() {
+  dialog_->open("Save the scene", FileChooser::Mode::save, {".json"}, isBundled(state_.doc.path()) ? copyName(state_.doc.path()) : state_.doc.path(),
+               [this](const std::filesystem::path& f) { saveScene(f); });
+}
+
+void Session::saveScene(const std::filesystem::path& file) {
+  if (dialog_->downloads()) {  // the browser: every save is a new download, named after the scene
+    dialog_->open("Save the scene", FileChooser::Mode::save, {".json"},
+                  file.empty() ? std::filesystem::path("lecture-scene.json") : file.filename(),
+                  [this](const std::filesystem::path& f) { writeScene(f); });
+    return;
+  }
+  if (file.empty() || isBundled(file)) {  // never over a scene shipped with vplab: save a copy
+    dialog_->open("Save a copy of the scene", FileChooser::Mode::save, {".json"}, copyName(file),
+                 [this](const std::filesystem::path& f) {
+                   if (isBundled(f)) setStatus(f.string() + " is a scene shipped with vplab: save the copy elsewhere", true);
+                   else saveScene(f);
+                 });
+    return;
+  }
+  writeScene(file);
+}
+
+void Session::writeScene(const std::filesystem::path& file) {
+  try {
+    state_.doc.save(file);
+    setStatus("saved " + file.string(), false);
+  } catch (const Error& e) {
+    setStatus(e.what(), true);
+  }
+}
+
+void Session::chooseFileToOpen() {
+  if (browser_) {
+    dialog_->open("Open a scene or an OBJ mesh", FileChooser::Mode::open, {".json", ".obj"}, state_.doc.path(),
+                  [this](const std::filesystem::path& f) { openFile(f); });
+    return;
+  }
+  dialog_->open("Open a scene", FileChooser::Mode::open, {".json"}, state_.doc.path(),
+                [this](const std::filesystem::path& f) { unlessUnsaved([this, f] { openScene(f); }); });
+}
+
+void Session::openFile(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != ".obj") {
+    unlessUnsaved([this, file] { openScene(file); });
+    return;
+  }
+  ui::addObject(state_, Shape::mesh, file.string());  // as the scene panel's "+ OBJ mesh…"
+  setStatus("adding " + file.string() + " …", false);
+  changed_();
+}
+
+void Session::useFileChooser(std::unique_ptr<FileChooser> chooser, bool browser) {
+  dialog_ = std::move(chooser);
+  browser_ = browser;
+}
+
+UrlState Session::urlState() const {
+  UrlState u;
+  // The built-in scene is the bundled default.json (the same dump): a link names it as "default".
+  if (state_.doc.path().empty()) u.scene = "default";
+  else if (isBundled(state_.doc.path())) u.scene = state_.doc.path().stem().string();
+  u.camera = cameraLinkOf(state_.doc.scene().camera);
+  u.cameraStyle = state_.frame.camera.style;
+  u.worldStyle = state_.frame.world.style;
+  u.npcStyle = state_.frame.npc.style;
+  u.worldOrbit = state_.frame.world.orbit;
+  u.npcOrbit = state_.frame.npc.orbit;
+  u.strategy = state_.pipeline.strategy;
+  return u;
+}
+
+void Session::showUrlState(const UrlState& link, bool atStart) {
+  auto showViews = [this, link] {
+    if (link.cameraStyle) state_.frame.camera.style = *link.cameraStyle;
+    if (link.worldStyle) state_.frame.world.style = *link.worldStyle;
+    if (link.npcStyle) state_.frame.npc.style = *link.npcStyle;
+    if (link.worldOrbit) state_.frame.world.orbit = *link.worldOrbit;
+    if (link.npcOrbit) state_.frame.npc.orbit = *link.npcOrbit;
+    if (link.strategy) state_.pipeline.strategy = *link.strategy;
+    changed_();
+  };
+  const bool otherScene = !link.scene.empty() && link.scene != urlState().scene;
+  if (otherScene || (atStart && !link.camera.empty())) {
+    Scene scene = state_.doc.scene();
+    if (otherScene) {
+      const auto preset = std::find_if(state_.presets.begin(), state_.presets.end(),
+                                       [&](const SceneFileInfo& p) { return p.file.stem() == link.scene; });
+      if (preset == state_.presets.end()) throw Error("the link's scene \"" + link.scene + "\" is not one of vplab's bundled scenes");
+      scene = loadScene(preset->file);
+    }
+    scene.camera = link.camera.over(scene.camera);
+    unlessUnsaved([this, scene = std::move(scene), showViews]() mutable {
+      startDocument(std::move(scene));
+      showViews();
+    });
+    return;
+  }
+  if (const Camera c = link.camera.over(state_.doc.scene().camera); c != state_.doc.scene().camera) state_.doc.scene().camera = c;
+  showViews();
+}
+
+// ---------------------------------------------------------------- 5 autosave and recovery
+
+void Session::enableAutosave(const std::filesystem::path& directory, double delaySeconds) {
+  autosave_ = std::make_unique<Autosave>(directory, delaySeconds);
+}
+
+std::filesystem::path Session::writeRecoveryNow() {
+  if (!autosave_ || !autosave_->writeNow(state_.doc)) return {};
+  return autosave_->file();
+}
+
+void Session::endSession() {
+  if (autosave_) autosave_->removeFile();
+}
+
+void Session::offerRecovery(Recovery recovery) {
+  recovery_ = std::move(recovery);
+  askRecovery_ = true;
+}
+
+void Session::recoveryDialog() {
+  if (askRecovery_) {
+    ImGui::OpenPopup("Recover unsaved changes?");
+    askRecovery_ = false;
+  }
+  if (!ImGui::BeginPopupModal("Recover unsaved changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  const std::string scene = recovery_->scenePath.empty() ? "the default lecture scene" : recovery_->scenePath.string();
+  ImGui::Text("vplab did not end normally. Unsaved changes of %s", scene.c_str());
+  ImGui::Text("were kept at %s (%s).", recovery_->savedAt.c_str(), recovery_->file.string().c_str());
+  if (ImGui::Button("Recover them")) {
+    ImGui::CloseCurrentPopup();
+    try {
+      startDocument(Autosave::load(*recovery_), /*dirty=*/true);
+      Autosave::discard(*recovery_);  // this session's autosave keeps them from now on
+      if (autosave_) autosave_->writeNow(state_.doc);
+      setStatus("recovered the unsaved changes of " + scene, false);
+    } catch (const Error& e) {
+      setStatus(e.what(), true);  // the file stays for another try
+    }
+    recovery_.reset();
+  }
+  ui::recordRect(state_, "recovery.recover");
+  ImGui::SameLine();
+  if (ImGui::Button("Discard them")) {
+    ImGui::CloseCurrentPopup();
+    Autosave::discard(*recovery_);
+    recovery_.reset();
+  }
+  ui::recordRect(state_, "recovery.discard");
+  ImGui::EndPopup();
+}
+
+}  // namespace vplab
