@@ -7,13 +7,15 @@
 #include "app/render/view_worker.h"
 
 #include <chrono>
+#include <utility>
 
 namespace vplab {
 
 namespace {
 
-/// How long a frame waits for the render thread's images before it shows the views' last ones: a
-/// small scene's views (a few ms each on llvmpipe) appear in the frame that changed them.
+/// How long a frame may wait for the render thread's images before it shows the views' last ones: a
+/// small scene's views (a few ms each on llvmpipe) appear in the frame that changed them. A view
+/// whose last image took longer is not waited for at all (a million triangles: seconds).
 constexpr double kFrameWaitForViews = 0.03;
 
 }  // namespace
@@ -102,10 +104,13 @@ GLuint ViewImages::onWorker(Slot& slot, ViewRequest r, Stamp stamp) {
     slot.requested = std::move(stamp);
     slot.pending = true;
     slot.askedAt = frameNumber_;
+    slot.askedTime = std::chrono::steady_clock::now();
   }
-  // Only the frame that asked for the image waits for it (a small scene's views appear in it); later
-  // frames only look whether it is finished, so they stay as short as the panels make them.
-  const double wait = slot.askedAt == frameNumber_ ? frameWaitLeft_ : 0;
+  // Only the frame that asked for the image waits for it, when it is expected in time (a small
+  // scene's views appear in it); later frames only look whether it is finished, so they stay as
+  // short as the panels make them.
+  const bool expected = slot.lastSeconds <= frameWaitLeft_;
+  const double wait = slot.askedAt == frameNumber_ && expected ? frameWaitLeft_ : 0;
   const auto start = std::chrono::steady_clock::now();
   const auto done = worker_->take(kind, slot.ticket, wait);
   frameWaitLeft_ -= std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -119,6 +124,7 @@ GLuint ViewImages::onWorker(Slot& slot, ViewRequest r, Stamp stamp) {
     if (done->ticket == slot.ticket) {
       slot.pending = false;
       slot.stamp = slot.requested;
+      slot.lastSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - slot.askedTime).count();
     }
   }
   slot.busy = slot.pending;
@@ -145,6 +151,13 @@ std::vector<ViewKind> ViewImages::notReady() const {
   std::vector<ViewKind> kinds;
   for (ViewKind kind : kAllViewKinds)
     if (slots_[size_t(kind)].asked && slots_[size_t(kind)].busy) kinds.push_back(kind);
+  return kinds;
+}
+
+std::vector<ViewKind> ViewImages::asked() const {
+  std::vector<ViewKind> kinds;
+  for (ViewKind kind : kAllViewKinds)
+    if (slots_[size_t(kind)].asked) kinds.push_back(kind);
   return kinds;
 }
 

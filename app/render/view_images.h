@@ -10,6 +10,7 @@
 #include "app/render/view_renderer.h"
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -73,6 +74,8 @@ class ViewImages {
   bool busy(ViewKind kind) const { return slots_[size_t(kind)].busy; }
   /// The views asked for in this frame that are busy: a screenshot waits until there are none.
   std::vector<ViewKind> notReady() const;
+  /// The views asked for in this frame.
+  std::vector<ViewKind> asked() const;
   /// Seconds until the window should draw again for the views: 0 when a render-thread image is
   /// finished, `busyStep` while one is drawn (the busy mark turns), else nothing (nullopt).
   std::optional<double> wakeIn(double busyStep) const;
@@ -108,6 +111,8 @@ class ViewImages {
     bool pending = false;
     bool busy = false;   // shown with an older image in this frame
     bool asked = false;  // asked for in this frame
+    double lastSeconds = 0;  // how long its last image took on the render thread, from the request
+    std::chrono::steady_clock::time_point askedTime;
   };
   GLuint onWorker(Slot& slot, ViewRequest r, Stamp stamp);
 

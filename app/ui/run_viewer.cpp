@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <atomic>
 #include <ctime>
 #include <iostream>
@@ -130,8 +131,9 @@ int runViewerWindow(ViewerLaunch launch) {
   GlfwWindow window(launch.width, launch.height, title, launch.glDebug);
   Viewer viewer(window, std::move(launch.scene), launch.uiScale);
   GlfwBackend backend(window.handle());
+  // glfwPostEmptyEvent is thread-safe: a finished run or view image wakes the event wait.
+  viewer.usePipelineWorker([] { glfwPostEmptyEvent(); });
   try {
-    // glfwPostEmptyEvent is thread-safe: a finished view image wakes the event wait.
     viewer.useViewWorker(window.createShared(), [] { glfwPostEmptyEvent(); });
   } catch (const std::exception& e) {
     std::cerr << "vplab: the views are drawn in the window's thread (" << e.what() << ")\n";
@@ -166,8 +168,13 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
   std::string shownTitle;
   int frames = 0;
   std::optional<double> waitingSince;  // since when a screenshot or the scripted end waits for the views
+  // --report-frames: the longest frame, and the longest of those that answered input after the first
+  // (what a user sees as a pause after a key or a drag), in seconds from the frame's start to the swap.
+  double longestFrame = 0, longestAnswer = 0;
   auto report = [&] {
-    if (launch.reportFrames) std::cerr << "vplab: " << frames << " frames drawn\n";
+    if (launch.reportFrames)
+      std::cerr << "vplab: " << frames << " frames drawn, the longest in " << std::lround(longestFrame * 1000)
+                << " ms, the longest answering input in " << std::lround(longestAnswer * 1000) << " ms\n";
   };
   for (;;) {
     const bool scriptedEnd = launch.quitAfterFrames > 0 && frames >= launch.quitAfterFrames;
@@ -193,10 +200,12 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
       window.setShouldClose(false);
       input.changed = true;
     }
-    if (input.changed || !input.queue.empty()) viewer.requestFrames(kSettleFrames);
+    const bool answering = input.changed || !input.queue.empty();
+    if (answering) viewer.requestFrames(kSettleFrames);
     input.changed = false;
     if (!continuous && viewer.wakeIn() > 0 && glfwGetTime() < timerEnd) continue;  // woken for nothing that shows
 
+    const double frameStart = glfwGetTime();
     viewer.makeCurrent();
     ImGui_ImplGlfw_NewFrame();
     input.queue.feed(ImGui::GetIO());
@@ -233,6 +242,8 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
       }
     }
     window.swapBuffers();
+    longestFrame = std::max(longestFrame, glfwGetTime() - frameStart);
+    if (answering && frames > 1) longestAnswer = std::max(longestAnswer, glfwGetTime() - frameStart);
     if (viewer.title() != shownTitle) window.setTitle(shownTitle = viewer.title());
     if (quitting) break;
   }

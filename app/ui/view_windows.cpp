@@ -78,11 +78,11 @@ GLuint Viewer::drawView(ViewKind kind, ImVec2 size) {
   const ImVec2 fb = ImGui::GetIO().DisplayFramebufferScale;
   const int w = std::max(8, int(size.x * fb.x)), h = std::max(8, int(size.y * fb.y));
   if (kind == ViewKind::world) s_.worldAspect = double(w) / h;
-  return images_.image({kind, s_.doc.shown(), s_.ran, s_.frame, w, h, s_.antialias ? 4 : 1, uiScale_}, runRevision_);
+  return images_.image({kind, *s_.ranScene, s_.ran, s_.frame, w, h, s_.antialias ? 4 : 1, uiScale_}, runRevision_);
 }
 
 void Viewer::busyMark(ViewKind kind) {
-  if (!images_.busy(kind)) return;
+  if (!images_.busy(kind) && !runPending_) return;
   const ImVec2 max = ImGui::GetItemRectMax();
   const ImVec2 min = ImGui::GetItemRectMin();
   const char* text = "updating…";
@@ -195,7 +195,7 @@ void Viewer::viewWindows() {
 // The camera view: the GPU's image at the device's size, scaled to fit. With the divide-first
 // strategy the CPU's (wrong) polygons are shown beside it, with the reason.
 void Viewer::cameraWindowContents() {
-  const Device& device = s_.doc.shown().device;
+  const Device& device = s_.ranScene->device;  // the image is of the run's scene
   const bool demo = !isCorrect(s_.pipeline.strategy);
   ImVec2 avail = ImGui::GetContentRegionAvail();
   if (demo) avail.y -= ImGui::GetTextLineHeightWithSpacing() * 3.2f;
@@ -207,7 +207,7 @@ void Viewer::cameraWindowContents() {
   if (demo) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
     // A render target's texture like the views': flipped the same way (GL's rows go up).
-    if (const GLuint divided = images_.divideFirst(s_.doc.shown(), s_.run(), s_.frame, runRevision_))
+    if (const GLuint divided = images_.divideFirst(*s_.ranScene, s_.run(), s_.frame, runRevision_))
       ImGui::Image(textureId(divided), size, ImVec2(0, 1), ImVec2(1, 0));
     else  // the strategy's run failed (its error is in the status line): no picture of it
       ImGui::Dummy(size);
@@ -279,7 +279,7 @@ void Viewer::lectureWindow() {
     const ImVec2 size = io.DisplaySize;
     const ViewKind kind = s_.lectureView;
     if (kind == ViewKind::camera) {
-      const Device& d = s_.doc.shown().device;
+      const Device& d = s_.ranScene->device;
       const float fit = std::min(size.x / d.width, size.y / d.height);
       const ImVec2 shown(d.width * fit, d.height * fit);
       const GLuint texture = drawView(kind, shown);

@@ -54,6 +54,10 @@ void setUpStyle(float scale) {
 
 /// The busy mark's spinner steps 10 times a second (a frame each, nothing else while idle).
 constexpr double kBusyMarkStep = 0.1;
+/// How long the frame that changed the scene may wait for the pipeline's worker: a small scene's run
+/// (well under a millisecond) arrives in it. A scene whose last run took longer is not waited for at
+/// all: the 1M-triangle sphere's run (0.1–0.2 s) arrives a few frames later.
+constexpr double kFrameWaitForRun = 0.02;
 
 }  // namespace
 
@@ -134,23 +138,56 @@ void Viewer::updateRun() {
   const PipelineOptions& o = s_.pipeline;
   const bool same = ranOnce_ && s_.doc.shownRevision() == ranShownRevision_ && o.strategy == ranOptions_.strategy &&
                     o.boundingBoxTest == ranOptions_.boundingBoxTest && o.clipEdges == ranOptions_.clipEdges;
-  if (same) return;
-  ranOnce_ = true;
-  ranShownRevision_ = s_.doc.shownRevision();
-  ranOptions_ = o;
-  // Into the run published before the current one when nothing holds it any more: its buffers are
-  // reused (a large scene's arrays are not allocated anew). The render thread may still draw from
-  // it: then a new one.
-  std::shared_ptr<PipelineRun>& into = runs_[0] == s_.ran ? runs_[1] : runs_[0];
-  if (!into || into.use_count() > 1) into = std::make_shared<PipelineRun>();
-  try {
-    vplab::runPipeline(s_.doc.shown(), s_.pipeline, *into);
-    s_.ran = into;
-    ++runRevision_;
-    s_.runError.clear();
-  } catch (const Error& e) {
-    s_.runError = e.what();  // the previous run stays
+  if (!same) {
+    ranOnce_ = true;
+    ranShownRevision_ = s_.doc.shownRevision();
+    ranOptions_ = o;
+    auto scene = std::make_shared<const Scene>(s_.doc.shown());  // shares the meshes: a cheap copy
+    if (pipelineWorker_) {
+      runTicket_ = pipelineWorker_->request(std::move(scene), o);
+      runPending_ = true;
+      runAskedAt_ = frameNumber_;
+    } else {
+      // Into the run published before the current one when nothing holds it any more: its buffers
+      // are reused (a large scene's arrays are not allocated anew). The render thread may still draw
+      // from it: then a new one.
+      std::shared_ptr<PipelineRun>& into = runs_[0] == s_.ran ? runs_[1] : runs_[0];
+      if (!into || into.use_count() > 1) into = std::make_shared<PipelineRun>();
+      try {
+        vplab::runPipeline(*scene, o, *into);
+        publishRun(std::move(scene), into);
+      } catch (const Error& e) {
+        s_.runError = e.what();  // the previous run stays
+      }
+    }
   }
+  if (!runPending_) return;
+  // Only the frame that asked for the run waits for it, a little (a small scene's arrives in it);
+  // later frames only look whether it is finished.
+  const double expected = 2 * lastRunSeconds_ + 0.001;
+  const double wait = runAskedAt_ == frameNumber_ && expected <= kFrameWaitForRun ? expected : 0;
+  std::optional<PipelineWorker::Finished> done = pipelineWorker_->take(runTicket_, wait);
+  if (!done) return;
+  lastRunSeconds_ = done->seconds;
+  if (done->run) publishRun(std::move(done->scene), std::move(done->run));
+  else s_.runError = done->error;  // the previous run stays
+  if (done->ticket == runTicket_) runPending_ = false;
+}
+
+void Viewer::publishRun(std::shared_ptr<const Scene> scene, std::shared_ptr<const PipelineRun> run) {
+  s_.ranScene = std::move(scene);
+  s_.ran = std::move(run);
+  ++runRevision_;
+  s_.runError.clear();
+}
+
+void Viewer::usePipelineWorker(std::function<void()> wake) {
+  pipelineWorker_ = std::make_unique<PipelineWorker>(std::move(wake));
+}
+
+std::vector<ViewKind> Viewer::viewsNotReady() const {
+  // While a run is under way every view shows the last one: none is of the current state.
+  return runPending_ ? images_.asked() : images_.notReady();
 }
 
 void Viewer::makeCurrent() { ImGui::SetCurrentContext(imgui_); }
@@ -158,11 +195,15 @@ void Viewer::makeCurrent() { ImGui::SetCurrentContext(imgui_); }
 double Viewer::wakeIn() const {
   if (settleFrames_ > 0 || s_.morphPlaying || s_.animateUntil > imgui_->Time) return 0;
   double wake = 1e9;
-  // The busy mark's spinner turns while a view is drawn on the render thread; its new image is
-  // shown at once.
+  // A run of the pipeline or a view's image finished on its thread is shown at once; until then the
+  // busy mark's spinner turns.
+  if (runPending_) {
+    if (pipelineWorker_->hasFinished()) return 0;
+    wake = kBusyMarkStep;
+  }
   if (const std::optional<double> views = images_.wakeIn(kBusyMarkStep)) {
     if (*views <= 0) return 0;
-    wake = *views;
+    wake = std::min(wake, *views);
   }
   // ImGui 1.86 blinks the text cursor (on 0.8 s, off 0.4 s): a few frames a second while typing.
   if (imgui_->IO.WantTextInput) wake = std::min(wake, 0.2);
@@ -175,6 +216,7 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   if (s_.uiScale != uiScale_) applyUiScale(s_.uiScale);  // the font atlas is locked during a frame
   if (settleFrames_ > 0) --settleFrames_;
   images_.beginFrame();
+  ++frameNumber_;
   if (session_.beginFrame()) requestFrames(2);
   const Scene atFrameStart = s_.doc.scene();
   const unsigned generation = s_.doc.generation();
@@ -505,7 +547,7 @@ Image Viewer::exportImage(ViewKind kind, int width, int height) {
     ctx_.gl().GetIntegerv(GL_FRAMEBUFFER_BINDING, &fb);
     return fb;
   }();
-  Image image = renderImage(renderer_, s_.doc.shown(), shownViewRequest(s_, kind, width, height, uiScale_));
+  Image image = renderImage(renderer_, *s_.ranScene, shownViewRequest(s_, kind, width, height, uiScale_));
   ctx_.gl().BindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
   return image;
 }

@@ -6,6 +6,7 @@
 
 #include "app/context/context.h"
 #include "app/gl/render_target.h"
+#include "app/ui/pipeline_worker.h"
 #include "app/ui/session.h"
 #include "app/ui/viewer_state.h"
 #include "app/render/view_images.h"
@@ -59,6 +60,13 @@ class Viewer {
   void useViewWorker(std::unique_ptr<GlContext> context, std::function<void()> wake) {
     images_.useWorker(std::move(context), std::move(wake));
   }
+  /// Runs the CPU pipeline on a worker thread: the frame that changed the scene waits a few ms for
+  /// its run (a small scene's arrives in it), later frames show the last run until the new one is
+  /// finished. `wake` wakes the window's event wait (called on the worker). Without it (headless,
+  /// the UI tests) the pipeline runs in the frame that needs it.
+  void usePipelineWorker(std::function<void()> wake);
+  /// Whether a run of the pipeline is under way on the worker (the views show the last one).
+  bool runPending() const { return runPending_; }
   /// Whether `kind` shows an older image while its current one is being drawn.
   bool viewBusy(ViewKind kind) const { return images_.busy(kind); }
   /// Asks for `n` more frames (something changed that ImGui shows only after it laid it out again).
@@ -79,7 +87,7 @@ class Viewer {
   /// draws their current one. A screenshot is taken only when this is empty: it shows what was asked
   /// for, never an "updating…" frame (on a fresh machine llvmpipe compiles the views' shaders for the
   /// first ~0.8 s).
-  std::vector<ViewKind> viewsNotReady() const { return images_.notReady(); }
+  std::vector<ViewKind> viewsNotReady() const;
 
  private:
   void menuBar();
@@ -90,8 +98,9 @@ class Viewer {
   void helpWindow();
   void exportMenu();
   /// Runs the CPU pipeline when the shown scene or the options changed (frames drawn for hover and
-  /// ImGui's settling cost none) and publishes the run.
+  /// ImGui's settling cost none), here or on the worker, and publishes the run that is finished.
   void updateRun();
+  void publishRun(std::shared_ptr<const Scene> scene, std::shared_ptr<const PipelineRun> run);
   void setStatus(std::string message, bool error);
   std::optional<Vec3> probePositionOf(ViewKind view) const;
   void orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const ViewCamera& observer, int w, int h, Vec2 mouse);
@@ -129,8 +138,14 @@ class Viewer {
   std::array<std::shared_ptr<PipelineRun>, 2> runs_;
   unsigned runRevision_ = 0;      // counts the runs published
   unsigned ranShownRevision_ = 0; // the shown scene's revision (Document::shownRevision) of s_.ran
-  PipelineOptions ranOptions_;
+  PipelineOptions ranOptions_;     // ... and its options (or the request's under way)
   bool ranOnce_ = false;
+  std::unique_ptr<PipelineWorker> pipelineWorker_;
+  uint64_t runTicket_ = 0;         // the worker's run asked for last
+  uint64_t runAskedAt_ = 0;        // the frame that asked for it
+  uint64_t frameNumber_ = 0;
+  bool runPending_ = false;
+  double lastRunSeconds_ = 0;      // how long the worker's last run took
   int settleFrames_ = 2;     // frames still to draw without input (wakeIn)
 };
 

@@ -53,6 +53,9 @@ struct ViewerState {
   /// render thread draws from the same run, never a copy.
   std::shared_ptr<const PipelineRun> ran = std::make_shared<const PipelineRun>();
   const PipelineRun& run() const { return *ran; }
+  /// The scene `ran` ran on: the views draw the two together. With the pipeline on a worker thread
+  /// (the window) it may be older than doc.shown() for a few frames.
+  std::shared_ptr<const Scene> ranScene = std::make_shared<const Scene>();
   std::string runError;         // when even the shown scene could not be run
   std::optional<Probe> probe;
   Handle hovered = Handle::none;

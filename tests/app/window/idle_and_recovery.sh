@@ -65,7 +65,7 @@ grep -q "unsaved changes are kept in" err1 || fail "SIGTERM did not write the re
 recovery=$(ls "$XDG_STATE_HOME"/vplab/recovery-*.json 2>/dev/null | head -1) || true
 [ -n "$recovery" ] || fail "no recovery file in $XDG_STATE_HOME/vplab"
 grep -q '"projection": "oblique"' "$recovery" || fail "the recovery file lacks the last change (P twice: oblique)"
-frames=$(sed -n 's/^vplab: \([0-9]*\) frames drawn$/\1/p' err1)
+frames=$(sed -n 's/^vplab: \([0-9]*\) frames drawn.*$/\1/p' err1)
 echo "frames drawn in ~15 s: $frames"
 # drawn: the first frames, the screenshot's and the key's; a window that redraws continuously
 # draws ~60 a second (900 here)
