@@ -84,7 +84,7 @@ struct ViewTimer {
   std::vector<double> ms, cpuMs;  // wall time; CPU time of the whole process (llvmpipe's threads too)
 };
 
-void timeOneFrame(ViewRenderer& renderer, const Scene& scene, const FrameSettings& settings, ViewTimer& t,
+void timeOneFrame(ViewRenderer& renderer, const Scene& scene, const DisplaySettings& settings, ViewTimer& t,
                   bool record) {
   const double cpu0 = processCpuMs();
   const auto start = Clock::now();
@@ -103,7 +103,7 @@ void timeOneFrame(ViewRenderer& renderer, const Scene& scene, const FrameSetting
 // camera, …): a noisy neighbour on the shared machine slows all three alike, so their ratios hold.
 std::vector<ViewTimer> timeViews(ViewRenderer& renderer, const Scene& scene, int frames, int w, int h) {
   GlContext& ctx = renderer.context();
-  const FrameSettings settings = frameSettingsFor(scene, Style::shaded, double(w) / h);
+  const DisplaySettings settings = displaySettingsFor(scene, Style::shaded, double(w) / h);
   std::vector<ViewTimer> timers;
   for (ViewKind v : {ViewKind::camera, ViewKind::world, ViewKind::npc}) {
     timers.push_back({v, {}, gl::RenderTarget(ctx.gl()), {}, {}});
@@ -116,7 +116,7 @@ std::vector<ViewTimer> timeViews(ViewRenderer& renderer, const Scene& scene, int
 
 Summary timeThreeViews(ViewRenderer& renderer, const Scene& scene, int frames, int w, int h) {
   GlContext& ctx = renderer.context();
-  FrameSettings settings = frameSettingsFor(scene, Style::shaded, double(w) / h);
+  DisplaySettings settings = displaySettingsFor(scene, Style::shaded, double(w) / h);
   PipelineRun run;
   gl::RenderTarget camera(ctx.gl()), world(ctx.gl()), npc(ctx.gl());
   camera.resize(w, h, 1);

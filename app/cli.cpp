@@ -176,7 +176,7 @@ int runRender(const RenderOptions& r) {
     // What the viewer shows for the same options (its keys 1 … 5 and C set the same).
     viewer.state().pipeline.strategy = request.pipeline.strategy;
     if (r.styleGiven) {
-      FrameSettings& f = viewer.state().frame;
+      DisplaySettings& f = viewer.state().display;
       f.camera.style = f.world.style = f.npc.style = request.style;
     }
     for (const std::string& tab : r.tabs) ui::selectTab(viewer.state(), tab);

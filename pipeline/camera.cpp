@@ -31,8 +31,8 @@ namespace {
 double maxAbs(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 
 // lecture notes 15.2.2: N points from VRP to the eye, U = VUP × N, V = N × U. No checks here.
-ViewFrame frameUnchecked(const Camera& c) {
-  ViewFrame f{};
+VrcAxes frameUnchecked(const Camera& c) {
+  VrcAxes f{};
   const Vec3 toEye = c.prp - c.vrp;
   f.vpd = glm::length(toEye);
   f.n = toEye / f.vpd;
@@ -95,7 +95,7 @@ std::optional<std::string> inputError(const Camera& c) {
 std::optional<std::string> cameraError(const Camera& camera) {
   if (auto e = inputError(camera)) return e;
   // Finite inputs can still overflow (a window 1e-300 wide): check what the stages will use.
-  const ViewFrame f = frameUnchecked(camera);
+  const VrcAxes f = frameUnchecked(camera);
   const Mat4 m = npcFromVrc(camera, f) * vrcFromWc(f, camera.vrp);
   if (!isFinite(m) || !isFinite(f.u) || !isFinite(f.v) || !isFinite(f.n))
     return "the camera's values are too large or too small: the view mapping is not finite "
@@ -105,12 +105,12 @@ std::optional<std::string> cameraError(const Camera& camera) {
   return std::nullopt;
 }
 
-ViewFrame viewFrame(const Camera& camera) {
+VrcAxes vrcAxes(const Camera& camera) {
   if (auto e = cameraError(camera)) throw Error("invalid camera: " + *e);
   return frameUnchecked(camera);
 }
 
-Mat4 vrcFromWc(const ViewFrame& f, const Vec3& vrp) {
+Mat4 vrcFromWc(const VrcAxes& f, const Vec3& vrp) {
   // clang-format off
   const Mat4 rotate = matrixFromRows(
       f.u.x, f.u.y, f.u.z, 0,
@@ -126,6 +126,6 @@ Mat4 vrcFromWc(const ViewFrame& f, const Vec3& vrp) {
   return rotate * translate;
 }
 
-Mat4 vrcFromWc(const Camera& camera) { return vrcFromWc(viewFrame(camera), camera.vrp); }
+Mat4 vrcFromWc(const Camera& camera) { return vrcFromWc(vrcAxes(camera), camera.vrp); }
 
 }  // namespace vplab

@@ -48,7 +48,7 @@ struct Camera {
 };
 
 /// The VRC axes and distances derived from a valid camera (lecture notes 15.2.2, docs/conventions.md stage 2).
-struct ViewFrame {
+struct VrcAxes {
   Vec3 u, v, n;  // WC; U, V, N right-handed, the eye on +N
   double vpd;    // |PRP − VRP|: the eye is at VRC (0, 0, VPD)
   double dmin;   // VPD − F: distance eye → front plane (perspective)
@@ -60,10 +60,10 @@ struct ViewFrame {
 std::optional<std::string> cameraError(const Camera& camera);
 
 /// U, V, N, VPD, dmin, dmax. Throws vplab::Error with cameraError's message when invalid.
-ViewFrame viewFrame(const Camera& camera);
+VrcAxes vrcAxes(const Camera& camera);
 
 /// Stage 2: vrcFromWc = [U 0; V 0; N 0; 0 0 0 1] · T(−VRP) (lecture notes 15.2.2; rows are U, V, N).
-Mat4 vrcFromWc(const ViewFrame& frame, const Vec3& vrp);
+Mat4 vrcFromWc(const VrcAxes& frame, const Vec3& vrp);
 Mat4 vrcFromWc(const Camera& camera);
 
 }  // namespace vplab

@@ -96,8 +96,8 @@ void writeDump(std::ostream& out, const PipelineRun& run, int indent) {
   JsonStreamWriter w(out, indent);
   w.beginObject();
   w.key("camera");
-  w.value({{"u", toJson(run.frame.u)}, {"v", toJson(run.frame.v)}, {"n", toJson(run.frame.n)},
-           {"vpd", run.frame.vpd}, {"dmin", run.frame.dmin}, {"dmax", run.frame.dmax},
+  w.value({{"u", toJson(run.vrc.u)}, {"v", toJson(run.vrc.v)}, {"n", toJson(run.vrc.n)},
+           {"vpd", run.vrc.vpd}, {"dmin", run.vrc.dmin}, {"dmax", run.vrc.dmax},
            {"projection", std::string(toString(run.camera.projection))}});
   w.key("device");
   w.value({{"width", run.device.width}, {"height", run.device.height}});

@@ -135,8 +135,8 @@ bool wellPosed(const Exercise& e) {
     for (double bc : step.boundary)
       if (std::abs(bc) < 1e-9) return false;
   const bool exact = e.scene.camera.projection != Projection::oblique;
-  if (!isSmallRational(s.wcFromMc) || !isSmallRational(s.run.vrcFromWc) || !isSmallRational(s.run.frame.u) ||
-      !isSmallRational(s.run.frame.v) || !isSmallRational(s.run.frame.n))
+  if (!isSmallRational(s.wcFromMc) || !isSmallRational(s.run.vrcFromWc) || !isSmallRational(s.run.vrc.u) ||
+      !isSmallRational(s.run.vrc.v) || !isSmallRational(s.run.vrc.n))
     return false;
   if (!exact) return true;
   if (!isSmallRational(s.run.npcFromVrc)) return false;

@@ -446,7 +446,7 @@ uint32_t uniformFaceSize(const Mesh& mesh) {
 
 void runPipeline(const Scene& scene, const PipelineOptions& options, PipelineRun& run) {
   // Every matrix first: an invalid camera or transform throws before `run` changes.
-  const ViewFrame frame = viewFrame(scene.camera);
+  const VrcAxes frame = vrcAxes(scene.camera);
   const Mat4 vrcFromWcM = vrcFromWc(frame, scene.camera.vrp);
   const Mat4 npcFromVrcM = npcFromVrc(scene.camera, frame);
   std::vector<Mat4> wcFromMcs;
@@ -463,7 +463,7 @@ void runPipeline(const Scene& scene, const PipelineOptions& options, PipelineRun
   }
 
   run.camera = scene.camera;
-  run.frame = frame;
+  run.vrc = frame;
   run.device = scene.device;
   run.options = options;
   run.vrcFromWc = vrcFromWcM;

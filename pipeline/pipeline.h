@@ -128,7 +128,7 @@ struct ObjectRun {
 
 struct PipelineRun {
   Camera camera;
-  ViewFrame frame{};
+  VrcAxes vrc{};  // U, V, N, VPD, dmin, dmax (stage 2)
   Device device;
   PipelineOptions options;
   Mat4 vrcFromWc{1.0};

@@ -48,7 +48,7 @@ Mat4 parallelNpcFromVrc(const ViewWindow& w, double front, double back, const Ob
   return toCube * obliqueShear(ob);
 }
 
-Mat4 npcFromVrc(const Camera& c, const ViewFrame& f) {
+Mat4 npcFromVrc(const Camera& c, const VrcAxes& f) {
   switch (c.projection) {
     case Projection::perspective: return perspectiveNpcFromVrc(c.window, f.vpd, c.front, c.back);
     case Projection::parallel: return parallelNpcFromVrc(c.window, c.front, c.back, {0.0, 0.0});
@@ -57,15 +57,15 @@ Mat4 npcFromVrc(const Camera& c, const ViewFrame& f) {
   return Mat4(1.0);
 }
 
-Mat4 npcFromVrc(const Camera& camera) { return npcFromVrc(camera, viewFrame(camera)); }
+Mat4 npcFromVrc(const Camera& camera) { return npcFromVrc(camera, vrcAxes(camera)); }
 
-double npcDepthOfVrcZ(const Camera& c, const ViewFrame& f, double vrcZ) {
+double npcDepthOfVrcZ(const Camera& c, const VrcAxes& f, double vrcZ) {
   if (c.projection != Projection::perspective) return (vrcZ - c.back) / (c.front - c.back);
   const double ze = f.vpd - vrcZ;
   return f.dmin * (f.dmax - ze) / ((f.dmax - f.dmin) * ze);
 }
 
-double depthResolution(const Camera& c, const ViewFrame& f, double vrcZ, int bits) {
+double depthResolution(const Camera& c, const VrcAxes& f, double vrcZ, int bits) {
   const double step = 1.0 / (std::ldexp(1.0, bits) - 1.0);
   if (c.projection != Projection::perspective) return step * (c.front - c.back);
   const double ze = f.vpd - vrcZ;

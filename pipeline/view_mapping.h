@@ -12,7 +12,7 @@ namespace vplab {
 Mat4 npcFromVrc(const Camera& camera);
 
 /// The same for a frame already derived from the camera (no validation).
-Mat4 npcFromVrc(const Camera& camera, const ViewFrame& frame);
+Mat4 npcFromVrc(const Camera& camera, const VrcAxes& frame);
 
 /// Perspective with the centre of projection at VRC (0, 0, VPD): the lecture notes' shear into a regular
 /// 45° pyramid and its scaling into the cube, folded into one matrix; w' = ze = VPD − z.
@@ -27,12 +27,12 @@ Mat4 obliqueShear(const ObliqueParams& ob);
 /// NPC z after the division, for a VRC depth z on the axis: dmin·(dmax − ze)/((dmax − dmin)·ze)
 /// for perspective (not linear: equal steps crowd near the back plane, lecture notes 15.2.4), (z − B)/(F − B)
 /// for parallel projections.
-double npcDepthOfVrcZ(const Camera& camera, const ViewFrame& frame, double vrcZ);
+double npcDepthOfVrcZ(const Camera& camera, const VrcAxes& frame, double vrcZ);
 
 /// The smallest VRC depth difference a depth buffer of `bits` bits can tell apart at VRC z: one step
 /// 1/(2^bits − 1) of window depth (= 1 − NPC z) divided by how fast NPC z changes with VRC z. For
 /// perspective that is (2^bits − 1)⁻¹ · (dmax − dmin)·ze² / (dmin·dmax), growing with the square of
 /// the distance from the eye ze (lecture notes 15.2.4); for parallel projections it is constant, (F − B) / (2^bits − 1).
-double depthResolution(const Camera& camera, const ViewFrame& frame, double vrcZ, int bits);
+double depthResolution(const Camera& camera, const VrcAxes& frame, double vrcZ, int bits);
 
 }  // namespace vplab

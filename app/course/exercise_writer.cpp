@@ -231,7 +231,7 @@ struct Writer {
   }
 
   void orientation(Document& d) const {
-    const ViewFrame& f = s.run.frame;
+    const VrcAxes& f = s.run.vrc;
     const Camera& c = cam();
     d.push_back({Block::heading, L("2. View orientation (15.2.2): WC to VRC", "2. View Orientation (15.2.2): WC nach VRC")});
     const Vec3 cross = glm::cross(c.vup, f.n);
@@ -247,7 +247,7 @@ struct Writer {
   }
 
   void mapping(Document& d) const {
-    const ViewFrame& f = s.run.frame;
+    const VrcAxes& f = s.run.vrc;
     const Camera& c = cam();
     const Mat4& m = s.run.npcFromVrc;
     d.push_back({Block::heading, L("3. View mapping (14, 15.2.3–15.2.4): VRC to homogeneous NPC",

@@ -46,14 +46,14 @@ std::string svgOfPicture(const draw::Picture& picture, const FontAtlas& fonts, s
 /// Why a view of the scene cannot be exported as SVG with these settings (its filled panels would
 /// draw more than kMaxSvgFaces faces, estimated from the scene's faces), or nullopt when it can.
 /// For greying out a menu entry.
-std::optional<std::string> svgExportError(ViewKind view, const Scene& scene, const FrameSettings& settings);
+std::optional<std::string> svgExportError(ViewKind view, const Scene& scene, const DisplaySettings& settings);
 
 /// The view as a standalone SVG document: the picture buildPicture makes of it (ViewKind::all:
 /// three panels of width × height and a title strip, like the PNG), with labels measured by a font
 /// atlas of `scale` (lecture mode: text, line widths and marker sizes grow with it). `run` is the
 /// CPU pipeline's run of `scene`. Throws vplab::Error for a size below 1 × 1 or too many faces.
 std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run,
-                      const FrameSettings& settings, int width, int height, float scale = 1.f);
+                      const DisplaySettings& settings, int width, int height, float scale = 1.f);
 
 /// The SVG of what renderImage draws for the request (same pipeline run, frame settings and scale;
 /// app/views/render_request.h).

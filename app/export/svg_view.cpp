@@ -9,7 +9,7 @@
 
 namespace vplab {
 
-std::optional<std::string> svgExportError(ViewKind view, const Scene& scene, const FrameSettings& settings) {
+std::optional<std::string> svgExportError(ViewKind view, const Scene& scene, const DisplaySettings& settings) {
   // An estimate from the scene's faces (svgOfPicture counts the picture's): each filled panel draws
   // every face once, the world view's faded outside part once more.
   size_t sceneFaces = 0;
@@ -31,7 +31,7 @@ std::optional<std::string> svgExportError(ViewKind view, const Scene& scene, con
 }
 
 std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run,
-                      const FrameSettings& settings, int width, int height, float scale) {
+                      const DisplaySettings& settings, int width, int height, float scale) {
   if (width < 1 || height < 1)
     throw Error("SVG export: the size " + std::to_string(width) + " x " + std::to_string(height) +
                 " is not at least 1 x 1 pixels");
@@ -45,7 +45,7 @@ std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run,
 std::string svgOfRequest(const Scene& scene, const RenderRequest& request) {
   const PixelSize size = pixelSizeOf(request, scene);
   const PipelineRun run = runPipeline(scene, pipelineOptionsOf(request));
-  return svgOfView(request.view, scene, run, frameSettingsOf(request, scene), size.width, size.height,
+  return svgOfView(request.view, scene, run, displaySettingsOf(request, scene), size.width, size.height,
                    request.scale);
 }
 

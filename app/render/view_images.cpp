@@ -131,7 +131,7 @@ GLuint ViewImages::onWorker(Slot& slot, ViewRequest r, Stamp stamp) {
   return slot.texture;
 }
 
-GLuint ViewImages::divideFirst(const Scene& scene, const PipelineRun& run, const FrameSettings& settings,
+GLuint ViewImages::divideFirst(const Scene& scene, const PipelineRun& run, const DisplaySettings& settings,
                                unsigned runRevision) {
   // The GPU always clips correctly; the wrong strategy's result exists only as the CPU's clipped
   // polygons: divideFirstView's display list, drawn at the device's size (pixel-aligned with DC,

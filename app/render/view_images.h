@@ -26,7 +26,7 @@ struct ViewRequest {
   ViewKind kind = ViewKind::world;
   Scene scene;
   std::shared_ptr<const PipelineRun> run;
-  FrameSettings settings;
+  DisplaySettings settings;
   int width = 0, height = 0, samples = 1;
   float uiScale = 1.f;
 };
@@ -68,7 +68,7 @@ class ViewImages {
   /// and busy(r.kind)). 0 before its first image. A failure is kept for takeError().
   GLuint image(ViewRequest r, unsigned runRevision);
   /// The divide-first comparison at the device's size, drawn again only for a new run.
-  GLuint divideFirst(const Scene& scene, const PipelineRun& run, const FrameSettings& settings, unsigned runRevision);
+  GLuint divideFirst(const Scene& scene, const PipelineRun& run, const DisplaySettings& settings, unsigned runRevision);
 
   /// Whether `kind` shows an older image in this frame while its current one is drawn.
   bool busy(ViewKind kind) const { return slots_[size_t(kind)].busy; }
@@ -95,7 +95,7 @@ class ViewImages {
   /// What an image was drawn from: equal stamps give equal images. The scene is the run's.
   struct Stamp {
     unsigned runRevision = 0;
-    FrameSettings settings;
+    DisplaySettings settings;
     int width = 0, height = 0, samples = 0;
     float uiScale = 0;
     bool operator==(const Stamp&) const = default;

@@ -7,37 +7,37 @@ namespace vplab {
 ViewRenderer::ViewRenderer(GlContext& context, float textScale) : ctx_(context), backend_(context, textScale) {}
 
 void ViewRenderer::drawView(Builder build, draw::DisplayList& list, const Scene& scene, const PipelineRun& run,
-                            const FrameSettings& s, gl::RenderTarget& target) {
+                            const DisplaySettings& s, gl::RenderTarget& target) {
   const ViewInput in{scene, run, s, target.width(), target.height(), backend_.text().atlas()};
   build(in, list);
   backend_.draw(list, target);
 }
 
-void ViewRenderer::drawCamera(const Scene& scene, const PipelineRun& run, const FrameSettings& s,
+void ViewRenderer::drawCamera(const Scene& scene, const PipelineRun& run, const DisplaySettings& s,
                               gl::RenderTarget& target) {
   drawView(&cameraView, camera_, scene, run, s, target);
 }
 
-void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const FrameSettings& s,
+void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const DisplaySettings& s,
                              gl::RenderTarget& target) {
   drawView(&worldView, world_, scene, run, s, target);
 }
 
-void ViewRenderer::drawNpc(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target) {
+void ViewRenderer::drawNpc(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, gl::RenderTarget& target) {
   drawView(&npcView, npc_, scene, run, s, target);
 }
 
-void ViewRenderer::drawMorph(const Scene& scene, const PipelineRun& run, const FrameSettings& s,
+void ViewRenderer::drawMorph(const Scene& scene, const PipelineRun& run, const DisplaySettings& s,
                              gl::RenderTarget& target) {
   drawView(&morphView, morph_, scene, run, s, target);
 }
 
-void ViewRenderer::drawDivideFirst(const Scene& scene, const PipelineRun& run, const FrameSettings& s,
+void ViewRenderer::drawDivideFirst(const Scene& scene, const PipelineRun& run, const DisplaySettings& s,
                                    gl::RenderTarget& target) {
   drawView(&divideFirstView, divideFirst_, scene, run, s, target);
 }
 
-Image ViewRenderer::render(ViewKind kind, const Scene& scene, const PipelineRun& run, const FrameSettings& s,
+Image ViewRenderer::render(ViewKind kind, const Scene& scene, const PipelineRun& run, const DisplaySettings& s,
                            int width, int height) {
   const ViewInput in{scene, run, s, width, height, backend_.text().atlas()};
   buildPicture(kind, in, picture_);

@@ -23,16 +23,16 @@ class ViewRenderer {
   /// Each draws one view into `target` (already sized; the camera view is pixel-aligned with DC when
   /// the target is the device's W × H). `run` is the CPU pipeline's run of `scene` (with clipEdges
   /// for the wireframe overlays).
-  void drawCamera(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
-  void drawWorld(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
-  void drawNpc(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
-  void drawMorph(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
+  void drawCamera(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, gl::RenderTarget& target);
+  void drawWorld(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, gl::RenderTarget& target);
+  void drawNpc(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, gl::RenderTarget& target);
+  void drawMorph(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, gl::RenderTarget& target);
   /// The divide-first comparison: `run` must be the divide-first strategy's (views.h, divideFirstView).
-  void drawDivideFirst(const Scene& scene, const PipelineRun& run, const FrameSettings& s, gl::RenderTarget& target);
+  void drawDivideFirst(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, gl::RenderTarget& target);
 
   /// Renders a view headless into an image: camera at width × height, world and NPC likewise,
   /// all as three panels of width × height with a title strip.
-  Image render(ViewKind kind, const Scene& scene, const PipelineRun& run, const FrameSettings& s, int width,
+  Image render(ViewKind kind, const Scene& scene, const PipelineRun& run, const DisplaySettings& s, int width,
                int height);
 
   GlContext& context() { return ctx_; }
@@ -51,7 +51,7 @@ class ViewRenderer {
  private:
   using Builder = void (*)(const ViewInput&, draw::DisplayList&);
   void drawView(Builder build, draw::DisplayList& list, const Scene& scene, const PipelineRun& run,
-                const FrameSettings& s, gl::RenderTarget& target);
+                const DisplaySettings& s, gl::RenderTarget& target);
 
   GlContext& ctx_;
   GlBackend backend_;

@@ -8,7 +8,7 @@ namespace vplab::ui {
 namespace {
 
 void derived(const ViewerState& s) {
-  const ViewFrame& f = s.run().frame;
+  const VrcAxes& f = s.run().vrc;
   ImGui::TextDisabled("derived");
   ImGui::TextWrapped("U = %s", vecText(f.u).c_str());
   tooltip("U = normalize(VUP × N): the view plane's x axis.", "U = VUP × N normiert: x-Achse der Bildebene.");

@@ -80,10 +80,10 @@ void clippingPanel(ViewerState& s) {
 }
 
 void displayPanel(ViewerState& s) {
-  styleCombo("camera view", s.frame.camera.style);
-  styleCombo("world view", s.frame.world.style);
-  styleCombo("NPC view", s.frame.npc.style);
-  OverlaySettings& o = s.frame.overlays;
+  styleCombo("camera view", s.display.camera.style);
+  styleCombo("world view", s.display.world.style);
+  styleCombo("NPC view", s.display.npc.style);
+  OverlaySettings& o = s.display.overlays;
   section("world view");
   checkbox("view volume", &o.frustum);
   ImGui::SameLine();
@@ -109,8 +109,8 @@ void displayPanel(ViewerState& s) {
           "more than all the drawing, so it starts off there.",
           "Kantenglättung; auf einem Software-Renderer teuer, daher dort zunächst aus.");
   if (ImGui::Button("reset the observers")) {
-    s.frame.world.orbit = defaultWorldOrbit(s.doc.shown(), s.worldAspect);
-    s.frame.npc.orbit = defaultNpcOrbit();
+    s.display.world.orbit = defaultWorldOrbit(s.doc.shown(), s.worldAspect);
+    s.display.npc.orbit = defaultNpcOrbit();
   }
 }
 

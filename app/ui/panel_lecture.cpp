@@ -33,18 +33,18 @@ void morphSection(ViewerState& s) {
           "the division by w is its own step (2.5 → 3).",
           "Die Szene wandert durch die Stufen der Viewing Pipeline; die Division durch w ist ein eigener Schritt.");
   if (!s.showMorph) return;
-  float t = float(s.frame.morphing.t);
+  float t = float(s.display.morphing.t);
   fitLabel("t");
-  if (ImGui::SliderFloat("t", &t, 0.f, 4.f, "%.2f")) s.frame.morphing.t = t;
+  if (ImGui::SliderFloat("t", &t, 0.f, 4.f, "%.2f")) s.display.morphing.t = t;
   recordRect(s, "morph.t");
   if (ImGui::Button(s.morphPlaying ? "pause" : "play")) {
-    if (!s.morphPlaying && s.frame.morphing.t >= 4) s.frame.morphing.t = 0;
+    if (!s.morphPlaying && s.display.morphing.t >= 4) s.display.morphing.t = 0;
     s.morphPlaying = !s.morphPlaying;
   }
   ImGui::SameLine();
   for (auto [label, value] : {std::pair{"MC", 0.0}, {"WC", 1.0}, {"VRC", 2.0}, {"NPC h", 2.5}, {"NPC", 3.0}, {"DC", 4.0}}) {
     if (ImGui::SmallButton(label)) {
-      s.frame.morphing.t = value;
+      s.display.morphing.t = value;
       s.morphPlaying = false;
     }
     ImGui::SameLine();
@@ -151,11 +151,11 @@ void stepThroughSection(ViewerState& s) {
 }
 
 void vanishingSection(ViewerState& s) {
-  checkbox("vanishing points of the selected object", &s.frame.overlays.vanishingPoints);
+  checkbox("vanishing points of the selected object", &s.display.overlays.vanishingPoints);
   tooltip("In a perspective projection, edges parallel to an axis that is not parallel to the view plane meet "
           "in one image point (lecture notes 14.2): one, two or three of them.",
           "Fluchtpunkte: parallele Kanten treffen sich im Bild in einem Punkt (14.2).");
-  if (!s.frame.overlays.vanishingPoints) return;
+  if (!s.display.overlays.vanishingPoints) return;
   const ObjectRun* o = runOf(s, s.selectedObject);
   if (!o) return;
   const VanishingText t = vanishingText(s.run(), *o);
@@ -200,7 +200,7 @@ void lecturePanel(ViewerState& s) {
 // and what 16- and 24-bit depth buffers can resolve.
 void depthPanel(ViewerState& s) {
   const Camera& c = s.run().camera;
-  const ViewFrame& f = s.run().frame;
+  const VrcAxes& f = s.run().vrc;
   const float line = ImGui::GetTextLineHeight();
   // The legend above the plot, off the curves.
   ImGui::BeginGroup();

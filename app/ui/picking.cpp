@@ -168,7 +168,7 @@ void dragHandle(Camera& camera, const PipelineRun& run, Handle h, const ViewCame
   const Mat4 wcFromObserver = glm::inverse(observer.vrcFromWc);
   // The mouse motion as a WC vector parallel to the observer's view plane (DC y points down).
   const Vec3 motion = (Vec3(wcFromObserver[0]) * deltaPx.x - Vec3(wcFromObserver[1]) * deltaPx.y) * scale;
-  const ViewFrame& f = run.frame;
+  const VrcAxes& f = run.vrc;
   switch (h) {
     case Handle::vrp: camera.vrp += motion; break;
     case Handle::prp: camera.prp += motion; break;

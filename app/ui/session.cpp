@@ -165,10 +165,10 @@ void Session::startDocument(Scene scene, bool dirty) {
   state_.morphPlaying = false;
   // The view settings of a fresh start (see the constructor); the user's UI scale, aspect lock and
   // antialiasing are preferences, not choices for a scene, and stay.
-  state_.frame = FrameSettings{};
-  state_.frame.camera.style = Style::shaded;
+  state_.display = DisplaySettings{};
+  state_.display.camera.style = Style::shaded;
   state_.pipeline = ViewerState(Scene{}).pipeline;
-  state_.frame.world.orbit = defaultWorldOrbit(state_.doc.shown(), state_.worldAspect);
+  state_.display.world.orbit = defaultWorldOrbit(state_.doc.shown(), state_.worldAspect);
   changed_();
 }
 
@@ -283,22 +283,22 @@ UrlState Session::urlState() const {
   if (state_.doc.path().empty()) u.scene = "default";
   else if (isBundled(state_.doc.path())) u.scene = state_.doc.path().stem().string();
   u.camera = cameraLinkOf(state_.doc.scene().camera);
-  u.cameraStyle = state_.frame.camera.style;
-  u.worldStyle = state_.frame.world.style;
-  u.npcStyle = state_.frame.npc.style;
-  u.worldOrbit = state_.frame.world.orbit;
-  u.npcOrbit = state_.frame.npc.orbit;
+  u.cameraStyle = state_.display.camera.style;
+  u.worldStyle = state_.display.world.style;
+  u.npcStyle = state_.display.npc.style;
+  u.worldOrbit = state_.display.world.orbit;
+  u.npcOrbit = state_.display.npc.orbit;
   u.strategy = state_.pipeline.strategy;
   return u;
 }
 
 void Session::showUrlState(const UrlState& link, bool atStart) {
   auto showViews = [this, link] {
-    if (link.cameraStyle) state_.frame.camera.style = *link.cameraStyle;
-    if (link.worldStyle) state_.frame.world.style = *link.worldStyle;
-    if (link.npcStyle) state_.frame.npc.style = *link.npcStyle;
-    if (link.worldOrbit) state_.frame.world.orbit = *link.worldOrbit;
-    if (link.npcOrbit) state_.frame.npc.orbit = *link.npcOrbit;
+    if (link.cameraStyle) state_.display.camera.style = *link.cameraStyle;
+    if (link.worldStyle) state_.display.world.style = *link.worldStyle;
+    if (link.npcStyle) state_.display.npc.style = *link.npcStyle;
+    if (link.worldOrbit) state_.display.world.orbit = *link.worldOrbit;
+    if (link.npcOrbit) state_.display.npc.orbit = *link.npcOrbit;
     if (link.strategy) state_.pipeline.strategy = *link.strategy;
     changed_();
   };

@@ -5,7 +5,7 @@
 
 namespace vplab {
 
-bool parallelToViewPlane(const ViewFrame& frame, const Vec3& directionWc) {
+bool parallelToViewPlane(const VrcAxes& frame, const Vec3& directionWc) {
   const double length = glm::length(directionWc);
   return length > 0 && std::abs(glm::dot(directionWc, frame.n)) <= 1e-9 * length;
 }
@@ -22,7 +22,7 @@ VanishingText vanishingText(const PipelineRun& run, const ObjectRun& object) {
                  " parallel projection, no vanishing points";
   for (int i = 0; i < 3; ++i) {
     const VanishingPoint& vp = vps[size_t(i)];
-    const bool parallel = parallelToViewPlane(run.frame, vp.directionWc);
+    const bool parallel = parallelToViewPlane(run.vrc, vp.directionWc);
     t.parallelToViewPlane[size_t(i)] = parallel;
     std::string& s = t.axes[size_t(i)];
     s = std::string(kAxis[i]) + " axis: ";

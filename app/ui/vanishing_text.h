@@ -19,7 +19,7 @@ struct VanishingText {
 
 /// Whether a WC direction is parallel to the view plane: its VRC z component is 0, relative to its
 /// length (1e-9, far below anything a lecture shows, far above rounding of unit vectors).
-bool parallelToViewPlane(const ViewFrame& frame, const Vec3& directionWc);
+bool parallelToViewPlane(const VrcAxes& frame, const Vec3& directionWc);
 
 VanishingText vanishingText(const PipelineRun& run, const ObjectRun& object);
 

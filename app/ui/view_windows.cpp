@@ -14,6 +14,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include <array>
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -73,12 +74,27 @@ bool clicked() {
 
 // ---------------------------------------------------------------- 2 drawing a view
 
-// A view is drawn again only when what it shows changed (app/render/view_images.h).
-GLuint Viewer::drawView(ViewKind kind, ImVec2 size) {
+namespace {
+
+/// The pixels of a view's image shown at `size` screen units.
+std::array<int, 2> imagePixels(ImVec2 size) {
   const ImVec2 fb = ImGui::GetIO().DisplayFramebufferScale;
-  const int w = std::max(8, int(size.x * fb.x)), h = std::max(8, int(size.y * fb.y));
-  if (kind == ViewKind::world) s_.worldAspect = double(w) / h;
-  return images_.image({kind, *s_.ranScene, s_.ran, s_.frame, w, h, s_.antialias ? 4 : 1, uiScale_}, runRevision_);
+  return {std::max(8, int(size.x * fb.x)), std::max(8, int(size.y * fb.y))};
+}
+
+/// The aspect ratio of the world view's image at `size`: its observer is framed for it.
+double aspectOf(ImVec2 size) {
+  const auto [w, h] = imagePixels(size);
+  return double(w) / h;
+}
+
+}  // namespace
+
+// A view is drawn again only when what it shows changed (app/render/view_images.h). Drawing
+// changes no state: what it shows was settled before.
+GLuint Viewer::drawView(ViewKind kind, ImVec2 size) {
+  const auto [w, h] = imagePixels(size);
+  return images_.image({kind, *s_.ranScene, s_.ran, s_.display, w, h, s_.antialias ? 4 : 1, uiScale_}, runRevision_);
 }
 
 void Viewer::busyMark(ViewKind kind) {
@@ -125,7 +141,7 @@ void Viewer::stepHighlight() {
       h.polygonNpc.push_back(Vec3(p) / p.w);
       h.created.push_back(!start && step.created[k]);
     }
-    s_.frame.highlights.step = std::move(h);
+    s_.display.highlights.step = std::move(h);
   }
 }
 
@@ -136,7 +152,7 @@ void Viewer::viewWindows() {
   const ImVec2 fbScale = io.DisplayFramebufferScale;
   const ui::Layout layout = ui::computeLayout(io.DisplaySize, ImGui::GetFrameHeight(), uiScale_);
 
-  Highlights& hl = s_.frame.highlights;
+  Highlights& hl = s_.display.highlights;
   hl = {};
   if (s_.probe) {
     hl.probeWc = probePositionOf(ViewKind::world);
@@ -158,8 +174,9 @@ void Viewer::viewWindows() {
   if (ImGui::Begin("World view (WC)", nullptr, kViewFlags)) {
     const ImVec2 size = ImGui::GetContentRegionAvail();
     if (size.x >= 8 && size.y >= 8) {
+      s_.worldAspect = aspectOf(size);
       const GLuint texture = drawView(ViewKind::world, size);
-      const ViewCamera observer = viewCameraOf(observerCamera(s_.frame.world.orbit, s_.worldAspect));
+      const ViewCamera observer = viewCameraOf(observerCamera(s_.display.world.orbit, s_.worldAspect));
       const bool hovered = viewImage("world", texture, size);
       ui::recordRect(s_, "view.world");
       busyMark(ViewKind::world);
@@ -179,11 +196,11 @@ void Viewer::viewWindows() {
     const ImVec2 size = ImGui::GetContentRegionAvail();
     if (size.x >= 8 && size.y >= 8) {
       const GLuint texture = drawView(ViewKind::npc, size);
-      const ViewCamera observer = viewCameraOf(observerCamera(s_.frame.npc.orbit, double(cachedWidth(ViewKind::npc)) / cachedHeight(ViewKind::npc)));
+      const ViewCamera observer = viewCameraOf(observerCamera(s_.display.npc.orbit, double(cachedWidth(ViewKind::npc)) / cachedHeight(ViewKind::npc)));
       const bool hovered = viewImage("npc", texture, size);
       busyMark(ViewKind::npc);
       ui::recordRect(s_, "view.npc");
-      orbitInteraction(hovered, ViewKind::npc, s_.frame.npc.orbit, observer, cachedWidth(ViewKind::npc), cachedHeight(ViewKind::npc),
+      orbitInteraction(hovered, ViewKind::npc, s_.display.npc.orbit, observer, cachedWidth(ViewKind::npc), cachedHeight(ViewKind::npc),
                        mouseIn(ImGui::GetItemRectMin(), fbScale));
     }
   }
@@ -207,7 +224,7 @@ void Viewer::cameraWindowContents() {
   if (demo) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
     // A render target's texture like the views': flipped the same way (GL's rows go up).
-    if (const GLuint divided = images_.divideFirst(*s_.ranScene, s_.run(), s_.frame, runRevision_))
+    if (const GLuint divided = images_.divideFirst(*s_.ranScene, s_.run(), s_.display, runRevision_))
       ImGui::Image(textureId(divided), size, ImVec2(0, 1), ImVec2(1, 0));
     else  // the strategy's run failed (its error is in the status line): no picture of it
       ImGui::Dummy(size);
@@ -272,7 +289,7 @@ void Viewer::lectureWindow() {
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                                  ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings;
   if (ImGui::Begin("##lecture", nullptr, flags)) {
-    Highlights& hl = s_.frame.highlights;
+    Highlights& hl = s_.display.highlights;
     hl = {};
     hl.vanishingObject = s_.selectedObject;
     stepHighlight();
@@ -287,18 +304,19 @@ void Viewer::lectureWindow() {
       viewImage("lecture", texture, shown);
       busyMark(kind);
     } else {
+      if (kind == ViewKind::world) s_.worldAspect = aspectOf(size);
       const GLuint texture = drawView(kind, size);
       const bool hovered = viewImage("lecture", texture, size);
       busyMark(kind);
       const ImVec2 fb = io.DisplayFramebufferScale;
       const Vec2 mouse = mouseIn(ImGui::GetItemRectMin(), fb);
       if (kind == ViewKind::world)
-        orbitInteraction(hovered, kind, s_.frame.world.orbit,
-                         viewCameraOf(observerCamera(s_.frame.world.orbit, s_.worldAspect)), cachedWidth(ViewKind::world),
+        orbitInteraction(hovered, kind, s_.display.world.orbit,
+                         viewCameraOf(observerCamera(s_.display.world.orbit, s_.worldAspect)), cachedWidth(ViewKind::world),
                          cachedHeight(ViewKind::world), mouse);
       if (kind == ViewKind::npc)
-        orbitInteraction(hovered, kind, s_.frame.npc.orbit,
-                         viewCameraOf(observerCamera(s_.frame.npc.orbit, double(cachedWidth(ViewKind::npc)) / cachedHeight(ViewKind::npc))),
+        orbitInteraction(hovered, kind, s_.display.npc.orbit,
+                         viewCameraOf(observerCamera(s_.display.npc.orbit, double(cachedWidth(ViewKind::npc)) / cachedHeight(ViewKind::npc))),
                          cachedWidth(ViewKind::npc), cachedHeight(ViewKind::npc), mouse);
       if (kind == ViewKind::morph) morphInteraction(hovered);
     }
@@ -363,7 +381,7 @@ void Viewer::morphInteraction(bool hovered) {
   ImGuiIO& io = ImGui::GetIO();
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) s_.drag = {Drag::Kind::orbit, ViewKind::morph, Handle::none};
   if (s_.drag.view == ViewKind::morph && s_.drag.kind == Drag::Kind::orbit && !ImGui::IsMouseClicked(ImGuiMouseButton_Left))
-    orbitBy(s_.frame.morphing.orbit, io.MouseDelta.x * 0.4, io.MouseDelta.y * 0.4);
+    orbitBy(s_.display.morphing.orbit, io.MouseDelta.x * 0.4, io.MouseDelta.y * 0.4);
 }
 
 // Where the world view's handles are, in screen units (ViewerState::rects "handle.vrp", "handle.prp",
@@ -394,7 +412,7 @@ void Viewer::worldInteraction(bool hovered, const ViewCamera& observer, int w, i
                  s_.keepAspect ? std::optional(s_.doc.scene().device.aspect()) : std::nullopt);
     return;
   }
-  orbitInteraction(hovered, ViewKind::world, s_.frame.world.orbit, observer, w, h, mouse);
+  orbitInteraction(hovered, ViewKind::world, s_.display.world.orbit, observer, w, h, mouse);
 }
 
 }  // namespace vplab

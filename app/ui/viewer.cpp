@@ -87,11 +87,11 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
     throw Error("ImGui's OpenGL3 renderer could not be initialised on the " + std::string(context.backend()) +
                 " context (it loads OpenGL through libGL.so.1: use a window or the EGL backend)");
   }
-  s_.frame.camera.style = Style::shaded;
+  s_.display.camera.style = Style::shaded;
   s_.antialias = !context.softwareRenderer();
   s_.uiScale = uiScale;
   s_.presets = listPresetScenes();
-  s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
+  s_.display.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
   updateRun();
 }
 
@@ -223,8 +223,8 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   ImGui_ImplOpenGL3_NewFrame();
   ImGui::NewFrame();
   if (s_.morphPlaying) {
-    s_.frame.morphing.t = std::min(4.0, s_.frame.morphing.t + ImGui::GetIO().DeltaTime * s_.morphSpeed);
-    if (s_.frame.morphing.t >= 4) s_.morphPlaying = false;
+    s_.display.morphing.t = std::min(4.0, s_.display.morphing.t + ImGui::GetIO().DeltaTime * s_.morphSpeed);
+    if (s_.display.morphing.t >= 4) s_.morphPlaying = false;
   }
   if (width != lastWidth_ || height != lastHeight_) relayout_ = true;
   lastWidth_ = width;
@@ -457,7 +457,7 @@ void Viewer::shortcuts() {
   if (pressed(keys::kF12) && !session_.browser()) screenshotRequested_ = true;
   if (pressed(keys::kEscape)) s_.probe.reset();
   for (int i = 0; i < 5; ++i)
-    if (pressed(keys::kDigit1 + i)) s_.frame.camera.style = s_.frame.world.style = s_.frame.npc.style = Style(i);
+    if (pressed(keys::kDigit1 + i)) s_.display.camera.style = s_.display.world.style = s_.display.npc.style = Style(i);
   if (pressed(keys::kP)) {
     Camera& c = s_.doc.scene().camera;
     c.projection = Projection((int(c.projection) + 1) % 3);
@@ -465,8 +465,8 @@ void Viewer::shortcuts() {
   if (pressed(keys::kC)) s_.pipeline.strategy = ClipStrategy((int(s_.pipeline.strategy) + 1) % 3);
   if (pressed(keys::kB)) s_.pipeline.boundingBoxTest = !s_.pipeline.boundingBoxTest;
   if (pressed(keys::kR)) {
-    s_.frame.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
-    s_.frame.npc.orbit = defaultNpcOrbit();
+    s_.display.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
+    s_.display.npc.orbit = defaultNpcOrbit();
   }
 }
 
@@ -482,7 +482,7 @@ RenderRequest shownViewRequest(const ViewerState& s, ViewKind kind, int width, i
   r.height = height;
   r.pipeline = s.pipeline;
   r.scale = scale;
-  r.frame = s.frame;
+  r.display = s.display;
   return r;
 }
 
@@ -520,7 +520,7 @@ void Viewer::exportMenu() {
                      }
                    });
     }
-    const std::optional<std::string> why = svgExportError(e.kind, s_.doc.shown(), s_.frame);
+    const std::optional<std::string> why = svgExportError(e.kind, s_.doc.shown(), s_.display);
     const std::string svg = std::string(e.name) + " view as SVG…";
     const bool svgChosen = ImGui::MenuItem(svg.c_str(), nullptr, false, !why && texture != 0);
     ui::recordRect(s_, ("export." + std::string(toString(e.kind)) + ".svg").c_str());

@@ -47,7 +47,7 @@ struct ViewerState {
   explicit ViewerState(Scene scene) : doc(std::move(scene)) {}
 
   Document doc;
-  FrameSettings frame;
+  DisplaySettings display;     // how the views show the scene: styles, observers, overlays, highlights
   PipelineOptions pipeline{ClipStrategy::npc, false, true};
   /// The CPU pipeline's run of doc.shown(), published whole (app/ui/viewer.h, updateRun): the
   /// render thread draws from the same run, never a copy.

@@ -98,7 +98,7 @@ void addVanishingPoints(const PipelineRun& run, int sceneIndex, const PixelsFrom
 DisplayList cameraView(const ViewInput& in) {
   const Scene& scene = in.scene;
   const PipelineRun& run = in.run;
-  const FrameSettings& s = in.settings;
+  const DisplaySettings& s = in.settings;
   const int w = in.width, h = in.height;
   const float scale = in.text.scale();
 

@@ -93,7 +93,7 @@ DepthPlot depthPlot(const PipelineRun& run, int width, int plotHeight, const Tex
     throw Error("the depth plot needs at least " + std::to_string(kMinSidePx) + " pixels for its width and its plot's "
                 "height, not " + std::to_string(width) + " × " + std::to_string(plotHeight) + " (a larger --size)");
   const Camera& c = run.camera;
-  const ViewFrame& f = run.frame;
+  const VrcAxes& f = run.vrc;
   const Metrics m(text);
   DepthPlot out;
   out.back = c.back;

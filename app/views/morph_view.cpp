@@ -43,7 +43,7 @@ StageValues cornerStages(const PipelineRun& run, const Inverses& inv, int i) {
 
 void morphView(const ViewInput& in, DisplayList& list) {
   const PipelineRun& run = in.run;
-  const FrameSettings& s = in.settings;
+  const DisplaySettings& s = in.settings;
   const int w = in.width, h = in.height;
   const float scale = in.text.scale();
 

@@ -47,7 +47,7 @@ void addCube(Marks& b, std::vector<TextLabel>& labels, const ViewCamera& view, i
 
 void npcView(const ViewInput& in, DisplayList& list) {
   const PipelineRun& run = in.run;
-  const FrameSettings& s = in.settings;
+  const DisplaySettings& s = in.settings;
   const int w = in.width, h = in.height;
   const float scale = in.text.scale();
   const Style style = s.npc.style;

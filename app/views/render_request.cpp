@@ -2,8 +2,8 @@
 
 namespace vplab {
 
-FrameSettings frameSettingsFor(const Scene& scene, Style style, double aspect) {
-  FrameSettings s;
+DisplaySettings displaySettingsFor(const Scene& scene, Style style, double aspect) {
+  DisplaySettings s;
   s.camera.style = style;
   s.world = {style, defaultWorldOrbit(scene, aspect)};
   s.npc = {style, defaultNpcOrbit()};
@@ -22,10 +22,10 @@ PipelineOptions pipelineOptionsOf(const RenderRequest& request) {
   return options;
 }
 
-FrameSettings frameSettingsOf(const RenderRequest& request, const Scene& scene) {
-  if (request.frame) return *request.frame;
+DisplaySettings displaySettingsOf(const RenderRequest& request, const Scene& scene) {
+  if (request.display) return *request.display;
   const PixelSize size = pixelSizeOf(request, scene);
-  FrameSettings settings = frameSettingsFor(scene, request.style, double(size.width) / size.height);
+  DisplaySettings settings = displaySettingsFor(scene, request.style, double(size.width) / size.height);
   settings.morphing.t = request.morphT;
   return settings;
 }

@@ -13,22 +13,22 @@ namespace vplab {
 
 struct RenderRequest {
   ViewKind view = ViewKind::camera;
-  Style style = Style::flat;  // of every view (without `frame`)
+  Style style = Style::flat;  // of every view (without `display`)
   int width = 0, height = 0;  // pixels of the view (ViewKind::all: of each of its panels); 0: the scene's device
-  double morphT = 0;          // the stage morph's t, 0 (MC) to 4 (DC) (ViewKind::morph; without `frame`)
+  double morphT = 0;          // the stage morph's t, 0 (MC) to 4 (DC) (ViewKind::morph; without `display`)
   /// The CPU pipeline's run the view shows (with clipEdges: the wireframe styles and overlays draw
   /// the clipped edges).
   PipelineOptions pipeline{ClipStrategy::npc, false, true};
   float scale = 1.f;  // text, line widths and markers (lecture mode on a projector, the viewer's UI scale)
   /// Every view setting as the viewer shows it (each view's style and observer, the overlays, the
   /// probe, the step-through, the morph); nullopt: `vplab render`'s, from `style` and `morphT`
-  /// (frameSettingsFor).
-  std::optional<FrameSettings> frame = std::nullopt;
+  /// (displaySettingsFor).
+  std::optional<DisplaySettings> display = std::nullopt;
 };
 
-/// The frame settings `vplab render` uses: the style for every view, the default observers framed for
+/// The display settings `vplab render` uses: the style for every view, the default observers framed for
 /// views of the given aspect ratio (width / height).
-FrameSettings frameSettingsFor(const Scene& scene, Style style, double aspect);
+DisplaySettings displaySettingsFor(const Scene& scene, Style style, double aspect);
 
 /// The view's size in pixels: the request's, the scene's device W × H where the request says 0.
 struct PixelSize {
@@ -40,8 +40,8 @@ PixelSize pixelSizeOf(const RenderRequest& request, const Scene& scene);
 /// divide-first comparison is always the divide-first strategy's run (what the viewer shows it from).
 PipelineOptions pipelineOptionsOf(const RenderRequest& request);
 
-/// The frame settings the request is drawn with: its `frame`, or frameSettingsFor its style at its
+/// The display settings the request is drawn with: its `display`, or displaySettingsFor its style at its
 /// size's aspect ratio with its morph t.
-FrameSettings frameSettingsOf(const RenderRequest& request, const Scene& scene);
+DisplaySettings displaySettingsOf(const RenderRequest& request, const Scene& scene);
 
 }  // namespace vplab

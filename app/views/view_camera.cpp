@@ -5,7 +5,7 @@
 namespace vplab {
 
 ViewCamera viewCameraOf(const Camera& camera) {
-  const ViewFrame frame = viewFrame(camera);
+  const VrcAxes frame = vrcAxes(camera);
   ViewCamera v;
   v.camera = camera;
   v.vrcFromWc = vrcFromWc(frame, camera.vrp);

@@ -95,7 +95,7 @@ struct MorphSettings {
   bool operator==(const MorphSettings&) const = default;
 };
 
-struct FrameSettings {
+struct DisplaySettings {
   ViewSettings camera{Style::flat, {}};
   ViewSettings world{Style::shaded, {}};
   ViewSettings npc{Style::shaded, defaultNpcOrbit()};
@@ -104,7 +104,7 @@ struct FrameSettings {
   OverlaySettings overlays;
   Highlights highlights;
   // Equal settings draw equal views (the viewer reuses a view's last image, app/ui/view_windows.cpp).
-  bool operator==(const FrameSettings&) const = default;
+  bool operator==(const DisplaySettings&) const = default;
 };
 
 /// What a view is built from. `run` is the CPU pipeline's run of `scene` (with clipEdges for the
@@ -112,7 +112,7 @@ struct FrameSettings {
 struct ViewInput {
   const Scene& scene;
   const PipelineRun& run;
-  const FrameSettings& settings;
+  const DisplaySettings& settings;
   int width = 0, height = 0;  // each view's pixels (ViewKind::all: each of its three panels)
   const TextMetrics& text;    // measures the labels; its scale() grows text, lines and markers
 };

@@ -167,17 +167,17 @@ DisplayList worldView(const ViewInput& in) {
   if (ov.cameraAxes) {
     const Camera& cam = run.camera;
     const double len = 0.3 * std::max(cam.window.width(), cam.window.height());
-    addArrow(b, cam.vrp, cam.vrp + len * run.frame.u, view.camera.prp, theme::kU);
-    addArrow(b, cam.vrp, cam.vrp + len * run.frame.v, view.camera.prp, theme::kV);
-    addArrow(b, cam.vrp, cam.vrp + len * run.frame.n, view.camera.prp, theme::kN);
+    addArrow(b, cam.vrp, cam.vrp + len * run.vrc.u, view.camera.prp, theme::kU);
+    addArrow(b, cam.vrp, cam.vrp + len * run.vrc.v, view.camera.prp, theme::kV);
+    addArrow(b, cam.vrp, cam.vrp + len * run.vrc.n, view.camera.prp, theme::kN);
     addArrow(b, cam.vrp, cam.vrp + len * glm::normalize(cam.vup), view.camera.prp, theme::kVup, theme::kDashPx);
     b.point(cam.vrp, theme::kVrp, theme::kPointSize);
     b.point(cam.prp, theme::kPrp, theme::kPointSize);
     if (cam.projection == Projection::perspective)
       b.line(cam.vrp, cam.prp, glm::vec4(glm::vec3(theme::kN), 0.5f), 1.5f, theme::kDashPx);
-    label(cam.vrp + len * run.frame.u, "U", theme::kU);
-    label(cam.vrp + len * run.frame.v, "V", theme::kV);
-    label(cam.vrp + len * run.frame.n, "N", theme::kN);
+    label(cam.vrp + len * run.vrc.u, "U", theme::kU);
+    label(cam.vrp + len * run.vrc.v, "V", theme::kV);
+    label(cam.vrp + len * run.vrc.n, "N", theme::kN);
     label(cam.vrp + len * glm::normalize(cam.vup), "VUP", theme::kVup);
     label(cam.vrp, "VRP", theme::kVrp, {8, 12});
     label(cam.prp, "PRP", theme::kPrp);

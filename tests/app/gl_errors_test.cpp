@@ -24,8 +24,8 @@ const Style kStyles[] = {Style::flat, Style::shaded, Style::wire, Style::hiddenL
 
 /// Frame settings with everything that draws switched on: every overlay, a probed vertex in each
 /// view's space and every camera handle, one of them hot.
-FrameSettings everythingOn(const Scene& scene, const PipelineRun& run, Style style, double aspect) {
-  FrameSettings s = frameSettingsFor(scene, style, aspect);
+DisplaySettings everythingOn(const Scene& scene, const PipelineRun& run, Style style, double aspect) {
+  DisplaySettings s = displaySettingsFor(scene, style, aspect);
   s.overlays = OverlaySettings{};
   s.overlays.cpuPolygons = true;
   s.overlays.difference = true;

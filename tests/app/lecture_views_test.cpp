@@ -38,7 +38,7 @@ GlBackend& backend() {
 /// The view's picture of the scene drawn by the GL backend, from a run with `strategy`.
 Image drawn(ViewKind kind, const Scene& scene, ClipStrategy strategy, int w, int h) {
   const PipelineRun run = runPipeline(scene, {strategy, false, true});
-  const FrameSettings settings = frameSettingsFor(scene, Style::flat, double(w) / h);
+  const DisplaySettings settings = displaySettingsFor(scene, Style::flat, double(w) / h);
   return backend().render(buildPicture(kind, ViewInput{scene, run, settings, w, h, backend().text().atlas()}));
 }
 

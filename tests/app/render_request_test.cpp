@@ -35,15 +35,15 @@ TEST(RenderRequest, FrameSettingsAreTheViewersWhenGivenElseRendersOwn) {
   r.width = 400;
   r.height = 200;
   r.morphT = 2.5;
-  FrameSettings expected = frameSettingsFor(scene, Style::hiddenLine, 2.0);  // the request's aspect ratio
+  DisplaySettings expected = displaySettingsFor(scene, Style::hiddenLine, 2.0);  // the request's aspect ratio
   expected.morphing.t = 2.5;
-  EXPECT_EQ(frameSettingsOf(r, scene), expected);
-  FrameSettings viewer;
+  EXPECT_EQ(displaySettingsOf(r, scene), expected);
+  DisplaySettings viewer;
   viewer.world.style = Style::wire;
   viewer.overlays.labels = false;
   viewer.highlights.probeWc = Vec3(1, 2, 3);
-  r.frame = viewer;
-  EXPECT_EQ(frameSettingsOf(r, scene), viewer);  // style and morph t are then the frame's
+  r.display = viewer;
+  EXPECT_EQ(displaySettingsOf(r, scene), viewer);  // style and morph t are then the frame's
 }
 
 // renderImage draws the request's frame settings and scale exactly as the renderer draws them
@@ -59,12 +59,12 @@ TEST(RenderRequest, RenderImageDrawsTheRequestsSettingsAndScale) {
   const Image plain = renderImage(renderer, scene, r);
 
   RenderRequest noLabels = r;
-  noLabels.frame = frameSettingsOf(r, scene);
-  noLabels.frame->overlays.labels = false;
+  noLabels.display = displaySettingsOf(r, scene);
+  noLabels.display->overlays.labels = false;
   const Image withoutLabels = renderImage(renderer, scene, noLabels);
   EXPECT_GT(test::differingPixels(plain, withoutLabels), 100u) << "the labels are left out";
   const PipelineRun run = runPipeline(scene, r.pipeline);
-  EXPECT_EQ(test::differingPixels(withoutLabels, renderer.render(r.view, scene, run, *noLabels.frame, 320, 240)), 0u);
+  EXPECT_EQ(test::differingPixels(withoutLabels, renderer.render(r.view, scene, run, *noLabels.display, 320, 240)), 0u);
 
   RenderRequest large = r;
   large.scale = 2;
@@ -73,7 +73,7 @@ TEST(RenderRequest, RenderImageDrawsTheRequestsSettingsAndScale) {
   EXPECT_GT(test::differingPixels(plain, scaled), 100u) << "larger text, lines and markers";
   {
     ViewRenderer atTwo(*test::egl().context, 2.f);
-    EXPECT_EQ(test::differingPixels(scaled, atTwo.render(r.view, scene, run, frameSettingsOf(r, scene), 320, 240)), 0u);
+    EXPECT_EQ(test::differingPixels(scaled, atTwo.render(r.view, scene, run, displaySettingsOf(r, scene), 320, 240)), 0u);
   }
   EXPECT_EQ(test::differingPixels(renderImage(renderer, scene, r), plain), 0u) << "back at scale 1";
   EXPECT_EQ(renderer.scale(), 1.f);
@@ -88,15 +88,15 @@ TEST(RenderRequest, SvgOfRequestDrawsTheRequestsSettingsAndScale) {
   r.width = 300;
   r.height = 200;
   r.scale = 1.5f;
-  r.frame = frameSettingsOf(r, scene);
-  r.frame->overlays.cube = false;
-  r.frame->npc.style = Style::wire;
+  r.display = displaySettingsOf(r, scene);
+  r.display->overlays.cube = false;
+  r.display->npc.style = Style::wire;
   const PipelineRun run = runPipeline(scene, r.pipeline);
   const std::string svg = svgOfRequest(scene, r);
-  EXPECT_EQ(svg, svgOfView(ViewKind::npc, scene, run, *r.frame, 300, 200, 1.5f));
-  EXPECT_NE(svg, svgOfView(ViewKind::npc, scene, run, *r.frame, 300, 200, 1.f)) << "the scale counts";
+  EXPECT_EQ(svg, svgOfView(ViewKind::npc, scene, run, *r.display, 300, 200, 1.5f));
+  EXPECT_NE(svg, svgOfView(ViewKind::npc, scene, run, *r.display, 300, 200, 1.f)) << "the scale counts";
   RenderRequest withoutFrame = r;
-  withoutFrame.frame.reset();
+  withoutFrame.display.reset();
   EXPECT_NE(svg, svgOfRequest(scene, withoutFrame)) << "the frame settings count";
 }
 

@@ -90,7 +90,7 @@ TEST(Document, OpeningAPresetAfterEditsStartsACleanDocumentWithDefaultViewSettin
   EXPECT_FALSE(v->state().doc.dirty());
   EXPECT_FALSE(v->state().doc.canUndo());
   EXPECT_THAT(v->viewer().title(), ::testing::Not(HasSubstr("*")));
-  EXPECT_EQ(v->state().frame.world.style, FrameSettings{}.world.style);
+  EXPECT_EQ(v->state().display.world.style, DisplaySettings{}.world.style);
   v->key(keys::kZ, /*ctrl=*/true);  // undo has nothing to go back to
   EXPECT_EQ(v->state().doc.scene().camera.projection, Projection::parallel);
   EXPECT_EQ(v->state().doc.path(), preset("parallel.json"));

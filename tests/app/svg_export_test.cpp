@@ -323,8 +323,8 @@ struct Both {
   Image png;
 };
 
-FrameSettings settingsFor(const Scene& scene, Style style, int w, int h, bool labels) {
-  FrameSettings s = frameSettingsFor(scene, style, double(w) / h);
+DisplaySettings settingsFor(const Scene& scene, Style style, int w, int h, bool labels) {
+  DisplaySettings s = displaySettingsFor(scene, style, double(w) / h);
   s.overlays.labels = labels;
   return s;
 }
@@ -332,7 +332,7 @@ FrameSettings settingsFor(const Scene& scene, Style style, int w, int h, bool la
 Both renderBoth(ViewKind view, Style style, bool labels = false, int w = kWidth, int h = kHeight) {
   const Scene scene = defaultScene();
   const PipelineRun run = runPipeline(scene, RenderRequest{}.pipeline);
-  const FrameSettings s = settingsFor(scene, style, w, h, labels);
+  const DisplaySettings s = settingsFor(scene, style, w, h, labels);
   Both b;
   b.svgText = svgOfView(view, scene, run, s, w, h);
   b.svg = parseSvg(b.svgText);
@@ -427,7 +427,7 @@ TEST(SvgExport, IsWellFormedWithThePngsSize) {
       SCOPED_TRACE(name(view, style));
       const int w = 400, h = 300;
       const std::string text =
-          svgOfView(view, scene, run, frameSettingsFor(scene, style, double(w) / h), w, h);
+          svgOfView(view, scene, run, displaySettingsFor(scene, style, double(w) / h), w, h);
       Svg svg;
       ASSERT_NO_THROW(svg = parseSvg(text));
       EXPECT_EQ(text.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n", 0), 0u);
@@ -436,7 +436,7 @@ TEST(SvgExport, IsWellFormedWithThePngsSize) {
       EXPECT_EQ(*svg.root.attribute("xmlns"), "http://www.w3.org/2000/svg");
       // The PNG's size ("all": three panels and the title strip).
       const Image png =
-          test::egl().renderer->render(view, scene, run, frameSettingsFor(scene, style, double(w) / h), w, h);
+          test::egl().renderer->render(view, scene, run, displaySettingsFor(scene, style, double(w) / h), w, h);
       const int totalW = png.width, totalH = png.height;
       if (view == ViewKind::all)
         EXPECT_EQ(totalW, 3 * w + 12);
@@ -446,7 +446,7 @@ TEST(SvgExport, IsWellFormedWithThePngsSize) {
       EXPECT_EQ(*svg.root.attribute("height"), std::to_string(totalH));
       EXPECT_EQ(*svg.root.attribute("viewBox"),
                 "0 0 " + std::to_string(totalW) + " " + std::to_string(totalH));
-      // The morph view draws every style filled (frameSettingsFor), with its polygons' outlines.
+      // The morph view draws every style filled (displaySettingsFor), with its polygons' outlines.
       if (isFilled(style) || view == ViewKind::morph) {
         EXPECT_GT(svg.polygons.size(), 5u);
       } else {  // no faces: the translucent overlays only (the window, the volume's faces, the cube's front)
@@ -484,20 +484,20 @@ TEST(SvgExport, OnlyAHugeDocumentIsDeclined) {
   const PipelineRun run = runPipeline(scene, RenderRequest{}.pipeline);
   for (ViewKind view : {ViewKind::camera, ViewKind::world, ViewKind::npc, ViewKind::morph, ViewKind::all})
     for (Style style : {Style::flat, Style::shaded, Style::wire}) {
-      const FrameSettings s = frameSettingsFor(scene, style, 4.0 / 3.0);
+      const DisplaySettings s = displaySettingsFor(scene, style, 4.0 / 3.0);
       EXPECT_FALSE(svgExportError(view, scene, s)) << *svgExportError(view, scene, s);
     }
-  EXPECT_NO_THROW(svgOfView(ViewKind::morph, scene, run, frameSettingsFor(scene, Style::shaded, 4.0 / 3.0), 320, 240));
-  EXPECT_THROW(svgOfView(ViewKind::camera, scene, run, frameSettingsFor(scene, Style::wire, 4.0 / 3.0), 0, 240), Error);
+  EXPECT_NO_THROW(svgOfView(ViewKind::morph, scene, run, displaySettingsFor(scene, Style::shaded, 4.0 / 3.0), 320, 240));
+  EXPECT_THROW(svgOfView(ViewKind::camera, scene, run, displaySettingsFor(scene, Style::wire, 4.0 / 3.0), 0, 240), Error);
 
   const Scene large = loadScene(VPLAB_ASSETS "/scenes/large-mesh.json");
-  const FrameSettings shaded = frameSettingsFor(large, Style::shaded, 4.0 / 3.0);
+  const DisplaySettings shaded = displaySettingsFor(large, Style::shaded, 4.0 / 3.0);
   const std::optional<std::string> why = svgExportError(ViewKind::camera, large, shaded);
   ASSERT_TRUE(why);
   EXPECT_NE(why->find(std::to_string(kMaxSvgFaces)), std::string::npos) << *why;
   EXPECT_NE(why->find("PNG"), std::string::npos) << *why;
   // Its wireframe styles draw no filled faces: they are exported.
-  EXPECT_FALSE(svgExportError(ViewKind::camera, large, frameSettingsFor(large, Style::hiddenLine, 4.0 / 3.0)));
+  EXPECT_FALSE(svgExportError(ViewKind::camera, large, displaySettingsFor(large, Style::hiddenLine, 4.0 / 3.0)));
   const PipelineRun largeRun = runPipeline(large, RenderRequest{}.pipeline);
   try {
     svgOfView(ViewKind::camera, large, largeRun, shaded, 320, 240);
@@ -538,8 +538,8 @@ TEST(SvgExport, HiddenPartsAreWhereThePngDashes) {
     SCOPED_TRACE(toString(view));
     const Scene scene = defaultScene();
     const PipelineRun run = runPipeline(scene, RenderRequest{}.pipeline);
-    const FrameSettings line = settingsFor(scene, Style::hiddenLine, kWidth, kHeight, false);
-    const FrameSettings removed = settingsFor(scene, Style::hiddenRemoved, kWidth, kHeight, false);
+    const DisplaySettings line = settingsFor(scene, Style::hiddenLine, kWidth, kHeight, false);
+    const DisplaySettings removed = settingsFor(scene, Style::hiddenRemoved, kWidth, kHeight, false);
     const Svg svg = parseSvg(svgOfView(view, scene, run, line, kWidth, kHeight));
     const Image dashes = test::egl().renderer->render(view, scene, run, line, kWidth, kHeight);
     const Image none = test::egl().renderer->render(view, scene, run, removed, kWidth, kHeight);
@@ -588,7 +588,7 @@ TEST(SvgExport, HiddenRemovedHasNoDashedEdgesAndHiddenLineHasSome) {
     SCOPED_TRACE(toString(view));
     auto svgOf = [&](Style style) {
       return parseSvg(
-          svgOfView(view, scene, run, frameSettingsFor(scene, style, 4.0 / 3.0), kWidth, kHeight));
+          svgOfView(view, scene, run, displaySettingsFor(scene, style, 4.0 / 3.0), kWidth, kHeight));
     };
     const Svg wire = svgOf(Style::wire), line = svgOf(Style::hiddenLine),
               removed = svgOf(Style::hiddenRemoved);
@@ -645,7 +645,7 @@ TEST(SvgExport, CameraViewEndsClippedEdgesOnTheWindowBorder) {
   for (Style style : {Style::wire, Style::hiddenLine}) {
     SCOPED_TRACE(toString(style));
     const Svg svg = parseSvg(
-        svgOfView(ViewKind::camera, scene, run, frameSettingsFor(scene, style, 4.0 / 3.0), kWidth, kHeight));
+        svgOfView(ViewKind::camera, scene, run, displaySettingsFor(scene, style, 4.0 / 3.0), kWidth, kHeight));
     for (const Vec2& cut : cuts) {
       bool found = false;
       for (const SvgLine& l : svg.lines)

@@ -59,7 +59,7 @@ std::string name(ViewKind v, Style s) { return std::string(toString(v)) + "-" + 
 void maskLabels(Image& image, const Scene& scene, const RenderRequest& request) {
   const PixelSize size = pixelSizeOf(request, scene);
   const PipelineRun run = runPipeline(scene, pipelineOptionsOf(request));
-  const FrameSettings settings = frameSettingsOf(request, scene);
+  const DisplaySettings settings = displaySettingsOf(request, scene);
   const FontAtlas fonts(request.scale);
   const draw::Picture picture =
       buildPicture(request.view, ViewInput{scene, run, settings, size.width, size.height, fonts});

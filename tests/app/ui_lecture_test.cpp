@@ -184,7 +184,7 @@ TEST(UiLecture, NoTextIsCutOffAtAnyScale) {
   shown.push_back({"probe and step-through", [&](HeadlessViewer& v) {
                      v.state().probe = Probe{0, 0};
                      v.state().stepThrough = {true, 2, 0, 3};
-                     v.state().frame.overlays.vanishingPoints = true;
+                     v.state().display.overlays.vanishingPoints = true;
                      v.frames(2);
                      clickTab(v, "tab.controls.Lecture");
                    }});

@@ -78,8 +78,8 @@ void expectRunFinite(const PipelineRun& run) {
   EXPECT_TRUE(finite(run.npcFromVrc));
   EXPECT_TRUE(finite(run.dcFromNpc));
   EXPECT_TRUE(finite(run.npcFromWc));
-  EXPECT_TRUE(finite(run.frame.u) && finite(run.frame.v) && finite(run.frame.n));
-  EXPECT_TRUE(std::isfinite(run.frame.vpd) && std::isfinite(run.frame.dmin) && std::isfinite(run.frame.dmax));
+  EXPECT_TRUE(finite(run.vrc.u) && finite(run.vrc.v) && finite(run.vrc.n));
+  EXPECT_TRUE(std::isfinite(run.vrc.vpd) && std::isfinite(run.vrc.dmin) && std::isfinite(run.vrc.dmax));
   size_t values = 0, bad = 0;
   for (const ObjectRun& o : run.objects) {
     for (uint32_t v = 0; v < o.vertexCount(); ++v) bad += !finite(o.wc(v)) + !finite(o.vrc(v)), values += 2;
@@ -136,7 +136,7 @@ ViewCamera worldObserver(HeadlessViewer& v, int* w, int* h) {
   const ImVec4 r = v.state().rects.at("view.world");
   *w = int(r.z);
   *h = int(r.w);
-  return viewCameraOf(observerCamera(v.state().frame.world.orbit, double(*w) / *h));
+  return viewCameraOf(observerCamera(v.state().display.world.orbit, double(*w) / *h));
 }
 
 /// A WC point's position in the window, seen through the world view's observer.
@@ -214,7 +214,7 @@ TEST(Ui, ClickingAVertexInTheCameraViewProbesIt) {
   ASSERT_TRUE(v->state().probe) << "nothing picked at " << x << ", " << y;
   EXPECT_EQ(*v->state().probe, first);
   // Every view marks it: its position in DC, WC and NPC.
-  const Highlights& hl = v->state().frame.highlights;
+  const Highlights& hl = v->state().display.highlights;
   ASSERT_TRUE(hl.probeDc && hl.probeWc && hl.probeNpc);
   EXPECT_EQ(*hl.probeDc, dc);
   // The probe panel (the inspector's first tab) shows it instead of its hint, and the camera view
@@ -418,7 +418,7 @@ TEST(Ui, TwoViewersCoexist) {
   const double x = r.x + 30, y = r.y + r.w - 30;  // the bottom-left corner: no handle there
   b.drag(x, y, x + 60, y);
   a.frames(1);
-  EXPECT_NE(b.state().frame.world.orbit.yawDeg, a.state().frame.world.orbit.yawDeg);
+  EXPECT_NE(b.state().display.world.orbit.yawDeg, a.state().display.world.orbit.yawDeg);
 }
 
 // ---------------------------------------------------------------- the observer
@@ -427,7 +427,7 @@ TEST(Ui, TwoViewersCoexist) {
 // the world view changes, the scene camera and its view do not, and nothing is recorded for undo.
 TEST(Ui, OrbitingTheWorldViewChangesTheObserverOnly) {
   auto v = makeViewer();
-  const Orbit before = v->state().frame.world.orbit;
+  const Orbit before = v->state().display.world.orbit;
   const Camera camera = v->state().doc.scene().camera;
   const Image worldBefore = region(*v, rectOf(*v, "view.world"));
   const Image cameraBefore = region(*v, rectOf(*v, "view.camera"));
@@ -441,7 +441,7 @@ TEST(Ui, OrbitingTheWorldViewChangesTheObserverOnly) {
   v->drag(x, y, x + 60, y);
   v->frames(1);
 
-  const Orbit after = v->state().frame.world.orbit;
+  const Orbit after = v->state().display.world.orbit;
   EXPECT_NEAR(std::remainder(before.yawDeg - after.yawDeg, 360.0), 60 * 0.4, 1e-6);
   EXPECT_EQ(after.pitchDeg, before.pitchDeg);
   EXPECT_EQ(after.distance, before.distance);
@@ -455,7 +455,7 @@ TEST(Ui, OrbitingTheWorldViewChangesTheObserverOnly) {
   v->mouseMove(x, y);
   v->wheel(2);
   v->frames(2);
-  EXPECT_NEAR(v->state().frame.world.orbit.distance, after.distance * 0.88 * 0.88, 1e-9);
+  EXPECT_NEAR(v->state().display.world.orbit.distance, after.distance * 0.88 * 0.88, 1e-9);
 }
 
 // The style keys 1 … 5 set every view's style; the camera view's pixels change with it.
@@ -463,9 +463,9 @@ TEST(Ui, StyleKeysSetEveryView) {
   auto v = makeViewer();
   const Image shaded = region(*v, rectOf(*v, "view.camera"));
   v->key(keys::kDigit1 + 2);  // 3: wire
-  EXPECT_EQ(v->state().frame.camera.style, Style::wire);
-  EXPECT_EQ(v->state().frame.world.style, Style::wire);
-  EXPECT_EQ(v->state().frame.npc.style, Style::wire);
+  EXPECT_EQ(v->state().display.camera.style, Style::wire);
+  EXPECT_EQ(v->state().display.world.style, Style::wire);
+  EXPECT_EQ(v->state().display.npc.style, Style::wire);
   EXPECT_TRUE(differsNoticeably(region(*v, rectOf(*v, "view.camera")), shaded, 0.1));
   v->key(keys::kDigit1 + 1);  // 2: shaded, as the viewer starts
   EXPECT_EQ(test::differingPixels(region(*v, rectOf(*v, "view.camera")), shaded), 0u);
@@ -485,17 +485,17 @@ TEST(Ui, APressFarFromTheLastPointerPositionDoesNotTurnTheWorldView) {
   const double x0 = r.x + r.w * 0.2, y0 = r.y + r.h * 0.85, x1 = r.x + r.w * 0.8, y1 = r.y + r.h * 0.15;
   v->mouseMove(x0, y0);
   v->frames(2);
-  const Orbit before = v->state().frame.world.orbit;
+  const Orbit before = v->state().display.world.orbit;
   v->mouseMove(x1, y1);  // the jump and the press in one frame, as a touch arrives
   v->mouseButton(0, true);
   v->frame();
-  EXPECT_EQ(v->state().frame.world.orbit, before);
+  EXPECT_EQ(v->state().display.world.orbit, before);
   v->mouseMove(x1 + 10, y1);
   v->frame();
   v->mouseButton(0, false);
   v->frame();
-  EXPECT_NEAR(v->state().frame.world.orbit.yawDeg, before.yawDeg - 4, 1e-9) << "10 px at 0.4 degrees per pixel";
-  EXPECT_EQ(v->state().frame.world.orbit.pitchDeg, before.pitchDeg);
+  EXPECT_NEAR(v->state().display.world.orbit.yawDeg, before.yawDeg - 4, 1e-9) << "10 px at 0.4 degrees per pixel";
+  EXPECT_EQ(v->state().display.world.orbit.pitchDeg, before.pitchDeg);
 }
 
 }  // namespace

@@ -133,7 +133,7 @@ TEST(UrlState, AViewerShowsALinkAsItWasWritten) {
   a.frames(2);
   Camera& c = a.state().doc.scene().camera;
   c.prp += Vec3(0.25, -0.5, 0.125);
-  a.state().frame.world.orbit.yawDeg = 12.5;
+  a.state().display.world.orbit.yawDeg = 12.5;
   a.frames(2);
   const std::string link = encodeUrlState(a.viewer().session().urlState());
   EXPECT_THAT(link, HasSubstr("scene=perspective&"));

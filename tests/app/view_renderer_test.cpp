@@ -18,7 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // The world view as the viewer draws it on a software renderer: one sample per pixel.
-Image drawWorld(ViewRenderer& renderer, const Scene& scene, const FrameSettings& settings, bool partitioned) {
+Image drawWorld(ViewRenderer& renderer, const Scene& scene, const DisplaySettings& settings, bool partitioned) {
   const PipelineRun run = runPipeline(scene, {ClipStrategy::npc, false, true});
   gl::RenderTarget target(renderer.context().gl());
   target.resize(400, 300, 1);
@@ -33,7 +33,7 @@ void expectSamePictures(const Scene& scene, const std::string& name) {
   ViewRenderer& renderer = *test::egl().renderer;
   for (Style style : {Style::shaded, Style::flat}) {
     for (const auto& [yaw, pitch] : {std::pair{0.0, 0.0}, {70.0, -15.0}, {160.0, 40.0}}) {
-      FrameSettings settings = frameSettingsFor(scene, style, 400.0 / 300.0);
+      DisplaySettings settings = displaySettingsFor(scene, style, 400.0 / 300.0);
       orbitBy(settings.world.orbit, yaw, pitch);
       const Image all = drawWorld(renderer, scene, settings, false);
       const Image parts = drawWorld(renderer, scene, settings, true);
@@ -53,7 +53,7 @@ TEST(ViewRenderer, EveryPictureIsOpaque) {
   const PipelineRun run = runPipeline(scene, {ClipStrategy::npc, false, true});
   for (ViewKind kind : {ViewKind::camera, ViewKind::world, ViewKind::npc, ViewKind::morph, ViewKind::all}) {
     for (Style style : {Style::shaded, Style::hiddenLine}) {
-      FrameSettings settings = frameSettingsFor(scene, style, 400.0 / 300.0);
+      DisplaySettings settings = displaySettingsFor(scene, style, 400.0 / 300.0);
       settings.morphing.t = 2.5;
       const Image image = renderer.render(kind, scene, run, settings, 400, 300);
       size_t translucent = 0;
@@ -91,7 +91,7 @@ TEST(WorldViewPartition, SamePixelsOnACutSphere) { expectSamePictures(cutSphere(
 TEST(WorldViewPartition, EachPassDrawsAboutTheFacesOnItsSide) {
   const Scene scene = cutSphere();
   ViewRenderer& renderer = *test::egl().renderer;
-  drawWorld(renderer, scene, frameSettingsFor(scene, Style::shaded, 400.0 / 300.0), true);
+  drawWorld(renderer, scene, displaySettingsFor(scene, Style::shaded, 400.0 / 300.0), true);
   size_t triangles = 0;
   const Mesh& mesh = *scene.objects[0].mesh;
   for (size_t f = 0; f < mesh.faceCount(); ++f) triangles += mesh.face(f).size() - 2;

@@ -70,7 +70,7 @@ Frames untilIdle(HeadlessViewer& v, double timeout) {
 }
 
 void setStyle(HeadlessViewer& v, Style style) {
-  FrameSettings& f = v.state().frame;
+  DisplaySettings& f = v.state().display;
   f.camera.style = f.world.style = f.npc.style = style;
 }
 

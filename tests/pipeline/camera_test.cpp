@@ -34,7 +34,7 @@ TEST(Camera, FrameIsRightHandedAndOrthonormal) {
   test::Rng rng(1);
   for (int k = 0; k < 200; ++k) {
     const Camera c = test::randomCamera(rng, Projection::perspective);
-    const ViewFrame f = viewFrame(c);
+    const VrcAxes f = vrcAxes(c);
     EXPECT_NEAR(glm::length(f.u), 1, 1e-12);
     EXPECT_NEAR(glm::length(f.v), 1, 1e-12);
     EXPECT_NEAR(glm::length(f.n), 1, 1e-12);
@@ -59,7 +59,7 @@ TEST(Camera, VrcFromWcPlacesTheCamera) {
   c.prp = {4, 2, 3};  // N = (0.6, 0.8, 0), VPD 5
   c.vup = {0, 0, 7};
   const Mat4 m = vrcFromWc(c);
-  const ViewFrame f = viewFrame(c);
+  const VrcAxes f = vrcAxes(c);
   EXPECT_EQ(f.n, Vec3(0.6, 0.8, 0));
   EXPECT_EQ(f.vpd, 5);
   // U = VUP × N / |…| = (−0.8, 0.6, 0), V = N × U = (0, 0, 1). Tolerance 1e-15: unit values.
@@ -147,7 +147,7 @@ TEST(Camera, InvalidCamerasAreRefusedWithTheirValues) {
     const auto e = cameraError(b.camera);
     ASSERT_TRUE(e.has_value());
     for (const std::string& part : b.messageParts) EXPECT_THAT(*e, HasSubstr(part));
-    const std::string thrown = errorOf([&] { viewFrame(b.camera); });
+    const std::string thrown = errorOf([&] { vrcAxes(b.camera); });
     EXPECT_EQ(thrown, "invalid camera: " + *e);
     EXPECT_EQ(errorOf([&] { vrcFromWc(b.camera); }), thrown);
     EXPECT_EQ(errorOf([&] { npcFromVrc(b.camera); }), thrown);
@@ -213,7 +213,7 @@ TEST(Camera, ExtremeCamerasAreRefusedOrFinite) {
       continue;
     }
     ++accepted;
-    const ViewFrame f = viewFrame(c);
+    const VrcAxes f = vrcAxes(c);
     EXPECT_TRUE(isFinite(f.u) && isFinite(f.v) && isFinite(f.n) && isFinite(f.vpd)) << k;
     EXPECT_TRUE(isFinite(vrcFromWc(c))) << k;
     EXPECT_TRUE(isFinite(npcFromVrc(c))) << k;

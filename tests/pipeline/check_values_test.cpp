@@ -19,7 +19,7 @@ Vec3 dcOf(const Camera& c, const Device& d, const Vec3& wc) {
 }
 
 TEST(CheckValues, DerivedDistances) {
-  const ViewFrame f = viewFrame(checkCamera());
+  const VrcAxes f = vrcAxes(checkCamera());
   EXPECT_DOUBLE_EQ(f.vpd, 5);
   EXPECT_DOUBLE_EQ(f.dmin, 3);
   EXPECT_DOUBLE_EQ(f.dmax, 7);

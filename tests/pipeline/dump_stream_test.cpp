@@ -77,8 +77,8 @@ Json statsJson(const PipelineRun& run) {
 
 std::string formerDumpJson(const PipelineRun& run, int indent) {
   Json j;
-  j["camera"] = {{"u", toJson(run.frame.u)}, {"v", toJson(run.frame.v)}, {"n", toJson(run.frame.n)},
-                 {"vpd", run.frame.vpd}, {"dmin", run.frame.dmin}, {"dmax", run.frame.dmax},
+  j["camera"] = {{"u", toJson(run.vrc.u)}, {"v", toJson(run.vrc.v)}, {"n", toJson(run.vrc.n)},
+                 {"vpd", run.vrc.vpd}, {"dmin", run.vrc.dmin}, {"dmax", run.vrc.dmax},
                  {"projection", std::string(toString(run.camera.projection))}};
   j["device"] = {{"width", run.device.width}, {"height", run.device.height}};
   j["matrices"] = {{"vrc_from_wc", toJson(run.vrcFromWc)},

@@ -58,9 +58,9 @@ TEST(Dump, ContractKeysAndValues) {
   expectNoNullOrNaN(j);
 
   const Json& cam = j.at("camera");
-  expectVec(cam.at("u"), run.frame.u);
-  expectVec(cam.at("v"), run.frame.v);
-  expectVec(cam.at("n"), run.frame.n);
+  expectVec(cam.at("u"), run.vrc.u);
+  expectVec(cam.at("v"), run.vrc.v);
+  expectVec(cam.at("n"), run.vrc.n);
   EXPECT_EQ(cam.at("vpd").get<double>(), 5);
   EXPECT_EQ(cam.at("dmin").get<double>(), 3);
   EXPECT_EQ(cam.at("dmax").get<double>(), 7);

@@ -158,7 +158,7 @@ TEST(VanishingPoints, OneTwoThreePointPerspective) {
 
 TEST(DepthResolution, MatchesTheSlopeOfNpcDepth) {
   const Camera c = test::checkCamera();  // VPD 5, dmin 3, dmax 7
-  const ViewFrame f = viewFrame(c);
+  const VrcAxes f = vrcAxes(c);
   for (int bits : {16, 24}) {
     for (double z : {1.9, 0.0, -1.9}) {
       // The numeric slope of NPC z, by a central difference (h = 1e-5: error ~h² · z''' ≈ 1e-10).
@@ -172,7 +172,7 @@ TEST(DepthResolution, MatchesTheSlopeOfNpcDepth) {
   }
   Camera p = c;
   p.projection = Projection::parallel;
-  EXPECT_DOUBLE_EQ(depthResolution(p, viewFrame(p), 0.3, 16), 4.0 / 65535.0) << "(F − B) / (2^16 − 1)";
+  EXPECT_DOUBLE_EQ(depthResolution(p, vrcAxes(p), 0.3, 16), 4.0 / 65535.0) << "(F − B) / (2^16 − 1)";
 }
 
 }  // namespace

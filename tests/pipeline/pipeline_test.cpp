@@ -44,7 +44,7 @@ void expectSameRun(const PipelineRun& a, const PipelineRun& b) {
   EXPECT_TRUE(bitwiseEqual(a.wcFromNpc, b.wcFromNpc));
   EXPECT_EQ(a.camera.prp, b.camera.prp);
   EXPECT_EQ(a.camera.front, b.camera.front);
-  EXPECT_EQ(a.frame.vpd, b.frame.vpd);
+  EXPECT_EQ(a.vrc.vpd, b.vrc.vpd);
   EXPECT_EQ(a.device.width, b.device.width);
   EXPECT_EQ(a.options.strategy, b.options.strategy);
   EXPECT_EQ(a.sceneIndex, b.sceneIndex);

@@ -175,7 +175,7 @@ TEST(Strategies, DividedDepthBehindTheEyeIsNegative) {
   test::Rng rng(8080);
   for (int k = 0; k < 1000; ++k) {
     const Camera c = test::randomCamera(rng, Projection::perspective);
-    const ViewFrame f = viewFrame(c);
+    const VrcAxes f = vrcAxes(c);
     const double z = f.vpd + std::pow(10.0, rng.uniform(-6, 3));  // behind the eye
     const Vec4 h = npcFromVrc(c) * Vec4(rng.uniform(-5, 5), rng.uniform(-5, 5), z, 1);
     ASSERT_LT(h.w, 0);

@@ -135,7 +135,7 @@ TEST(ViewMapping, VrpLandsWhereTheWindowPutsIt) {
     // 1e-12: as for the corners.
     EXPECT_NEAR(npc.x, -w.xmin / w.width(), 1e-12);
     EXPECT_NEAR(npc.y, -w.ymin / w.height(), 1e-12);
-    EXPECT_NEAR(npc.z, npcDepthOfVrcZ(c, viewFrame(c), 0), 1e-12);
+    EXPECT_NEAR(npc.z, npcDepthOfVrcZ(c, vrcAxes(c), 0), 1e-12);
     const bool windowHoldsOrigin = w.xmin < 0 && w.xmax > 0 && w.ymin < 0 && w.ymax > 0;
     if (windowHoldsOrigin && c.back < 0 && c.front > 0) {
       EXPECT_EQ(test::outsideCube(npc), 0) << format(npc);
@@ -151,7 +151,7 @@ TEST(ViewMapping, PerspectiveHomogeneousFormulas) {
   test::Rng rng(0x51ab);
   for (int k = 0; k < 200; ++k) {
     const Camera c = test::randomCamera(rng, Projection::perspective);
-    const ViewFrame f = viewFrame(c);
+    const VrcAxes f = vrcAxes(c);
     const Mat4 m = npcFromVrc(c);
     const ViewWindow& w = c.window;
     const Vec3 p = rng.inBox(-20, 20);
@@ -176,7 +176,7 @@ TEST(ViewMapping, PerspectiveHomogeneousFormulas) {
 // the divided matrix result, and equal VRC steps from front to back give shrinking NPC steps.
 TEST(ViewMapping, PerspectiveDepthIsNonLinear) {
   const Camera c = checkCamera();
-  const ViewFrame f = viewFrame(c);
+  const VrcAxes f = vrcAxes(c);
   const Mat4 m = npcFromVrc(c);
   EXPECT_DOUBLE_EQ(npcDepthOfVrcZ(c, f, c.front), 1);
   EXPECT_DOUBLE_EQ(npcDepthOfVrcZ(c, f, c.back), 0);
@@ -209,7 +209,7 @@ TEST(ViewMapping, ParallelDepthIsLinear) {
   for (Projection p : {Projection::parallel, Projection::oblique}) {
     Camera c = checkCamera();
     c.projection = p;
-    const ViewFrame f = viewFrame(c);
+    const VrcAxes f = vrcAxes(c);
     const Mat4 m = npcFromVrc(c);
     for (int i = 0; i <= 8; ++i) {
       const double z = c.back + (c.front - c.back) * i / 8;

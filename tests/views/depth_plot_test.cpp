@@ -52,7 +52,7 @@ TEST(DepthPlot, NpcZRunsFromBackAtZeroToFrontAtOneAndRises) {
     }
     // Half way between B and F in VRC the curve is below half way up: perspective bends it
     // (the ticks crowd at B), the point plotted is NPC z of the middle.
-    const double mid = (c.back + c.front) / 2, d = npcDepthOfVrcZ(c, f.run.frame, mid);
+    const double mid = (c.back + c.front) / 2, d = npcDepthOfVrcZ(c, f.run.vrc, mid);
     EXPECT_LT(d, 0.5);
     EXPECT_NEAR(plot.at(mid, d).y, plot.plot.max.y - d * (plot.plot.max.y - plot.plot.min.y), 1e-3);
     // GL's window depth 1 − z: dashed (every other segment of the same steps), from (B, 1) down,

@@ -15,7 +15,7 @@ using namespace draw;
 struct DivideFirstFixture {
   Scene scene;
   PipelineRun run;
-  FrameSettings settings;
+  DisplaySettings settings;
   test::FixedMetrics text;
   explicit DivideFirstFixture(Scene s, ClipStrategy strategy = ClipStrategy::divideFirst)
       : scene(std::move(s)), run(runPipeline(scene, {strategy})) {}

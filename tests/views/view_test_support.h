@@ -27,7 +27,7 @@ class FixedMetrics : public TextMetrics {
 struct ViewFixture {
   Scene scene;
   PipelineRun run;
-  FrameSettings settings;
+  DisplaySettings settings;
   FixedMetrics text;
   int width, height;
   ViewFixture(Scene s, Style style, int w = 400, int h = 300, float scale = 1.f);
