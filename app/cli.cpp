@@ -6,7 +6,6 @@
 #include "app/render/headless.h"
 #include "app/ui/headless_viewer.h"
 #include "app/ui/run_viewer.h"
-#include "app/ui/widgets.h"
 #include "pipeline/dump.h"
 #include "pipeline/error.h"
 #include "pipeline/limits.h"
@@ -32,6 +31,16 @@ Scene sceneFrom(const std::string& path) { return path.empty() ? defaultScene() 
 // ---------------------------------------------------------------- option checks
 
 /// A finite number from lo to hi (CLI11's Range lets NaN through: every comparison with it is false).
+/// CLI::IsMember over every value of an enum, by its name (the enum's one table and toString), and
+/// any further names.
+template <typename Enum, size_t N>
+CLI::IsMember namesOf(const std::array<Enum, N>& all, std::vector<std::string> more = {}) {
+  std::vector<std::string> names;
+  for (Enum e : all) names.emplace_back(toString(e));
+  names.insert(names.end(), more.begin(), more.end());
+  return CLI::IsMember(names);
+}
+
 CLI::Validator finiteIn(double lo, double hi) {
   std::ostringstream range;
   range << "a finite number from " << lo << " to " << hi;
@@ -179,7 +188,7 @@ int runRender(const RenderOptions& r) {
       DisplaySettings& f = viewer.state().display;
       f.camera.style = f.world.style = f.npc.style = request.style;
     }
-    for (const std::string& tab : r.tabs) ui::selectTab(viewer.state(), tab);
+    for (const std::string& tab : r.tabs) selectTab(viewer.state(), tab);
     viewer.frames(3);
     writePng(viewer.image(), out);
     return 0;
@@ -280,7 +289,7 @@ int runCommandLine(int argc, char** argv) {
   dumpCmd->add_option("--strategy", dump.strategy,
                       "Clipping strategy: npc (homogeneous NPC, the default), wc (the six frustum "
                       "planes in WC) or divide-first (wrong on purpose: divides by w before clipping)")
-      ->check(CLI::IsMember({"npc", "wc", "divide-first"}));
+      ->check(namesOf(kAllClipStrategies));
   dumpCmd->add_flag("--bounding-box", dump.boundingBox,
                     "Decide whole objects by their bounding box first (lecture notes 15.3.4)");
   dumpCmd->add_option("--indent", dump.indent, "JSON indentation; -1 prints everything on one line")
@@ -298,7 +307,7 @@ int runCommandLine(int argc, char** argv) {
                         "Clipping lesson's wrong picture; always the divide-first strategy's run), depth-plot "
                         "(NPC z and GL window depth against VRC z, the objects' depth ranges) or ui (the whole "
                         "viewer window with its panels; needs EGL)")
-      ->check(CLI::IsMember({"camera", "world", "npc", "all", "morph", "divide-first", "depth-plot", "ui"}));
+      ->check(namesOf(kAllViewKinds, {"ui"}));
   renderCmd->add_option("--morph-t", render.morphT,
                         "With --view morph: 0 MC, 1 WC, 2 VRC, 2.5 homogeneous NPC, 3 NPC, 4 DC, or between")
       ->check(finiteIn(0, 4));
@@ -306,7 +315,7 @@ int runCommandLine(int argc, char** argv) {
                         "flat (object colours, unlit), shaded (lit by the scene's lights), wire (every edge), "
                         "hidden-line (hidden edges dashed, lecture notes figure 16.1) or hidden-removed (hidden "
                         "edges left out, figure 16.3)")
-      ->check(CLI::IsMember({"flat", "shaded", "wire", "hidden-line", "hidden-removed"}));
+      ->check(namesOf(kAllStyles));
   renderCmd->add_option("--size", render.size,
                         "WIDTHxHEIGHT of each view; default: the scene's device (the camera view is then "
                         "pixel-aligned with DC)");
@@ -315,9 +324,9 @@ int runCommandLine(int argc, char** argv) {
                         "hidden-removed; hidden-line unless --style says); default: vplab-VIEW.png")
       ->check(extensionIn({".png", ".svg"}));
   renderCmd->add_option("--backend", render.backend, "Headless OpenGL: auto (EGL, then OSMesa), egl or osmesa")
-      ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+      ->check(namesOf(kAllBackends));
   renderCmd->add_option("--strategy", render.strategy, "Clipping strategy of the CPU overlays: npc, wc or divide-first")
-      ->check(CLI::IsMember({"npc", "wc", "divide-first"}));
+      ->check(namesOf(kAllClipStrategies));
   renderCmd->add_flag("--gl-debug", render.glDebug, "Turn on KHR_debug and fail on any OpenGL error");
   renderCmd->add_option("--ui-scale", render.uiScale,
                         "Scale the views' text, lines and markers as the viewer's UI scale does (a projector); "
@@ -325,7 +334,7 @@ int runCommandLine(int argc, char** argv) {
       ->check(finiteIn(0.5, 4));
   renderCmd->add_option("--tab", render.tabs, "With --view ui: show this tab (repeatable): camera, scene, clipping, "
                                               "display, lecture (controls) or probe, matrices, depth (inspector)")
-      ->check(CLI::IsMember({"camera", "scene", "clipping", "display", "lecture", "probe", "matrices", "depth"}));
+      ->check(CLI::IsMember(std::vector<std::string>(std::begin(kTabNames), std::end(kTabNames))));
 
   BenchOptions bench;
   std::string benchOnly;

@@ -17,9 +17,8 @@ std::string_view toString(Projection p) {
 }
 
 std::optional<Projection> projectionFromString(std::string_view s) {
-  if (s == "perspective") return Projection::perspective;
-  if (s == "parallel") return Projection::parallel;
-  if (s == "oblique") return Projection::oblique;
+  for (Projection p : kAllProjections)
+    if (toString(p) == s) return p;
   return std::nullopt;
 }
 

@@ -7,6 +7,7 @@
 
 #include "pipeline/math.h"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -14,6 +15,8 @@
 namespace vplab {
 
 enum class Projection { perspective, parallel, oblique };
+/// Every projection in the enum's order: toString, the P key's cycle.
+inline constexpr std::array kAllProjections = {Projection::perspective, Projection::parallel, Projection::oblique};
 
 std::string_view toString(Projection p);
 std::optional<Projection> projectionFromString(std::string_view s);

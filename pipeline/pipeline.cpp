@@ -22,7 +22,7 @@ std::string_view toString(ClipStrategy s) {
 }
 
 std::optional<ClipStrategy> clipStrategyFromString(std::string_view s) {
-  for (ClipStrategy c : {ClipStrategy::npc, ClipStrategy::wc, ClipStrategy::divideFirst})
+  for (ClipStrategy c : kAllClipStrategies)
     if (toString(c) == s) return c;
   return std::nullopt;
 }

@@ -17,6 +17,7 @@
 #include "pipeline/cost_model.h"
 #include "pipeline/scene.h"
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -28,6 +29,8 @@ namespace vplab {
 /// Where polygons are clipped (lecture notes 15.3.1–15.3.3). divideFirst is wrong on purpose: it divides by w
 /// before clipping, so points behind the eye flip into view (Hill 7.4 and the DGL wiki).
 enum class ClipStrategy { npc, wc, divideFirst };
+/// Every strategy in the enum's order: toString, the command line's choices, the C key's cycle.
+inline constexpr std::array kAllClipStrategies = {ClipStrategy::npc, ClipStrategy::wc, ClipStrategy::divideFirst};
 std::string_view toString(ClipStrategy s);
 std::optional<ClipStrategy> clipStrategyFromString(std::string_view s);
 inline bool isCorrect(ClipStrategy s) { return s != ClipStrategy::divideFirst; }

@@ -14,7 +14,7 @@ std::string_view toString(Backend b) {
 }
 
 std::optional<Backend> backendFromString(std::string_view s) {
-  for (Backend b : {Backend::automatic, Backend::egl, Backend::osmesa})
+  for (Backend b : kAllBackends)
     if (toString(b) == s) return b;
   return std::nullopt;
 }

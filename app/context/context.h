@@ -4,6 +4,7 @@
 // each context owns its GladGLContext, so no function pointers are global.
 #pragma once
 
+#include <array>
 #include <glad/gl.h>
 
 #include <memory>
@@ -15,6 +16,8 @@
 namespace vplab {
 
 enum class Backend { automatic, egl, osmesa };
+/// Every backend in the enum's order: toString and the command line's choices.
+inline constexpr std::array kAllBackends = {Backend::automatic, Backend::egl, Backend::osmesa};
 std::string_view toString(Backend b);
 std::optional<Backend> backendFromString(std::string_view s);
 

@@ -1,5 +1,7 @@
 #include "app/fonts/font_atlas.h"
 
+#include "app/fonts/font_file.h"
+
 #include "pipeline/error.h"
 
 #include <imgui.h>
@@ -11,10 +13,8 @@ namespace vplab {
 
 namespace {
 
-constexpr const char* kFontFile = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
-// Latin, Greek (φ, α), punctuation, super- and subscripts, arrows (→) and mathematical operators (≤, ÷ is Latin-1).
-constexpr ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x206F, 0x2070, 0x209F,
-                                    0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+static_assert(sizeof(ImWchar) == sizeof(kFontGlyphRanges[0]), "Dear ImGui built with 16-bit ImWchar");
+const ImWchar* const kGlyphRanges = reinterpret_cast<const ImWchar*>(kFontGlyphRanges);
 // DejaVu Sans: 2048 units per em, hhea ascent 1901, descent −483; Dear ImGui's size is their sum.
 constexpr double kDejaVuEmPerLine = 2048.0 / (1901.0 + 483.0);
 

@@ -2,6 +2,7 @@
 //        4 menus and shortcuts  5 export
 #include "app/ui/viewer.h"
 
+#include "app/fonts/font_file.h"
 #include "app/gl/shader.h"
 #include "app/gl/texture_io.h"
 #include "app/ui/assets.h"
@@ -31,15 +32,20 @@ namespace vplab {
 
 namespace {
 
-// Latin, Greek (φ, α), punctuation, arrows and mathematical operators for the labels and tooltips.
-constexpr ImWchar kGlyphRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x206F, 0x2070, 0x209F,
-                                    0x2190, 0x21FF, 0x2200, 0x22FF, 0x22C5, 0x22C5, 0};
-
 void setUpFonts(float scale) {
+  static_assert(sizeof(ImWchar) == sizeof(kFontGlyphRanges[0]), "Dear ImGui built with 16-bit ImWchar");
   ImGuiIO& io = ImGui::GetIO();
-  const char* file = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
-  if (std::filesystem::exists(file)) io.Fonts->AddFontFromFileTTF(file, 15.f * scale, nullptr, kGlyphRanges);
+  if (std::filesystem::exists(kFontFile))
+    io.Fonts->AddFontFromFileTTF(kFontFile, 15.f * scale, nullptr, reinterpret_cast<const ImWchar*>(kFontGlyphRanges));
   else io.Fonts->AddFontDefault();
+}
+
+/// The value after `value` in `all` (the enum's table), the first after the last: the keys' cycles.
+template <typename Enum, size_t N>
+Enum nextOf(const std::array<Enum, N>& all, Enum value) {
+  for (size_t i = 0; i < N; ++i)
+    if (all[i] == value) return all[(i + 1) % N];
+  return all[0];
 }
 
 void setUpStyle(float scale) {
@@ -456,13 +462,14 @@ void Viewer::shortcuts() {
   if (pressed(keys::kF1)) s_.showHelp = !s_.showHelp;
   if (pressed(keys::kF12) && !session_.browser()) screenshotRequested_ = true;
   if (pressed(keys::kEscape)) s_.probe.reset();
-  for (int i = 0; i < 5; ++i)
-    if (pressed(keys::kDigit1 + i)) s_.display.camera.style = s_.display.world.style = s_.display.npc.style = Style(i);
+  for (size_t i = 0; i < kAllStyles.size(); ++i)  // 1 to 5
+    if (pressed(keys::kDigit1 + int(i)))
+      s_.display.camera.style = s_.display.world.style = s_.display.npc.style = kAllStyles[i];
   if (pressed(keys::kP)) {
     Camera& c = s_.doc.scene().camera;
-    c.projection = Projection((int(c.projection) + 1) % 3);
+    c.projection = nextOf(kAllProjections, c.projection);
   }
-  if (pressed(keys::kC)) s_.pipeline.strategy = ClipStrategy((int(s_.pipeline.strategy) + 1) % 3);
+  if (pressed(keys::kC)) s_.pipeline.strategy = nextOf(kAllClipStrategies, s_.pipeline.strategy);
   if (pressed(keys::kB)) s_.pipeline.boundingBoxTest = !s_.pipeline.boundingBoxTest;
   if (pressed(keys::kR)) {
     s_.display.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);

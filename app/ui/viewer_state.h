@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <string_view>
 #include <string>
 
 namespace vplab {
@@ -42,6 +43,15 @@ struct StepThrough {
   int face = 0;
   int step = 0;    // 0: the original polygon; k: after the k-th plane (left, right, bottom, top, back, front)
 };
+
+/// The tabs by the names the command line gives them (`vplab render --view ui --tab NAME`): the
+/// controls' camera, scene, clipping, display, lecture and the inspector's probe, matrices, depth.
+inline constexpr std::string_view kTabNames[] = {"camera", "scene",  "clipping", "display",
+                                                 "lecture", "probe", "matrices", "depth"};
+
+struct ViewerState;
+/// Brings the tab `name` (one of kTabNames) forward; false for any other name.
+bool selectTab(ViewerState& s, std::string_view name);
 
 struct ViewerState {
   explicit ViewerState(Scene scene) : doc(std::move(scene)) {}

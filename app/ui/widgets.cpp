@@ -170,19 +170,6 @@ void sameLineIfFits(const char* next, bool button) {
   if (previousEnd + style.ItemSpacing.x + width <= right) ImGui::SameLine();
 }
 
-bool selectTab(ViewerState& s, std::string_view name) {
-  static constexpr std::pair<std::string_view, int> kControls[] = {
-      {"camera", ViewerState::cameraTab},     {"scene", ViewerState::sceneTab},
-      {"clipping", ViewerState::clippingTab}, {"display", ViewerState::displayTab},
-      {"lecture", ViewerState::lectureTab}};
-  static constexpr std::pair<std::string_view, int> kInspect[] = {
-      {"probe", ViewerState::probeTab}, {"matrices", ViewerState::matricesTab}, {"depth", ViewerState::depthTab}};
-  for (const auto& [n, tab] : kControls)
-    if (n == name) return s.controlsTab = tab, true;
-  for (const auto& [n, tab] : kInspect)
-    if (n == name) return s.inspectTab = tab, true;
-  return false;
-}
 
 void tooltip(const char* english, const char* german) {
   if (!ImGui::IsItemHovered()) return;

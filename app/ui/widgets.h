@@ -29,9 +29,6 @@ bool radio(const char* label, int* v, int value);
 /// SameLine() when a button labelled `next` (or, with button = false, the text `next`) still fits
 /// on the line, else the next line.
 void sameLineIfFits(const char* next, bool button = true);
-/// Shows a tab by its lower-case name: camera, scene, clipping, display, lecture (the controls) or
-/// probe, matrices, depth (the inspector). False for another name.
-bool selectTab(ViewerState& s, std::string_view name);
 /// Makes the next widget narrow enough for its label (after "##", nothing) to fit beside it.
 void fitLabel(const char* label);
 /// A tooltip on the last item: the English explanation, then the German one of the lecture notes.

@@ -47,6 +47,17 @@ class Cli : public test::ProcessTest {
     return sh(env + (env.empty() ? "" : " ") + shellQuoted(VPLAB_EXE) + " " + args);
   }
 
+  /// `vplab ARGS` in a real window under Xvfb (xvfb-run from scripts/setup.sh), with an autosave
+  /// directory of the test's own. The exit code is vplab's: xvfb-run may end with a status of its own
+  /// (5) when cleaning up its temporary directory fails after vplab has ended.
+  ProcessResult windowVplab(const std::string& args) {
+    const std::string inner = "XDG_STATE_HOME=state " + shellQuoted(VPLAB_EXE) + " " + args + "; echo $? > vplab-status";
+    ProcessResult r = sh("xvfb-run -a -s '-screen 0 1280x800x24' sh -c " + shellQuoted(inner));
+    std::ifstream status(dir_ / "vplab-status");
+    if (int code = -1; status >> code) r.exitCode = code;
+    return r;
+  }
+
   /// The PNG files in the test's directory.
   std::vector<std::string> pngs() const {
     std::vector<std::string> files;
@@ -303,12 +314,11 @@ TEST_F(Cli, WithoutADisplayTheViewerLeavesADumpAndAPicture) {
 // take seconds on the render thread, so a screenshot taken at the scripted end would show them
 // black with the busy mark (issue 19: on a fresh machine the default scene's did, while llvmpipe
 // compiled the shaders). ctest runs it with Mesa's shader cache disabled (tests/CMakeLists.txt).
-std::string xvfb() { return "xvfb-run -a -s '-screen 0 1280x800x24' env XDG_STATE_HOME=state"; }
 
 TEST_F(Cli, AWindowScreenshotWaitsUntilEveryViewShowsTheCurrentImage) {
   const std::string scene = test::shellQuoted(std::string(VPLAB_ASSETS) + "/scenes/large-mesh.json");
   // One frame, then the screenshot; 300 s: the wait is the point here, not the machine's speed.
-  const ProcessResult r = vplab("--scene " + scene + " --quit-after-frames 1 --wait-for-views 300 --screenshot window.png", xvfb());
+  const ProcessResult r = windowVplab("--scene " + scene + " --quit-after-frames 1 --wait-for-views 300 --screenshot window.png");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   ASSERT_TRUE(fs::exists(dir_ / "window.png"));
   // What the headless viewer draws (every view in the frame that needs it): the window's picture
@@ -324,7 +334,7 @@ TEST_F(Cli, AWindowScreenshotWaitsUntilEveryViewShowsTheCurrentImage) {
 TEST_F(Cli, AScriptedScreenshotWhoseViewsAreNotReadyInTimeFailsNamingThem) {
   const std::string scene = test::shellQuoted(std::string(VPLAB_ASSETS) + "/scenes/large-mesh.json");
   // 0.2 s: far less than the ~1 s llvmpipe needs for a million triangles on any machine.
-  const ProcessResult r = vplab("--scene " + scene + " --quit-after-frames 1 --wait-for-views 0.2 --screenshot window.png", xvfb());
+  const ProcessResult r = windowVplab("--scene " + scene + " --quit-after-frames 1 --wait-for-views 0.2 --screenshot window.png");
   EXPECT_EQ(r.exitCode, 1) << r.err;
   EXPECT_THAT(r.err, HasSubstr("not ready after 0.2 s"));
   // The views are asked for in the order world, camera, NPC and drawn one after another: the NPC
