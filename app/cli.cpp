@@ -1,6 +1,6 @@
 #include "app/cli.h"
 
-#include "app/bench.h"
+#include "bench/bench_command.h"
 #include "app/course/course_commands.h"
 #include "app/export/svg.h"
 #include "app/render/headless.h"

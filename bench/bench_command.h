@@ -1,4 +1,4 @@
-// `vplab bench`: what the issues ask to be measured, in one run on this machine:
+// `vplab bench` (bench/bench_command.cpp): what the issues ask to be measured, in one run on this machine:
 //   pipeline   the CPU pipeline on ~1M triangles against the floor pass and the textbook baseline
 //   frames     median and 95th-percentile frame time per view at 1280 × 720 (default scene and a
 //              ~1M-triangle mesh), and the three views of the default scene together

@@ -1,5 +1,5 @@
 // Index: 1 timing helpers  2 frame times  3 start-up  4 input to frame  5 the report
-#include "app/bench.h"
+#include "bench/bench_command.h"
 
 #include "app/render/headless.h"
 #include "app/ui/headless_viewer.h"
