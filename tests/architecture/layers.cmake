@@ -1,0 +1,60 @@
+# The layers (README "Architecture"): every directory of the sources and what its files may include,
+# the one table behind the include check (check_includes.cmake) and the README's layer table
+# (check_includes.cmake -DPRINT=ON prints it; architecture.readme checks the README holds it).
+#
+#   layers            the directories, lowest first; "app" is app/'s own files (the command line),
+#                     not its subdirectories
+#   uses_<dir>        the project's directories its files may include from (prefixes)
+#   outside_<dir>     the outside headers it may include: gl (GL, GLAD, GLFW, EGL, KHR, OSMesa) and
+#                     imgui (Dear ImGui and its backends); none: neither
+#   about_<dir>       what the layer is, for the README
+set(layers pipeline app/views app/fonts app/export app/context app/gl app/render app/ui app/course app bench
+           app/web)
+
+set(uses_pipeline pipeline/)
+set(outside_pipeline none)
+set(about_pipeline "the five stages, the scene, meshes, file formats and the course's mathematics (no GL)")
+
+set(uses_app/views pipeline/ app/views/)
+set(outside_app/views none)
+set(about_app/views "each view described once, as a display list")
+
+set(uses_app/fonts pipeline/ app/views/ app/fonts/)
+set(outside_app/fonts imgui)
+set(about_app/fonts "label metrics and glyphs (Dear ImGui's font atlas, no GL)")
+
+set(uses_app/export pipeline/ app/views/ app/fonts/ app/export/)
+set(outside_app/export none)
+set(about_app/export "the SVG backend, image comparison, the CPU raster oracle")
+
+set(uses_app/context pipeline/ app/context/)
+set(outside_app/context gl)
+set(about_app/context "OpenGL contexts, one file per backend behind one interface")
+
+set(uses_app/gl pipeline/ app/views/ app/gl/)
+set(outside_app/gl gl)
+set(about_app/gl "shaders, render targets, texture read-back")
+
+set(uses_app/render pipeline/ app/views/ app/fonts/ app/export/ app/context/ app/gl/ app/render/)
+set(outside_app/render gl imgui)
+set(about_app/render "the GL backend of the display lists, the views' images and their render thread")
+
+set(uses_app/ui pipeline/ app/views/ app/fonts/ app/export/ app/context/ app/gl/ app/render/ app/ui/)
+set(outside_app/ui gl imgui)
+set(about_app/ui "the viewer: the frame, its session, panels, documents, the pipeline's worker")
+
+set(uses_app/course pipeline/ app/views/ app/fonts/ app/export/ app/context/ app/gl/ app/render/ app/course/)
+set(outside_app/course none)
+set(about_app/course "vplab exercise and vplab grade")
+
+set(uses_app pipeline/ app/ bench/)
+set(outside_app none)
+set(about_app "the command line (app/cli.cpp, app/main.cpp)")
+
+set(uses_bench pipeline/ app/views/ app/fonts/ app/export/ app/context/ app/gl/ app/render/ app/ui/ bench/)
+set(outside_bench gl imgui)
+set(about_bench "vplab bench and the benchmark workloads")
+
+set(uses_app/web pipeline/ app/)
+set(outside_app/web gl imgui)
+set(about_app/web "the page: the browser's frame loop and services")
