@@ -60,10 +60,7 @@ void setUpStyle(float scale) {
 
 /// The busy mark's spinner steps 10 times a second (a frame each, nothing else while idle).
 constexpr double kBusyMarkStep = 0.1;
-/// How long the frame that changed the scene may wait for the pipeline's worker: a small scene's run
-/// (well under a millisecond) arrives in it. A scene whose last run took longer is not waited for at
-/// all: the 1M-triangle sphere's run (0.1–0.2 s) arrives a few frames later.
-constexpr double kFrameWaitForRun = 0.02;
+
 
 }  // namespace
 
@@ -72,6 +69,8 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
       renderer_(context, uiScale),
       images_(context, renderer_),
       s_(std::move(scene)),
+      run_(s_),
+      panes_(context, s_, images_, run_),
       session_(s_,
                [this] {
                  updateRun();
@@ -140,60 +139,13 @@ void Viewer::setStatus(std::string message, bool error) { session_.setStatus(std
 
 // ---------------------------------------------------------------- 2 the frame
 
-void Viewer::updateRun() {
-  const PipelineOptions& o = s_.pipeline;
-  const bool same = ranOnce_ && s_.doc.shownRevision() == ranShownRevision_ && o.strategy == ranOptions_.strategy &&
-                    o.boundingBoxTest == ranOptions_.boundingBoxTest && o.clipEdges == ranOptions_.clipEdges;
-  if (!same) {
-    ranOnce_ = true;
-    ranShownRevision_ = s_.doc.shownRevision();
-    ranOptions_ = o;
-    auto scene = std::make_shared<const Scene>(s_.doc.shown());  // shares the meshes: a cheap copy
-    if (pipelineWorker_) {
-      runTicket_ = pipelineWorker_->request(std::move(scene), o);
-      runPending_ = true;
-      runAskedAt_ = frameNumber_;
-    } else {
-      // Into the run published before the current one when nothing holds it any more: its buffers
-      // are reused (a large scene's arrays are not allocated anew). The render thread may still draw
-      // from it: then a new one.
-      std::shared_ptr<PipelineRun>& into = runs_[0] == s_.ran ? runs_[1] : runs_[0];
-      if (!into || into.use_count() > 1) into = std::make_shared<PipelineRun>();
-      try {
-        vplab::runPipeline(*scene, o, *into);
-        publishRun(std::move(scene), into);
-      } catch (const Error& e) {
-        s_.runError = e.what();  // the previous run stays
-      }
-    }
-  }
-  if (!runPending_) return;
-  // Only the frame that asked for the run waits for it, a little (a small scene's arrives in it);
-  // later frames only look whether it is finished.
-  const double expected = 2 * lastRunSeconds_ + 0.001;
-  const double wait = runAskedAt_ == frameNumber_ && expected <= kFrameWaitForRun ? expected : 0;
-  std::optional<PipelineWorker::Finished> done = pipelineWorker_->take(runTicket_, wait);
-  if (!done) return;
-  lastRunSeconds_ = done->seconds;
-  if (done->run) publishRun(std::move(done->scene), std::move(done->run));
-  else s_.runError = done->error;  // the previous run stays
-  if (done->ticket == runTicket_) runPending_ = false;
-}
+void Viewer::updateRun() { run_.update(); }
 
-void Viewer::publishRun(std::shared_ptr<const Scene> scene, std::shared_ptr<const PipelineRun> run) {
-  s_.ranScene = std::move(scene);
-  s_.ran = std::move(run);
-  ++runRevision_;
-  s_.runError.clear();
-}
-
-void Viewer::usePipelineWorker(std::function<void()> wake) {
-  pipelineWorker_ = std::make_unique<PipelineWorker>(std::move(wake));
-}
+void Viewer::usePipelineWorker(std::function<void()> wake) { run_.useWorker(std::move(wake)); }
 
 std::vector<ViewKind> Viewer::viewsNotReady() const {
   // While a run is under way every view shows the last one: none is of the current state.
-  return runPending_ ? images_.asked() : images_.notReady();
+  return run_.pending() ? images_.asked() : images_.notReady();
 }
 
 void Viewer::makeCurrent() { ImGui::SetCurrentContext(imgui_); }
@@ -203,9 +155,9 @@ double Viewer::wakeIn() const {
   double wake = 1e9;
   // A run of the pipeline or a view's image finished on its thread is shown at once; until then the
   // busy mark's spinner turns.
-  if (runPending_) {
-    if (pipelineWorker_->hasFinished()) return 0;
-    wake = kBusyMarkStep;
+  if (const std::optional<double> run = run_.wakeIn(kBusyMarkStep)) {
+    if (*run <= 0) return 0;
+    wake = *run;
   }
   if (const std::optional<double> views = images_.wakeIn(kBusyMarkStep)) {
     if (*views <= 0) return 0;
@@ -222,7 +174,7 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   if (s_.uiScale != uiScale_) applyUiScale(s_.uiScale);  // the font atlas is locked during a frame
   if (settleFrames_ > 0) --settleFrames_;
   images_.beginFrame();
-  ++frameNumber_;
+  run_.beginFrame();
   if (session_.beginFrame()) requestFrames(2);
   const Scene atFrameStart = s_.doc.scene();
   const unsigned generation = s_.doc.generation();
@@ -235,20 +187,21 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   if (width != lastWidth_ || height != lastHeight_) relayout_ = true;
   lastWidth_ = width;
   lastHeight_ = height;
+  panes_.beginFrame(uiScale_, relayout_);
 
   shortcuts();
   if (s_.lectureMode) {
     s_.doc.endFrame(true);
     updateRun();
-    lectureWindow();
+    panes_.lectureWindow();
   } else {
     menuBar();
     controlsWindow();
     s_.doc.endFrame(true);  // validate what the panels changed; recorded at the end of the frame
     updateRun();
-    viewWindows();
+    panes_.viewWindows();
     inspectWindow();
-    morphWindow();
+    panes_.morphWindow();
   }
   helpWindow();
   session_.drawDialogs(uiScale_);
@@ -508,7 +461,7 @@ void Viewer::exportMenu() {
     // The image shown (drawn in this thread or on the views' render thread: textures are shared).
     const GLuint texture = images_.texture(e.kind);
     const ViewKind kind = e.kind;
-    const int w = cachedWidth(kind), h = cachedHeight(kind);
+    const int w = images_.width(kind), h = images_.height(kind);
     const std::string png = std::string(e.name) + " view as PNG…";
     const bool pngChosen = ImGui::MenuItem(png.c_str(), nullptr, false, texture != 0);
     ui::recordRect(s_, ("export." + std::string(toString(e.kind)) + ".png").c_str());

@@ -6,8 +6,9 @@
 
 #include "app/context/context.h"
 #include "app/gl/render_target.h"
-#include "app/ui/pipeline_worker.h"
 #include "app/ui/session.h"
+#include "app/ui/shown_run.h"
+#include "app/ui/view_panes.h"
 #include "app/ui/viewer_state.h"
 #include "app/render/view_images.h"
 #include "app/render/view_renderer.h"
@@ -66,7 +67,7 @@ class Viewer {
   /// the UI tests) the pipeline runs in the frame that needs it.
   void usePipelineWorker(std::function<void()> wake);
   /// Whether a run of the pipeline is under way on the worker (the views show the last one).
-  bool runPending() const { return runPending_; }
+  bool runPending() const { return run_.pending(); }
   /// Whether `kind` shows an older image while its current one is being drawn.
   bool viewBusy(ViewKind kind) const { return images_.busy(kind); }
   /// Asks for `n` more frames (something changed that ImGui shows only after it laid it out again).
@@ -94,58 +95,26 @@ class Viewer {
   void shortcuts();
   void controlsWindow();
   void inspectWindow();
-  void viewWindows();
   void helpWindow();
   void exportMenu();
-  /// Runs the CPU pipeline when the shown scene or the options changed (frames drawn for hover and
-  /// ImGui's settling cost none), here or on the worker, and publishes the run that is finished.
+  /// The pipeline's run of the shown scene, when it changed (app/ui/shown_run.h).
   void updateRun();
-  void publishRun(std::shared_ptr<const Scene> scene, std::shared_ptr<const PipelineRun> run);
   void setStatus(std::string message, bool error);
-  std::optional<Vec3> probePositionOf(ViewKind view) const;
-  void orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const ViewCamera& observer, int w, int h, Vec2 mouse);
-  void recordHandles(ImVec2 origin, const ViewCamera& observer, ImVec2 fbScale);
-  void worldInteraction(bool hovered, const ViewCamera& observer, int w, int h, Vec2 mouse);
-  void morphInteraction(bool hovered);
-  void cameraWindowContents();
   void applyUiScale(float scale);
-  void morphWindow();
-  void lectureWindow();
-  void stepHighlight();
-  /// Draws a view into its target for an image of `size` screen units; returns the texture. Reuses
-  /// the last image while nothing it shows changed.
-  GLuint drawView(ViewKind kind, ImVec2 size);
-  /// A spinner and "updating…" in the top right corner of the last item (a view's image) while
-  /// `kind` is busy.
-  void busyMark(ViewKind kind);
 
   GlContext& ctx_;
   ImGuiContext* imgui_ = nullptr;
   ViewRenderer renderer_;
   ViewImages images_;
   ViewerState s_;
+  ShownRun run_;
+  ViewPanes panes_;
   Session session_;
   float uiScale_;
   int lastWidth_ = 0, lastHeight_ = 0;
   bool relayout_ = true;
   bool screenshotRequested_ = false;
   unsigned lastActive_ = 0;  // the ImGui item active in the previous frame
-  /// The pixel size of the image of `kind` asked for last (for picking in it).
-  int cachedWidth(ViewKind kind) const { return images_.width(kind); }
-  int cachedHeight(ViewKind kind) const { return images_.height(kind); }
-  /// The runs of the CPU pipeline: s_.ran is one of them; the other is run into next, reusing its
-  /// buffers, when nothing else (the render thread) still holds it.
-  std::array<std::shared_ptr<PipelineRun>, 2> runs_;
-  unsigned runRevision_ = 0;      // counts the runs published
-  unsigned ranShownRevision_ = 0; // the shown scene's revision (Document::shownRevision) of s_.ran
-  PipelineOptions ranOptions_;     // ... and its options (or the request's under way)
-  bool ranOnce_ = false;
-  std::unique_ptr<PipelineWorker> pipelineWorker_;
-  uint64_t runTicket_ = 0;         // the worker's run asked for last
-  uint64_t runAskedAt_ = 0;        // the frame that asked for it
-  uint64_t frameNumber_ = 0;
-  bool runPending_ = false;
-  double lastRunSeconds_ = 0;      // how long the worker's last run took
   int settleFrames_ = 2;     // frames still to draw without input (wakeIn)
 };
 

@@ -1,13 +1,10 @@
-// The views in resizable ImGui windows, and direct manipulation: orbit, pan and zoom the
-// observers; drag the scene camera's handles in the world view; click a vertex to probe it;
-// Shift+click a polygon in the camera view to step through its clipping. Also the stage morph
-// window and lecture mode's full-window view.
+// The views in their windows (view_panes.h).
 //
 // Index: 1 helpers  2 drawing a view  3 the windows  4 interaction
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include "app/ui/layout.h"
 #include "app/ui/picking.h"
-#include "app/ui/viewer.h"
+#include "app/ui/view_panes.h"
 #include "app/ui/widgets.h"
 #include "pipeline/clip_steps.h"
 
@@ -92,13 +89,13 @@ double aspectOf(ImVec2 size) {
 
 // A view is drawn again only when what it shows changed (app/render/view_images.h). Drawing
 // changes no state: what it shows was settled before.
-GLuint Viewer::drawView(ViewKind kind, ImVec2 size) {
+GLuint ViewPanes::drawView(ViewKind kind, ImVec2 size) {
   const auto [w, h] = imagePixels(size);
-  return images_.image({kind, *s_.ranScene, s_.ran, s_.display, w, h, s_.antialias ? 4 : 1, uiScale_}, runRevision_);
+  return images_.image({kind, *s_.ranScene, s_.ran, s_.display, w, h, s_.antialias ? 4 : 1, uiScale_}, run_.revision());
 }
 
-void Viewer::busyMark(ViewKind kind) {
-  if (!images_.busy(kind) && !runPending_) return;
+void ViewPanes::busyMark(ViewKind kind) {
+  if (!images_.busy(kind) && !run_.pending()) return;
   const ImVec2 max = ImGui::GetItemRectMax();
   const ImVec2 min = ImGui::GetItemRectMin();
   const char* text = "updating…";
@@ -116,12 +113,12 @@ void Viewer::busyMark(ViewKind kind) {
   draw->AddText(at + ImVec2(pad * 2 + radius * 2, pad), IM_COL32(235, 235, 235, 255), text);
 }
 
-std::optional<Vec3> Viewer::probePositionOf(ViewKind view) const {
+std::optional<Vec3> ViewPanes::probePositionOf(ViewKind view) const {
   return s_.probe ? probePosition(s_.run(), *s_.probe, view) : std::nullopt;
 }
 
 // The clipping step-through's current polygon and plane, for the NPC and world views.
-void Viewer::stepHighlight() {
+void ViewPanes::stepHighlight() {
   const StepThrough& st = s_.stepThrough;
   if (!st.active) return;
   for (size_t i = 0; i < s_.run().sceneIndex.size(); ++i) {
@@ -147,7 +144,7 @@ void Viewer::stepHighlight() {
 
 // ---------------------------------------------------------------- 3 the windows
 
-void Viewer::viewWindows() {
+void ViewPanes::viewWindows() {
   ImGuiIO& io = ImGui::GetIO();
   const ImVec2 fbScale = io.DisplayFramebufferScale;
   const ui::Layout layout = ui::computeLayout(io.DisplaySize, ImGui::GetFrameHeight(), uiScale_);
@@ -211,7 +208,7 @@ void Viewer::viewWindows() {
 
 // The camera view: the GPU's image at the device's size, scaled to fit. With the divide-first
 // strategy the CPU's (wrong) polygons are shown beside it, with the reason.
-void Viewer::cameraWindowContents() {
+void ViewPanes::cameraWindowContents() {
   const Device& device = s_.ranScene->device;  // the image is of the run's scene
   const bool demo = !isCorrect(s_.pipeline.strategy);
   ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -224,7 +221,7 @@ void Viewer::cameraWindowContents() {
   if (demo) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
     // A render target's texture like the views': flipped the same way (GL's rows go up).
-    if (const GLuint divided = images_.divideFirst(*s_.ranScene, s_.run(), s_.display, runRevision_))
+    if (const GLuint divided = images_.divideFirst(*s_.ranScene, s_.run(), s_.display, run_.revision()))
       ImGui::Image(textureId(divided), size, ImVec2(0, 1), ImVec2(1, 0));
     else  // the strategy's run failed (its error is in the status line): no picture of it
       ImGui::Dummy(size);
@@ -259,7 +256,7 @@ void Viewer::cameraWindowContents() {
   s_.probe = pickVertex(s_.run(), ViewKind::camera, none, int(size.x), int(size.y), mouse, kPickRadiusPx);
 }
 
-void Viewer::morphWindow() {
+void ViewPanes::morphWindow() {
   if (!s_.showMorph) return;
   ImGui::SetNextWindowSize(ImVec2(560, 420) * uiScale_, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowPos(ImGui::GetIO().DisplaySize * 0.5f, ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
@@ -280,7 +277,7 @@ void Viewer::morphWindow() {
 }
 
 // Lecture mode: one view fills the window, no panels; the scene's title and caption at the top.
-void Viewer::lectureWindow() {
+void ViewPanes::lectureWindow() {
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(0, 0));
   ImGui::SetNextWindowSize(io.DisplaySize);
@@ -357,7 +354,7 @@ void Viewer::lectureWindow() {
 // ---------------------------------------------------------------- 4 interaction
 
 // Left-drag orbits, right- or middle-drag pans, the wheel zooms; a click without motion probes.
-void Viewer::orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const ViewCamera& observer, int w, int h,
+void ViewPanes::orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const ViewCamera& observer, int w, int h,
                               Vec2 mouse) {
   ImGuiIO& io = ImGui::GetIO();
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && s_.drag.kind == Drag::Kind::none)
@@ -376,7 +373,7 @@ void Viewer::orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const V
   if (hovered && clicked() && view != ViewKind::morph) s_.probe = pickVertex(s_.run(), view, observer, w, h, mouse, kPickRadiusPx);
 }
 
-void Viewer::morphInteraction(bool hovered) {
+void ViewPanes::morphInteraction(bool hovered) {
   // The morph's observer frames the scene by itself: only its angles are dragged.
   ImGuiIO& io = ImGui::GetIO();
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) s_.drag = {Drag::Kind::orbit, ViewKind::morph, Handle::none};
@@ -386,7 +383,7 @@ void Viewer::morphInteraction(bool hovered) {
 
 // Where the world view's handles are, in screen units (ViewerState::rects "handle.vrp", "handle.prp",
 // "handle.xmin", …, "handle.front-f"): the UI tests and the browser tests grab them there.
-void Viewer::recordHandles(ImVec2 origin, const ViewCamera& observer, ImVec2 fbScale) {
+void ViewPanes::recordHandles(ImVec2 origin, const ViewCamera& observer, ImVec2 fbScale) {
   const int w = cachedWidth(ViewKind::world), h = cachedHeight(ViewKind::world);
   const float r = float(kPickRadiusPx) / fbScale.x;
   for (Handle handle : kHandles) {
@@ -399,7 +396,7 @@ void Viewer::recordHandles(ImVec2 origin, const ViewCamera& observer, ImVec2 fbS
   }
 }
 
-void Viewer::worldInteraction(bool hovered, const ViewCamera& observer, int w, int h, Vec2 mouse) {
+void ViewPanes::worldInteraction(bool hovered, const ViewCamera& observer, int w, int h, Vec2 mouse) {
   s_.hovered = hovered && s_.drag.kind == Drag::Kind::none
                    ? pickHandle(s_.run(), observer, w, h, mouse, kPickRadiusPx + 3)
                    : Handle::none;

@@ -1,0 +1,71 @@
+// The CPU pipeline's run of the shown scene (shown_run.h).
+#include "app/ui/shown_run.h"
+
+#include "pipeline/error.h"
+
+namespace vplab {
+
+namespace {
+
+/// How long the frame that changed the scene may wait for the pipeline's worker: a small scene's run
+/// (well under a millisecond) arrives in it. A scene whose last run took longer is not waited for at
+/// all: the 1M-triangle sphere's run (0.1–0.2 s) arrives a few frames later.
+constexpr double kFrameWaitForRun = 0.02;
+
+}  // namespace
+
+void ShownRun::useWorker(std::function<void()> wake) { worker_ = std::make_unique<PipelineWorker>(std::move(wake)); }
+
+void ShownRun::update() {
+  const PipelineOptions& o = state_.pipeline;
+  const bool same = ranOnce_ && state_.doc.shownRevision() == ranShownRevision_ && o.strategy == ranOptions_.strategy &&
+                    o.boundingBoxTest == ranOptions_.boundingBoxTest && o.clipEdges == ranOptions_.clipEdges;
+  if (!same) {
+    ranOnce_ = true;
+    ranShownRevision_ = state_.doc.shownRevision();
+    ranOptions_ = o;
+    auto scene = std::make_shared<const Scene>(state_.doc.shown());  // shares the meshes: a cheap copy
+    if (worker_) {
+      ticket_ = worker_->request(std::move(scene), o);
+      pending_ = true;
+      askedAt_ = frameNumber_;
+    } else {
+      // Into the run published before the current one when nothing holds it any more: its buffers
+      // are reused (a large scene's arrays are not allocated anew). The render thread may still draw
+      // from it: then a new one.
+      std::shared_ptr<PipelineRun>& into = runs_[0] == state_.ran ? runs_[1] : runs_[0];
+      if (!into || into.use_count() > 1) into = std::make_shared<PipelineRun>();
+      try {
+        runPipeline(*scene, o, *into);
+        publish(std::move(scene), into);
+      } catch (const Error& e) {
+        state_.runError = e.what();  // the previous run stays
+      }
+    }
+  }
+  if (!pending_) return;
+  // Only the frame that asked for the run waits for it, when it is expected in time (a small scene's
+  // arrives in it); later frames only look whether it is finished.
+  const double expected = 2 * lastSeconds_ + 0.001;
+  const double wait = askedAt_ == frameNumber_ && expected <= kFrameWaitForRun ? expected : 0;
+  std::optional<PipelineWorker::Finished> done = worker_->take(ticket_, wait);
+  if (!done) return;
+  lastSeconds_ = done->seconds;
+  if (done->run) publish(std::move(done->scene), std::move(done->run));
+  else state_.runError = done->error;  // the previous run stays
+  if (done->ticket == ticket_) pending_ = false;
+}
+
+void ShownRun::publish(std::shared_ptr<const Scene> scene, std::shared_ptr<const PipelineRun> run) {
+  state_.ranScene = std::move(scene);
+  state_.ran = std::move(run);
+  ++revision_;
+  state_.runError.clear();
+}
+
+std::optional<double> ShownRun::wakeIn(double busyStep) const {
+  if (!pending_) return std::nullopt;
+  return worker_->hasFinished() ? 0.0 : busyStep;
+}
+
+}  // namespace vplab

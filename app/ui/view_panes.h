@@ -1,0 +1,62 @@
+// The views in resizable ImGui windows, and direct manipulation: orbit, pan and zoom the observers;
+// drag the scene camera's handles in the world view; click a vertex to probe it; Shift+click a
+// polygon in the camera view to step through its clipping. Also the stage morph window and lecture
+// mode's full-window view. The images come from ViewImages (app/render/view_images.h), drawn from the
+// published run (app/ui/shown_run.h); what the mouse does goes into the ViewerState.
+#pragma once
+
+#include "app/context/context.h"
+#include "app/render/view_images.h"
+#include "app/ui/shown_run.h"
+#include "app/ui/viewer_state.h"
+
+#include <imgui.h>
+
+#include <optional>
+
+namespace vplab {
+
+class ViewPanes {
+ public:
+  ViewPanes(GlContext& context, ViewerState& state, ViewImages& images, const ShownRun& run)
+      : ctx_(context), s_(state), images_(images), run_(run) {}
+
+  /// A new frame at UI scale `uiScale`; `relayout`: the windows go back to the computed layout.
+  void beginFrame(float uiScale, bool relayout) {
+    uiScale_ = uiScale;
+    relayout_ = relayout;
+  }
+  /// The world, camera and NPC views in their windows.
+  void viewWindows();
+  /// The stage morph's window, when shown.
+  void morphWindow();
+  /// Lecture mode: one view fills the window, no panels; the scene's title and caption at the top.
+  void lectureWindow();
+
+ private:
+  /// Draws a view for an image of `size` screen units; returns the texture. Reuses the last image
+  /// while nothing it shows changed.
+  GLuint drawView(ViewKind kind, ImVec2 size);
+  /// A spinner and "updating…" in the top right corner of the last item (a view's image) while
+  /// `kind` (or the run it shows) is being drawn anew.
+  void busyMark(ViewKind kind);
+  std::optional<Vec3> probePositionOf(ViewKind view) const;
+  void stepHighlight();
+  void cameraWindowContents();
+  void orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const ViewCamera& observer, int w, int h, Vec2 mouse);
+  void recordHandles(ImVec2 origin, const ViewCamera& observer, ImVec2 fbScale);
+  void worldInteraction(bool hovered, const ViewCamera& observer, int w, int h, Vec2 mouse);
+  void morphInteraction(bool hovered);
+  /// The pixel size of the image of `kind` asked for last (for picking in it).
+  int cachedWidth(ViewKind kind) const { return images_.width(kind); }
+  int cachedHeight(ViewKind kind) const { return images_.height(kind); }
+
+  GlContext& ctx_;
+  ViewerState& s_;
+  ViewImages& images_;
+  const ShownRun& run_;
+  float uiScale_ = 1.f;
+  bool relayout_ = true;
+};
+
+}  // namespace vplab
