@@ -1,20 +1,13 @@
 // Index: 1 construction (ImGui context, fonts, style)  2 the frame  3 layout and windows
-//        4 menus and shortcuts  5 export
+//        4 export (the menus and keys: app/ui/menus.cpp)
 #include "app/ui/viewer.h"
 
 #include "app/fonts/font_file.h"
 #include "app/gl/shader.h"
-#include "app/gl/texture_io.h"
-#include "app/ui/assets.h"
-#include "app/render/headless.h"
-#include "app/export/svg.h"
-#include "app/ui/keys.h"
 #include "app/ui/layout.h"
 #include "app/ui/panels.h"
 #include "app/ui/widgets.h"
-#include "app/views/render_request.h"
 #include "pipeline/error.h"
-#include "pipeline/scene_io.h"
 
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include <imgui.h>
@@ -38,14 +31,6 @@ void setUpFonts(float scale) {
   if (std::filesystem::exists(kFontFile))
     io.Fonts->AddFontFromFileTTF(kFontFile, 15.f * scale, nullptr, reinterpret_cast<const ImWchar*>(kFontGlyphRanges));
   else io.Fonts->AddFontDefault();
-}
-
-/// The value after `value` in `all` (the enum's table), the first after the last: the keys' cycles.
-template <typename Enum, size_t N>
-Enum nextOf(const std::array<Enum, N>& all, Enum value) {
-  for (size_t i = 0; i < N; ++i)
-    if (all[i] == value) return all[(i + 1) % N];
-  return all[0];
 }
 
 void setUpStyle(float scale) {
@@ -76,6 +61,7 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
                  updateRun();
                  requestFrames(2);
                }),
+      menus_(context, s_, session_, images_, renderer_),
       uiScale_(uiScale) {
   IMGUI_CHECKVERSION();
   imgui_ = ImGui::CreateContext();
@@ -126,12 +112,12 @@ std::string Viewer::title() const {
 }
 
 void Viewer::screenshotTaken(const std::string& file) {
-  screenshotRequested_ = false;
+  s_.screenshotRequested = false;
   setStatus("screenshot saved: " + file, false);
 }
 
 void Viewer::screenshotFailed(const std::string& why) {
-  screenshotRequested_ = false;
+  s_.screenshotRequested = false;
   setStatus("no screenshot: " + why, true);
 }
 
@@ -188,14 +174,15 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   lastWidth_ = width;
   lastHeight_ = height;
   panes_.beginFrame(uiScale_, relayout_);
+  menus_.beginFrame(uiScale_);
 
-  shortcuts();
+  menus_.shortcuts();
   if (s_.lectureMode) {
     s_.doc.endFrame(true);
     updateRun();
     panes_.lectureWindow();
   } else {
-    menuBar();
+    menus_.menuBar();
     controlsWindow();
     s_.doc.endFrame(true);  // validate what the panels changed; recorded at the end of the frame
     updateRun();
@@ -203,7 +190,7 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
     inspectWindow();
     panes_.morphWindow();
   }
-  helpWindow();
+  menus_.helpWindow();
   session_.drawDialogs(uiScale_);
   relayout_ = false;
   images_.endFrame();
@@ -291,226 +278,9 @@ void Viewer::inspectWindow() {
   ImGui::End();
 }
 
-void Viewer::helpWindow() {
-  if (!s_.showHelp) return;
-  // Fits the display at any UI scale; the text wraps inside.
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowSize(ImMin(ImVec2(560, 520) * uiScale_, display * 0.9f), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowPos(ImGui::GetIO().DisplaySize * 0.5f, ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
-  if (ImGui::Begin("Help (F1)", &s_.showHelp)) {
-    ImGui::TextUnformatted("Mouse");
-    for (const char* line : {"world and NPC views: left-drag orbits, right- or middle-drag pans, the wheel zooms",
-                             "world view: drag the handles (VRP, PRP, the window's edges, front and back planes)",
-                             "any view: click a vertex to probe it through the pipeline"}) {
-      ImGui::Bullet();
-      ImGui::TextWrapped("%s", line);
-    }
-    ImGui::Spacing();
-    ImGui::TextUnformatted("Keys");
-    const char* keys[][2] = {{"Ctrl+Z", "undo"},
-                             {"Ctrl+Y, Ctrl+Shift+Z", "redo"},
-                             {"Ctrl+N", "new: the default lecture scene"},
-                             {"Ctrl+O", "open a scene"},
-                             {"Ctrl+S / Ctrl+Shift+S", "save (a bundled scene: as a copy) / save as"},
-                             {"Ctrl+Q", "quit (asks when the scene has unsaved changes)"},
-                             {"1 to 5", "style of every view: flat, shaded, wire, hidden-line, hidden removed"},
-                             {"P", "next projection: perspective, parallel, oblique"},
-                             {"C", "next clipping strategy: NPC, WC, divide first (wrong)"},
-                             {"B", "bounding-box test on or off"},
-                             {"R", "reset the observers of the world and NPC views"},
-                             {"Esc", "clear the vertex probe"},
-                             {"F1", "this help"},
-                             {"F11", "lecture mode: one view fills the window (Esc returns)"},
-                             {"Shift+click", "in the camera view: step through the clipping of that polygon"},
-                             {"F12", "screenshot of the whole window (PNG in the working directory)"}};
-    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
-      for (const auto& k : keys) {
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(k[0]);
-        ImGui::TableNextColumn();
-        ImGui::TextWrapped("%s", k[1]);
-      }
-      ImGui::EndTable();
-    }
-  }
-  ImGui::End();
-}
+// ---------------------------------------------------------------- 4 export
 
-// ---------------------------------------------------------------- 4 menus and shortcuts
-
-void Viewer::menuBar() {
-  if (!ImGui::BeginMainMenuBar()) return;
-  const bool fileMenu = ImGui::BeginMenu("File");
-  ui::recordRect(s_, "menu.file");
-  if (fileMenu) {
-    // The browser owns Ctrl+N, Ctrl+O, Ctrl+S, Ctrl+W and F11, F12: the page offers these here only.
-    auto key = [this](const char* shortcut) { return session_.browser() ? nullptr : shortcut; };
-    if (ImGui::MenuItem("New (default lecture scene)", key("Ctrl+N"))) session_.newDocument();
-    ui::recordRect(s_, "menu.new");
-    if (session_.browser()) {
-      if (ImGui::MenuItem("Open a scene or an OBJ mesh…")) session_.chooseFileToOpen();
-      ui::recordRect(s_, "menu.open");
-      if (ImGui::MenuItem("Save (download)")) session_.save();
-      ui::recordRect(s_, "menu.save");
-    } else {
-      if (ImGui::MenuItem("Open scene…", "Ctrl+O")) session_.chooseFileToOpen();
-      if (ImGui::MenuItem("Save", "Ctrl+S")) session_.save();
-      if (ImGui::MenuItem("Save as…", "Ctrl+Shift+S")) session_.saveAs();
-    }
-    if (ImGui::BeginMenu("Presets", !s_.presets.empty())) {
-      for (const SceneFileInfo& p : s_.presets)
-        if (ImGui::MenuItem(p.title.c_str())) {
-          const std::filesystem::path file = p.file;
-          session_.unlessUnsaved([this, file] { session_.openScene(file); });
-        }
-      ImGui::EndMenu();
-    }
-    ImGui::Separator();
-    const bool exportOpen = ImGui::BeginMenu("Export a view");
-    ui::recordRect(s_, "menu.export");
-    if (exportOpen) {
-      exportMenu();
-      ImGui::EndMenu();
-    }
-    if (ImGui::MenuItem("Screenshot", key("F12"))) screenshotRequested_ = true;
-    if (!session_.browser() && ImGui::MenuItem("Quit", "Ctrl+Q")) requestQuit();  // a page is closed by its tab
-    ImGui::EndMenu();
-  }
-  if (ImGui::BeginMenu("Edit")) {
-    if (ImGui::MenuItem("Undo", "Ctrl+Z", false, s_.doc.canUndo())) s_.doc.undo();
-    if (ImGui::MenuItem("Redo", "Ctrl+Y", false, s_.doc.canRedo())) s_.doc.redo();
-    ImGui::EndMenu();
-  }
-  if (ImGui::BeginMenu("Help")) {
-    if (ImGui::MenuItem("Mouse and keys", "F1")) s_.showHelp = true;
-    ImGui::EndMenu();
-  }
-  ImGui::EndMainMenuBar();
-}
-
-void Viewer::shortcuts() {
-  const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantTextInput) return;
-  auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
-  if (io.KeyCtrl) {
-    if (pressed(keys::kZ) && io.KeyShift) s_.doc.redo();
-    else if (pressed(keys::kZ)) s_.doc.undo();
-    if (pressed(keys::kY)) s_.doc.redo();
-    if (session_.browser()) return;  // Ctrl+S, Ctrl+O, Ctrl+N, Ctrl+W, Ctrl+Q are the browser's: the File menu has them
-    if (pressed(keys::kS)) {
-      if (io.KeyShift) session_.saveAs();
-      else session_.save();
-    }
-    if (pressed(keys::kN)) session_.newDocument();
-    if (pressed(keys::kO)) session_.chooseFileToOpen();
-    if (pressed(keys::kQ)) requestQuit();
-    return;
-  }
-  if (pressed(keys::kF11) && !session_.browser()) s_.lectureMode = !s_.lectureMode;
-  if (pressed(keys::kEscape) && s_.lectureMode) {
-    s_.lectureMode = false;
-    return;
-  }
-  if (pressed(keys::kF1)) s_.showHelp = !s_.showHelp;
-  if (pressed(keys::kF12) && !session_.browser()) screenshotRequested_ = true;
-  if (pressed(keys::kEscape)) s_.probe.reset();
-  for (size_t i = 0; i < kAllStyles.size(); ++i)  // 1 to 5
-    if (pressed(keys::kDigit1 + int(i)))
-      s_.display.camera.style = s_.display.world.style = s_.display.npc.style = kAllStyles[i];
-  if (pressed(keys::kP)) {
-    Camera& c = s_.doc.scene().camera;
-    c.projection = nextOf(kAllProjections, c.projection);
-  }
-  if (pressed(keys::kC)) s_.pipeline.strategy = nextOf(kAllClipStrategies, s_.pipeline.strategy);
-  if (pressed(keys::kB)) s_.pipeline.boundingBoxTest = !s_.pipeline.boundingBoxTest;
-  if (pressed(keys::kR)) {
-    s_.display.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
-    s_.display.npc.orbit = defaultNpcOrbit();
-  }
-}
-
-namespace {
-
-// A view as the viewer shows it, as a request (app/views/render_request.h): its size, every view
-// setting (styles, observers, overlays, probe, step-through, morph), the pipeline's options and
-// the UI scale: what the render thread draws it from.
-RenderRequest shownViewRequest(const ViewerState& s, ViewKind kind, int width, int height, float scale) {
-  RenderRequest r;
-  r.view = kind;
-  r.width = width;
-  r.height = height;
-  r.pipeline = s.pipeline;
-  r.scale = scale;
-  r.display = s.display;
-  return r;
-}
-
-}  // namespace
-
-// Each view as it is shown, to PNG, and the wireframe styles also as SVG (vector lines). The PNG is
-// the image on screen, read back (drawn by the render thread from the same settings: drawing it
-// again here would make the window wait for a large scene); the SVG is made from the view's request.
-void Viewer::exportMenu() {
-  struct Entry {
-    ViewKind kind;
-    const char* name;
-  };
-  const Entry entries[] = {{ViewKind::camera, "camera"}, {ViewKind::world, "world"}, {ViewKind::npc, "NPC"}};
-  for (const Entry& e : entries) {
-    // The image shown (drawn in this thread or on the views' render thread: textures are shared).
-    const GLuint texture = images_.texture(e.kind);
-    const ViewKind kind = e.kind;
-    const int w = images_.width(kind), h = images_.height(kind);
-    const std::string png = std::string(e.name) + " view as PNG…";
-    const bool pngChosen = ImGui::MenuItem(png.c_str(), nullptr, false, texture != 0);
-    ui::recordRect(s_, ("export." + std::string(toString(e.kind)) + ".png").c_str());
-    if (pngChosen) {
-      session_.fileDialog().open("Export the " + std::string(e.name) + " view", FileChooser::Mode::save, {".png"},
-                   "vplab-" + std::string(toString(e.kind)) + ".png", [this, texture, kind, w, h](const std::filesystem::path& f) {
-                     try {
-                       // OpenGL ES (the browser's WebGL2) cannot read a texture back, and the page has
-                       // no render thread to wait for: the view is drawn again, as it is shown.
-                       const bool es = gl::dialectOf(ctx_.gl()) == gl::GlslDialect::es300;
-                       const bool camera = kind == ViewKind::camera;  // shown at the device's W × H
-                       writePng(es ? exportImage(kind, camera ? 0 : w, camera ? 0 : h) : readTexture(ctx_.gl(), texture), f);
-                       setStatus("exported " + f.string(), false);
-                     } catch (const Error& err) {
-                       setStatus(err.what(), true);
-                     }
-                   });
-    }
-    const std::optional<std::string> why = svgExportError(e.kind, s_.doc.shown(), s_.display);
-    const std::string svg = std::string(e.name) + " view as SVG…";
-    const bool svgChosen = ImGui::MenuItem(svg.c_str(), nullptr, false, !why && texture != 0);
-    ui::recordRect(s_, ("export." + std::string(toString(e.kind)) + ".svg").c_str());
-    if (svgChosen) {
-      session_.fileDialog().open("Export the " + std::string(e.name) + " view", FileChooser::Mode::save, {".svg"},
-                   "vplab-" + std::string(toString(kind)) + ".svg", [this, kind, w, h](const std::filesystem::path& f) {
-                     try {
-                       writeSvg(svgOfRequest(s_.doc.shown(), shownViewRequest(s_, kind, w, h, uiScale_)), f);
-                       setStatus("exported " + f.string(), false);
-                     } catch (const Error& err) {
-                       setStatus(err.what(), true);
-                     }
-                   });
-    }
-    if (why && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", why->c_str());
-  }
-}
-
-// ---------------------------------------------------------------- 5 export
-
-Image Viewer::exportImage(ViewKind kind, int width, int height) {
-  const GLint previous = [&] {
-    GLint fb = 0;
-    ctx_.gl().GetIntegerv(GL_FRAMEBUFFER_BINDING, &fb);
-    return fb;
-  }();
-  Image image = renderImage(renderer_, *s_.ranScene, shownViewRequest(s_, kind, width, height, uiScale_));
-  ctx_.gl().BindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
-  return image;
-}
+Image Viewer::exportImage(ViewKind kind, int width, int height) { return menus_.exportImage(kind, width, height); }
 
 void Viewer::forgetViewImages() { images_.forget(); }
 

@@ -1,11 +1,18 @@
 // The interactive viewer (README "The viewer"): the three views in resizable ImGui windows beside
 // the panels (camera, scene, matrices, vertex probe, clipping, display). It draws one frame at a
 // time into the bound framebuffer, so the same code runs in a GLFW window and headless (`vplab
-// render --view ui`, the UI tests).
+// render --view ui`, the UI tests). It owns ImGui's context and composes the frame from its parts:
+//   ShownRun   the pipeline's run of the shown scene (app/ui/shown_run.h)
+//   ViewImages the views' images, here or on the render thread (app/render/view_images.h)
+//   ViewPanes  the views in their windows and the mouse in them (app/ui/view_panes.h)
+//   Session    files, autosave, recovery, links (app/ui/session.h)
+//   Menus      the menus, keys, help and export (app/ui/menus.h)
+// and the panels (app/ui/panels.h), all over one ViewerState (app/ui/viewer_state.h).
 #pragma once
 
 #include "app/context/context.h"
 #include "app/gl/render_target.h"
+#include "app/ui/menus.h"
 #include "app/ui/session.h"
 #include "app/ui/shown_run.h"
 #include "app/ui/view_panes.h"
@@ -80,7 +87,7 @@ class Viewer {
   void forgetViewImages();
 
   /// Written by F12 into the working directory; the runner reads the window back.
-  bool screenshotRequested() const { return screenshotRequested_; }
+  bool screenshotRequested() const { return s_.screenshotRequested; }
   void screenshotTaken(const std::string& file);
   /// F12's screenshot could not be taken (`why`: the views not ready in time): said in the status line.
   void screenshotFailed(const std::string& why);
@@ -91,12 +98,8 @@ class Viewer {
   std::vector<ViewKind> viewsNotReady() const;
 
  private:
-  void menuBar();
-  void shortcuts();
   void controlsWindow();
   void inspectWindow();
-  void helpWindow();
-  void exportMenu();
   /// The pipeline's run of the shown scene, when it changed (app/ui/shown_run.h).
   void updateRun();
   void setStatus(std::string message, bool error);
@@ -110,10 +113,10 @@ class Viewer {
   ShownRun run_;
   ViewPanes panes_;
   Session session_;
+  Menus menus_;
   float uiScale_;
   int lastWidth_ = 0, lastHeight_ = 0;
   bool relayout_ = true;
-  bool screenshotRequested_ = false;
   unsigned lastActive_ = 0;  // the ImGui item active in the previous frame
   int settleFrames_ = 2;     // frames still to draw without input (wakeIn)
 };

@@ -78,6 +78,7 @@ struct ViewerState {
   bool seedForm = false;        // matrices in the lecture notes' row-vector form (transposed)
   bool showHelp = false;
   bool quitRequested = false;   // asked to quit; a dirty document asks first
+  bool screenshotRequested = false;  // F12 or the menu: the window (or the page) reads the frame back
   bool quitConfirmed = false;
   // Lecture features.
   bool showMorph = false;       // the stage morph window

@@ -49,9 +49,13 @@ class Cli : public test::ProcessTest {
 
   /// `vplab ARGS` in a real window under Xvfb (xvfb-run from scripts/setup.sh), with an autosave
   /// directory of the test's own. The exit code is vplab's: xvfb-run may end with a status of its own
-  /// (5) when cleaning up its temporary directory fails after vplab has ended.
+  /// (5) when cleaning up its temporary directory fails after vplab has ended. Under the sanitizer
+  /// stage the window runs with AddressSanitizer but without the leak check: Mesa's GLX driver leaks
+  /// 240 bytes and is unloaded before the check, so no suppression can name it
+  /// (tests/sanitizers/lsan.supp).
   ProcessResult windowVplab(const std::string& args) {
-    const std::string inner = "XDG_STATE_HOME=state " + shellQuoted(VPLAB_EXE) + " " + args + "; echo $? > vplab-status";
+    const std::string inner = "XDG_STATE_HOME=state ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\" " +
+                              shellQuoted(VPLAB_EXE) + " " + args + "; echo $? > vplab-status";
     ProcessResult r = sh("xvfb-run -a -s '-screen 0 1280x800x24' sh -c " + shellQuoted(inner));
     std::ifstream status(dir_ / "vplab-status");
     if (int code = -1; status >> code) r.exitCode = code;
