@@ -79,6 +79,21 @@ inline size_t distinctColours(const Image& image) {
 }
 
 /// How many pixels differ at all between two images of the same size.
+/// The default scene's camera with one sphere of `segments` segments in place of its objects: 512
+/// gives 512 · 254 quads and 1 024 triangles at the poles, about 260 000 triangles on the GPU (a
+/// quarter of assets/scenes/large-mesh.json): views that take seconds on llvmpipe, a pipeline run
+/// of tens of milliseconds.
+inline Scene sphereScene(int segments) {
+  Scene scene = defaultScene();
+  SceneObject sphere;
+  sphere.name = "sphere";
+  sphere.shape = Shape::sphere;
+  sphere.segments = segments;
+  buildMesh(sphere, {});
+  scene.objects = {sphere};
+  return scene;
+}
+
 inline size_t differingPixels(const Image& a, const Image& b) {
   EXPECT_EQ(a.width, b.width);
   EXPECT_EQ(a.height, b.height);

@@ -15,19 +15,6 @@
 namespace vplab {
 namespace {
 
-/// A sphere of 512 segments, about 260 000 triangles (a quarter of assets/scenes/large-mesh.json):
-/// its run takes tens of ms, far more than the millisecond a frame waits for it.
-Scene largeScene() {
-  Scene scene = defaultScene();
-  SceneObject sphere;
-  sphere.name = "sphere";
-  sphere.shape = Shape::sphere;
-  sphere.segments = 512;
-  buildMesh(sphere, {});
-  scene.objects = {sphere};
-  return scene;
-}
-
 PipelineWorker::Finished waitFor(PipelineWorker& worker, uint64_t ticket) {
   for (int i = 0; i < 600; ++i)  // 60 s
     if (auto done = worker.take(ticket, 0.1); done && done->ticket == ticket) return *done;
@@ -89,7 +76,7 @@ TEST(PipelineWorker, AFailingRunIsAnErrorNotACrash) {
 // the picture is the one the synchronous viewer draws after the same edit.
 TEST(PipelineWorker, TheViewerDrawsOnWhileALargeSceneRunsThenShowsTheNewRun) {
   GlContext& context = *test::egl().context;
-  const Scene scene = largeScene();
+  const Scene scene = test::sphereScene(512);
   HeadlessViewer sync(context, scene, 1280, 720), async(context, scene, 1280, 720);
   async.viewer().usePipelineWorker({});
   sync.frames(3);

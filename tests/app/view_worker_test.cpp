@@ -17,20 +17,6 @@ namespace vplab {
 namespace {
 
 constexpr int kWidth = 1280, kHeight = 720;
-/// The default scene with one sphere of 512 segments: 512 · 254 quads and 1 024 triangles at the
-/// poles, about 260 000 triangles on the GPU (a quarter of assets/scenes/large-mesh.json). Its
-/// hidden-line camera view takes seconds on llvmpipe; its pipeline run well under a second.
-Scene largeScene() {
-  Scene scene = defaultScene();
-  SceneObject sphere;
-  sphere.name = "sphere";
-  sphere.shape = Shape::sphere;
-  sphere.segments = 512;
-  buildMesh(sphere, {});
-  scene.objects = {sphere};
-  return scene;
-}
-
 bool anyBusy(const Viewer& v) {
   for (ViewKind k : {ViewKind::world, ViewKind::camera, ViewKind::npc})
     if (v.viewBusy(k)) return true;
@@ -76,7 +62,7 @@ void setStyle(HeadlessViewer& v, Style style) {
 
 TEST(ViewWorker, TheWindowKeepsDrawingWhileAViewIsRedrawnThenShowsItsNewImage) {
   GlContext& context = *test::egl().context;
-  const Scene scene = largeScene();
+  const Scene scene = test::sphereScene(512);
 
   // The synchronous viewer (headless, as before the render thread): the frame that changes the
   // style waits for the hidden-line views.
