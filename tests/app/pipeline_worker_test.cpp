@@ -100,9 +100,7 @@ TEST(PipelineWorker, TheViewerDrawsOnWhileALargeSceneRunsThenShowsTheNewRun) {
   async.frames(2);
   EXPECT_EQ(dumpJson(async.state().run()), dumpJson(sync.state().run()));
   const Image a = async.image(), b = sync.image();
-  ASSERT_EQ(a.pixels.size(), b.pixels.size());
-  size_t differ = 0;
-  for (size_t i = 0; i < a.pixels.size(); ++i) differ += a.pixels[i] != b.pixels[i];
+  const size_t differ = test::differingPixels(a, b);
   if (differ) {
     writePng(a, (test::outputDir() / "pipeline_worker_async.png").string());
     writePng(b, (test::outputDir() / "pipeline_worker_sync.png").string());
