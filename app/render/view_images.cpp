@@ -21,33 +21,34 @@ constexpr double kFrameWaitForViews = 0.03;
 }  // namespace
 
 GLuint drawViewInto(GlContext& context, ViewRenderer& renderer, ViewTargets& t, const ViewRequest& r) {
+  const Scene& scene = *r.scene;
   const PipelineRun& run = *r.run;
   switch (r.kind) {
     case ViewKind::world:
       t.world.resize(r.width, r.height, r.samples);
-      renderer.drawWorld(r.scene, run, r.settings, t.world);
+      renderer.drawWorld(scene, run, r.settings, t.world);
       t.world.resolve();
       return t.world.colorTexture();
     case ViewKind::npc:
       t.npc.resize(r.width, r.height, r.samples);
-      renderer.drawNpc(r.scene, run, r.settings, t.npc);
+      renderer.drawNpc(scene, run, r.settings, t.npc);
       t.npc.resolve();
       return t.npc.colorTexture();
     case ViewKind::morph:
       t.morph.resize(r.width, r.height, r.samples);
-      renderer.drawMorph(r.scene, run, r.settings, t.morph);
+      renderer.drawMorph(scene, run, r.settings, t.morph);
       t.morph.resolve();
       return t.morph.colorTexture();
     case ViewKind::camera:
     case ViewKind::all:
       // At the device's W × H: pixel-aligned with DC (shown scaled to fit).
-      t.camera.resize(r.scene.device.width, r.scene.device.height, 1);
-      renderer.drawCamera(r.scene, run, r.settings, t.camera);
+      t.camera.resize(scene.device.width, scene.device.height, 1);
+      renderer.drawCamera(scene, run, r.settings, t.camera);
       if (!r.settings.overlays.difference) return t.camera.colorTexture();
       {
         // The GPU's image against the CPU's clipped polygons filled: differing pixels in magenta.
         const Image gpu = t.camera.read();
-        const Image cpu = rasterizeClippedPolygons(run, r.scene.background, gpu.width, gpu.height);
+        const Image cpu = rasterizeClippedPolygons(run, scene.background, gpu.width, gpu.height);
         return uploadImageTo(context.gl(), t.difference, differenceImage(gpu, cpu, 0));
       }
     case ViewKind::divideFirst:
@@ -80,8 +81,8 @@ void ViewImages::endFrame() {
 GLuint ViewImages::image(ViewRequest r, unsigned runRevision) {
   Slot& slot = slots_[size_t(r.kind)];
   const bool device = r.kind == ViewKind::camera || r.kind == ViewKind::all;  // drawn at the device's W × H
-  slot.width = device ? r.scene.device.width : r.width;
-  slot.height = device ? r.scene.device.height : r.height;
+  slot.width = device ? r.scene->device.width : r.width;
+  slot.height = device ? r.scene->device.height : r.height;
   slot.busy = false;
   slot.asked = true;
   Stamp stamp{runRevision, r.settings, r.width, r.height, r.samples, r.uiScale};

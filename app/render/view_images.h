@@ -20,11 +20,12 @@
 
 namespace vplab {
 
-/// Everything a view's image is drawn from. `run` is the CPU pipeline's run of `scene` (published,
-/// never copied: app/ui/viewer.h); the scene shares its meshes, a cheap copy.
+/// Everything a view's image is drawn from. `run` is the CPU pipeline's run of `scene`, both
+/// published together and never copied (app/ui/shown_run.h): asking for a view every frame copies
+/// two pointers.
 struct ViewRequest {
   ViewKind kind = ViewKind::world;
-  Scene scene;
+  std::shared_ptr<const Scene> scene;
   std::shared_ptr<const PipelineRun> run;
   DisplaySettings settings;
   int width = 0, height = 0, samples = 1;

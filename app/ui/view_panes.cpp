@@ -91,7 +91,7 @@ double aspectOf(ImVec2 size) {
 // changes no state: what it shows was settled before.
 GLuint ViewPanes::drawView(ViewKind kind, ImVec2 size) {
   const auto [w, h] = imagePixels(size);
-  return images_.image({kind, *s_.ranScene, s_.ran, s_.display, w, h, s_.antialias ? 4 : 1, uiScale_}, run_.revision());
+  return images_.image({kind, s_.ranScene, s_.ran, s_.display, w, h, s_.antialias ? 4 : 1, uiScale_}, run_.revision());
 }
 
 void ViewPanes::busyMark(ViewKind kind) {
