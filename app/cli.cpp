@@ -6,10 +6,10 @@
 #include "app/render/headless.h"
 #include "app/ui/headless_viewer.h"
 #include "app/ui/run_viewer.h"
-#include "pipeline/dump.h"
+#include "io/dump.h"
 #include "pipeline/error.h"
-#include "pipeline/limits.h"
-#include "pipeline/scene_io.h"
+#include "io/limits.h"
+#include "io/scene_io.h"
 
 #include <CLI/CLI.hpp>
 
@@ -76,7 +76,7 @@ CLI::Validator extensionIn(std::vector<std::string> extensions) {
       list);
 }
 
-/// The picture `vplab render` makes must stay within the image limits (pipeline/limits.h), checked
+/// The picture `vplab render` makes must stay within the image limits (io/limits.h), checked
 /// before any framebuffer is made. --view all puts three views side by side under a title strip.
 void checkImageSize(const std::string& view, int w, int h) {
   const bool all = view == "all";

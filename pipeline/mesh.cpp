@@ -23,17 +23,6 @@ void Mesh::addFace(std::span<const uint32_t> face) {
   faceStart.push_back(uint32_t(indices.size()));
 }
 
-void checkMeshSize(const MeshSize& size, const MeshSize& used, const Limits& limits) {
-  auto check = [](size_t n, size_t before, size_t limit, const char* what) {
-    if (n > limit - std::min(before, limit))
-      throw Error(std::to_string(n) + " " + what + (before ? " (after " + std::to_string(before) + " in earlier objects)" : "") +
-                  " exceed the limit of " + std::to_string(limit) + " " + what + " per scene");
-  };
-  check(size.faces, used.faces, limits.faces, "faces");
-  check(size.vertices, used.vertices, limits.vertices, "vertices");
-  check(size.corners, used.corners, limits.corners, "face corners");
-}
-
 Vec3 faceNormal(const Mesh& mesh, size_t f) {
   const auto face = mesh.face(f);
   Vec3 n{0};

@@ -3,9 +3,9 @@
 // and computes its outcode once, whatever the number of faces using it (Hill 7.4).
 #pragma once
 
-#include "pipeline/limits.h"
 #include "pipeline/math.h"
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -35,9 +35,6 @@ struct Mesh {
 struct MeshSize {
   size_t faces = 0, vertices = 0, corners = 0;
 };
-/// Throws vplab::Error naming the limit and the value when a mesh of `size` does not fit in what is
-/// left of the scene's budget (`used` of `limits` already taken by earlier objects).
-void checkMeshSize(const MeshSize& size, const MeshSize& used, const Limits& limits);
 
 /// Newell's normal of face f (unnormalized; robust for non-planar and concave faces).
 Vec3 faceNormal(const Mesh& mesh, size_t f);

@@ -18,7 +18,8 @@ Mesh sphere(int n);
 /// One polygon through the given vertices, in the given order (at least 3).
 Mesh polygon(const std::vector<Vec3>& vertices);
 
-inline constexpr int kMaxSegments = kDefaultLimits.segments;
+/// The most segments a cylinder or sphere may have (a file may be limited to fewer: io/limits.h).
+inline constexpr int kMaxSegments = 2048;
 
 /// The sizes cylinder(n) and sphere(n) will have (n checked by them, not here).
 MeshSize cylinderSize(int n);

@@ -1,7 +1,6 @@
 #include "pipeline/scene.h"
 
 #include "pipeline/error.h"
-#include "pipeline/obj_mesh.h"
 #include "pipeline/primitives.h"
 
 namespace vplab {
@@ -25,45 +24,19 @@ std::optional<Shape> shapeFromString(std::string_view s) {
   return std::nullopt;
 }
 
-void buildMesh(SceneObject& o, const std::filesystem::path& baseDir, const Limits& limits, const MeshSize& used) {
-  // Primitives are sized before they are built, so a scene cannot ask for more than the limits allow.
-  auto segmentsWithin = [&] {
-    if (o.segments > limits.segments)
-      throw Error(std::to_string(o.segments) + " segments exceed the limit of " + std::to_string(limits.segments));
-  };
+std::shared_ptr<const Mesh> primitiveMesh(const SceneObject& o) {
   switch (o.shape) {
-    case Shape::cube:
-      checkMeshSize({6, 8, 24}, used, limits);
-      o.mesh = std::make_shared<Mesh>(cube());
-      break;
-    case Shape::tetrahedron:
-      checkMeshSize({4, 4, 12}, used, limits);
-      o.mesh = std::make_shared<Mesh>(tetrahedron());
-      break;
-    case Shape::cylinder:
-      segmentsWithin();
-      checkMeshSize(cylinderSize(o.segments), used, limits);
-      o.mesh = std::make_shared<Mesh>(cylinder(o.segments));
-      break;
-    case Shape::sphere:
-      segmentsWithin();
-      checkMeshSize(sphereSize(o.segments), used, limits);
-      o.mesh = std::make_shared<Mesh>(sphere(o.segments));
-      break;
+    case Shape::cube: return std::make_shared<const Mesh>(cube());
+    case Shape::tetrahedron: return std::make_shared<const Mesh>(tetrahedron());
+    case Shape::cylinder: return std::make_shared<const Mesh>(cylinder(o.segments));
+    case Shape::sphere: return std::make_shared<const Mesh>(sphere(o.segments));
     case Shape::polygon:
-      checkMeshSize({1, o.vertices.size(), o.vertices.size()}, used, limits);
       for (const Vec3& v : o.vertices)
         if (!isFinite(v)) throw Error("polygon vertex " + format(v) + " is not finite");
-      o.mesh = std::make_shared<Mesh>(polygon(o.vertices));
-      break;
-    case Shape::mesh: {
-      if (o.file.empty()) throw Error("a mesh object needs a file");
-      const std::filesystem::path file(o.file);
-      const std::filesystem::path p = file.is_absolute() ? file : baseDir / file;
-      o.mesh = std::make_shared<Mesh>(loadObj(p, limits, used));
-      break;
-    }
+      return std::make_shared<const Mesh>(polygon(o.vertices));
+    case Shape::mesh: break;
   }
+  throw Error("object \"" + o.name + "\" is a mesh read from a file, not a primitive");
 }
 
 std::optional<std::string> sceneError(const Scene& scene) {
@@ -105,7 +78,7 @@ Scene defaultScene() {
     o.color = color;
     o.transform = std::move(t);
     o.segments = segments;
-    buildMesh(o, {});
+    o.mesh = primitiveMesh(o);
     s.objects.push_back(std::move(o));
   };
   add("cube", Shape::cube, {0.86, 0.33, 0.27}, {{0, 0, 0}, {{{0, 1, 0}, 30, {}}}, {1.3, 1.3, 1.3}});

@@ -61,10 +61,10 @@ struct Scene {
   bool operator==(const Scene&) const = default;
 };
 
-/// Builds the object's MC mesh from its shape (OBJ files relative to baseDir). Throws vplab::Error,
-/// before allocating, when the mesh would exceed what `used` (earlier objects) leaves of `limits`.
-void buildMesh(SceneObject& object, const std::filesystem::path& baseDir, const Limits& limits = kDefaultLimits,
-               const MeshSize& used = {});
+/// The MC mesh of a primitive object (every shape but Shape::mesh, whose faces are read from a file
+/// by io/build_mesh.h). Throws vplab::Error naming the value for a shape's invalid parameters. The
+/// size is not checked against a file's limits here: io's buildMesh does that before calling this.
+std::shared_ptr<const Mesh> primitiveMesh(const SceneObject& object);
 
 /// Why the scene cannot be run (an invalid camera, an object's invalid transform, a missing mesh),
 /// naming the values; nullopt when it can.

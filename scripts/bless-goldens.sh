@@ -3,9 +3,9 @@
 #
 #   scripts/bless-goldens.sh            (build directory: $VPLAB_BUILD, default build/)
 #
-# The golden tests (tests/app/golden_test.cpp) normally compare each image with its golden. With
+# The golden tests (tests/app/ui/golden_test.cpp) normally compare each image with its golden. With
 # VPLAB_BLESS=1 they write the image they rendered as the new golden instead (and remove the goldens
-# of scenes that are no longer in assets/scenes/). This script builds test_app, runs the golden tests
+# of scenes that are no longer in assets/scenes/). This script builds test_ui, runs the golden tests
 # that way, runs them again normally to confirm that they now pass, and lists what changed.
 #
 # A golden is only as right as the eyes that checked it: LOOK at every changed PNG (git status
@@ -17,7 +17,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${VPLAB_BUILD:-$root/build}"
 
 cmake -S "$root" -B "$build" >/dev/null
-cmake --build "$build" -j "$(nproc)" --target test_app vplab
+cmake --build "$build" -j "$(nproc)" --target test_ui test_render vplab
 
 # The golden tests are GoldenDefault (parameterized: Views/GoldenDefault.*), GoldenUi and
 # GoldenScenes; GoldenTolerance skips itself while blessing. ctest runs them as every image test is

@@ -5,8 +5,8 @@
 #include "app/course/grade_report.h"
 #include "app/render/headless.h"
 #include "pipeline/error.h"
-#include "pipeline/read_file.h"
-#include "pipeline/scene_io.h"
+#include "io/read_file.h"
+#include "io/scene_io.h"
 
 #include <CLI/CLI.hpp>
 #include <stb_image.h>

@@ -3,8 +3,8 @@
 #include "app/export/svg.h"
 #include "app/render/headless.h"
 #include "pipeline/error.h"
-#include "pipeline/rational.h"
-#include "pipeline/scene_io.h"
+#include "course/rational.h"
+#include "io/scene_io.h"
 
 #include <fstream>
 

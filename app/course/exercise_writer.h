@@ -4,10 +4,10 @@
 // The solution follows the lecture notes' order and notation (15.2.1–15.2.5, 15.3; Hill 7.4):
 // modeling, view orientation (N, U, V, VPD), view mapping, clipping in homogeneous coordinates
 // (boundary coordinates, outcode, Sutherland–Hodgman plane by plane), the division by w and the
-// device mapping. Every number is the pipeline's own (pipeline/exercise.h), printed as an exact
-// fraction where it is a small rational (pipeline/rational.h), else rounded to 4 decimals.
+// device mapping. Every number is the pipeline's own (course/exercise.h), printed as an exact
+// fraction where it is a small rational (course/rational.h), else rounded to 4 decimals.
 #pragma once
-#include "pipeline/exercise.h"
+#include "course/exercise.h"
 
 #include <filesystem>
 #include <string>

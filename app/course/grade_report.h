@@ -2,7 +2,7 @@
 // (--junit FILE, what course autograders read), built from one GradeReport.
 #pragma once
 #include "app/course/grade_image.h"
-#include "pipeline/grading.h"
+#include "course/grading.h"
 
 #include <nlohmann/json.hpp>
 #include <string>

@@ -1,6 +1,6 @@
 // The camera panel: the synthetic camera's parameters (lecture notes 15.1–15.2) and what follows from them.
 #include "app/ui/panels.h"
-#include "app/ui/picking.h"
+#include "app/core/picking.h"
 #include "app/ui/widgets.h"
 
 namespace vplab::ui {

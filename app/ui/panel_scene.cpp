@@ -4,7 +4,8 @@
 
 #include "pipeline/clipping.h"
 #include "pipeline/error.h"
-#include "pipeline/obj_mesh.h"
+#include "io/obj_mesh.h"
+#include "io/build_mesh.h"
 
 #include <imgui_stdlib.h>
 
@@ -20,7 +21,7 @@ void addObject(ViewerState& s, Shape shape, std::string file) {
   o.color = {0.75, 0.75, 0.78};
   if (shape == Shape::polygon) o.vertices = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
   o.transform.translate = scene.camera.vrp;  // where the camera looks
-  if (shape == Shape::mesh) {  // read on the viewer's worker thread (app/ui/loader.h)
+  if (shape == Shape::mesh) {  // read on the viewer's worker thread (app/core/loader.h)
     s.objectToLoad = std::move(o);
     return;
   }
@@ -89,7 +90,7 @@ void objectEditor(ViewerState& s, SceneObject& o) {
       if (o.shape == Shape::sphere) n += n % 2;
       SceneObject rebuilt = o;
       rebuilt.segments = n;
-      buildMesh(rebuilt, {});
+      rebuilt.mesh = primitiveMesh(rebuilt);
       o = std::move(rebuilt);
     }
     tooltip("n: the number of facets around (lecture notes 16.2).", "n: Anzahl der Facetten (16.2).");

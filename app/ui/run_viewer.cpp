@@ -167,7 +167,9 @@ namespace {
 int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignals& signals, const ViewerLaunch& launch) {
   std::string shownTitle;
   int frames = 0;
-  std::optional<double> waitingSince;  // since when a screenshot or the scripted end waits for the views
+  // Since when (glfwGetTime(), s) a screenshot or the scripted end waits for the views; < 0: not waiting.
+  // (A plain double: GCC 12 warns falsely of an uninitialised std::optional<double> here.)
+  double waitingSince = -1;
   // --report-frames: the longest frame, and the longest of those that answered input after the first
   // (what a user sees as a pause after a key or a drag), in seconds from the frame's start to the swap.
   double longestFrame = 0, longestAnswer = 0;
@@ -220,13 +222,13 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
     // every shown view has its current image (README "The viewer", issue 19).
     if (shot || scripted) {
       if (const std::vector<ViewKind> late = viewer.viewsNotReady(); !late.empty()) {
-        if (!waitingSince) waitingSince = glfwGetTime();
-        if (glfwGetTime() - *waitingSince < launch.waitForViews) {
+        if (waitingSince < 0) waitingSince = glfwGetTime();
+        if (glfwGetTime() - waitingSince < launch.waitForViews) {
           window.swapBuffers();
           continue;  // the render thread wakes the wait when an image is finished
         }
         const std::string why = describeNotReady(late, launch.waitForViews);
-        waitingSince.reset();
+        waitingSince = -1;
         if (quitting) {
           std::cerr << "vplab: " << why << (shot ? "; no screenshot written" : "") << "\n";
           viewer.session().endSession();
@@ -235,7 +237,7 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
         }
         viewer.screenshotFailed(why);
       } else if (shot) {
-        waitingSince.reset();
+        waitingSince = -1;
         const std::string file = viewer.screenshotRequested() ? screenshotName() : launch.screenshotOnQuit;
         writePng(gl::readPixels(window.gl(), 0, w, h), file);
         viewer.screenshotTaken(file);

@@ -1,11 +1,11 @@
 // Index: 1 commands  2 each frame  3 dialogs  4 files and links  5 autosave and recovery
 #include "app/ui/session.h"
 
-#include "app/ui/assets.h"
+#include "app/core/assets.h"
 #include "app/ui/panels.h"
 #include "app/ui/widgets.h"
 #include "pipeline/error.h"
-#include "pipeline/scene_io.h"
+#include "io/scene_io.h"
 
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include <imgui.h>

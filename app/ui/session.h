@@ -1,13 +1,13 @@
 // The document's life beyond editing (README "The viewer"): opening a scene (read on a worker
 // thread, with progress and Cancel) or adding an OBJ, saving (never over a scene shipped with
-// vplab), autosave and recovery after a crash, links (app/ui/url_state.h), and asking before
+// vplab), autosave and recovery after a crash, links (app/core/url_state.h), and asking before
 // unsaved changes are lost. The viewer composes the frame; this owns what happens to the file.
 #pragma once
 
-#include "app/ui/autosave.h"
+#include "app/core/autosave.h"
 #include "app/ui/file_dialog.h"
-#include "app/ui/loader.h"
-#include "app/ui/url_state.h"
+#include "app/core/loader.h"
+#include "app/core/url_state.h"
 #include "app/ui/viewer_state.h"
 
 #include <filesystem>

@@ -1,12 +1,12 @@
 // The CPU pipeline's run of the shown scene (README "The viewer"). It runs again only when the shown
 // scene (Document::shownRevision) or the options changed: frames drawn for hover and ImGui's settling
 // cost none. Headless (the UI tests, `vplab render --view ui`) it runs in the frame that needs it; in
-// the window on a worker thread (app/ui/pipeline_worker.h), so the window never waits for the
+// the window on a worker thread (app/core/pipeline_worker.h), so the window never waits for the
 // pipeline. A finished run is published whole into the viewer's state with the scene it ran on
 // (ViewerState::ran, ranScene), never copied.
 #pragma once
 
-#include "app/ui/pipeline_worker.h"
+#include "app/core/pipeline_worker.h"
 #include "app/ui/viewer_state.h"
 
 #include <array>

@@ -3,7 +3,7 @@
 // Index: 1 helpers  2 drawing a view  3 the windows  4 interaction
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include "app/ui/layout.h"
-#include "app/ui/picking.h"
+#include "app/core/picking.h"
 #include "app/ui/view_panes.h"
 #include "app/ui/widgets.h"
 #include "pipeline/clip_steps.h"

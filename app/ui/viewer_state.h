@@ -1,8 +1,9 @@
 // Everything the interactive viewer knows between frames, in one owned struct (no globals).
 #pragma once
 
-#include "app/ui/assets.h"
-#include "app/ui/document.h"
+#include "app/core/assets.h"
+#include "app/core/document.h"
+#include "app/core/picking.h"
 #include "app/views/views.h"
 #include "pipeline/pipeline.h"
 
@@ -17,16 +18,6 @@
 #include <string>
 
 namespace vplab {
-
-/// A probed vertex: an object of the scene (index into scene.objects) and a vertex of its mesh.
-struct Probe {
-  size_t object = 0;
-  uint32_t vertex = 0;
-  bool operator==(const Probe&) const = default;
-};
-
-/// What can be grabbed in the world view to change the camera directly.
-enum class Handle { none, vrp, prp, windowLeft, windowRight, windowBottom, windowTop, front, back };
 
 /// A mouse drag in a view, from button press to release.
 struct Drag {

@@ -13,9 +13,9 @@
 #include "app/ui/viewer.h"
 #include "app/ui/window_input.h"
 #include "app/web/page_services.h"
-#include "pipeline/dump.h"
+#include "io/dump.h"
 #include "pipeline/error.h"
-#include "pipeline/scene_io.h"
+#include "io/scene_io.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -106,7 +106,7 @@ struct Page {
     }
   }
 
-  /// A link's state (app/ui/url_state.h); a fragment that is not understood is said in the status line.
+  /// A link's state (app/core/url_state.h); a fragment that is not understood is said in the status line.
   void showLink(const std::string& fragment, bool atStart) {
     if (fragment.empty() || fragment == shownHash) return;
     try {

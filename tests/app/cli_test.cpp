@@ -5,9 +5,9 @@
 // half of the Xvfb smoke test (tests/CMakeLists.txt runs the window first).
 #include "app/render/headless.h"
 #include "app/export/image_compare.h"
-#include "pipeline/dump.h"
-#include "pipeline/scene_io.h"
-#include "tests/app/gl_test_support.h"
+#include "io/dump.h"
+#include "io/scene_io.h"
+#include "tests/support/gl_test_support.h"
 #include "tests/support/files.h"
 #include "tests/support/process.h"
 

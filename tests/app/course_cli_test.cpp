@@ -4,7 +4,7 @@
 // (exit codes, the mistake named, --json, --junit, clear errors for malformed input).
 #include "app/views/image.h"
 #include "app/export/cpu_raster.h"
-#include "pipeline/scene_io.h"
+#include "io/scene_io.h"
 #include "tests/support/files.h"
 #include "tests/support/process.h"
 

@@ -8,16 +8,28 @@
 #   outside_<dir>     the outside headers it may include: gl (GL, GLAD, GLFW, EGL, KHR, OSMesa) and
 #                     imgui (Dear ImGui and its backends); none: neither
 #   about_<dir>       what the layer is, for the README
-set(layers pipeline app/views app/fonts app/export app/context app/gl app/render app/ui app/course app bench
-           app/web)
+set(layers pipeline io course app/views app/core app/fonts app/export app/context app/gl app/render app/ui
+           app/course app bench app/web)
 
 set(uses_pipeline pipeline/)
 set(outside_pipeline none)
-set(about_pipeline "the five stages, the scene, meshes, file formats and the course's mathematics (no GL)")
+set(about_pipeline "the five stages, the scene, meshes and primitives: pure math (no files, no GL)")
+
+set(uses_io pipeline/ io/)
+set(outside_io none)
+set(about_io "file formats and their limits: scenes, OBJ meshes, the dump")
+
+set(uses_course pipeline/ io/ course/)
+set(outside_course none)
+set(about_course "the course's mathematics: exercise sheets, exact solutions, grading, mistake models")
 
 set(uses_app/views pipeline/ app/views/)
 set(outside_app/views none)
 set(about_app/views "each view described once, as a display list")
+
+set(uses_app/core pipeline/ io/ app/views/ app/core/)
+set(outside_app/core none)
+set(about_app/core "the viewer's state without GL: document, files, autosave, address, picking, panel texts, the pipeline's worker")
 
 set(uses_app/fonts pipeline/ app/views/ app/fonts/)
 set(outside_app/fonts imgui)
@@ -39,22 +51,22 @@ set(uses_app/render pipeline/ app/views/ app/fonts/ app/export/ app/context/ app
 set(outside_app/render gl imgui)
 set(about_app/render "the GL backend of the display lists, the views' images and their render thread")
 
-set(uses_app/ui pipeline/ app/views/ app/fonts/ app/export/ app/context/ app/gl/ app/render/ app/ui/)
+set(uses_app/ui pipeline/ io/ app/core/ app/views/ app/fonts/ app/export/ app/context/ app/gl/ app/render/ app/ui/)
 set(outside_app/ui gl imgui)
-set(about_app/ui "the viewer: the frame, its session, panels, documents, the pipeline's worker")
+set(about_app/ui "the viewer: the frame, its session, menus, panels, the views' panes")
 
-set(uses_app/course pipeline/ app/views/ app/fonts/ app/export/ app/context/ app/gl/ app/render/ app/course/)
+set(uses_app/course pipeline/ io/ course/ app/views/ app/fonts/ app/export/ app/context/ app/gl/ app/render/ app/course/)
 set(outside_app/course none)
-set(about_app/course "vplab exercise and vplab grade")
+set(about_app/course "the commands vplab exercise and vplab grade on course/: sheets, reports, pictures graded")
 
-set(uses_app pipeline/ app/ bench/)
+set(uses_app pipeline/ io/ course/ app/ bench/)
 set(outside_app none)
 set(about_app "the command line (app/cli.cpp, app/main.cpp)")
 
-set(uses_bench pipeline/ app/views/ app/fonts/ app/export/ app/context/ app/gl/ app/render/ app/ui/ bench/)
+set(uses_bench pipeline/ io/ app/core/ app/views/ app/fonts/ app/export/ app/context/ app/gl/ app/render/ app/ui/ bench/)
 set(outside_bench gl imgui)
 set(about_bench "vplab bench and the benchmark workloads")
 
-set(uses_app/web pipeline/ app/)
+set(uses_app/web pipeline/ io/ app/)
 set(outside_app/web gl imgui)
 set(about_app/web "the page: the browser's frame loop and services")

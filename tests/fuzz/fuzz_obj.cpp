@@ -1,7 +1,7 @@
 // Fuzz target: an OBJ file as a scene's mesh object reads it, then the whole pipeline, with the
 // default lecture scene's camera looking at it.
 #include "pipeline/error.h"
-#include "pipeline/obj_mesh.h"
+#include "io/obj_mesh.h"
 #include "tests/fuzz/fuzz_run.h"
 
 #include <cstddef>

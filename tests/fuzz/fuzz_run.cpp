@@ -1,6 +1,6 @@
 #include "tests/fuzz/fuzz_run.h"
 
-#include "pipeline/dump.h"
+#include "io/dump.h"
 #include "pipeline/error.h"
 #include "pipeline/mesh.h"
 #include "pipeline/pipeline.h"
@@ -29,7 +29,7 @@ void runEverything(const Scene& scene) {
     runPipeline(scene, options, run);  // reuses the buffers, as the viewer does
     // What `vplab dump` checks before it writes anything: every value of every stage is finite.
     // (The dump's text itself is not written here: formatting costs four times the three runs, and
-    // its layout is tested against nlohmann's in tests/pipeline/dump_stream_test.cpp.)
+    // its layout is tested against nlohmann's in tests/io/dump_stream_test.cpp.)
     if (auto e = nonFiniteError(run)) throw Error(*e);
   }
   for (const SceneObject& o : scene.objects) {  // what the GPU path and the wireframes use

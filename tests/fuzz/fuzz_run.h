@@ -2,14 +2,14 @@
 // strategy (with the bounding-box test and edge clipping) and the dump's check of its values.
 #pragma once
 
-#include "pipeline/limits.h"
+#include "io/limits.h"
 #include "pipeline/scene.h"
 
 namespace vplab::fuzz {
 
 /// The limits of the fuzz targets: the default ones, smaller, so that one input runs in
 /// milliseconds (what exceeds them is refused before anything is allocated, which is what they
-/// test); the defaults themselves are tested in tests/pipeline/hardening_test.cpp.
+/// test); the defaults themselves are tested in tests/io/hardening_test.cpp.
 Limits fuzzLimits();
 
 /// Runs the pipeline and the dump's finiteness check over the scene; vplab::Error (a user error) is the only

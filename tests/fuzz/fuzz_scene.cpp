@@ -1,7 +1,7 @@
 // Fuzz target: a scene file (JSON) as `vplab dump --scene` reads it, then the whole pipeline.
 // Mesh files are resolved relative to assets/scenes, so "../meshes/house.obj" is found.
 #include "pipeline/error.h"
-#include "pipeline/scene_io.h"
+#include "io/scene_io.h"
 #include "tests/fuzz/fuzz_run.h"
 
 #include <cstddef>

@@ -3,7 +3,7 @@
 #include "pipeline/camera.h"
 
 #include "pipeline/view_mapping.h"
-#include "test_util.h"
+#include "tests/support/test_util.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

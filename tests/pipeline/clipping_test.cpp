@@ -4,7 +4,7 @@
 #include "pipeline/clipping.h"
 
 #include "pipeline/view_mapping.h"
-#include "test_util.h"
+#include "tests/support/test_util.h"
 
 #include <gtest/gtest.h>
 

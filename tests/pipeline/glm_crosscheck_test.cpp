@@ -21,7 +21,7 @@
 #include "pipeline/camera.h"
 #include "pipeline/device_mapping.h"
 #include "pipeline/view_mapping.h"
-#include "test_util.h"
+#include "tests/support/test_util.h"
 
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>

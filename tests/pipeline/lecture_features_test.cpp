@@ -4,7 +4,7 @@
 #include "pipeline/stage_morph.h"
 #include "pipeline/vanishing_points.h"
 #include "pipeline/view_mapping.h"
-#include "test_util.h"
+#include "tests/support/test_util.h"
 
 #include <gtest/gtest.h>
 

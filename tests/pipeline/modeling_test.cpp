@@ -1,7 +1,7 @@
 // Stage 1, modeling MC → WC (lecture notes 13.1–13.5, 15.2.1; docs/conventions.md stage 1).
 #include "pipeline/modeling.h"
 
-#include "test_util.h"
+#include "tests/support/test_util.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

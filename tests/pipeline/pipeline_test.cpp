@@ -7,7 +7,7 @@
 #include "pipeline/device_mapping.h"
 #include "pipeline/primitives.h"
 #include "pipeline/view_mapping.h"
-#include "test_util.h"
+#include "tests/support/test_util.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 #include "pipeline/primitives.h"
 
 #include "pipeline/error.h"
-#include "test_util.h"
+#include "tests/support/test_util.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

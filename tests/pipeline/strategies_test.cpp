@@ -5,7 +5,7 @@
 #include "pipeline/pipeline.h"
 
 #include "pipeline/view_mapping.h"
-#include "test_util.h"
+#include "tests/support/test_util.h"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,7 @@
 // the view volume's six, in homogeneous NPC (each plane pulled back to a linear form on NPC).
 #include "pipeline/clip_steps.h"
 #include "pipeline/pipeline.h"
-#include "pipeline/scene_io.h"
-#include "test_util.h"
+#include "tests/support/test_util.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -12,7 +11,6 @@ namespace vplab {
 namespace {
 
 using test::Rng;
-using ::testing::HasSubstr;
 
 Scene sceneWithPlanes(Rng& rng, int planes) {
   const Camera c = test::randomCamera(rng, rng.chance(0.5) ? Projection::perspective : Projection::parallel);
@@ -146,28 +144,6 @@ TEST(UserClipPlanes, StepThroughIncludesThemAndEndsAtTheClippersOutput) {
       }
   }
   EXPECT_GT(stepped, 50);
-}
-
-TEST(UserClipPlanes, SceneFilesReadAndWriteThem) {
-  const std::string base = R"({"camera": {"vrp": [0,0,0], "prp": [0,0,5], "vup": [0,1,0],
-      "window": {"xmin": -1, "xmax": 1, "ymin": -1, "ymax": 1}, "front": 2, "back": -2}, "objects": [],
-      "clip_planes": )";
-  const Scene s = parseScene(base + R"([{"normal": [1,0,0], "point": [0.5,0,0]},
-                                        {"normal": [0,1,0], "point": [0,0,0], "enabled": false}]})",
-                             "planes.json", {});
-  ASSERT_EQ(s.clipPlanes.size(), 2u);
-  EXPECT_EQ(s.clipPlanes[0].coefficients(), Vec4(1, 0, 0, -0.5));
-  EXPECT_FALSE(s.clipPlanes[1].enabled);
-  EXPECT_EQ(parseScene(sceneToJson(s), "again", {}).clipPlanes, s.clipPlanes) << "round trip";
-  auto error = [&](const std::string& planes) {
-    return test::errorOf([&] { parseScene(base + planes + "}", "planes.json", {}); });
-  };
-  EXPECT_THAT(error(R"([{"normal": [0,0,0], "point": [0,0,0]}])"), HasSubstr("/clip_planes/0/normal"));
-  EXPECT_THAT(error(R"([{"point": [0,0,0]}])"), HasSubstr("missing required key \"normal\""));
-  EXPECT_THAT(error(R"([{"normal": [1,0,0], "point": [0,0,0], "side": 1}])"), HasSubstr("/clip_planes/0/side"));
-  std::string seven = "[";
-  for (int i = 0; i < 7; ++i) seven += std::string(i ? "," : "") + R"({"normal": [1,0,0], "point": [0,0,0]})";
-  EXPECT_THAT(error(seven + "]"), HasSubstr("at most 6 user clip planes"));
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // The camera view's display list: the filled scene or its edges in WC through the scene camera, the
 // hidden-line styles' occluder before their edges, the DC overlays in the view's pixels.
 #include "app/views/theme.h"
-#include "pipeline/scene_io.h"
+#include "io/scene_io.h"
 #include "pipeline/vanishing_points.h"
 #include "tests/views/view_test_support.h"
 

@@ -1,6 +1,6 @@
 // The divide-first comparison's display list: the divide-first run's clipped polygons in the view's
 // pixels, and Hill 7.4's triangle through the eye plane drawn where the lecture shows it, flipped.
-#include "tests/pipeline/test_util.h"
+#include "tests/support/test_util.h"
 #include "tests/views/view_test_support.h"
 
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "hand_made_lists.h"
+#include "tests/support/hand_made_lists.h"
 
 namespace vplab::draw {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "hand_made_lists.h"
+#include "tests/support/hand_made_lists.h"
 #include "pipeline/error.h"
 
 namespace vplab::draw {

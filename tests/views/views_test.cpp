@@ -1,6 +1,6 @@
 // What holds for every view: its batches are in its observer's space or its pixels, widths and
 // sizes grow with the text scale, labels stay inside, and the names of views and styles.
-#include "pipeline/scene_io.h"
+#include "io/scene_io.h"
 #include "tests/views/view_test_support.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // The world view's display list: the objects inside the view volume solid and outside faded (with
 // their runs, for the backend's partition), the frustum, the camera, the step-through, the labels.
 #include "app/views/theme.h"
-#include "pipeline/scene_io.h"
+#include "io/scene_io.h"
 #include "tests/views/view_test_support.h"
 
 #include <gtest/gtest.h>

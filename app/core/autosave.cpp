@@ -1,0 +1,169 @@
+#include "app/core/autosave.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "app/core/atomic_file.h"
+#include "pipeline/error.h"
+#include "io/scene_io.h"
+
+namespace vplab {
+
+namespace {
+
+constexpr double kNever = 1e9;
+// Scenes are small (meshes stay in their OBJ files); this bounds what a start reads at worst.
+constexpr std::uintmax_t kMaxRecoveryBytes = 64ull << 20;
+
+std::string localTime() {
+  const std::time_t now = std::time(nullptr);
+  char buf[64];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S", std::localtime(&now));
+  return buf;
+}
+
+/// Whether process `pid` still runs vplab (then its file is its live autosave, not a leftover).
+bool vplabRunning(long pid) {
+  if (pid <= 0 || pid == long(::getpid())) return pid == long(::getpid());
+  if (::kill(pid_t(pid), 0) != 0 && errno != EPERM) return false;
+  std::ifstream comm("/proc/" + std::to_string(pid) + "/comm");
+  std::string name;
+  std::getline(comm, name);
+  return !comm || name.find("vplab") != std::string::npos;  // unknown: assume it is
+}
+
+std::string readText(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) throw Error(file.string() + ": not a regular file");
+  const auto size = std::filesystem::file_size(file, ec);
+  if (ec || size > kMaxRecoveryBytes)
+    throw Error(file.string() + ": " +
+                (ec ? ec.message() : "larger than " + std::to_string(kMaxRecoveryBytes) + " bytes"));
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw Error(file.string() + ": cannot read the recovery file");
+  return text.str();
+}
+
+}  // namespace
+
+std::filesystem::path Autosave::defaultDirectory() {
+  if (const char* state = std::getenv("XDG_STATE_HOME"); state && *state == '/')
+    return std::filesystem::path(state) / "vplab";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return std::filesystem::path(home) / ".local/state/vplab";
+  return {};
+}
+
+Autosave::Autosave(std::filesystem::path directory, double delaySeconds)
+    : directory_(std::move(directory)), delay_(delaySeconds) {
+  if (!directory_.empty()) file_ = directory_ / ("recovery-" + std::to_string(::getpid()) + ".json");
+}
+
+void Autosave::update(const Document& doc, double now) {
+  if (file_.empty()) return;
+  if (!doc.dirty()) {
+    if (savedRevision_ != 0) removeFile();
+    pending_ = false;
+    seenRevision_ = doc.revision();
+    return;
+  }
+  if (doc.revision() != seenRevision_) {  // a new change: wait until it is `delay` old
+    seenRevision_ = doc.revision();
+    changedAt_ = now;
+    pending_ = seenRevision_ != savedRevision_;
+  }
+  if (pending_ && now - changedAt_ >= delay_) write(doc);
+}
+
+double Autosave::dueIn(double now) const {
+  return pending_ ? std::max(0.0, changedAt_ + delay_ - now) : kNever;
+}
+
+bool Autosave::writeNow(const Document& doc) {
+  if (file_.empty()) return false;
+  if (doc.dirty() && (pending_ || savedRevision_ != doc.revision())) write(doc);
+  return doc.dirty() && savedRevision_ == doc.revision();
+}
+
+void Autosave::write(const Document& doc) {
+  pending_ = false;
+  try {
+    std::error_code ec;
+    std::filesystem::create_directories(directory_, ec);
+    if (ec) throw Error(directory_.string() + ": cannot create the autosave directory: " + ec.message());
+    nlohmann::ordered_json j;
+    j["scene_path"] = doc.path().empty() ? std::string() : std::filesystem::absolute(doc.path()).string();
+    j["saved_at"] = localTime();
+    j["scene"] = nlohmann::ordered_json::parse(sceneToJson(doc.scene()));
+    writeFileAtomically(file_, j.dump(2) + "\n");
+    savedRevision_ = doc.revision();
+    error_.clear();
+  } catch (const std::exception& e) {
+    error_ = std::string("autosave failed: ") + e.what();
+  }
+}
+
+void Autosave::removeFile() {
+  if (file_.empty()) return;
+  std::error_code ignored;
+  std::filesystem::remove(file_, ignored);
+  savedRevision_ = 0;
+}
+
+std::optional<Recovery> Autosave::find(const std::filesystem::path& directory) {
+  std::optional<Recovery> newest;
+  std::filesystem::file_time_type newestTime;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(directory, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("recovery-", 0) != 0 || entry.path().extension() != ".json") continue;
+    const std::string digits = name.substr(9, name.size() - 9 - 5);
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9)
+      continue;
+    if (vplabRunning(std::stol(digits))) continue;
+    std::error_code e;
+    const auto time = entry.last_write_time(e);
+    if (e || (newest && time <= newestTime)) continue;
+    try {
+      const auto j = nlohmann::json::parse(readText(entry.path()));
+      Recovery r{entry.path(), j.at("scene_path").get<std::string>(), j.at("saved_at").get<std::string>()};
+      newest = std::move(r);
+      newestTime = time;
+    } catch (const std::exception&) {
+      continue;  // not one of ours, or damaged: load() would say why; it is not offered
+    }
+  }
+  return newest;
+}
+
+Scene Autosave::load(const Recovery& recovery) {
+  const std::string source = recovery.file.string();
+  try {
+    const auto j = nlohmann::json::parse(readText(recovery.file));
+    const std::filesystem::path baseDir =
+        recovery.scenePath.empty() ? std::filesystem::path() : recovery.scenePath.parent_path();
+    Scene scene = parseScene(j.at("scene").dump(2), source + ": /scene", baseDir);
+    scene.path = recovery.scenePath;
+    return scene;
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw Error(source + ": not a vplab recovery file: " + e.what());
+  }
+}
+
+void Autosave::discard(const Recovery& recovery) {
+  std::error_code ignored;
+  std::filesystem::remove(recovery.file, ignored);
+}
+
+}  // namespace vplab

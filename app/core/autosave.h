@@ -1,0 +1,71 @@
+// Autosave and crash recovery (README "The viewer", "No lost work"): a few seconds after the open
+// scene last changed, and at once when the process is asked to end (SIGTERM, SIGINT) with unsaved
+// changes, the scene is written atomically to the user's state directory
+// ($XDG_STATE_HOME/vplab, by default ~/.local/state/vplab) as recovery-PID.json. A session that
+// ends normally (quit, saved or discarded) removes its file; so a file whose process is gone was
+// left by a crash or a signal, and the next start offers to recover it.
+//
+// The file: {"scene_path": the scene's own file or "" for the built-in one, "saved_at": local
+// time, "scene": the scene in the scene format (io/scene_io.h)}. Mesh files are resolved
+// relative to scene_path's directory, as when the scene itself is opened.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "app/core/document.h"
+
+namespace vplab {
+
+/// A recovery file left by an earlier session.
+struct Recovery {
+  std::filesystem::path file;       // the recovery file
+  std::filesystem::path scenePath;  // the scene it is an unsaved version of (empty: the built-in scene)
+  std::string savedAt;              // local time, for the question asked
+};
+
+class Autosave {
+ public:
+  /// $XDG_STATE_HOME/vplab, else $HOME/.local/state/vplab; empty when neither variable is set.
+  static std::filesystem::path defaultDirectory();
+
+  /// Autosaves into `directory` (created when first needed) `delaySeconds` after the last change.
+  Autosave(std::filesystem::path directory, double delaySeconds);
+
+  /// Call after every frame with the time in seconds (any monotonic clock): writes the scene when a
+  /// change is `delay` old; removes the file when the document is clean (saved or replaced).
+  void update(const Document& doc, double now);
+  /// Seconds until update() has work to do (the viewer's event wait wakes by then); a large number
+  /// when nothing is pending.
+  double dueIn(double now) const;
+  /// Writes the scene now if it has unsaved changes (asked to end by a signal). Returns whether a
+  /// recovery file exists afterwards.
+  bool writeNow(const Document& doc);
+  /// The session ends normally: its recovery file goes.
+  void removeFile();
+
+  const std::filesystem::path& file() const { return file_; }
+  /// The last autosave's error (the state directory not writable, …); empty after a success.
+  const std::string& error() const { return error_; }
+
+  /// The newest recovery file in `directory` whose process has ended, if any.
+  static std::optional<Recovery> find(const std::filesystem::path& directory);
+  /// Reads a recovery file's scene. Throws vplab::Error naming the file.
+  static Scene load(const Recovery& recovery);
+  /// Removes a recovery file (recovered or declined).
+  static void discard(const Recovery& recovery);
+
+ private:
+  void write(const Document& doc);
+
+  std::filesystem::path directory_, file_;
+  double delay_;
+  unsigned savedRevision_ = 0;  // the revision in the file (0: none written)
+  unsigned seenRevision_ = 0;   // the revision update() saw last
+  double changedAt_ = 0;        // when seenRevision_ was first seen
+  bool pending_ = false;        // a dirty revision not yet written
+  std::string error_;
+};
+
+}  // namespace vplab

@@ -1,0 +1,60 @@
+// What the lecturer shows, as the fragment of a link (`#scene=default&vrp=0,0,0&…`): the bundled
+// scene, the synthetic camera, each view's style and observer, and the clipping strategy. The web
+// page keeps its address up to date with it, so that a link reproduces exactly the picture; the
+// desktop tests check the round trip and hostile fragments (tests/app/core/url_state_test.cpp).
+//
+// Numbers are written with the fewest digits that read back to the same double, so a link is short
+// and exact. A fragment is user input: each key and value is checked, and an error names them.
+#pragma once
+
+#include "app/views/views.h"
+#include "pipeline/camera.h"
+#include "pipeline/pipeline.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace vplab {
+
+/// The parts of the synthetic camera a link gives; the others stay the scene's (`#vrp=0.8,0,0`
+/// moves only VRP).
+struct CameraLink {
+  std::optional<Vec3> vrp, prp, vup;  // WC
+  std::optional<ViewWindow> window;   // VRC
+  std::optional<double> front, back;  // VRC z
+  std::optional<Projection> projection;
+  std::optional<ObliqueParams> oblique;
+  bool operator==(const CameraLink&) const = default;
+  bool empty() const { return *this == CameraLink{}; }
+  /// `base` with the link's parts. Throws vplab::Error with cameraError's reason when the result
+  /// is no valid camera.
+  Camera over(const Camera& base) const;
+};
+/// Every part of `camera` (the oblique parameters only for an oblique projection).
+CameraLink cameraLinkOf(const Camera& camera);
+
+/// The parts of a view state a fragment can carry; each is optional (a link may give only a camera).
+struct UrlState {
+  std::string scene;  // a bundled scene's file stem (assets/scenes/NAME.json); empty: not given
+  CameraLink camera;
+  std::optional<Style> cameraStyle, worldStyle, npcStyle;
+  std::optional<Orbit> worldOrbit, npcOrbit;
+  std::optional<ClipStrategy> strategy;
+  bool operator==(const UrlState&) const = default;
+};
+
+/// The longest fragment read: a real one is a few hundred characters.
+inline constexpr size_t kMaxUrlStateLength = 4096;
+
+/// The fragment (without '#') for everything in `state` that is given.
+std::string encodeUrlState(const UrlState& state);
+/// Reads a fragment (a leading '#' is skipped). Throws vplab::Error naming the key and value that
+/// are not understood. Whether the camera parts make a camera is known only over the scene's
+/// camera (CameraLink::over).
+UrlState decodeUrlState(std::string_view fragment);
+
+/// A number as the fewest decimal digits that read back to exactly `v` (finite).
+std::string shortestNumber(double v);
+
+}  // namespace vplab

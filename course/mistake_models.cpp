@@ -1,0 +1,115 @@
+#include "course/mistake_models.h"
+
+#include "io/dump.h"
+#include "pipeline/error.h"
+
+namespace vplab {
+
+using Json = nlohmann::ordered_json;
+
+const std::vector<MistakeModel>& mistakeModels() {
+  static const std::vector<MistakeModel> models = {
+      {Mistake::transposed, "transposed",
+       "the matrices are transposed: the lecture notes' row-vector form (p' = p · M) where the column form (p' = M · p) is asked",
+       "docs/conventions.md \"Notation\"; the matrix panel shows both forms"},
+      {Mistake::yNotFlipped, "y-not-flipped", "y is not flipped in the device mapping: y_dc = H·y instead of H·(1 − y)",
+       "lecture notes 15.2.5: DC has its origin top-left, y down"},
+      {Mistake::divideFirst, "divide-first",
+       "the division by w comes before clipping: points behind the eye flip into view",
+       "Hill 7.4 (clipping in homogeneous coordinates) and the divide-first demo (Clipping panel, strategy divide first)"},
+      {Mistake::frontBackSwapped, "front-back-swapped",
+       "front and back planes are swapped: front → z = 0, back → z = 1",
+       "lecture notes 15.2.4: front → z = 1, back → z = 0 after mirroring back"},
+      {Mistake::leftHandedN, "left-handed-n", "N points from PRP to VRP (VRP − PRP): a left-handed U, V, N",
+       "lecture notes 15.2.2: N = (PRP − VRP)/|PRP − VRP|, the eye on +N"},
+      {Mistake::degreesAsRadians, "degrees-as-radians", "angles in degrees were used as radians",
+       "the scene gives rotations and the oblique φ in degrees"},
+      {Mistake::obliqueShearSign, "oblique-shear-sign",
+       "the oblique shear has the wrong sign: x + z·d·cos φ, y − z·d·sin φ is right",
+       "lecture notes 14.3.2: a point behind the view plane moves by (−d·cos φ, d·sin φ)"},
+  };
+  return models;
+}
+
+const MistakeModel& mistakeModel(Mistake m) { return mistakeModels().at(size_t(m)); }
+
+namespace {
+
+Json dumpOf(const Scene& scene, ClipStrategy strategy = ClipStrategy::npc) {
+  PipelineOptions options;
+  options.strategy = strategy;
+  return Json::parse(dumpJson(runPipeline(scene, options), -1));
+}
+
+void transpose(Json& m) {
+  Json t = m;
+  for (size_t r = 0; r < 4; ++r)
+    for (size_t c = 0; c < 4; ++c) t[r][c] = m[c][r];
+  m = t;
+}
+
+template <class F>
+void forEachPolygon(Json& dump, F&& f) {
+  for (Json& o : dump["objects"])
+    for (Json& p : o["polygons"]) f(p);
+}
+
+}  // namespace
+
+Json referenceDump(const Scene& scene) { return dumpOf(scene); }
+
+Json mistakeDump(const Scene& scene, Mistake m) {
+  switch (m) {
+    case Mistake::divideFirst: return dumpOf(scene, ClipStrategy::divideFirst);
+    case Mistake::leftHandedN: {
+      Scene s = scene;
+      s.camera.prp = 2.0 * s.camera.vrp - s.camera.prp;
+      return dumpOf(s);
+    }
+    case Mistake::degreesAsRadians: {
+      Scene s = scene;
+      for (SceneObject& o : s.objects)
+        for (Rotation& r : o.transform.rotations) r.deg = r.deg * 180.0 / kPi;
+      s.camera.oblique.phiDeg = s.camera.oblique.phiDeg * 180.0 / kPi;
+      return dumpOf(s);
+    }
+    case Mistake::obliqueShearSign: {
+      Scene s = scene;
+      s.camera.oblique.phiDeg += 180.0;
+      return dumpOf(s);
+    }
+    default: break;
+  }
+  Json dump = referenceDump(scene);
+  const double height = dump["device"]["height"].get<double>();
+  switch (m) {
+    case Mistake::transposed:
+      for (auto& [key, matrix] : dump["matrices"].items()) transpose(matrix);
+      for (Json& o : dump["objects"]) transpose(o["wc_from_mc"]);
+      break;
+    case Mistake::yNotFlipped:
+      dump["matrices"]["dc_from_npc"][1] = Json::array({0.0, height, 0.0, 0.0});
+      forEachPolygon(dump, [&](Json& p) {
+        for (Json& v : p["clipped_dc"]) v[1] = height - v[1].get<double>();
+      });
+      break;
+    case Mistake::frontBackSwapped: {
+      // z' = w − z: row 2 of npcFromVrc becomes row 3 − row 2.
+      Json& npc = dump["matrices"]["npc_from_vrc"];
+      for (size_t c = 0; c < 4; ++c) npc[2][c] = npc[3][c].get<double>() - npc[2][c].get<double>();
+      forEachPolygon(dump, [&](Json& p) {
+        for (Json& v : p["npc_h"]) v[2] = v[3].get<double>() - v[2].get<double>();
+        for (Json& code : p["outcodes"]) {
+          const int c = code.get<int>();
+          code = (c & ~0x30) | ((c & 0x10) << 1) | ((c & 0x20) >> 1);  // back (bit 4) ↔ front (bit 5)
+        }
+        for (Json& v : p["clipped_dc"]) v[2] = 1.0 - v[2].get<double>();
+      });
+      break;
+    }
+    default: break;
+  }
+  return dump;
+}
+
+}  // namespace vplab

@@ -1,0 +1,344 @@
+// Index: 0 parsing (io/json_read.h)  1 reading helpers (types, ranges, unknown keys)
+//        2 reading the sections  3 writing
+#include "io/scene_io.h"
+#include "io/build_mesh.h"
+
+#include "pipeline/error.h"
+#include "io/json_read.h"
+#include "io/json_text.h"
+#include "pipeline/clipping.h"
+#include "pipeline/primitives.h"
+#include "io/read_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+
+namespace vplab {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// ---------------------------------------------------------------- 0 parsing
+
+// ---------------------------------------------------------------- 1 reading helpers
+
+/// Reads JSON values at a path, failing with "SOURCE: /path: message".
+struct Reader {
+  std::string source;
+
+  [[noreturn]] void fail(const std::string& path, const std::string& message) const {
+    throw Error(source + ": " + (path.empty() ? "/" : path) + ": " + message);
+  }
+
+  void object(const Json& j, const std::string& path, std::initializer_list<std::string_view> allowed) const {
+    if (!j.is_object()) fail(path, std::string("must be an object, not ") + j.type_name());
+    for (const auto& [key, value] : j.items()) {
+      bool ok = false;
+      for (std::string_view a : allowed) ok = ok || key == a;
+      if (ok) continue;
+      std::string list;
+      for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+      fail(path + "/" + key, "unknown key; allowed here: " + list);
+    }
+  }
+
+  const Json& required(const Json& j, const std::string& path, const char* key) const {
+    auto it = j.find(key);
+    if (it == j.end()) fail(path, std::string("missing required key \"") + key + "\"");
+    return *it;
+  }
+
+  double number(const Json& j, const std::string& path, double lo = -kInf, double hi = kInf) const {
+    if (!j.is_number()) fail(path, std::string("must be a number, not ") + j.type_name());
+    const double v = j.get<double>();
+    if (!std::isfinite(v)) fail(path, "must be finite");
+    if (v < lo || v > hi) fail(path, format(v) + " is out of range [" + format(lo) + ", " + format(hi) + "]");
+    return v;
+  }
+
+  int integer(const Json& j, const std::string& path, int lo, int hi) const {
+    auto range = [&] { return " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]"; };
+    if (!j.is_number_integer()) fail(path, std::string("must be an integer, not ") + j.type_name());
+    if (j.is_number_unsigned() && j.get<uint64_t>() > uint64_t(std::numeric_limits<long long>::max()))
+      fail(path, std::to_string(j.get<uint64_t>()) + range());  // would wrap around as a signed number
+    const auto v = j.get<long long>();
+    if (v < lo || v > hi)
+      fail(path, std::to_string(v) + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return int(v);
+  }
+
+  Vec3 vec3(const Json& j, const std::string& path, double lo = -kInf, double hi = kInf) const {
+    if (!j.is_array() || j.size() != 3)
+      fail(path, std::string("must be an array of 3 numbers, not ") +
+                     (j.is_array() ? "an array of " + std::to_string(j.size()) : std::string(j.type_name())));
+    return {number(j[0], path + "/0", lo, hi), number(j[1], path + "/1", lo, hi), number(j[2], path + "/2", lo, hi)};
+  }
+
+  Vec3 color(const Json& j, const std::string& path) const { return vec3(j, path, 0.0, 1.0); }
+
+  std::string string(const Json& j, const std::string& path) const {
+    if (!j.is_string()) fail(path, std::string("must be a string, not ") + j.type_name());
+    return j.get<std::string>();
+  }
+
+  bool boolean(const Json& j, const std::string& path) const {
+    if (!j.is_boolean()) fail(path, std::string("must be true or false, not ") + j.type_name());
+    return j.get<bool>();
+  }
+
+  const Json& array(const Json& j, const std::string& path) const {
+    if (!j.is_array()) fail(path, std::string("must be an array, not ") + j.type_name());
+    return j;
+  }
+};
+
+// ---------------------------------------------------------------- 2 reading the sections
+
+Camera readCamera(const Reader& r, const Json& j, const std::string& path) {
+  r.object(j, path, {"vrp", "prp", "vup", "window", "front", "back", "projection", "oblique"});
+  Camera c;
+  c.vrp = r.vec3(r.required(j, path, "vrp"), path + "/vrp");
+  c.prp = r.vec3(r.required(j, path, "prp"), path + "/prp");
+  c.vup = r.vec3(r.required(j, path, "vup"), path + "/vup");
+  const std::string wp = path + "/window";
+  const Json& w = r.required(j, path, "window");
+  r.object(w, wp, {"xmin", "xmax", "ymin", "ymax"});
+  c.window.xmin = r.number(r.required(w, wp, "xmin"), wp + "/xmin");
+  c.window.xmax = r.number(r.required(w, wp, "xmax"), wp + "/xmax");
+  c.window.ymin = r.number(r.required(w, wp, "ymin"), wp + "/ymin");
+  c.window.ymax = r.number(r.required(w, wp, "ymax"), wp + "/ymax");
+  c.front = r.number(r.required(j, path, "front"), path + "/front");
+  c.back = r.number(r.required(j, path, "back"), path + "/back");
+  if (auto it = j.find("projection"); it != j.end()) {
+    const std::string s = r.string(*it, path + "/projection");
+    const auto p = projectionFromString(s);
+    if (!p) r.fail(path + "/projection", "\"" + s + "\" is not one of perspective, parallel, oblique");
+    c.projection = *p;
+  }
+  if (auto it = j.find("oblique"); it != j.end()) {
+    const std::string op = path + "/oblique";
+    r.object(*it, op, {"d", "phi_deg"});
+    c.oblique.d = r.number(r.required(*it, op, "d"), op + "/d", 0.0, 1e6);
+    c.oblique.phiDeg = r.number(r.required(*it, op, "phi_deg"), op + "/phi_deg", -360.0, 360.0);
+  }
+  if (auto e = cameraError(c)) r.fail(path, "invalid camera: " + *e);
+  return c;
+}
+
+ModelTransform readTransform(const Reader& r, const Json& j, const std::string& path) {
+  ModelTransform t;
+  if (auto it = j.find("translate"); it != j.end()) t.translate = r.vec3(*it, path + "/translate");
+  if (auto it = j.find("scale"); it != j.end()) {
+    const std::string sp = path + "/scale";
+    t.scale = it->is_array() ? r.vec3(*it, sp) : Vec3(r.number(*it, sp));
+    if (t.scale.x == 0 || t.scale.y == 0 || t.scale.z == 0) r.fail(sp, "a scale factor of 0 flattens the object");
+  }
+  if (auto it = j.find("rotate"); it != j.end()) {
+    const std::string rp = path + "/rotate";
+    for (size_t i = 0; i < r.array(*it, rp).size(); ++i) {
+      const std::string ip = rp + "/" + std::to_string(i);
+      const Json& rj = (*it)[i];
+      r.object(rj, ip, {"axis", "deg", "through"});
+      Rotation rot;
+      rot.axis = r.vec3(r.required(rj, ip, "axis"), ip + "/axis");
+      if (glm::length(rot.axis) < 1e-12) r.fail(ip + "/axis", "the rotation axis must not be the zero vector");
+      rot.deg = r.number(r.required(rj, ip, "deg"), ip + "/deg");
+      if (auto th = rj.find("through"); th != rj.end()) rot.through = r.vec3(*th, ip + "/through");
+      t.rotations.push_back(rot);
+    }
+  }
+  return t;
+}
+
+SceneObject readObject(const Reader& r, const Json& j, const std::string& path, size_t index,
+                       const std::filesystem::path& baseDir, const Limits& limits, const MeshSize& used) {
+  r.object(j, path, {"name", "shape", "segments", "vertices", "file", "color", "visible", "translate", "rotate", "scale"});
+  SceneObject o;
+  const std::string s = r.string(r.required(j, path, "shape"), path + "/shape");
+  const auto shape = shapeFromString(s);
+  if (!shape) r.fail(path + "/shape", "\"" + s + "\" is not one of cube, tetrahedron, cylinder, sphere, polygon, mesh");
+  o.shape = *shape;
+  o.name = j.contains("name") ? r.string(j["name"], path + "/name") : std::string(s) + " " + std::to_string(index);
+  auto onlyFor = [&](const char* key, bool allowed, const char* shapes) {
+    if (j.contains(key) && !allowed) r.fail(path + "/" + key, std::string("is only for ") + shapes + ", not for a " + s);
+  };
+  onlyFor("segments", o.shape == Shape::cylinder || o.shape == Shape::sphere, "cylinder and sphere");
+  onlyFor("vertices", o.shape == Shape::polygon, "polygon");
+  onlyFor("file", o.shape == Shape::mesh, "mesh");
+  if (auto it = j.find("segments"); it != j.end()) {
+    const int lo = o.shape == Shape::sphere ? 4 : 3;
+    o.segments = r.integer(*it, path + "/segments", lo, std::min(kMaxSegments, limits.segments));
+    if (o.shape == Shape::sphere && o.segments % 2)
+      r.fail(path + "/segments", "a sphere needs an even number of segments, not " + std::to_string(o.segments));
+  }
+  if (o.shape == Shape::polygon) {
+    const std::string vp = path + "/vertices";
+    const Json& v = r.array(r.required(j, path, "vertices"), vp);
+    if (v.size() < 3) r.fail(vp, "a polygon needs at least 3 vertices, not " + std::to_string(v.size()));
+    for (size_t i = 0; i < v.size(); ++i) o.vertices.push_back(r.vec3(v[i], vp + "/" + std::to_string(i)));
+  }
+  if (o.shape == Shape::mesh) o.file = r.string(r.required(j, path, "file"), path + "/file");
+  if (auto it = j.find("color"); it != j.end()) o.color = r.color(*it, path + "/color");
+  if (auto it = j.find("visible"); it != j.end()) o.visible = r.boolean(*it, path + "/visible");
+  o.transform = readTransform(r, j, path);
+  try {
+    buildMesh(o, baseDir, limits, used);
+  } catch (const Error& e) {
+    r.fail(path, e.what());
+  }
+  return o;
+}
+
+// ---------------------------------------------------------------- 3 writing
+
+Json toJson(const Vec3& v) { return Json::array({v.x, v.y, v.z}); }
+
+Json toJson(const SceneObject& o) {
+  Json j;
+  j["name"] = o.name;
+  j["shape"] = std::string(toString(o.shape));
+  if (o.shape == Shape::cylinder || o.shape == Shape::sphere) j["segments"] = o.segments;
+  if (o.shape == Shape::polygon) {
+    j["vertices"] = Json::array();
+    for (const Vec3& v : o.vertices) j["vertices"].push_back(toJson(v));
+  }
+  if (o.shape == Shape::mesh) j["file"] = o.file;
+  j["color"] = toJson(o.color);
+  if (!o.visible) j["visible"] = false;
+  j["translate"] = toJson(o.transform.translate);
+  if (!o.transform.rotations.empty()) {
+    j["rotate"] = Json::array();
+    for (const Rotation& r : o.transform.rotations) {
+      Json rj{{"axis", toJson(r.axis)}, {"deg", r.deg}};
+      if (r.through) rj["through"] = toJson(*r.through);
+      j["rotate"].push_back(rj);
+    }
+  }
+  const Vec3& s = o.transform.scale;
+  j["scale"] = s.x == s.y && s.y == s.z ? Json(s.x) : toJson(s);
+  return j;
+}
+
+}  // namespace
+
+Scene parseScene(std::string_view text, std::string_view source, const std::filesystem::path& baseDir,
+                 const Limits& limits) {
+  const Reader r{std::string(source)};
+  const Json j = parseCheckedJson(text, source, limits.jsonDepth);
+  r.object(j, "", {"title", "caption", "camera", "device", "background", "lights", "clip_planes", "objects"});
+  Scene scene;
+  if (auto it = j.find("title"); it != j.end()) scene.title = r.string(*it, "/title");
+  if (auto it = j.find("caption"); it != j.end()) scene.caption = r.string(*it, "/caption");
+  scene.camera = readCamera(r, r.required(j, "", "camera"), "/camera");
+  if (auto it = j.find("device"); it != j.end()) {
+    r.object(*it, "/device", {"width", "height"});
+    scene.device.width = r.integer(r.required(*it, "/device", "width"), "/device/width", 1, 16384);
+    scene.device.height = r.integer(r.required(*it, "/device", "height"), "/device/height", 1, 16384);
+  }
+  if (auto it = j.find("background"); it != j.end()) scene.background = r.color(*it, "/background");
+  if (auto it = j.find("lights"); it != j.end()) {
+    for (size_t i = 0; i < r.array(*it, "/lights").size(); ++i) {
+      const std::string lp = "/lights/" + std::to_string(i);
+      r.object((*it)[i], lp, {"position", "color"});
+      Light light;
+      light.position = r.vec3(r.required((*it)[i], lp, "position"), lp + "/position");
+      if (auto c = (*it)[i].find("color"); c != (*it)[i].end()) light.color = r.color(*c, lp + "/color");
+      scene.lights.push_back(light);
+    }
+  }
+  if (auto it = j.find("clip_planes"); it != j.end()) {
+    if (r.array(*it, "/clip_planes").size() > kMaxUserPlanes)
+      r.fail("/clip_planes", "at most " + std::to_string(kMaxUserPlanes) + " user clip planes, not " +
+                                 std::to_string(it->size()));
+    for (size_t i = 0; i < it->size(); ++i) {
+      const std::string cp = "/clip_planes/" + std::to_string(i);
+      const Json& pj = (*it)[i];
+      r.object(pj, cp, {"normal", "point", "enabled"});
+      UserClipPlane plane;
+      plane.normal = r.vec3(r.required(pj, cp, "normal"), cp + "/normal");
+      if (glm::length(plane.normal) < 1e-12) r.fail(cp + "/normal", "the plane's normal must not be the zero vector");
+      plane.point = r.vec3(r.required(pj, cp, "point"), cp + "/point");
+      if (auto e = pj.find("enabled"); e != pj.end()) plane.enabled = r.boolean(*e, cp + "/enabled");
+      scene.clipPlanes.push_back(plane);
+    }
+  }
+  const Json& objects = r.array(r.required(j, "", "objects"), "/objects");
+  MeshSize used;  // the scene's faces, vertices and corners so far, against limits
+  for (size_t i = 0; i < objects.size(); ++i) {
+    scene.objects.push_back(readObject(r, objects[i], "/objects/" + std::to_string(i), i, baseDir, limits, used));
+    const Mesh& m = *scene.objects.back().mesh;
+    used.faces += m.faceCount();
+    used.vertices += m.vertexCount();
+    used.corners += m.indices.size();
+  }
+  return scene;
+}
+
+Scene loadScene(const std::filesystem::path& file, const Limits& limits) {
+  Scene scene = parseScene(readRegularFile(file, limits.sceneFileBytes, "scene file"), file.string(),
+                           file.parent_path(), limits);
+  scene.path = file;
+  return scene;
+}
+
+std::string sceneToJson(const Scene& scene) {
+  const Camera& c = scene.camera;
+  Json j;
+  if (!scene.title.empty()) j["title"] = scene.title;
+  if (!scene.caption.empty()) j["caption"] = scene.caption;
+  j["camera"] = {{"vrp", toJson(c.vrp)},
+                 {"prp", toJson(c.prp)},
+                 {"vup", toJson(c.vup)},
+                 {"window", {{"xmin", c.window.xmin}, {"xmax", c.window.xmax}, {"ymin", c.window.ymin}, {"ymax", c.window.ymax}}},
+                 {"front", c.front},
+                 {"back", c.back},
+                 {"projection", std::string(toString(c.projection))}};
+  if (c.projection == Projection::oblique) j["camera"]["oblique"] = {{"d", c.oblique.d}, {"phi_deg", c.oblique.phiDeg}};
+  j["device"] = {{"width", scene.device.width}, {"height", scene.device.height}};
+  j["background"] = toJson(scene.background);
+  if (!scene.lights.empty()) {
+    j["lights"] = Json::array();
+    for (const Light& l : scene.lights) j["lights"].push_back({{"position", toJson(l.position)}, {"color", toJson(l.color)}});
+  }
+  if (!scene.clipPlanes.empty()) {
+    j["clip_planes"] = Json::array();
+    for (const UserClipPlane& p : scene.clipPlanes) {
+      Json pj{{"normal", toJson(p.normal)}, {"point", toJson(p.point)}};
+      if (!p.enabled) pj["enabled"] = false;
+      j["clip_planes"].push_back(pj);
+    }
+  }
+  j["objects"] = Json::array();
+  for (const SceneObject& o : scene.objects) j["objects"].push_back(toJson(o));
+  return prettyJson(j) + "\n";
+}
+
+void saveScene(const Scene& scene, const std::filesystem::path& file) {
+  const std::string text = sceneToJson(scene);
+  const std::filesystem::path tmp = file.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw Error(file.string() + ": cannot write the scene file");
+    out << text;
+    if (!out.flush()) {
+      std::error_code ignored;
+      std::filesystem::remove(tmp, ignored);  // leave no partial temporary file behind
+      throw Error(file.string() + ": writing the scene file failed");
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, file, ec);
+  if (ec) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);  // the target is unchanged; so is the directory
+    throw Error(file.string() + ": cannot replace the scene file: " + ec.message());
+  }
+}
+
+}  // namespace vplab

@@ -1,0 +1,55 @@
+// The viewer with the CPU pipeline on a worker thread (app/core/pipeline_worker.h, README "The
+// viewer"): it goes on drawing frames while a large scene's run is under way, then shows what the
+// synchronous viewer shows (the worker alone: tests/app/core/pipeline_worker_test.cpp).
+#include "app/ui/headless_viewer.h"
+#include "app/core/pipeline_worker.h"
+#include "io/dump.h"
+#include "tests/support/gl_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+
+namespace vplab {
+namespace {
+
+// The viewer with the worker (as the window runs it): the frame that changes the camera of a large
+// scene does not wait for its run; the views keep the last run until the new one arrives, and then
+// the picture is the one the synchronous viewer draws after the same edit.
+TEST(PipelineWorker, TheViewerDrawsOnWhileALargeSceneRunsThenShowsTheNewRun) {
+  GlContext& context = *test::egl().context;
+  const Scene scene = test::sphereScene(512);
+  HeadlessViewer sync(context, scene, 1280, 720), async(context, scene, 1280, 720);
+  async.viewer().usePipelineWorker({});
+  sync.frames(3);
+  async.frames(3);
+  const PipelineRun* before = &async.state().run();
+  for (HeadlessViewer* v : {&sync, &async}) v->state().doc.scene().camera.prp.x += 0.5;
+  const auto t0 = std::chrono::steady_clock::now();
+  async.frame();
+  const double changing = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("the frame that changed the camera: %.1f ms with the worker\n", changing * 1e3);
+  EXPECT_TRUE(async.viewer().runPending()) << "the large scene's run arrived within the frame";
+  EXPECT_EQ(&async.state().run(), before) << "the frame shows the last run meanwhile";
+  EXPECT_FALSE(async.viewer().viewsNotReady().empty()) << "no screenshot of the last run's views";
+  for (int i = 0; i < 600 && async.viewer().runPending(); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    async.frame();
+  }
+  ASSERT_FALSE(async.viewer().runPending());
+  EXPECT_TRUE(async.viewer().viewsNotReady().empty());
+  sync.frames(3);
+  async.frames(2);
+  EXPECT_EQ(dumpJson(async.state().run()), dumpJson(sync.state().run()));
+  const Image a = async.image(), b = sync.image();
+  const size_t differ = test::differingPixels(a, b);
+  if (differ) {
+    writePng(a, (test::outputDir() / "pipeline_worker_async.png").string());
+    writePng(b, (test::outputDir() / "pipeline_worker_sync.png").string());
+  }
+  EXPECT_EQ(differ, 0u) << "the worker's run draws what the synchronous one draws";
+}
+
+}  // namespace
+}  // namespace vplab

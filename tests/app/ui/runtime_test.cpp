@@ -1,0 +1,434 @@
+// The viewer's runtime and document lifecycle (issue 11 items 2, 11, 13; issue 10 "no lost work"):
+// new documents start clean, scenes load on a worker thread while frames go on, queued input loses
+// no click, saving is atomic and never overwrites a bundled scene, autosave and crash recovery.
+// The real window's idle CPU and SIGTERM recovery are tested under Xvfb
+// (tests/app/window/idle_and_recovery.sh).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <imgui.h>
+#include <imgui_internal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <fstream>
+#include <future>
+
+#include "app/core/atomic_file.h"
+#include "app/core/autosave.h"
+#include "app/ui/headless_viewer.h"
+#include "app/ui/input_queue.h"
+#include "app/ui/keys.h"
+#include "pipeline/error.h"
+#include "io/scene_io.h"
+#include "tests/support/gl_test_support.h"
+#include "tests/support/files.h"
+
+namespace vplab {
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+using test::readFile;
+using test::TempDir;
+
+constexpr int kWidth = 1280, kHeight = 720;
+
+std::unique_ptr<HeadlessViewer> makeViewer(Scene scene = defaultScene()) {
+  auto v = std::make_unique<HeadlessViewer>(*test::egl().context, std::move(scene), kWidth, kHeight);
+  v->frames(3);
+  return v;
+}
+
+fs::path preset(const char* name) { return fs::path(VPLAB_ASSETS) / "scenes" / name; }
+
+/// Frames until the loader is idle (at most `limit`); returns how many ended with the load still
+/// running (a loader that blocked the frame would finish within the first).
+int framesWhileLoading(HeadlessViewer& v, int limit = 3000) {
+  int n = 0;
+  for (int i = 0; i < limit && v.viewer().session().loader().busy(); ++i) {
+    v.frame();
+    if (v.viewer().session().loader().busy()) ++n;
+  }
+  v.frames(2);
+  return n;
+}
+
+void clickId(HeadlessViewer& v, const std::string& id) {
+  const auto [x, y] = v.centreOf(id);
+  v.click(x, y);
+}
+
+// ---------------------------------------------------------------- new documents (issue 11 item 2)
+
+TEST(Document, NewFromTheMenuIsCleanWithNoUndoIntoThePreviousScene) {
+  auto v = makeViewer();
+  v->key(keys::kP);  // an unsaved edit: New asks before discarding it
+  ASSERT_TRUE(v->state().doc.dirty());
+  clickId(*v, "menu.file");
+  v->frames(2);
+  clickId(*v, "menu.new");
+  v->frames(2);
+  clickId(*v, "discard.confirm");
+  v->frames(2);
+  EXPECT_EQ(v->state().doc.scene().camera.projection, Projection::perspective);
+  EXPECT_FALSE(v->state().doc.dirty());
+  EXPECT_FALSE(v->state().doc.canUndo());
+  EXPECT_THAT(v->viewer().title(), ::testing::Not(HasSubstr("*")));
+}
+
+TEST(Document, OpeningAPresetAfterEditsStartsACleanDocumentWithDefaultViewSettings) {
+  auto v = makeViewer();
+  v->key(keys::kP);           // an edit: the next projection
+  v->key(keys::kDigit1 + 3);  // hidden-line in every view: a choice for this scene only
+  ASSERT_TRUE(v->state().doc.dirty());
+  ASSERT_TRUE(v->state().doc.canUndo());
+  v->viewer().session().openScene(preset("parallel.json"));
+  framesWhileLoading(*v);
+  EXPECT_EQ(v->state().doc.path(), preset("parallel.json"));
+  EXPECT_FALSE(v->state().doc.dirty());
+  EXPECT_FALSE(v->state().doc.canUndo());
+  EXPECT_THAT(v->viewer().title(), ::testing::Not(HasSubstr("*")));
+  EXPECT_EQ(v->state().display.world.style, DisplaySettings{}.world.style);
+  v->key(keys::kZ, /*ctrl=*/true);  // undo has nothing to go back to
+  EXPECT_EQ(v->state().doc.scene().camera.projection, Projection::parallel);
+  EXPECT_EQ(v->state().doc.path(), preset("parallel.json"));
+}
+
+// ---------------------------------------------------------------- idle (item 10)
+
+// The window's event wait sleeps for wakeIn() (tests/app/window/idle_and_recovery.sh measures the
+// CPU): long when nothing happens, zero while something moves.
+TEST(Idle, TheViewerAsksForFramesOnlyWhileSomethingMoves) {
+  auto v = makeViewer();
+  v->frames(3);
+  EXPECT_GE(v->viewer().wakeIn(), 60.0) << "idle: no frame needed";
+  v->viewer().requestFrames(2);
+  EXPECT_EQ(v->viewer().wakeIn(), 0.0);
+  v->frames(2);
+  EXPECT_GE(v->viewer().wakeIn(), 60.0) << "settled after the frames asked for";
+  v->state().morphPlaying = true;
+  EXPECT_EQ(v->viewer().wakeIn(), 0.0) << "the stage morph plays";
+  v->state().morphPlaying = false;
+  v->viewer().makeCurrent();
+  v->state().animateUntil = ImGui::GetTime() + 0.5;
+  EXPECT_EQ(v->viewer().wakeIn(), 0.0) << "a timed notice is showing";
+  v->frames(40);
+  EXPECT_GE(v->viewer().wakeIn(), 60.0) << "the notice's time is over";
+}
+
+// A frame drawn for hover or ImGui's settling reuses the views' images (a view of a million
+// triangles takes seconds on llvmpipe); anything the views show draws them again.
+TEST(Idle, FramesWithoutChangesReuseTheViewsImages) {
+  auto v = makeViewer();
+  const unsigned settled = v->viewer().viewsDrawn();
+  const auto [cx, cy] = v->centreOf("view.camera");
+  v->mouseMove(cx, cy);  // hovering over a view
+  v->frames(3);
+  v->mouseMove(100, 300);  // and over the panels
+  v->frames(3);
+  EXPECT_EQ(v->viewer().viewsDrawn(), settled);
+  const Image before = v->image();
+  v->key(keys::kDigit1 + 2);  // wireframe in every view
+  EXPECT_GE(v->viewer().viewsDrawn(), settled + 3) << "camera, world and NPC views drawn again";
+  EXPECT_GT(test::differingPixels(before, v->image()), 1000u);
+  const unsigned styled = v->viewer().viewsDrawn();
+  v->key(keys::kP);  // the camera changes
+  EXPECT_GE(v->viewer().viewsDrawn(), styled + 3);
+}
+
+// ---------------------------------------------------------------- loading on a worker thread (item 11)
+
+/// A reader that waits until the test opens its gate: the load lasts exactly as long as the test
+/// wants, whatever the machine's speed.
+struct GatedReader {
+  std::shared_ptr<std::promise<void>> gate = std::make_shared<std::promise<void>>();
+  std::shared_future<void> opened = gate->get_future().share();
+  SceneLoader::Reader reader() const {
+    return [opened = opened](const fs::path& f) {
+      opened.wait();
+      return loadScene(f);
+    };
+  }
+  void open() const { gate->set_value(); }
+};
+
+TEST(Loading, FramesGoOnWhileASceneLoadsAndItArrivesClean) {
+  auto v = makeViewer();
+  GatedReader gated;
+  v->viewer().session().loader().setReader(gated.reader());
+  v->viewer().session().openScene(preset("parallel.json"));
+  v->frames(20);  // each returns while the worker is still reading
+  EXPECT_TRUE(v->viewer().session().loader().busy());
+  EXPECT_TRUE(v->state().doc.path().empty()) << "the open scene stays until the new one is there";
+  EXPECT_THAT(v->state().rects, ::testing::Contains(::testing::Key("load.cancel"))) << "no progress window";
+  gated.open();
+  framesWhileLoading(*v);
+  EXPECT_EQ(v->state().doc.path(), preset("parallel.json"));
+  EXPECT_FALSE(v->state().doc.dirty());
+  EXPECT_FALSE(v->state().doc.canUndo());
+}
+
+TEST(Loading, TheBundledLargeMeshLoadsWithoutBlockingFrames) {
+  auto v = makeViewer();
+  v->viewer().session().openScene(preset("large-mesh.json"));
+  // Tessellating n = 1024 (half a million polygons) takes ~0.2 s, a frame of the settled default
+  // scene a few milliseconds (its views are reused; 14 frames measured): a loader that blocked the
+  // frame would end within the first one.
+  EXPECT_GE(framesWhileLoading(*v), 3);
+  EXPECT_EQ(v->state().doc.path(), preset("large-mesh.json"));
+  EXPECT_GT(v->state().doc.shown().objects.at(0).mesh->faceCount(), 500000u);
+}
+
+TEST(Loading, CancelKeepsTheOpenScene) {
+  auto v = makeViewer();
+  v->key(keys::kP);  // unsaved work that Cancel must keep
+  const Scene before = v->state().doc.scene();
+  GatedReader gated;
+  v->viewer().session().loader().setReader(gated.reader());
+  v->viewer().session().openScene(preset("parallel.json"));
+  v->frames(2);  // the loading window lays itself out
+  ASSERT_TRUE(v->viewer().session().loader().busy());
+  // A quick click (pointer there, press and release at once) on Cancel.
+  const auto [x, y] = v->centreOf("load.cancel");
+  v->input().mouseMove(x, y);
+  v->input().mouseButton(0, true);
+  v->input().mouseButton(0, false);
+  v->frames(2);
+  EXPECT_FALSE(v->viewer().session().loader().busy());
+  gated.open();  // the abandoned read ends; its scene must not arrive
+  v->frames(5);
+  EXPECT_TRUE(v->state().doc.scene() == before);
+  EXPECT_TRUE(v->state().doc.dirty());
+  EXPECT_THAT(v->state().status, HasSubstr("cancelled"));
+}
+
+TEST(Loading, AnObjMeshFromTheScenePanelIsAddedAsOneUndoStep) {
+  auto v = makeViewer();
+  const size_t before = v->state().doc.scene().objects.size();
+  SceneObject o;
+  o.shape = Shape::mesh;
+  o.name = "house";
+  o.file = (fs::path(VPLAB_ASSETS) / "meshes" / "house.obj").string();
+  v->state().objectToLoad = o;  // what "+ OBJ mesh…" does
+  v->frame();
+  EXPECT_TRUE(v->viewer().session().loader().busy() || v->state().doc.scene().objects.size() == before + 1);
+  framesWhileLoading(*v);
+  ASSERT_EQ(v->state().doc.scene().objects.size(), before + 1);
+  EXPECT_GT(v->state().doc.scene().objects.back().mesh->faceCount(), 0u);
+  EXPECT_EQ(v->state().selectedObject, int(before));
+  EXPECT_TRUE(v->state().doc.dirty());
+  v->key(keys::kZ, /*ctrl=*/true);
+  EXPECT_EQ(v->state().doc.scene().objects.size(), before);
+}
+
+TEST(Loading, AnUnreadableFileIsAnErrorAndTheSceneStays) {
+  TempDir dir;
+  const fs::path bad = dir.path / "bad.json";
+  std::ofstream(bad) << "{ \"camera\": 3 }";
+  auto v = makeViewer();
+  v->viewer().session().openScene(bad);
+  framesWhileLoading(*v);
+  EXPECT_TRUE(v->state().statusIsError);
+  EXPECT_THAT(v->state().status, HasSubstr("bad.json"));
+  EXPECT_TRUE(v->state().doc.path().empty());
+}
+
+// ---------------------------------------------------------------- input queue (item 13)
+
+TEST(InputQueue, APressAndReleaseInOneFrameAreSeenInTwo) {
+  ImGuiContext* ctx = ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  InputQueue q;
+  q.mouseMove(10, 20);
+  q.mouseButton(0, true);
+  q.mouseButton(0, false);
+  q.key(keys::kP, true);
+  q.key(keys::kP, false);
+  q.feed(io);
+  EXPECT_EQ(io.MousePos.x, 10.f);
+  EXPECT_TRUE(io.MouseDown[0]);
+  EXPECT_FALSE(io.KeysDown[keys::kP]);
+  q.feed(io);
+  EXPECT_FALSE(io.MouseDown[0]);
+  q.feed(io);
+  EXPECT_TRUE(io.KeysDown[keys::kP]);
+  q.feed(io);
+  EXPECT_FALSE(io.KeysDown[keys::kP]);
+  EXPECT_TRUE(q.empty());
+  ImGui::DestroyContext(ctx);
+}
+
+TEST(InputQueue, AFastClickOnTheFileMenuOpensIt) {
+  auto v = makeViewer();
+  const auto [x, y] = v->centreOf("menu.file");
+  v->input().mouseMove(x, y);
+  v->frame();
+  v->input().mouseButton(0, true);  // press and release before the same frame
+  v->input().mouseButton(0, false);
+  v->frames(3);
+  v->viewer().makeCurrent();
+  EXPECT_NE(ImGui::FindWindowByName("##Menu_00"), nullptr);
+  EXPECT_TRUE(ImGui::FindWindowByName("##Menu_00") && ImGui::FindWindowByName("##Menu_00")->Active);
+}
+
+TEST(InputQueue, AFastKeyStrokeIsNotLost) {
+  auto v = makeViewer();
+  ASSERT_EQ(v->state().doc.scene().camera.projection, Projection::perspective);
+  v->input().key(keys::kP, true);
+  v->input().key(keys::kP, false);
+  v->frames(3);
+  EXPECT_EQ(v->state().doc.scene().camera.projection, Projection::parallel);
+}
+
+// ---------------------------------------------------------------- saving (issue 10 item 6)
+
+TEST(Save, ABundledSceneIsNeverOverwrittenSaveAsksForACopy) {
+  const fs::path file = preset("perspective.json");
+  const std::string original = readFile(file);
+  auto v = makeViewer(loadScene(file));
+  v->key(keys::kP);
+  ASSERT_TRUE(v->state().doc.dirty());
+  v->key(keys::kS, /*ctrl=*/true);
+  EXPECT_TRUE(v->viewer().session().fileDialog().isOpen());
+  EXPECT_TRUE(v->state().doc.dirty());
+  EXPECT_EQ(readFile(file), original);
+  EXPECT_TRUE(v->viewer().session().isBundled(file));
+  EXPECT_TRUE(v->viewer().session().isBundled({}));  // the built-in default scene
+  EXPECT_FALSE(v->viewer().session().isBundled(fs::temp_directory_path() / "mine.json"));
+}
+
+// ---------------------------------------------------------------- autosave and recovery
+
+TEST(Autosave, WritesAfterTheDelayAndRemovesTheFileWhenSaved) {
+  TempDir dir;
+  auto v = makeViewer();
+  v->viewer().session().enableAutosave(dir.path / "state", 0.1);  // 6 frames of 1/60 s
+  const fs::path file = v->viewer().session().autosave()->file();
+  v->frames(10);
+  EXPECT_FALSE(fs::exists(file)) << "nothing changed, nothing to save";
+  v->key(keys::kP);
+  EXPECT_FALSE(fs::exists(file)) << "written before the delay";
+  EXPECT_GT(v->viewer().wakeIn(), 0.0);
+  EXPECT_LE(v->viewer().wakeIn(), 0.1) << "the event wait must wake for the autosave";
+  v->frames(10);
+  ASSERT_TRUE(fs::exists(file));
+  EXPECT_THAT(readFile(file), HasSubstr("\"projection\": \"parallel\""));
+  // Saving makes the document clean: its recovery file goes.
+  v->state().doc.save(dir.path / "mine.json");
+  v->frames(2);
+  EXPECT_FALSE(fs::exists(file));
+}
+
+TEST(Autosave, ARecoveryFileOfAnEndedProcessIsOfferedAndRecovered) {
+  TempDir dir;
+  const fs::path state = dir.path / "state";
+  // A session in a child process autosaves an edited scene and ends without cleaning up (a crash).
+  const pid_t child = ::fork();
+  if (child == 0) {
+    Scene s = loadScene(preset("perspective.json"));
+    Document doc(s);
+    doc.scene().camera.front = 0.75;
+    doc.endFrame(false);
+    Autosave a(state, 0);
+    a.writeNow(doc);
+    ::_exit(a.error().empty() ? 0 : 1);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+
+  const std::optional<Recovery> r = Autosave::find(state);
+  ASSERT_TRUE(r.has_value());
+  EXPECT_EQ(r->scenePath, preset("perspective.json"));
+
+  auto v = makeViewer();
+  v->viewer().session().enableAutosave(state, 3);
+  v->viewer().session().offerRecovery(*r);
+  v->frames(3);
+  clickId(*v, "recovery.recover");
+  v->frames(2);
+  EXPECT_EQ(v->state().doc.scene().camera.front, 0.75);
+  EXPECT_EQ(v->state().doc.path(), preset("perspective.json"));
+  EXPECT_TRUE(v->state().doc.dirty()) << "recovered changes are still unsaved";
+  EXPECT_FALSE(v->state().doc.canUndo());
+  EXPECT_FALSE(fs::exists(r->file)) << "the old session's file is taken over";
+  EXPECT_TRUE(fs::exists(v->viewer().session().autosave()->file())) << "this session keeps the changes at once";
+}
+
+TEST(Autosave, AFailureIsShownNotSwallowed) {
+  TempDir dir;
+  const fs::path notADirectory = dir.path / "file";
+  std::ofstream(notADirectory) << "x";
+  auto v = makeViewer();
+  v->viewer().session().enableAutosave(notADirectory / "vplab", 0);
+  v->key(keys::kP);
+  v->frames(2);
+  EXPECT_TRUE(v->state().statusIsError);
+  EXPECT_THAT(v->state().status, HasSubstr("autosave failed"));
+  EXPECT_THAT(v->state().status, HasSubstr(notADirectory.string()));
+}
+
+}  // namespace
+}  // namespace vplab
+
+// ---------------------------------------------------------------- the browser's files (issue 13)
+
+namespace vplab {
+namespace {
+
+/// A FileChooser as the page's: saving downloads (a new file each time, under the suggested name in
+/// `dir`), opening gives back `toOpen`. Records what it was asked.
+struct DownloadingChooser final : FileChooser {
+  fs::path dir, toOpen;
+  std::vector<std::pair<Mode, fs::path>> asked;
+  void open(std::string, Mode mode, std::vector<std::string>, fs::path start,
+            std::function<void(const fs::path&)> onChosen) override {
+    asked.emplace_back(mode, start);
+    onChosen(mode == Mode::save ? dir / start.filename() : toOpen);
+  }
+  bool isOpen() const override { return false; }
+  bool downloads() const override { return true; }
+};
+
+TEST(Browser, SaveIsANewDownloadEveryTimeAndTheBrowsersShortcutsAreLeftToIt) {
+  TempDir tmp;
+  auto v = makeViewer();
+  auto chooser = std::make_unique<DownloadingChooser>();
+  DownloadingChooser& c = *chooser;
+  c.dir = tmp.path;
+  c.toOpen = preset("parallel.json");
+  v->viewer().session().useFileChooser(std::move(chooser), /*browser=*/true);
+  v->frames(2);
+  v->key(keys::kS, /*ctrl=*/true);  // the browser's own "save page": the viewer does nothing
+  v->key(keys::kO, /*ctrl=*/true);
+  EXPECT_TRUE(c.asked.empty());
+
+  v->key(keys::kP);  // an edit
+  clickId(*v, "menu.file");
+  v->frames(2);
+  clickId(*v, "menu.save");
+  v->frames(2);
+  ASSERT_EQ(c.asked.size(), 1u);
+  EXPECT_EQ(c.asked[0].second, "lecture-scene.json") << "the built-in scene downloads under a name of its own";
+  EXPECT_EQ(loadScene(tmp.path / "lecture-scene.json").camera, v->state().doc.scene().camera);
+  EXPECT_FALSE(v->state().doc.dirty());
+
+  clickId(*v, "menu.file");  // again: a second download, though the document now has a path
+  v->frames(2);
+  clickId(*v, "menu.save");
+  v->frames(2);
+  EXPECT_EQ(c.asked.size(), 2u);
+
+  clickId(*v, "menu.file");  // Open asks the page's picker for a scene or an OBJ
+  v->frames(2);
+  clickId(*v, "menu.open");
+  framesWhileLoading(*v);
+  ASSERT_EQ(c.asked.size(), 3u);
+  EXPECT_EQ(c.asked[2].first, FileChooser::Mode::open);
+  EXPECT_EQ(v->state().doc.path(), preset("parallel.json"));
+}
+
+}  // namespace
+}  // namespace vplab
