@@ -185,8 +185,8 @@ int runRender(const RenderOptions& r) {
     // What the viewer shows for the same options (its keys 1 … 5 and C set the same).
     viewer.state().pipeline.strategy = request.pipeline.strategy;
     if (r.styleGiven) {
-      DisplaySettings& f = viewer.state().display;
-      f.camera.style = f.world.style = f.npc.style = request.style;
+      DisplaySettings& d = viewer.state().display;
+      d.camera.style = d.world.style = d.npc.style = request.style;
     }
     for (const std::string& tab : r.tabs) selectTab(viewer.state(), tab);
     viewer.frames(3);

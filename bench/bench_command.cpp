@@ -89,9 +89,9 @@ void timeOneFrame(ViewRenderer& renderer, const Scene& scene, const DisplaySetti
   const double cpu0 = processCpuMs();
   const auto start = Clock::now();
   runPipeline(scene, {ClipStrategy::npc, false, true}, t.run);
-  if (t.view == ViewKind::camera) renderer.drawCamera(scene, t.run, settings, t.target);
-  if (t.view == ViewKind::world) renderer.drawWorld(scene, t.run, settings, t.target);
-  if (t.view == ViewKind::npc) renderer.drawNpc(scene, t.run, settings, t.target);
+  if (t.view == ViewKind::camera) renderer.drawCamera(scene, t.run, settings, {}, t.target);
+  if (t.view == ViewKind::world) renderer.drawWorld(scene, t.run, settings, {}, t.target);
+  if (t.view == ViewKind::npc) renderer.drawNpc(scene, t.run, settings, {}, t.target);
   t.target.resolve();
   renderer.context().gl().Finish();
   if (!record) return;
@@ -126,9 +126,9 @@ Summary timeThreeViews(ViewRenderer& renderer, const Scene& scene, int frames, i
   for (int i = -3; i < frames; ++i) {
     const auto start = Clock::now();
     runPipeline(scene, {ClipStrategy::npc, false, true}, run);
-    renderer.drawCamera(scene, run, settings, camera);
-    renderer.drawWorld(scene, run, settings, world);
-    renderer.drawNpc(scene, run, settings, npc);
+    renderer.drawCamera(scene, run, settings, {}, camera);
+    renderer.drawWorld(scene, run, settings, {}, world);
+    renderer.drawNpc(scene, run, settings, {}, npc);
     world.resolve();
     npc.resolve();
     ctx.gl().Finish();

@@ -52,8 +52,8 @@ std::optional<std::string> svgExportError(ViewKind view, const Scene& scene, con
 /// three panels of width × height and a title strip, like the PNG), with labels measured by a font
 /// atlas of `scale` (lecture mode: text, line widths and marker sizes grow with it). `run` is the
 /// CPU pipeline's run of `scene`. Throws vplab::Error for a size below 1 × 1 or too many faces.
-std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run,
-                      const DisplaySettings& settings, int width, int height, float scale = 1.f);
+std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run, const DisplaySettings& settings,
+                      const Highlights& highlights, int width, int height, float scale = 1.f);
 
 /// The SVG of what renderImage draws for the request (same pipeline run, frame settings and scale;
 /// app/views/render_request.h).

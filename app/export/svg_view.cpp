@@ -31,12 +31,13 @@ std::optional<std::string> svgExportError(ViewKind view, const Scene& scene, con
 }
 
 std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run,
-                      const DisplaySettings& settings, int width, int height, float scale) {
+                      const DisplaySettings& settings, const Highlights& highlights, int width, int height,
+                      float scale) {
   if (width < 1 || height < 1)
     throw Error("SVG export: the size " + std::to_string(width) + " x " + std::to_string(height) +
                 " is not at least 1 x 1 pixels");
   const FontAtlas fonts(scale);
-  const draw::Picture picture = buildPicture(view, ViewInput{scene, run, settings, width, height, fonts});
+  const draw::Picture picture = buildPicture(view, ViewInput{scene, run, settings, highlights, width, height, fonts});
   return svgOfPicture(
       picture, fonts,
       "vplab " + std::string(toString(view)) + " view" + (scene.title.empty() ? "" : ": " + scene.title));
@@ -45,8 +46,8 @@ std::string svgOfView(ViewKind view, const Scene& scene, const PipelineRun& run,
 std::string svgOfRequest(const Scene& scene, const RenderRequest& request) {
   const PixelSize size = pixelSizeOf(request, scene);
   const PipelineRun run = runPipeline(scene, pipelineOptionsOf(request));
-  return svgOfView(request.view, scene, run, displaySettingsOf(request, scene), size.width, size.height,
-                   request.scale);
+  return svgOfView(request.view, scene, run, displaySettingsOf(request, scene), request.highlights, size.width,
+                   size.height, request.scale);
 }
 
 void writeSvg(const std::string& svg, const std::filesystem::path& file) {

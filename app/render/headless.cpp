@@ -6,7 +6,8 @@ Image renderImage(ViewRenderer& renderer, const Scene& scene, const RenderReques
   const PixelSize size = pixelSizeOf(request, scene);
   const PipelineRun run = runPipeline(scene, pipelineOptionsOf(request));
   if (renderer.scale() != request.scale) renderer.setScale(request.scale);
-  return renderer.render(request.view, scene, run, displaySettingsOf(request, scene), size.width, size.height);
+  return renderer.render(request.view, scene, run, displaySettingsOf(request, scene), request.highlights, size.width,
+                         size.height);
 }
 
 }  // namespace vplab

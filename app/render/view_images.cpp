@@ -26,24 +26,24 @@ GLuint drawViewInto(GlContext& context, ViewRenderer& renderer, ViewTargets& t, 
   switch (r.kind) {
     case ViewKind::world:
       t.world.resize(r.width, r.height, r.samples);
-      renderer.drawWorld(scene, run, r.settings, t.world);
+      renderer.drawWorld(scene, run, r.settings, r.highlights, t.world);
       t.world.resolve();
       return t.world.colorTexture();
     case ViewKind::npc:
       t.npc.resize(r.width, r.height, r.samples);
-      renderer.drawNpc(scene, run, r.settings, t.npc);
+      renderer.drawNpc(scene, run, r.settings, r.highlights, t.npc);
       t.npc.resolve();
       return t.npc.colorTexture();
     case ViewKind::morph:
       t.morph.resize(r.width, r.height, r.samples);
-      renderer.drawMorph(scene, run, r.settings, t.morph);
+      renderer.drawMorph(scene, run, r.settings, r.highlights, t.morph);
       t.morph.resolve();
       return t.morph.colorTexture();
     case ViewKind::camera:
     case ViewKind::all:
       // At the device's W × H: pixel-aligned with DC (shown scaled to fit).
       t.camera.resize(scene.device.width, scene.device.height, 1);
-      renderer.drawCamera(scene, run, r.settings, t.camera);
+      renderer.drawCamera(scene, run, r.settings, r.highlights, t.camera);
       if (!r.settings.overlays.difference) return t.camera.colorTexture();
       {
         // The GPU's image against the CPU's clipped polygons filled: differing pixels in magenta.
@@ -85,7 +85,7 @@ GLuint ViewImages::image(ViewRequest r, unsigned runRevision) {
   slot.height = device ? r.scene->device.height : r.height;
   slot.busy = false;
   slot.asked = true;
-  Stamp stamp{runRevision, r.settings, r.width, r.height, r.samples, r.uiScale};
+  Stamp stamp{runRevision, r.settings, r.highlights, r.width, r.height, r.samples, r.uiScale};
   if (slot.texture != 0 && slot.stamp == stamp) return slot.texture;
   if (worker_) return onWorker(slot, std::move(r), std::move(stamp));
   try {

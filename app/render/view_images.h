@@ -28,6 +28,7 @@ struct ViewRequest {
   std::shared_ptr<const Scene> scene;
   std::shared_ptr<const PipelineRun> run;
   DisplaySettings settings;
+  Highlights highlights;
   int width = 0, height = 0, samples = 1;
   float uiScale = 1.f;
 };
@@ -93,10 +94,12 @@ class ViewImages {
   std::optional<std::string> takeError();
 
  private:
-  /// What an image was drawn from: equal stamps give equal images. The scene is the run's.
+  /// What an image was drawn from: equal stamps give equal images. The scene is the run's; the
+  /// settings and the frame's highlights are both drawn, so both key the image.
   struct Stamp {
     unsigned runRevision = 0;
     DisplaySettings settings;
+    Highlights highlights;
     int width = 0, height = 0, samples = 0;
     float uiScale = 0;
     bool operator==(const Stamp&) const = default;

@@ -7,39 +7,40 @@ namespace vplab {
 ViewRenderer::ViewRenderer(GlContext& context, float textScale) : ctx_(context), backend_(context, textScale) {}
 
 void ViewRenderer::drawView(Builder build, draw::DisplayList& list, const Scene& scene, const PipelineRun& run,
-                            const DisplaySettings& s, gl::RenderTarget& target) {
-  const ViewInput in{scene, run, s, target.width(), target.height(), backend_.text().atlas()};
+                            const DisplaySettings& s, const Highlights& h, gl::RenderTarget& target) {
+  const ViewInput in{scene, run, s, h, target.width(), target.height(), backend_.text().atlas()};
   build(in, list);
   backend_.draw(list, target);
 }
 
-void ViewRenderer::drawCamera(const Scene& scene, const PipelineRun& run, const DisplaySettings& s,
+void ViewRenderer::drawCamera(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, const Highlights& h,
                               gl::RenderTarget& target) {
-  drawView(&cameraView, camera_, scene, run, s, target);
+  drawView(&cameraView, camera_, scene, run, s, h, target);
 }
 
-void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const DisplaySettings& s,
-                             gl::RenderTarget& target) {
-  drawView(&worldView, world_, scene, run, s, target);
+void ViewRenderer::drawWorld(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, const Highlights& h,
+                              gl::RenderTarget& target) {
+  drawView(&worldView, world_, scene, run, s, h, target);
 }
 
-void ViewRenderer::drawNpc(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, gl::RenderTarget& target) {
-  drawView(&npcView, npc_, scene, run, s, target);
+void ViewRenderer::drawNpc(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, const Highlights& h,
+                              gl::RenderTarget& target) {
+  drawView(&npcView, npc_, scene, run, s, h, target);
 }
 
-void ViewRenderer::drawMorph(const Scene& scene, const PipelineRun& run, const DisplaySettings& s,
-                             gl::RenderTarget& target) {
-  drawView(&morphView, morph_, scene, run, s, target);
+void ViewRenderer::drawMorph(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, const Highlights& h,
+                              gl::RenderTarget& target) {
+  drawView(&morphView, morph_, scene, run, s, h, target);
 }
 
 void ViewRenderer::drawDivideFirst(const Scene& scene, const PipelineRun& run, const DisplaySettings& s,
                                    gl::RenderTarget& target) {
-  drawView(&divideFirstView, divideFirst_, scene, run, s, target);
+  drawView(&divideFirstView, divideFirst_, scene, run, s, Highlights{}, target);  // it marks nothing
 }
 
 Image ViewRenderer::render(ViewKind kind, const Scene& scene, const PipelineRun& run, const DisplaySettings& s,
-                           int width, int height) {
-  const ViewInput in{scene, run, s, width, height, backend_.text().atlas()};
+                           const Highlights& h, int width, int height) {
+  const ViewInput in{scene, run, s, h, width, height, backend_.text().atlas()};
   buildPicture(kind, in, picture_);
   Image image = backend_.render(picture_);
   ctx_.checkErrors("rendering the " + std::string(toString(kind)) + " view");

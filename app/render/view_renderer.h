@@ -23,17 +23,21 @@ class ViewRenderer {
   /// Each draws one view into `target` (already sized; the camera view is pixel-aligned with DC when
   /// the target is the device's W × H). `run` is the CPU pipeline's run of `scene` (with clipEdges
   /// for the wireframe overlays).
-  void drawCamera(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, gl::RenderTarget& target);
-  void drawWorld(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, gl::RenderTarget& target);
-  void drawNpc(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, gl::RenderTarget& target);
-  void drawMorph(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, gl::RenderTarget& target);
+  void drawCamera(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, const Highlights& h,
+                  gl::RenderTarget& target);
+  void drawWorld(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, const Highlights& h,
+                  gl::RenderTarget& target);
+  void drawNpc(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, const Highlights& h,
+                  gl::RenderTarget& target);
+  void drawMorph(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, const Highlights& h,
+                  gl::RenderTarget& target);
   /// The divide-first comparison: `run` must be the divide-first strategy's (views.h, divideFirstView).
   void drawDivideFirst(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, gl::RenderTarget& target);
 
   /// Renders a view headless into an image: camera at width × height, world and NPC likewise,
   /// all as three panels of width × height with a title strip.
-  Image render(ViewKind kind, const Scene& scene, const PipelineRun& run, const DisplaySettings& s, int width,
-               int height);
+  Image render(ViewKind kind, const Scene& scene, const PipelineRun& run, const DisplaySettings& s, const Highlights& h,
+               int width, int height);
 
   GlContext& context() { return ctx_; }
   /// Whether the world view draws each of its two passes from the faces that can show in it
@@ -51,7 +55,7 @@ class ViewRenderer {
  private:
   using Builder = void (*)(const ViewInput&, draw::DisplayList&);
   void drawView(Builder build, draw::DisplayList& list, const Scene& scene, const PipelineRun& run,
-                const DisplaySettings& s, gl::RenderTarget& target);
+                const DisplaySettings& s, const Highlights& h, gl::RenderTarget& target);
 
   GlContext& ctx_;
   GlBackend backend_;

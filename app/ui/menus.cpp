@@ -128,8 +128,8 @@ void Menus::shortcuts() {
 namespace {
 
 // A view as the viewer shows it, as a request (app/views/render_request.h): its size, every view
-// setting (styles, observers, overlays, probe, step-through, morph), the pipeline's options and
-// the UI scale: what the render thread draws it from.
+// setting (styles, observers, overlays, morph) and the frame's marks (probe, handles, step-through),
+// the pipeline's options and the UI scale.
 RenderRequest shownViewRequest(const ViewerState& s, ViewKind kind, int width, int height, float scale) {
   RenderRequest r;
   r.view = kind;
@@ -138,6 +138,7 @@ RenderRequest shownViewRequest(const ViewerState& s, ViewKind kind, int width, i
   r.pipeline = s.pipeline;
   r.scale = scale;
   r.display = s.display;
+  r.highlights = s.highlights;
   return r;
 }
 

@@ -91,7 +91,7 @@ double aspectOf(ImVec2 size) {
 // changes no state: what it shows was settled before.
 GLuint ViewPanes::drawView(ViewKind kind, ImVec2 size) {
   const auto [w, h] = imagePixels(size);
-  return images_.image({kind, s_.ranScene, s_.ran, s_.display, w, h, s_.antialias ? 4 : 1, uiScale_}, run_.revision());
+  return images_.image({kind, s_.ranScene, s_.ran, s_.display, s_.highlights, w, h, s_.antialias ? 4 : 1, uiScale_}, run_.revision());
 }
 
 void ViewPanes::busyMark(ViewKind kind) {
@@ -138,7 +138,7 @@ void ViewPanes::stepHighlight() {
       h.polygonNpc.push_back(Vec3(p) / p.w);
       h.created.push_back(!start && step.created[k]);
     }
-    s_.display.highlights.step = std::move(h);
+    s_.highlights.step = std::move(h);
   }
 }
 
@@ -149,7 +149,7 @@ void ViewPanes::viewWindows() {
   const ImVec2 fbScale = io.DisplayFramebufferScale;
   const ui::Layout layout = ui::computeLayout(io.DisplaySize, ImGui::GetFrameHeight(), uiScale_);
 
-  Highlights& hl = s_.display.highlights;
+  Highlights& hl = s_.highlights;
   hl = {};
   if (s_.probe) {
     hl.probeWc = probePositionOf(ViewKind::world);
@@ -286,7 +286,7 @@ void ViewPanes::lectureWindow() {
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                                  ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings;
   if (ImGui::Begin("##lecture", nullptr, flags)) {
-    Highlights& hl = s_.display.highlights;
+    Highlights& hl = s_.highlights;
     hl = {};
     hl.vanishingObject = s_.selectedObject;
     stepHighlight();

@@ -48,7 +48,8 @@ struct ViewerState {
   explicit ViewerState(Scene scene) : doc(std::move(scene)) {}
 
   Document doc;
-  DisplaySettings display;     // how the views show the scene: styles, observers, overlays, highlights
+  DisplaySettings display;     // how the views show the scene: styles, observers, overlays (kept, linked)
+  Highlights highlights;       // this frame's marks: the probe, the handles, the step-through (never kept)
   PipelineOptions pipeline{ClipStrategy::npc, false, true};
   /// The CPU pipeline's run of doc.shown(), published whole (app/ui/viewer.h, updateRun): the
   /// render thread draws from the same run, never a copy.

@@ -125,7 +125,7 @@ DisplayList cameraView(const ViewInput& in) {
 
   const PixelsFromDc pixels{{double(w) / run.device.width, double(h) / run.device.height}};
   Marks marks;
-  if (s.highlights.probeDc) marks.point(pixels(*s.highlights.probeDc), theme::kProbe, 14.f);
+  if (in.highlights.probeDc) marks.point(pixels(*in.highlights.probeDc), theme::kProbe, 14.f);
   if (s.overlays.cpuPolygons) {
     std::vector<Vec3> poly;
     for (const ObjectRun& o : run.objects) {
@@ -138,7 +138,7 @@ DisplayList cameraView(const ViewInput& in) {
   }
   std::vector<TextLabel> labels;
   if (s.overlays.vanishingPoints)
-    addVanishingPoints(run, s.highlights.vanishingObject, pixels, marks, labels, w, h);
+    addVanishingPoints(run, in.highlights.vanishingObject, pixels, marks, labels, w, h);
   marks.emit(list, Space::pixels, Depth::ignore, scale);
   if (!labels.empty()) list.add(Text{placeLabels(labels, in.text, w, h)});
   return list;

@@ -137,8 +137,8 @@ void npcView(const ViewInput& in, DisplayList& list) {
   // edges: pushed back, it loses every depth tie to them instead of z-fighting (the cube's lines
   // are not pushed back).
   cube.emit(list, Space::npc, Depth::test, scale, /*pushedBack=*/true);
-  if (s.highlights.probeNpc) newEdges.point(*s.highlights.probeNpc, theme::kProbe, 14.f);
-  if (const auto& step = s.highlights.step) {
+  if (in.highlights.probeNpc) newEdges.point(*in.highlights.probeNpc, theme::kProbe, 14.f);
+  if (const auto& step = in.highlights.step) {
     // The clipping step-through: the plane being applied as a face of the cube, the polygon after
     // the step, its new vertices.
     if (step->plane >= 0 && step->plane < kPlaneCount) {

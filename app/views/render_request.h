@@ -21,9 +21,10 @@ struct RenderRequest {
   PipelineOptions pipeline{ClipStrategy::npc, false, true};
   float scale = 1.f;  // text, line widths and markers (lecture mode on a projector, the viewer's UI scale)
   /// Every view setting as the viewer shows it (each view's style and observer, the overlays, the
-  /// probe, the step-through, the morph); nullopt: `vplab render`'s, from `style` and `morphT`
-  /// (displaySettingsFor).
+  /// morph); nullopt: `vplab render`'s, from `style` and `morphT` (displaySettingsFor).
   std::optional<DisplaySettings> display = std::nullopt;
+  /// The viewer's marks of the frame (the probe, the handles, the step-through); none for `vplab render`.
+  Highlights highlights{};
 };
 
 /// The display settings `vplab render` uses: the style for every view, the default observers framed for

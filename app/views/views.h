@@ -64,7 +64,10 @@ struct ViewSettings {
   bool operator==(const ViewSettings&) const = default;
 };
 
-/// Interactive marks: the probed vertex in each view's space and the world view's camera handles.
+/// Interactive marks, worked out from the interaction each frame and drawn over the views: the
+/// probed vertex in each view's space, the world view's camera handles, the clipping step-through,
+/// the object whose vanishing points are shown. They are not display settings: never saved, linked
+/// or given to `vplab render` (a RenderRequest has none unless the viewer passes its own).
 struct Highlights {
   std::optional<Vec3> probeWc, probeNpc, probeDc;
   struct HandleMark {
@@ -95,6 +98,8 @@ struct MorphSettings {
   bool operator==(const MorphSettings&) const = default;
 };
 
+/// How the views show the scene, as the user set it: each view's style and observer, the morph, the
+/// overlays. Kept with the session and carried by a link (app/core/url_state.h).
 struct DisplaySettings {
   ViewSettings camera{Style::flat, {}};
   ViewSettings world{Style::shaded, {}};
@@ -102,8 +107,8 @@ struct DisplaySettings {
   ViewSettings morph{Style::shaded, {}};
   MorphSettings morphing;
   OverlaySettings overlays;
-  Highlights highlights;
-  // Equal settings draw equal views (the viewer reuses a view's last image, app/ui/view_windows.cpp).
+  // Equal settings (and highlights) draw equal views (the viewer reuses a view's last image,
+  // app/render/view_images.h).
   bool operator==(const DisplaySettings&) const = default;
 };
 
@@ -112,7 +117,8 @@ struct DisplaySettings {
 struct ViewInput {
   const Scene& scene;
   const PipelineRun& run;
-  const DisplaySettings& settings;
+  const DisplaySettings& settings;  // the user's: styles, observers, overlays, the morph (kept, linked)
+  const Highlights& highlights;     // this frame's marks, worked out from the interaction (never kept)
   int width = 0, height = 0;  // each view's pixels (ViewKind::all: each of its three panels)
   const TextMetrics& text;    // measures the labels; its scale() grows text, lines and markers
 };

@@ -182,7 +182,7 @@ DisplayList worldView(const ViewInput& in) {
     label(cam.vrp, "VRP", theme::kVrp, {8, 12});
     label(cam.prp, "PRP", theme::kPrp);
   }
-  const Highlights& hl = in.settings.highlights;
+  const Highlights& hl = in.highlights;
   for (const Highlights::HandleMark& m : hl.handles) {
     b.point(m.wc, m.hot ? theme::kHandleHot : theme::kHandle, m.hot ? 15.f : 9.f);
     if (m.hot) label(m.wc, m.name, theme::kHandleHot, {10, -12});

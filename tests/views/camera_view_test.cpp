@@ -78,7 +78,7 @@ TEST(CameraView, VanishingPointsAreMarkedWhereTheyLieInTheViewsPixels) {
     Scene scene = preset("vanishing-2");
     test::ViewFixture f(scene, Style::flat, scene.device.width / scaleDown, scene.device.height / scaleDown);
     f.settings.overlays.vanishingPoints = true;
-    f.settings.highlights.vanishingObject = 0;
+    f.highlights.vanishingObject = 0;
     const DisplayList list = cameraView(f.input());
     const auto vps = vanishingPoints(f.run, f.run.objects[0].wcFromMc);
     ASSERT_EQ(vanishingPointCount(vps), 2);

@@ -16,10 +16,11 @@ struct DivideFirstFixture {
   Scene scene;
   PipelineRun run;
   DisplaySettings settings;
+  Highlights highlights;
   test::FixedMetrics text;
   explicit DivideFirstFixture(Scene s, ClipStrategy strategy = ClipStrategy::divideFirst)
       : scene(std::move(s)), run(runPipeline(scene, {strategy})) {}
-  ViewInput input(int w, int h) const { return {scene, run, settings, w, h, text}; }
+  ViewInput input(int w, int h) const { return {scene, run, settings, highlights, w, h, text}; }
 };
 
 // Every clipped polygon of the run, object by object and face by face (the raster's order, which

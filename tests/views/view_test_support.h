@@ -28,10 +28,11 @@ struct ViewFixture {
   Scene scene;
   PipelineRun run;
   DisplaySettings settings;
+  Highlights highlights;
   FixedMetrics text;
   int width, height;
   ViewFixture(Scene s, Style style, int w = 400, int h = 300, float scale = 1.f);
-  ViewInput input() const { return {scene, run, settings, width, height, text}; }
+  ViewInput input() const { return {scene, run, settings, highlights, width, height, text}; }
 };
 
 template <class B>

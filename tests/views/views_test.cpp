@@ -38,7 +38,7 @@ TEST(Views, EveryBatchIsInTheObserversSpaceOrInPixels) {
     for (Style style : kStyles) {
       test::ViewFixture f(scene, style);
       f.settings.overlays.vanishingPoints = f.settings.overlays.cpuPolygons = true;
-      f.settings.highlights.vanishingObject = 0;
+      f.highlights.vanishingObject = 0;
       for (ViewKind kind : kViews) {
         const DisplayList list = buildPicture(kind, f.input()).panels.at(0).list;
         ASSERT_FALSE(list.batches.empty()) << name;
@@ -55,8 +55,8 @@ TEST(Views, LabelsNeverLeaveTheView) {
   for (const auto& [name, scene] : presets()) {
     test::ViewFixture f(scene, Style::shaded, 320, 240);
     f.settings.overlays.vanishingPoints = true;
-    f.settings.highlights.vanishingObject = 0;
-    f.settings.highlights.handles = {{scene.camera.prp, "PRP handle", true}, {scene.camera.vrp, "VRP", false}};
+    f.highlights.vanishingObject = 0;
+    f.highlights.handles = {{scene.camera.prp, "PRP handle", true}, {scene.camera.vrp, "VRP", false}};
     for (ViewKind kind : kViews) {
       const DisplayList list = buildPicture(kind, f.input()).panels.at(0).list;
       for (const PlacedLabel& l : list.labels()) {
@@ -74,8 +74,8 @@ TEST(Views, LineWidthsAndPointSizesGrowWithTheTextScale) {
   for (Style style : kStyles) {
     test::ViewFixture one(defaultScene(), style), two(defaultScene(), style, 400, 300, 2.f);
     for (test::ViewFixture* f : {&one, &two}) {
-      f->settings.highlights.probeWc = f->settings.highlights.probeNpc = Vec3(0.5);
-      f->settings.highlights.probeDc = Vec3(100, 100, 0.5);
+      f->highlights.probeWc = f->highlights.probeNpc = Vec3(0.5);
+      f->highlights.probeDc = Vec3(100, 100, 0.5);
     }
     for (ViewKind kind : kViews) {
       const DisplayList a = buildPicture(kind, one.input()).panels[0].list;

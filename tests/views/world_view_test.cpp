@@ -112,7 +112,7 @@ TEST(WorldView, HiddenLineEdgesFromTheCpuClipperAfterTheOccluder) {
 TEST(WorldView, StepThroughPolygonIsTakenBackFromNpc) {
   test::ViewFixture f(defaultScene(), Style::shaded);
   f.settings.overlays = {false, false, false, false, false, false, false};
-  f.settings.highlights.step = Highlights::Step{{{0.2, 0.2, 0.5}, {1, 0.2, 0.5}, {0.5, 0.9, 0.5}}, {false, true, false}, 1};
+  f.highlights.step = Highlights::Step{{{0.2, 0.2, 0.5}, {1, 0.2, 0.5}, {0.5, 0.9, 0.5}}, {false, true, false}, 1};
   const DisplayList list = worldView(f.input());
   const auto triangles = test::batchesOf<Triangles>(list);
   ASSERT_EQ(triangles.size(), 1u);  // the plane x = 1 as a face of the frustum

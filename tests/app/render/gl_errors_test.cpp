@@ -22,21 +22,26 @@ using ::testing::HasSubstr;
 const ViewKind kViews[] = {ViewKind::camera, ViewKind::world, ViewKind::npc, ViewKind::all};
 const Style kStyles[] = {Style::flat, Style::shaded, Style::wire, Style::hiddenLine, Style::hiddenRemoved};
 
-/// Frame settings with everything that draws switched on: every overlay, a probed vertex in each
-/// view's space and every camera handle, one of them hot.
-DisplaySettings everythingOn(const Scene& scene, const PipelineRun& run, Style style, double aspect) {
+/// Display settings with every overlay on.
+DisplaySettings everythingOn(const Scene& scene, Style style, double aspect) {
   DisplaySettings s = displaySettingsFor(scene, style, aspect);
   s.overlays = OverlaySettings{};
   s.overlays.cpuPolygons = true;
   s.overlays.difference = true;
+  return s;
+}
+
+/// Every mark a view draws: a probed vertex in each view's space and every camera handle, one of them hot.
+Highlights everythingMarked(const PipelineRun& run) {
+  Highlights h;
   if (!run.objects.empty() && run.objects[0].vertexCount() > 0) {
     const ObjectRun& o = run.objects[0];
-    s.highlights.probeWc = o.wc(0);
-    s.highlights.probeNpc = Vec3(o.npcH[0]) / o.npcH[0].w;
-    s.highlights.probeDc = Vec3(run.dcFromNpc * Vec4(*s.highlights.probeNpc, 1.0));
+    h.probeWc = o.wc(0);
+    h.probeNpc = Vec3(o.npcH[0]) / o.npcH[0].w;
+    h.probeDc = Vec3(run.dcFromNpc * Vec4(*h.probeNpc, 1.0));
   }
-  for (Handle h : kHandles) s.highlights.handles.push_back({handlePosition(run, h), handleName(h), h == Handle::prp});
-  return s;
+  for (Handle k : kHandles) h.handles.push_back({handlePosition(run, k), handleName(k), k == Handle::prp});
+  return h;
 }
 
 /// Renders every view in every style; render() itself throws at the first GL error (it checks after
@@ -51,8 +56,8 @@ void renderEverything(const Scene& scene, int width, int height, const std::stri
     for (Style style : kStyles) {
       SCOPED_TRACE(what + ": " + std::string(toString(view)) + " view, " + std::string(toString(style)));
       Image image;
-      EXPECT_NO_THROW(image = f.renderer->render(view, scene, run, everythingOn(scene, run, style, double(width) / height),
-                                                 width, height));
+      EXPECT_NO_THROW(image = f.renderer->render(view, scene, run, everythingOn(scene, style, double(width) / height),
+                                                 everythingMarked(run), width, height));
       EXPECT_NO_THROW(f.context->checkErrors("after rendering"));
       EXPECT_GE(test::distinctColours(image), minColours);  // something was drawn
     }

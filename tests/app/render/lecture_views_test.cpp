@@ -39,7 +39,7 @@ GlBackend& backend() {
 Image drawn(ViewKind kind, const Scene& scene, ClipStrategy strategy, int w, int h) {
   const PipelineRun run = runPipeline(scene, {strategy, false, true});
   const DisplaySettings settings = displaySettingsFor(scene, Style::flat, double(w) / h);
-  return backend().render(buildPicture(kind, ViewInput{scene, run, settings, w, h, backend().text().atlas()}));
+  return backend().render(buildPicture(kind, ViewInput{scene, run, settings, Highlights{}, w, h, backend().text().atlas()}));
 }
 
 double equalShare(const Image& a, const Image& b) {

@@ -41,7 +41,6 @@ TEST(RenderRequest, FrameSettingsAreTheViewersWhenGivenElseRendersOwn) {
   DisplaySettings viewer;
   viewer.world.style = Style::wire;
   viewer.overlays.labels = false;
-  viewer.highlights.probeWc = Vec3(1, 2, 3);
   r.display = viewer;
   EXPECT_EQ(displaySettingsOf(r, scene), viewer);  // style and morph t are then the frame's
 }
@@ -64,7 +63,7 @@ TEST(RenderRequest, RenderImageDrawsTheRequestsSettingsAndScale) {
   const Image withoutLabels = renderImage(renderer, scene, noLabels);
   EXPECT_GT(test::differingPixels(plain, withoutLabels), 100u) << "the labels are left out";
   const PipelineRun run = runPipeline(scene, r.pipeline);
-  EXPECT_EQ(test::differingPixels(withoutLabels, renderer.render(r.view, scene, run, *noLabels.display, 320, 240)), 0u);
+  EXPECT_EQ(test::differingPixels(withoutLabels, renderer.render(r.view, scene, run, *noLabels.display, {}, 320, 240)), 0u);
 
   RenderRequest large = r;
   large.scale = 2;
@@ -73,7 +72,7 @@ TEST(RenderRequest, RenderImageDrawsTheRequestsSettingsAndScale) {
   EXPECT_GT(test::differingPixels(plain, scaled), 100u) << "larger text, lines and markers";
   {
     ViewRenderer atTwo(*test::egl().context, 2.f);
-    EXPECT_EQ(test::differingPixels(scaled, atTwo.render(r.view, scene, run, displaySettingsOf(r, scene), 320, 240)), 0u);
+    EXPECT_EQ(test::differingPixels(scaled, atTwo.render(r.view, scene, run, displaySettingsOf(r, scene), {}, 320, 240)), 0u);
   }
   EXPECT_EQ(test::differingPixels(renderImage(renderer, scene, r), plain), 0u) << "back at scale 1";
   EXPECT_EQ(renderer.scale(), 1.f);
@@ -93,8 +92,8 @@ TEST(RenderRequest, SvgOfRequestDrawsTheRequestsSettingsAndScale) {
   r.display->npc.style = Style::wire;
   const PipelineRun run = runPipeline(scene, r.pipeline);
   const std::string svg = svgOfRequest(scene, r);
-  EXPECT_EQ(svg, svgOfView(ViewKind::npc, scene, run, *r.display, 300, 200, 1.5f));
-  EXPECT_NE(svg, svgOfView(ViewKind::npc, scene, run, *r.display, 300, 200, 1.f)) << "the scale counts";
+  EXPECT_EQ(svg, svgOfView(ViewKind::npc, scene, run, *r.display, {}, 300, 200, 1.5f));
+  EXPECT_NE(svg, svgOfView(ViewKind::npc, scene, run, *r.display, {}, 300, 200, 1.f)) << "the scale counts";
   RenderRequest withoutFrame = r;
   withoutFrame.display.reset();
   EXPECT_NE(svg, svgOfRequest(scene, withoutFrame)) << "the frame settings count";

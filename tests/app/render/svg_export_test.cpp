@@ -334,9 +334,9 @@ Both renderBoth(ViewKind view, Style style, bool labels = false, int w = kWidth,
   const PipelineRun run = runPipeline(scene, RenderRequest{}.pipeline);
   const DisplaySettings s = settingsFor(scene, style, w, h, labels);
   Both b;
-  b.svgText = svgOfView(view, scene, run, s, w, h);
+  b.svgText = svgOfView(view, scene, run, s, {}, w, h);
   b.svg = parseSvg(b.svgText);
-  b.png = test::egl().renderer->render(view, scene, run, s, w, h);
+  b.png = test::egl().renderer->render(view, scene, run, s, {}, w, h);
   return b;
 }
 
@@ -427,7 +427,7 @@ TEST(SvgExport, IsWellFormedWithThePngsSize) {
       SCOPED_TRACE(name(view, style));
       const int w = 400, h = 300;
       const std::string text =
-          svgOfView(view, scene, run, displaySettingsFor(scene, style, double(w) / h), w, h);
+          svgOfView(view, scene, run, displaySettingsFor(scene, style, double(w) / h), {}, w, h);
       Svg svg;
       ASSERT_NO_THROW(svg = parseSvg(text));
       EXPECT_EQ(text.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n", 0), 0u);
@@ -436,7 +436,7 @@ TEST(SvgExport, IsWellFormedWithThePngsSize) {
       EXPECT_EQ(*svg.root.attribute("xmlns"), "http://www.w3.org/2000/svg");
       // The PNG's size ("all": three panels and the title strip).
       const Image png =
-          test::egl().renderer->render(view, scene, run, displaySettingsFor(scene, style, double(w) / h), w, h);
+          test::egl().renderer->render(view, scene, run, displaySettingsFor(scene, style, double(w) / h), {}, w, h);
       const int totalW = png.width, totalH = png.height;
       if (view == ViewKind::all)
         EXPECT_EQ(totalW, 3 * w + 12);
@@ -487,8 +487,8 @@ TEST(SvgExport, OnlyAHugeDocumentIsDeclined) {
       const DisplaySettings s = displaySettingsFor(scene, style, 4.0 / 3.0);
       EXPECT_FALSE(svgExportError(view, scene, s)) << *svgExportError(view, scene, s);
     }
-  EXPECT_NO_THROW(svgOfView(ViewKind::morph, scene, run, displaySettingsFor(scene, Style::shaded, 4.0 / 3.0), 320, 240));
-  EXPECT_THROW(svgOfView(ViewKind::camera, scene, run, displaySettingsFor(scene, Style::wire, 4.0 / 3.0), 0, 240), Error);
+  EXPECT_NO_THROW(svgOfView(ViewKind::morph, scene, run, displaySettingsFor(scene, Style::shaded, 4.0 / 3.0), {}, 320, 240));
+  EXPECT_THROW(svgOfView(ViewKind::camera, scene, run, displaySettingsFor(scene, Style::wire, 4.0 / 3.0), {}, 0, 240), Error);
 
   const Scene large = loadScene(VPLAB_ASSETS "/scenes/large-mesh.json");
   const DisplaySettings shaded = displaySettingsFor(large, Style::shaded, 4.0 / 3.0);
@@ -500,7 +500,7 @@ TEST(SvgExport, OnlyAHugeDocumentIsDeclined) {
   EXPECT_FALSE(svgExportError(ViewKind::camera, large, displaySettingsFor(large, Style::hiddenLine, 4.0 / 3.0)));
   const PipelineRun largeRun = runPipeline(large, RenderRequest{}.pipeline);
   try {
-    svgOfView(ViewKind::camera, large, largeRun, shaded, 320, 240);
+    svgOfView(ViewKind::camera, large, largeRun, shaded, {}, 320, 240);
     ADD_FAILURE() << "no error";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find(std::to_string(kMaxSvgFaces)), std::string::npos) << e.what();
@@ -540,9 +540,9 @@ TEST(SvgExport, HiddenPartsAreWhereThePngDashes) {
     const PipelineRun run = runPipeline(scene, RenderRequest{}.pipeline);
     const DisplaySettings line = settingsFor(scene, Style::hiddenLine, kWidth, kHeight, false);
     const DisplaySettings removed = settingsFor(scene, Style::hiddenRemoved, kWidth, kHeight, false);
-    const Svg svg = parseSvg(svgOfView(view, scene, run, line, kWidth, kHeight));
-    const Image dashes = test::egl().renderer->render(view, scene, run, line, kWidth, kHeight);
-    const Image none = test::egl().renderer->render(view, scene, run, removed, kWidth, kHeight);
+    const Svg svg = parseSvg(svgOfView(view, scene, run, line, {}, kWidth, kHeight));
+    const Image dashes = test::egl().renderer->render(view, scene, run, line, {}, kWidth, kHeight);
+    const Image none = test::egl().renderer->render(view, scene, run, removed, {}, kWidth, kHeight);
     // Where a visible line runs within 3 px (dense meshes: the sphere, the cylinder seen small) it
     // may cover the dash in both PNGs alike: such samples tell nothing and are left out.
     auto nearSolid = [&](const Vec2& p) {
@@ -588,7 +588,7 @@ TEST(SvgExport, HiddenRemovedHasNoDashedEdgesAndHiddenLineHasSome) {
     SCOPED_TRACE(toString(view));
     auto svgOf = [&](Style style) {
       return parseSvg(
-          svgOfView(view, scene, run, displaySettingsFor(scene, style, 4.0 / 3.0), kWidth, kHeight));
+          svgOfView(view, scene, run, displaySettingsFor(scene, style, 4.0 / 3.0), {}, kWidth, kHeight));
     };
     const Svg wire = svgOf(Style::wire), line = svgOf(Style::hiddenLine),
               removed = svgOf(Style::hiddenRemoved);
@@ -645,7 +645,7 @@ TEST(SvgExport, CameraViewEndsClippedEdgesOnTheWindowBorder) {
   for (Style style : {Style::wire, Style::hiddenLine}) {
     SCOPED_TRACE(toString(style));
     const Svg svg = parseSvg(
-        svgOfView(ViewKind::camera, scene, run, displaySettingsFor(scene, style, 4.0 / 3.0), kWidth, kHeight));
+        svgOfView(ViewKind::camera, scene, run, displaySettingsFor(scene, style, 4.0 / 3.0), {}, kWidth, kHeight));
     for (const Vec2& cut : cuts) {
       bool found = false;
       for (const SvgLine& l : svg.lines)

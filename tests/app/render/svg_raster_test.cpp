@@ -62,7 +62,7 @@ void maskLabels(Image& image, const Scene& scene, const RenderRequest& request) 
   const DisplaySettings settings = displaySettingsOf(request, scene);
   const FontAtlas fonts(request.scale);
   const draw::Picture picture =
-      buildPicture(request.view, ViewInput{scene, run, settings, size.width, size.height, fonts});
+      buildPicture(request.view, ViewInput{scene, run, settings, request.highlights, size.width, size.height, fonts});
   for (const draw::Panel& panel : picture.panels)
     for (const PlacedLabel& l : panel.list.labels()) {
       const int x0 = panel.x + int(std::floor(l.topLeft.x)) - kTextMarginPx;

@@ -23,7 +23,7 @@ Image drawWorld(ViewRenderer& renderer, const Scene& scene, const DisplaySetting
   gl::RenderTarget target(renderer.context().gl());
   target.resize(400, 300, 1);
   renderer.setPartitionedWorld(partitioned);
-  renderer.drawWorld(scene, run, settings, target);
+  renderer.drawWorld(scene, run, settings, {}, target);
   renderer.setPartitionedWorld(true);
   return target.read();
 }
@@ -55,7 +55,7 @@ TEST(ViewRenderer, EveryPictureIsOpaque) {
     for (Style style : {Style::shaded, Style::hiddenLine}) {
       DisplaySettings settings = displaySettingsFor(scene, style, 400.0 / 300.0);
       settings.morphing.t = 2.5;
-      const Image image = renderer.render(kind, scene, run, settings, 400, 300);
+      const Image image = renderer.render(kind, scene, run, settings, {}, 400, 300);
       size_t translucent = 0;
       for (const Rgba& p : image.pixels) translucent += p.a != 255;
       EXPECT_EQ(translucent, 0u) << toString(kind) << ", " << toString(style);

@@ -214,7 +214,7 @@ TEST(Ui, ClickingAVertexInTheCameraViewProbesIt) {
   ASSERT_TRUE(v->state().probe) << "nothing picked at " << x << ", " << y;
   EXPECT_EQ(*v->state().probe, first);
   // Every view marks it: its position in DC, WC and NPC.
-  const Highlights& hl = v->state().display.highlights;
+  const Highlights& hl = v->state().highlights;
   ASSERT_TRUE(hl.probeDc && hl.probeWc && hl.probeNpc);
   EXPECT_EQ(*hl.probeDc, dc);
   // The probe panel (the inspector's first tab) shows it instead of its hint, and the camera view
