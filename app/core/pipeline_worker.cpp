@@ -1,20 +1,13 @@
 // The CPU pipeline on a worker thread (pipeline_worker.h).
 #include "app/core/pipeline_worker.h"
 
+#include "app/core/background_priority.h"
 #include "pipeline/error.h"
-
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <utility>
 
 namespace vplab {
-
-namespace {
-[[maybe_unused]] constexpr int kNice = 5;  // as the views' render thread (app/render/view_worker.cpp)
-}  // namespace
 
 PipelineWorker::PipelineWorker(std::function<void()> wake) : wake_(std::move(wake)) {
   thread_ = std::thread([this] { loop(); });
@@ -55,11 +48,7 @@ unsigned PipelineWorker::allocated() const {
 }
 
 void PipelineWorker::loop() {
-  // Below the window's thread, as the views' render thread: its frames come first when both want a
-  // core (a frame takes a few ms, a run of a large scene 0.2 s).
-#ifdef SYS_gettid  // Linux; the browser build starts no worker
-  setpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)), kNice);
-#endif
+  runBelowTheWindow();
   std::unique_lock lock(mutex_);
   for (;;) {
     changed_.wait(lock, [&] { return stop_ || pending_.has_value(); });

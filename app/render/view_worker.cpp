@@ -1,19 +1,12 @@
 // The views' render thread (view_worker.h).
 #include "app/render/view_worker.h"
 
+#include "app/core/background_priority.h"
 #include "pipeline/error.h"
-
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
 
 #include <chrono>
 
 namespace vplab {
-
-namespace {
-[[maybe_unused]] constexpr int kNice = 5;
-}  // namespace
 
 ViewWorker::ViewWorker(std::unique_ptr<GlContext> context, std::function<void()> wake)
     : ctx_(std::move(context)), wake_(std::move(wake)) {
@@ -73,11 +66,7 @@ size_t ViewWorker::freeBuffer(size_t view) const {
 // publishes it. glFinish before publishing: the window's context samples the texture only after
 // the drawing is complete (objects shared between contexts are not synchronised otherwise).
 void ViewWorker::run() {
-  // Below the window's thread: its frames come first when both want a core (the nice value of a
-  // thread on Linux; the window's frames take a few ms, a view of a large mesh seconds).
-#ifdef SYS_gettid  // Linux; the browser build has no render thread at all
-  setpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)), kNice);
-#endif
+  runBelowTheWindow();
   ctx_->makeCurrent();
   {
     ViewRenderer renderer(*ctx_);

@@ -47,7 +47,7 @@ set(uses_app/gl pipeline/ app/views/ app/gl/)
 set(outside_app/gl gl)
 set(about_app/gl "shaders, render targets, texture read-back")
 
-set(uses_app/render pipeline/ app/views/ app/fonts/ app/export/ app/context/ app/gl/ app/render/)
+set(uses_app/render pipeline/ app/core/ app/views/ app/fonts/ app/export/ app/context/ app/gl/ app/render/)
 set(outside_app/render gl imgui)
 set(about_app/render "the GL backend of the display lists, the views' images and their render thread")
 
