@@ -52,17 +52,24 @@ std::string typeName(const Json& j) {
   return "null";
 }
 
-// The cyclic shift k that puts the reference's vertex k under the student's first vertex (the
-// nearest one), for clipped polygons that start elsewhere.
+// The cyclic shift k that puts the reference's vertex k under the student's first vertex, for
+// clipped polygons that start elsewhere: the shift that puts all the student's vertices nearest the
+// reference's when both have as many (the first vertex alone cannot tell twins apart: a polygon
+// that passes through a corner of the cube twice has two vertices a few ulps apart, and a rounded
+// answer's first vertex may be nearer the wrong one), else the one nearest the first vertex.
 size_t alignment(const Json& student, const Json& reference) {
   if (student.empty() || reference.empty() || !student[0].is_array()) return 0;
+  const size_t n = reference.size(), compared = student.size() == n ? n : 1;
   size_t shift = 0;
   double best = INFINITY;
-  for (size_t k = 0; k < reference.size(); ++k) {
+  for (size_t k = 0; k < n; ++k) {
     double d = 0;
-    for (size_t c = 0; c < std::min(student[0].size(), reference[k].size()); ++c)
-      if (student[0][c].is_number() && reference[k][c].is_number())
-        d += std::abs(student[0][c].get<double>() - reference[k][c].get<double>());
+    for (size_t i = 0; i < compared; ++i) {
+      const Json &s = student[i], &r = reference[(i + k) % n];
+      if (!s.is_array() || !r.is_array()) continue;
+      for (size_t c = 0; c < std::min(s.size(), r.size()); ++c)
+        if (s[c].is_number() && r[c].is_number()) d += std::abs(s[c].get<double>() - r[c].get<double>());
+    }
     if (d < best) best = d, shift = k;
   }
   return shift;
