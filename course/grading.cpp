@@ -1,5 +1,8 @@
 #include "course/grading.h"
 
+#include "course/assignment.h"
+#include "course/rational.h"
+#include "course/sheet_values.h"
 #include "io/json_read.h"
 #include "io/limits.h"
 
@@ -7,19 +10,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace vplab {
 
 using Json = nlohmann::ordered_json;
 
-std::string_view stageName(int stage) {
+std::string_view stageName(int stage, Language lang) {
+  const bool de = lang == Language::de;
   switch (stage) {
-    case 0: return "the scene (MC)";
-    case 1: return "stage 1, modeling (MC → WC)";
-    case 2: return "stage 2, view orientation (WC → VRC)";
-    case 3: return "stage 3, view mapping (VRC → homogeneous NPC)";
-    case 4: return "stage 4, clipping";
-    default: return "stage 5, device mapping (NPC → DC)";
+    case 0: return de ? "die Szene (MC)" : "the scene (MC)";
+    case 1: return de ? "Stufe 1, Modellierung (MC → WC)" : "stage 1, modeling (MC → WC)";
+    case 2: return de ? "Stufe 2, Sichtorientierung (WC → VRC)" : "stage 2, view orientation (WC → VRC)";
+    case 3: return de ? "Stufe 3, Sichtabbildung (VRC → homogene NPC)" : "stage 3, view mapping (VRC → homogeneous NPC)";
+    case 4: return de ? "Stufe 4, Clipping" : "stage 4, clipping";
+    default: return de ? "Stufe 5, Gerätetransformation (NPC → DC)" : "stage 5, device mapping (NPC → DC)";
   }
 }
 
@@ -39,7 +44,8 @@ int stageOfKey(const std::string& section, const std::string& key) {
   if (key == "npc_from_vrc" || key == "npc_h") return 3;
   if (key == "dc_from_npc" || key == "clipped_dc") return 5;
   if (key == "wc_from_mc" || key == "wc") return 1;
-  if (key == "outcodes" || key == "fate") return 4;
+  if (key == "outcodes" || key == "fate" || key == "boundary" || key == "clip_steps") return 4;
+  if (key == "npc" || key == "dc") return 5;
   return 0;  // name, mc
 }
 
@@ -52,27 +58,93 @@ std::string typeName(const Json& j) {
   return "null";
 }
 
-// The cyclic shift k that puts the reference's vertex k under the student's first vertex, for
-// clipped polygons that start elsewhere: the shift that puts all the student's vertices nearest the
-// reference's when both have as many (the first vertex alone cannot tell twins apart: a polygon
-// that passes through a corner of the cube twice has two vertices a few ulps apart, and a rounded
-// answer's first vertex may be nearer the wrong one), else the one nearest the first vertex.
-size_t alignment(const Json& student, const Json& reference) {
-  if (student.empty() || reference.empty() || !student[0].is_array()) return 0;
-  const size_t n = reference.size(), compared = student.size() == n ? n : 1;
-  size_t shift = 0;
-  double best = INFINITY;
-  for (size_t k = 0; k < n; ++k) {
-    double d = 0;
-    for (size_t i = 0; i < compared; ++i) {
-      const Json &s = student[i], &r = reference[(i + k) % n];
-      if (!s.is_array() || !r.is_array()) continue;
-      for (size_t c = 0; c < std::min(s.size(), r.size()); ++c)
-        if (s[c].is_number() && r[c].is_number()) d += std::abs(s[c].get<double>() - r[c].get<double>());
-    }
-    if (d < best) best = d, shift = k;
+// A number the student wrote: a JSON number, or a fraction or decimal as a string ("-3/5", "0.6"),
+// as the sheet's exact solutions print them. nullopt for anything else.
+std::optional<double> numberOf(const Json& j) {
+  if (j.is_number()) return j.get<double>();
+  if (!j.is_string()) return std::nullopt;
+  const std::string t = j.get<std::string>();
+  if (t.empty() || t.size() > 40) return std::nullopt;
+  if (const size_t slash = t.find('/'); slash != std::string::npos) {
+    auto whole = [](const std::string& x, bool sign) {
+      const size_t from = sign && !x.empty() && x[0] == '-' ? 1 : 0;
+      return x.size() > from && x.size() - from <= 15 && x.find_first_not_of("0123456789", from) == std::string::npos;
+    };
+    const std::string num = t.substr(0, slash), den = t.substr(slash + 1);
+    if (!whole(num, true) || !whole(den, false) || std::stoll(den) == 0) return std::nullopt;
+    return double(std::stoll(num)) / double(std::stoll(den));
   }
-  return shift;
+  size_t used = 0;
+  try {
+    const double v = std::stod(t, &used);
+    if (used == t.size() && std::isfinite(v)) return v;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
+}
+
+// How many digits the student printed after the decimal point: from the shortest text that reads
+// back as the number (JSON keeps no trailing zeros), -1 for exponent forms and fractions.
+int decimalsOf(const Json& j) {
+  if (!j.is_number_float()) return j.is_number() ? 0 : -1;
+  const std::string t = j.dump();
+  if (t.find_first_of("eE") != std::string::npos) return -1;
+  const size_t dot = t.find('.');
+  if (dot == std::string::npos) return 0;
+  const std::string frac = t.substr(dot + 1);
+  return frac == "0" ? 0 : int(frac.size());
+}
+
+// |student − value| within half a unit of the student's last digit: what rounding would give.
+bool withinRounding(const Json& student, double value) {
+  const int d = decimalsOf(student);
+  const std::optional<double> s = numberOf(student);
+  if (d < 0 || !s) return false;
+  const double halfUnit = 0.5 * std::pow(10.0, -d);
+  return std::abs(*s - value) <= halfUnit * (1 + 1e-9) + 1e-12 * std::abs(value);
+}
+
+// A clipped polygon is a cycle: the student's vertex i is the other's vertex map(i), for the shift
+// and direction that put the student's vertices nearest the other's (clippers start anywhere and go
+// either way round).
+struct Cycle {
+  size_t shift = 0;
+  bool reversed = false;
+  size_t map(size_t i, size_t n) const { return reversed ? (shift + n - i % n) % n : (i + shift) % n; }
+  size_t unmap(size_t r, size_t n) const { return reversed ? (shift + n - r % n) % n : (r + n - shift % n) % n; }
+};
+
+double vertexDistance(const Json& a, const Json& b) {
+  double d = 0;
+  if (!a.is_array() || !b.is_array()) return INFINITY;
+  for (size_t c = 0; c < std::min(a.size(), b.size()); ++c) {
+    const std::optional<double> x = numberOf(a[c]), y = numberOf(b[c]);
+    d += x && y ? std::abs(*x - *y) : 1e9;
+  }
+  return d;
+}
+
+Cycle alignment(const Json& student, const Json& other) {
+  Cycle best;
+  if (student.empty() || other.empty() || !student[0].is_array()) return best;
+  const size_t n = other.size();
+  // With as many vertices as the other, all of them count; otherwise the first decides the shift.
+  const size_t compared = student.size() == n ? n : 1;
+  double bestDistance = INFINITY;
+  for (const bool reversed : {false, true})
+    for (size_t shift = 0; shift < n; ++shift) {
+      const Cycle c{shift, reversed};
+      double d = 0;
+      for (size_t i = 0; i < compared; ++i) d += vertexDistance(student[i], other[c.map(i, n)]);
+      if (d < bestDistance - 1e-12) bestDistance = d, best = c;
+    }
+  return best;
+}
+
+// The lists of a polygon's vertices (P1, P2, …) that a student may give in part, from P1 on.
+bool isPerVertexList(const std::string& key) {
+  return key == "mc" || key == "wc" || key == "vrc" || key == "npc_h" || key == "outcodes" || key == "boundary" ||
+         key == "npc" || key == "dc";
 }
 
 struct Walker {
@@ -90,16 +162,26 @@ struct Walker {
   bool same(const Json& s, const Json& r) const {
     if (r.is_number_integer() || r.is_number_unsigned()) return s.is_number_integer() && s == r;
     if (r.is_number()) {
-      const double a = s.get<double>(), b = r.get<double>();
-      return std::isfinite(a) && std::abs(a - b) <= tolerance * std::max(1.0, std::abs(b));
+      const std::optional<double> a = numberOf(s);
+      const double b = r.get<double>();
+      return a && std::isfinite(*a) && std::abs(*a - b) <= tolerance * std::max(1.0, std::abs(b));
     }
     return s == r;
+  }
+  // The same, or off by no more than the student's rounding (for the mistake models: a student who
+  // rounds and makes a mistake still makes that mistake).
+  bool agrees(const Json& s, const Json& r) const {
+    return same(s, r) || (r.is_number() && !r.is_number_integer() && !r.is_number_unsigned() &&
+                          withinRounding(s, r.get<double>()));
   }
 
   void leaf(const Json& s, const Json& r, const std::string& path, const std::string& group, int stage,
             std::vector<std::string> keys) {
+    if (s.is_null()) return;  // not given (the template's empty field)
     if (r.is_number()) {
-      if (!s.is_number()) fail(path, typeName(s) + " where a number is expected (reference " + r.dump() + ")");
+      if (!s.is_number() && !(s.is_string() && numberOf(s) && !r.is_number_integer() && !r.is_number_unsigned()))
+        fail(path, typeName(s) + " where a number is expected (reference " + r.dump() + ")" +
+                       (s.is_string() ? "; a fraction is written \"-3/5\"" : ""));
       if ((r.is_number_integer() || r.is_number_unsigned()) && !s.is_number_integer())
         fail(path, s.dump() + " where an integer is expected");
     } else if (r.is_string() && !s.is_string()) {
@@ -107,7 +189,16 @@ struct Walker {
     } else if (r.is_boolean() && !s.is_boolean()) {
       fail(path, typeName(s) + " where true or false is expected");
     }
-    values.push_back({path, group, stage, same(s, r), s.dump(), r.dump()});
+    GradedValue v;
+    v.path = path;
+    v.group = group;
+    v.stage = stage;
+    v.right = same(s, r);
+    v.decimals = decimalsOf(s);
+    v.rounded = !v.right && r.is_number_float() && withinRounding(s, r.get<double>());
+    v.student = s.dump();
+    v.reference = r.dump();
+    values.push_back(std::move(v));
     referenceOf.push_back(&r);
     studentOf.push_back(&s);
     pathKeys.push_back(std::move(keys));
@@ -135,9 +226,20 @@ struct Walker {
       }
       return;
     }
+    if (s.is_null()) return;  // not given
     if (r.is_array()) {
       if (!s.is_array()) fail(path, typeName(s) + " where an array is expected");
       const bool numbers = isNumberArray(r);
+      // P1 alone (or P1 … Pk) of a per-vertex list: graded as far as given.
+      const bool prefix = isPerVertexList(keys.back()) && s.size() <= r.size();
+      if (prefix && numbers) {
+        for (size_t i = 0; i < s.size(); ++i) {
+          auto sub = keys;
+          sub.push_back(std::to_string(i));
+          walk(s[i], r[i], path + "/" + std::to_string(i), group, stage, sub, section);
+        }
+        return;
+      }
       if (numbers && s.size() != r.size())
         fail(path, std::to_string(s.size()) + " numbers where " + std::to_string(r.size()) + " are expected");
       if (keys.back().find("_from_") != std::string::npos && s.size() != r.size())
@@ -145,19 +247,24 @@ struct Walker {
       const bool objects = !r.empty() && r[0].is_object();
       if (objects && s.size() > r.size())
         fail(path, std::to_string(s.size()) + " entries, but the scene has only " + std::to_string(r.size()));
-      if (!numbers && !objects && s.size() != r.size()) {
+      if (!numbers && !objects && s.size() != r.size() && !prefix) {
         // A list of points or outcodes of another length: wrong, not malformed.
-        values.push_back({path, path, stage, false, std::to_string(s.size()) + " entries",
-                          std::to_string(r.size()) + " entries"});
+        GradedValue v;
+        v.path = v.group = path;
+        v.stage = stage;
+        v.right = false;
+        v.student = std::to_string(s.size()) + " entries";
+        v.reference = std::to_string(r.size()) + " entries";
+        values.push_back(std::move(v));
         referenceOf.push_back(nullptr);
         studentOf.push_back(&s);
         pathKeys.push_back(keys);
         return;
       }
-      // The clipped polygon may start anywhere: align the student's first vertex.
-      const size_t shift = keys.back() == "clipped_dc" ? alignment(s, r) : 0;
+      // The clipped polygon is a cycle: align it (any start, either direction).
+      const Cycle cycle = keys.back() == "clipped_dc" || keys.back() == "polygon" ? alignment(s, r) : Cycle{};
       for (size_t i = 0; i < s.size(); ++i) {
-        const size_t ri = (i + shift) % r.size();
+        const size_t ri = cycle.map(i, r.size());
         auto sub = keys;
         sub.push_back(std::to_string(ri));
         const std::string p = path + "/" + std::to_string(i);
@@ -188,51 +295,88 @@ const Json* at(const Json& dump, const std::vector<std::string>& keys) {
 
 // The keys of a value in a model's dump: the same as in the reference, except that a clipped
 // polygon's vertices are aligned with the model's polygon instead of the reference's.
+// The two alignments of a student's polygon: with the reference's and with a model's.
+using Alignments = std::map<std::string, std::pair<Cycle, Cycle>>;
+
 std::vector<std::string> predictedKeys(const Json& answer, const Json& reference, const Json& model,
-                                       std::vector<std::string> keys) {
-  const auto it = std::find(keys.begin(), keys.end(), "clipped_dc");
+                                       std::vector<std::string> keys, Alignments& cache) {
+  const auto it = std::find_if(keys.begin(), keys.end(),
+                               [](const std::string& k) { return k == "clipped_dc" || k == "polygon"; });
   if (it == keys.end() || it + 1 == keys.end()) return keys;
   const std::vector<std::string> polygonKeys(keys.begin(), it + 1);
   const Json *ref = at(reference, polygonKeys), *mod = at(model, polygonKeys);
   // The answer's polygon: the same keys (objects and polygons are not shifted).
   const Json* stu = at(answer, polygonKeys);
   if (!ref || !mod || !stu || ref->empty() || mod->empty() || mod->size() != ref->size()) return keys;
+  std::string id;
+  for (const std::string& k : polygonKeys) id += "/" + k;
+  auto found = cache.find(id);
+  if (found == cache.end()) found = cache.emplace(id, std::pair{alignment(*stu, *ref), alignment(*stu, *mod)}).first;
+  const auto& [withReference, withModel] = found->second;
   const size_t n = ref->size();
   const size_t ri = std::stoul(*(it + 1));
-  const size_t studentIndex = (ri + n - alignment(*stu, *ref)) % n;
-  *(it + 1) = std::to_string((studentIndex + alignment(*stu, *mod)) % n);
+  *(it + 1) = std::to_string(withModel.map(withReference.unmap(ri, n), n));
   return keys;
 }
 
 }  // namespace
 
-NumbersGrade gradeNumbers(const Json& answer, std::string_view source, const Scene& scene, double tolerance) {
+namespace {
+
+// Grades the assignment's items: each collects the values below its path.
+void gradeItems(NumbersGrade& g, const Assignment& assignment) {
+  for (const AssignmentItem& item : assignment.items) {
+    ItemGrade i{item.path, item.title, item.points, 0, item.required};
+    for (const GradedValue& v : g.values)
+      if (isWithin(v.path, item.path)) ++i.values, i.wrong += !v.right;
+    if (i.right()) i.earned = i.points;
+    g.points += i.earned;
+    g.maxPoints += i.points;
+    g.items.push_back(std::move(i));
+  }
+}
+
+}  // namespace
+
+NumbersGrade gradeNumbers(const Json& answer, std::string_view source, const Scene& scene, double tolerance,
+                          const Assignment* assignment) {
   if (!(tolerance >= 0 && tolerance < 1)) throw Error("the tolerance must lie in [0, 1), not " + std::to_string(tolerance));
-  const Json reference = referenceDump(scene);
+  const Json reference = referenceAnswer(scene);
   Walker w{std::string(source), tolerance, {}, {}, {}, {}};
   w.walk(answer, reference, "", "", 0, {}, "");
+  if (w.values.empty() && !assignment)
+    throw Error(std::string(source) + ": the answer gives no value to check (every field is empty or missing); "
+                "an answer that checks nothing cannot pass: fill in the template (answer.json) or grade with "
+                "--assignment, which names what is required");
   NumbersGrade g;
   g.tolerance = tolerance;
   g.values = std::move(w.values);
-  for (const GradedValue& v : g.values)
-    if (!v.right) {
-      ++g.wrong;
+  for (const GradedValue& v : g.values) {
+    if (v.right) continue;
+    ++g.wrong;
+    if (v.rounded) {
+      ++g.rounded;
+      if (v.decimals >= 0 && (g.roundedDecimals < 0 || v.decimals < g.roundedDecimals)) g.roundedDecimals = v.decimals;
+    } else {
       g.firstStage = std::min(g.firstStage.value_or(99), v.stage);
     }
-  if (g.wrong == 0) return g;
-  // The mistake models: which of them predict the student's numbers?
-  std::vector<Mistake> full;
+  }
+  if (assignment) gradeItems(g, *assignment);
+  if (g.wrong == g.rounded) return g;  // nothing for the mistake models to explain
+  // The mistake models: which of them predict the student's numbers (up to the student's rounding)?
   for (const MistakeModel& model : mistakeModels()) {
     Json dump;
     try {
       dump = mistakeDump(scene, model.id);
+      addSheetValues(dump, model.id == Mistake::transposed);
     } catch (const Error&) {
       continue;
     }
     ModelMatch match{model.id};
     bool differs = false;
+    Alignments alignments;  // per polygon, computed once per model
     for (size_t i = 0; i < g.values.size(); ++i) {
-      const Json* predicted = at(dump, predictedKeys(answer, reference, dump, w.pathKeys[i]));
+      const Json* predicted = at(dump, predictedKeys(answer, reference, dump, w.pathKeys[i], alignments));
       const Json* ref = w.referenceOf[i];
       if (!ref) {
         // A list of another length than the reference's: does the model's list have the student's length?
@@ -248,16 +392,16 @@ NumbersGrade gradeNumbers(const Json& answer, std::string_view source, const Sce
         ++match.contradicted;
         continue;
       }
-      const bool agrees = w.same(*w.studentOf[i], *predicted);
+      const bool agrees = w.agrees(*w.studentOf[i], *predicted);
       differs = differs || !w.same(*predicted, *ref);
       if (!agrees) ++match.contradicted;
-      else if (!g.values[i].right) ++match.explained;
+      else if (!g.values[i].right && !g.values[i].rounded) ++match.explained;
     }
     if (!differs) continue;  // the model changes nothing the student gave: it cannot be told apart
     g.models.push_back(match);
-    if (match.contradicted == 0) full.push_back(model.id);
+    if (match.contradicted == 0 && match.explained > 0) g.fitting.push_back(model.id);
   }
-  if (full.size() == 1) g.mistake = full[0];
+  if (g.fitting.size() == 1) g.mistake = g.fitting[0];
   std::stable_sort(g.models.begin(), g.models.end(),
                    [](const ModelMatch& a, const ModelMatch& b) { return a.explained > b.explained; });
   return g;

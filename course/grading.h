@@ -5,9 +5,14 @@
 // Tolerance: a number is right when |student − reference| ≤ tolerance · max(1, |reference|)
 // (default 1e-3: students print 4 to 6 digits; a DC coordinate of 400 may be 0.4 px off). Integers
 // (outcodes, the device, statistics), names, fates and the projection compare exactly. A clipped
-// polygon (clipped_dc) may start at any of its vertices (clippers differ in where they start): it is
-// compared at the cyclic shift that matches its first vertex best.
+// polygon (clipped_dc) is a cycle: it may start at any of its vertices and run in either direction
+// (clippers differ in both); it is compared at the shift and direction that match it best. A value
+// outside the tolerance but within half a unit of the student's last printed digit is "rounded":
+// still wrong, but blamed on the rounding, not on a stage. A per-vertex list (mc, wc, vrc, npc_h,
+// outcodes) may give its first vertices only (P1 alone). `null` marks a value not given (the answer
+// template's empty fields).
 #pragma once
+#include "course/language.h"
 #include "course/mistake_models.h"
 
 #include <nlohmann/json.hpp>
@@ -19,14 +24,16 @@
 namespace vplab {
 
 /// The stages of docs/conventions.md, for "where the student departs": 0 the scene's MC, 1 modeling,
-/// 2 view orientation, 3 view mapping, 4 clipping, 5 device mapping.
-std::string_view stageName(int stage);
+/// 2 view orientation, 3 view mapping, 4 clipping, 5 device mapping (in the lecture's terms in German).
+std::string_view stageName(int stage, Language lang = Language::en);
 
 struct GradedValue {
   std::string path;       // JSON pointer into the student's file, "/matrices/vrc_from_wc/1/3"
   std::string group;      // the vector or matrix it belongs to, "/matrices/vrc_from_wc"
   int stage = 0;
   bool right = true;
+  bool rounded = false;  // wrong, but within half a unit of the student's last digit (rounding)
+  int decimals = -1;     // the digits the student printed after the point (-1: not a plain decimal)
   std::string student, reference;  // as JSON text
 };
 
@@ -36,23 +43,48 @@ struct ModelMatch {
   size_t contradicted = 0;  // values (right or wrong) where the student and the model differ
 };
 
+/// What an assignment asks for (course/assignment.h), graded: its values right, wrong or missing.
+struct ItemGrade {
+  std::string path, title;
+  double points = 0, earned = 0;
+  bool required = true;
+  size_t values = 0, wrong = 0;  // of the item's values the student gave
+  bool missing() const { return values == 0; }
+  bool right() const { return values > 0 && wrong == 0; }
+};
+
 struct NumbersGrade {
   double tolerance = 1e-3;
   std::vector<GradedValue> values;
-  size_t wrong = 0;
-  std::optional<int> firstStage;         // the smallest stage with a wrong value
+  size_t wrong = 0;                      // every value not right, the rounded ones included
+  size_t rounded = 0;                    // of those, the ones off by the student's rounding only
+  int roundedDecimals = -1;              // the fewest decimals among the rounded values
+  std::optional<int> firstStage;         // the smallest stage with a wrong value not explained by rounding
   std::vector<ModelMatch> models;        // every model that differs from the reference on the values given
   std::optional<Mistake> mistake;        // the model matching every value, when exactly one does
-  bool passed() const { return wrong == 0; }
+  std::vector<Mistake> fitting;          // every model matching every value (several: they cannot be told apart)
+  std::vector<ItemGrade> items;          // with an assignment: its items in its order
+  double points = 0, maxPoints = 0;
+  bool passed() const {
+    if (wrong != 0) return false;
+    for (const ItemGrade& i : items)
+      if (i.required && !i.right()) return false;
+    return true;
+  }
 };
+
+struct Assignment;
 
 /// Parses a student's answer file's text. Throws vplab::Error "SOURCE: line L, column C: …".
 nlohmann::ordered_json parseAnswer(std::string_view text, std::string_view source);
 
 /// Grades the answer against the scene's reference run. Malformed answers (unknown keys, wrong
 /// types, more objects or polygons than the scene has, vectors of the wrong length) throw
-/// vplab::Error "SOURCE: /json/path: what is wrong, what was expected".
+/// vplab::Error "SOURCE: /json/path: what is wrong, what was expected"; so does an answer that gives
+/// no value at all without an assignment (it would pass having checked nothing). With an
+/// assignment, each of its items is graded (a required item not given fails, named) and earns its
+/// points when all its values are right.
 NumbersGrade gradeNumbers(const nlohmann::ordered_json& answer, std::string_view source, const Scene& scene,
-                          double tolerance = 1e-3);
+                          double tolerance = 1e-3, const Assignment* assignment = nullptr);
 
 }  // namespace vplab

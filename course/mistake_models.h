@@ -20,6 +20,7 @@
 // stage or is a relabelling (transposed, y not flipped, front/back: the cube is symmetric under
 // z → w − z, so clipping commutes with it).
 #pragma once
+#include "course/language.h"
 #include "pipeline/scene.h"
 
 #include <nlohmann/json.hpp>
@@ -36,6 +37,9 @@ struct MistakeModel {
   std::string_view key;          // "divide-first"
   std::string_view description;  // what the student did
   std::string_view hint;         // where to read about it
+  std::string_view descriptionDe, hintDe;  // the same in German (the lecture's terms)
+  std::string_view descriptionIn(Language lang) const { return lang == Language::de ? descriptionDe : description; }
+  std::string_view hintIn(Language lang) const { return lang == Language::de ? hintDe : hint; }
 };
 
 /// All models, in the order above.

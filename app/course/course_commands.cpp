@@ -4,14 +4,19 @@
 #include "app/course/grade_image.h"
 #include "app/course/grade_report.h"
 #include "app/render/headless.h"
+#include "course/assignment.h"
 #include "pipeline/error.h"
 #include "io/read_file.h"
+#include "io/limits.h"
 #include "io/scene_io.h"
 
 #include <CLI/CLI.hpp>
 #include <stb_image.h>
 
+#include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <optional>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -34,11 +39,17 @@ struct ExerciseArgs {
 };
 
 struct GradeArgs {
-  std::string scene, student, junit, view = "camera", style = "flat", diff, backend = "auto";
-  // Numbers as text, converted here, so that a bad value is a usage error (exit 2) like the others.
-  std::string tolerance = "0.001", maxDiff = "48", meanDiff = "2", maxShare = "0.005";
+  std::string scene, student, junit, view = "camera", style = "flat", diff, backend = "auto", assignment, lang = "en";
+  // Numbers as text, converted here, so that a bad value is a usage error (exit 2) like the others;
+  // empty: the default (or the assignment's).
+  std::string tolerance, maxDiff = "48", meanDiff = "2", maxShare = "0.005";
   bool json = false;
 };
+
+Language languageOf(const std::string& lang) {
+  if (lang != "en" && lang != "de") throw UsageError("--lang \"" + lang + "\": en or de expected");
+  return lang == "de" ? Language::de : Language::en;
+}
 
 double number(const std::string& option, const std::string& text, double lo, double hi) {
   size_t used = 0;
@@ -81,32 +92,69 @@ std::string readAnswer(const std::string& path) {
   }
 }
 
+void writeJunit(const GradeReport& report, const std::string& file) {
+  std::ofstream out(file, std::ios::binary);
+  out << reportJunit(report);
+  if (!out) throw Error(file + ": cannot write the JUnit report");
+}
+
 void emit(const GradeReport& report, const GradeArgs& a) {
   if (a.json)
     std::cout << report.json.dump(2) << "\n";
   else
     std::cout << reportText(report);
-  if (!a.junit.empty()) {
-    std::ofstream out(a.junit, std::ios::binary);
-    out << reportJunit(report);
-    if (!out) throw Error(a.junit + ": cannot write the JUnit report");
+  if (!a.junit.empty()) writeJunit(report, a.junit);
+}
+
+/// Runs `grade`; an answer that cannot be graded (unreadable, malformed) still gets its report:
+/// the JUnit file (and --json's report) names the problem, and the exit status is 2.
+template <class F>
+int gradeOrReport(const GradeArgs& a, const std::string& kind, const std::string& scene, F&& grade) {
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    GradeReport report = grade();
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    emit(report, a);
+    return report.passed ? 0 : 1;
+  } catch (const UsageError& e) {
+    if (!a.junit.empty() || a.json) {
+      GradeReport report = errorReport(kind, a.student, scene, e.what(), languageOf(a.lang));
+      report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (a.json) std::cout << report.json.dump(2) << "\n";
+      if (!a.junit.empty()) writeJunit(report, a.junit);
+    }
+    throw;
   }
 }
 
 int gradeNumbersCommand(const GradeArgs& a) {
   if (a.student.empty()) throw UsageError("grade numbers: --student FILE is required");
-  const double tolerance = number("--tolerance", a.tolerance, 0, 0.5);
-  const Scene scene = gradeScene(a.scene);
-  const std::string text = readAnswer(a.student);
-  NumbersGrade grade;
-  try {
-    grade = gradeNumbers(parseAnswer(text, a.student), a.student, scene, tolerance);
-  } catch (const Error& e) {
-    throw UsageError(e.what());
+  const Language lang = languageOf(a.lang);
+  std::optional<Assignment> assignment;
+  std::string sceneFile = a.scene;
+  if (!a.assignment.empty()) {
+    try {
+      assignment = parseAssignment(readRegularFile(a.assignment, kDefaultLimits.sceneFileBytes, "assignment"), a.assignment);
+    } catch (const Error& e) {
+      throw UsageError(e.what());
+    }
+    if (sceneFile.empty() && !assignment->scene.empty())
+      sceneFile = (std::filesystem::path(a.assignment).parent_path() / assignment->scene).string();
   }
-  const GradeReport report = numbersReport(grade, a.student, a.scene.empty() ? "(built-in default scene)" : a.scene);
-  emit(report, a);
-  return report.passed ? 0 : 1;
+  const double tolerance = !a.tolerance.empty() ? number("--tolerance", a.tolerance, 0, 0.5)
+                                                : assignment ? assignment->tolerance : 1e-3;
+  const std::string sceneName = sceneFile.empty() ? "(built-in default scene)" : sceneFile;
+  const Scene scene = gradeScene(sceneFile);
+  return gradeOrReport(a, "numbers", sceneName, [&] {
+    const std::string text = readAnswer(a.student);
+    NumbersGrade grade;
+    try {
+      grade = gradeNumbers(parseAnswer(text, a.student), a.student, scene, tolerance, assignment ? &*assignment : nullptr);
+    } catch (const Error& e) {
+      throw UsageError(e.what());
+    }
+    return numbersReport(grade, a.student, sceneName, lang);
+  });
 }
 
 int gradeImageCommand(const GradeArgs& a) {
@@ -118,6 +166,7 @@ int gradeImageCommand(const GradeArgs& a) {
   if (!style) throw UsageError("--style \"" + a.style + "\": flat, shaded, wire, hidden-line or hidden-removed expected");
   const auto backend = backendFromString(a.backend);
   if (!backend) throw UsageError("--backend \"" + a.backend + "\": auto, egl or osmesa expected");
+  const Language lang = languageOf(a.lang);
   ImageThresholds t;
   const double maxDiff = number("--max-diff", a.maxDiff, 0, 255);
   if (maxDiff != std::floor(maxDiff)) throw UsageError("--max-diff \"" + a.maxDiff + "\": a whole number from 0 to 255 expected");
@@ -125,26 +174,26 @@ int gradeImageCommand(const GradeArgs& a) {
   t.meanDiff = number("--mean-diff", a.meanDiff, 0, 255);
   t.maxShare = number("--max-share", a.maxShare, 0, 1);
   const Scene scene = gradeScene(a.scene);
-  // The size from the PNG header first: a hostile file must not make us allocate (or render) gigabytes.
-  int width = 0, height = 0, channels = 0;
-  if (stbi_info(a.student.c_str(), &width, &height, &channels) && (width > kMaxGradeSide || height > kMaxGradeSide))
-    throw UsageError(a.student + ": " + std::to_string(width) + " × " + std::to_string(height) +
-                     " pixels; at most " + std::to_string(kMaxGradeSide) + " on each side are graded");
-  Image student;
-  try {
-    student = readPng(a.student);
-  } catch (const Error& e) {
-    throw UsageError(e.what());
-  }
-  auto context = createHeadlessContext(*backend, false);
-  ViewRenderer renderer(*context);
-  const ImageGrade grade = gradeImage(renderer, scene, student, *view, *style, t);
-  const std::string diff = a.diff.empty() ? a.student + ".diff.png" : a.diff;
-  if (!grade.comparison.sizeMismatch) writePng(grade.difference, diff);
-  const GradeReport report = imageReport(grade, a.student, a.scene.empty() ? "(built-in default scene)" : a.scene,
-                                         grade.comparison.sizeMismatch ? "" : diff);
-  emit(report, a);
-  return report.passed ? 0 : 1;
+  const std::string sceneName = a.scene.empty() ? "(built-in default scene)" : a.scene;
+  return gradeOrReport(a, "image", sceneName, [&] {
+    // The size from the PNG header first: a hostile file must not make us allocate (or render) gigabytes.
+    int width = 0, height = 0, channels = 0;
+    if (stbi_info(a.student.c_str(), &width, &height, &channels) && (width > kMaxGradeSide || height > kMaxGradeSide))
+      throw UsageError(a.student + ": " + std::to_string(width) + " × " + std::to_string(height) + " pixels; at most " +
+                       std::to_string(kMaxGradeSide) + " on each side are graded");
+    Image student;
+    try {
+      student = readPng(a.student);
+    } catch (const Error& e) {
+      throw UsageError(e.what());
+    }
+    auto context = createHeadlessContext(*backend, false);
+    ViewRenderer renderer(*context);
+    const ImageGrade grade = gradeImage(renderer, scene, student, *view, *style, t);
+    const std::string diff = a.diff.empty() ? a.student + ".diff.png" : a.diff;
+    if (!grade.comparison.sizeMismatch) writePng(grade.difference, diff);
+    return imageReport(grade, a.student, sceneName, grade.comparison.sizeMismatch ? "" : diff, lang);
+  });
 }
 
 int exerciseCommand(const ExerciseArgs& a) {
@@ -158,7 +207,7 @@ int exerciseCommand(const ExerciseArgs& a) {
     throw UsageError("--seed \"" + a.seed + "\": a whole number from 0 to 999999999999999999 expected");
   const Exercise exercise = generateExercise({std::stoull(a.seed), *topic, *projection});
   writeExercise(exercise, a.lang == "de" ? Language::de : Language::en, a.out);
-  std::cerr << "vplab exercise: wrote sheet.md, solution.md, sheet.tex, solution.tex, scene.json and the figures to "
+  std::cerr << "vplab exercise: wrote sheet.md, solution.md, sheet.tex, solution.tex, scene.json, answer.json (the template to fill in), assignment.json (for vplab grade) and the figures to "
             << a.out << "\n";
   return 0;
 }
@@ -191,8 +240,11 @@ void addGradeOptions(CLI::App* cmd, GradeArgs& a) {
   cmd->add_option("--student", a.student, "The student's answer file (required)")
       ->type_name("FILE");
   cmd->add_flag("--json", a.json, "Print the report as JSON instead of text");
-  cmd->add_option("--junit", a.junit, "Also write the report as JUnit XML to FILE (for autograders)")
+  cmd->add_option("--junit", a.junit,
+                  "Also write the report as JUnit XML to FILE (for autograders; written for a malformed answer too)")
       ->type_name("FILE");
+  cmd->add_option("--lang", a.lang, "The feedback's language: en (default) or de")
+      ->type_name("LANG");
 }
 
 }  // namespace
@@ -225,8 +277,13 @@ void addCourseCommands(CLI::App& app) {
       "numbers", "Grade a student's numbers in the `vplab dump` format (any subset of it) value by value");
   addGradeOptions(numbers, *num);
   numbers->add_option("--tolerance", num->tolerance,
-                      "A number is right when |student − reference| ≤ T · max(1, |reference|); default 0.001")
+                      "A number is right when |student − reference| ≤ T · max(1, |reference|); default: the "
+                      "assignment's, else 0.001")
       ->type_name("T");
+  numbers->add_option("--assignment", num->assignment,
+                      "What the answer must give and what each item is worth (assignment.json of vplab exercise); "
+                      "its scene is graded unless --scene says otherwise")
+      ->type_name("FILE");
   numbers->allow_extras();
   numbers->callback([num, numbers] { finish(numbers, 2, [&] { return gradeNumbersCommand(*num); }); });
 

@@ -1,5 +1,9 @@
 #include "app/course/exercise_writer.h"
 
+#include "course/exercise_answer.h"
+#include "course/sheet_values.h"
+#include "io/json_text.h"
+
 #include "app/export/svg.h"
 #include "app/render/headless.h"
 #include "pipeline/error.h"
@@ -411,6 +415,10 @@ void writeExercise(const Exercise& exercise, Language lang, const std::filesyste
   writeText(docs.sheetTex, dir / "sheet.tex");
   writeText(docs.solutionTex, dir / "solution.tex");
   writeText(sceneToJson(exercise.scene), dir / "scene.json");
+  // What the sheet asks for: the grader's assignment and the template a student fills in.
+  const Assignment assignment = exerciseAssignment(exercise, solution, lang);
+  writeText(assignmentJson(assignment), dir / "assignment.json");
+  writeText(prettyJson(answerTemplate(assignment, referenceAnswer(exercise.scene))) + "\n", dir / "answer.json");
   // The figures: the world view for the sheet, the NPC view for the solution, as vector lines
   // (hidden-line style, made on the CPU) and as the same drawing in PNG for LaTeX.
   auto context = createHeadlessContext(Backend::automatic, false);

@@ -7,6 +7,7 @@
 // device mapping. Every number is the pipeline's own (course/exercise.h), printed as an exact
 // fraction where it is a small rational (course/rational.h), else rounded to 4 decimals.
 #pragma once
+#include "course/language.h"
 #include "course/exercise.h"
 
 #include <filesystem>
@@ -14,7 +15,6 @@
 
 namespace vplab {
 
-enum class Language { en, de };
 
 struct ExerciseDocuments {
   std::string sheetMd, solutionMd, sheetTex, solutionTex;

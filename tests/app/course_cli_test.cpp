@@ -47,7 +47,7 @@ TEST_F(Course, ExerciseTwiceWritesTheSameBytes) {
     ++files;
     EXPECT_EQ(readFile(e.path()), readFile(dir_ / "b" / e.path().filename())) << e.path().filename();
   }
-  EXPECT_EQ(files, 9u);  // sheet and solution .md/.tex, scene.json, world and npc .svg/.png
+  EXPECT_EQ(files, 11u);  // sheet and solution .md/.tex, scene.json, answer.json, assignment.json, world and npc .svg/.png
   ASSERT_EQ(vplab("exercise --seed 8 --topic pipeline --out c").exitCode, 0);
   EXPECT_NE(readFile(dir_ / "a" / "sheet.md"), readFile(dir_ / "c" / "sheet.md"));
 }

@@ -297,7 +297,7 @@ TEST(Grading, MalformedAnswersNameTheFileAndThePath) {
             "alice.json: /matrices/vrc_from_wc: a string where an array is expected");
   EXPECT_EQ(grade(Json{{"camera", {{"vpd", "five"}}}}),
             "alice.json: /camera/vpd: a string where a number is expected (reference " +
-                referenceDump(scene)["camera"]["vpd"].dump() + ")");
+                referenceDump(scene)["camera"]["vpd"].dump() + "); a fraction is written \"-3/5\"");
   EXPECT_NE(grade(Json{{"cameras", 1}}).find("alice.json: /cameras: unknown key (the dump has here: camera, device"),
             std::string::npos);
   EXPECT_EQ(grade(Json{{"camera", {{"u", {1, 0}}}}}), "alice.json: /camera/u: 2 numbers where 3 are expected");

@@ -1,0 +1,123 @@
+#include "course/exercise_answer.h"
+
+#include "pipeline/clipping.h"
+#include "pipeline/error.h"
+
+#include <string>
+
+namespace vplab {
+
+using Json = nlohmann::ordered_json;
+
+Assignment exerciseAssignment(const Exercise& e, const ExerciseSolution& s, Language lang) {
+  auto L = [&](const std::string& en, const std::string& de) { return lang == Language::de ? de : en; };
+  auto shows = [&](ExerciseTopic t) { return e.spec.topic == ExerciseTopic::pipeline || e.spec.topic == t; };
+  Assignment a;
+  a.title = L("Exercise ", "Übung ") + std::to_string(e.spec.seed) + " (" + std::string(toString(e.spec.topic)) + ", " +
+            std::string(toString(e.spec.projection)) + ")";
+  a.scene = "scene.json";
+  const std::string polygon = "/objects/0/polygons/0";
+  auto item = [&](std::string path, std::string title, double points) {
+    a.items.push_back({std::move(path), std::move(title), points, true});
+  };
+  if (shows(ExerciseTopic::orientation)) {
+    item("/objects/0/wc_from_mc", "wcFromMc", 2);
+    item(polygon + "/wc/0", L("P1 in WC", "P1 in WC"), 1);
+    item("/camera/n", "N", 1);
+    item("/camera/u", "U", 1);
+    item("/camera/v", "V", 1);
+    item("/camera/vpd", "VPD", 1);
+    item("/matrices/vrc_from_wc", "vrcFromWc", 2);
+    item(polygon + "/vrc/0", L("P1 in VRC", "P1 in VRC"), 1);
+  }
+  if (shows(ExerciseTopic::mapping)) {
+    item("/matrices/npc_from_vrc", "npcFromVrc", 2);
+    item(polygon + "/npc_h/0", L("P1 in homogeneous NPC", "P1 in homogenen NPC"), 1);
+    item(polygon + "/boundary/0", L("the boundary coordinates of P1", "die Randkoordinaten von P1"), 1);
+    item(polygon + "/outcodes/0", L("the outcode of P1", "der Outcode von P1"), 1);
+    if (s.point.outcode == 0) {  // "where it is inside, its NPC and DC"
+      item(polygon + "/npc/0", L("P1 in NPC", "P1 in NPC"), 1);
+      item(polygon + "/dc/0", L("P1 in DC", "P1 in DC"), 1);
+    }
+  }
+  if (shows(ExerciseTopic::clipping)) {
+    static constexpr const char* kPlanesDe[] = {"links", "rechts", "unten", "oben", "hinten", "vorne"};
+    for (int plane = 0; plane < kPlaneCount; ++plane)
+      item(polygon + "/clip_steps/" + std::to_string(plane) + "/polygon",
+           L("the polygon after the " + std::string(planeName(plane)) + " plane",
+             "das Polygon nach der Ebene " + std::string(kPlanesDe[plane])),
+           1);
+    item("/matrices/dc_from_npc", "dcFromNpc", 1);
+    item(polygon + "/clipped_dc", L("the clipped polygon in DC", "das geclippte Polygon in DC"), 2);
+  }
+  return a;
+}
+
+namespace {
+
+Json blanked(const Json& j) {
+  if (j.is_primitive()) return nullptr;
+  if (j.is_array()) {
+    Json out = Json::array();
+    for (const Json& e : j) out.push_back(blanked(e));
+    return out;
+  }
+  if (j.is_object()) {
+    Json out = Json::object();
+    for (const auto& [k, v] : j.items()) out[k] = blanked(v);
+    return out;
+  }
+  return j;
+}
+
+std::vector<std::string> keysOf(const std::string& pointer) {
+  std::vector<std::string> keys;
+  size_t from = 1;
+  while (from <= pointer.size()) {
+    const size_t slash = pointer.find('/', from);
+    keys.push_back(pointer.substr(from, slash == std::string::npos ? std::string::npos : slash - from));
+    if (slash == std::string::npos) break;
+    from = slash + 1;
+  }
+  return keys;
+}
+
+bool isIndex(const std::string& k) { return !k.empty() && k.find_first_not_of("0123456789") == std::string::npos; }
+
+}  // namespace
+
+Json answerTemplate(const Assignment& assignment, const Json& reference) {
+  Json answer = Json::object();
+  for (const AssignmentItem& item : assignment.items) {
+    const std::vector<std::string> keys = keysOf(item.path);
+    const Json* ref = &reference;
+    Json* out = &answer;
+    for (size_t i = 0; i < keys.size(); ++i) {
+      const std::string& k = keys[i];
+      const bool last = i + 1 == keys.size();
+      if (isIndex(k)) {
+        const size_t index = std::stoul(k);
+        if (!ref->is_array() || index >= ref->size()) throw Error("answer template: " + item.path + " is not in the reference");
+        const Json& parent = *ref;
+        ref = &parent[index];
+        if (out->is_null()) *out = Json::array();
+        // Entries before `index` are given as empty entries of their shape (P1 is index 0: none).
+        while (out->size() <= index) {
+          const size_t j = out->size();
+          out->push_back(j == index && !last ? Json(nullptr) : blanked(parent[j]));
+        }
+      } else {
+        if (!ref->is_object() || !ref->contains(k)) throw Error("answer template: " + item.path + " is not in the reference");
+        ref = &(*ref)[k];
+        if (out->is_null()) *out = Json::object();
+      }
+      Json& next = isIndex(k) ? (*out)[std::stoul(k)] : (*out)[k];
+      // A polygon's vertex count is part of the answer: the template does not give it away (null).
+      if (last) next = k == "clipped_dc" || k == "polygon" ? Json(nullptr) : blanked(*ref);
+      out = &next;
+    }
+  }
+  return answer;
+}
+
+}  // namespace vplab

@@ -1,0 +1,28 @@
+// What an exercise sheet asks for, as an assignment (course/assignment.h), and the answer template a
+// student fills in (issue 21): every item of the sheet's tasks, in their order, with its points, at
+// its place in the answer format (the `vplab dump` format with the sheet's values,
+// course/sheet_values.h), its numbers null.
+#pragma once
+
+#include "course/assignment.h"
+#include "course/exercise.h"
+#include "course/language.h"
+
+#include <nlohmann/json.hpp>
+
+namespace vplab {
+
+/// The sheet's items: for orientation wcFromMc, P1 in WC, N, U, V, VPD, vrcFromWc and P1 in VRC; for
+/// mapping npcFromVrc, P1 in homogeneous NPC, its boundary coordinates and outcode, and where P1 is
+/// inside its NPC and DC; for clipping the six Sutherland–Hodgman passes, dcFromNpc and the clipped
+/// polygon in DC; the pipeline topic all of them. Matrices and the clipped polygon are worth 2
+/// points, everything else 1. The scene is "scene.json" (written beside it).
+Assignment exerciseAssignment(const Exercise& exercise, const ExerciseSolution& solution, Language lang);
+
+/// The template of an answer to `assignment`: each item's place in `referenceAnswer` with its
+/// structure kept and its values null; a polygon (a clipper's pass, the clipped polygon) is null as a
+/// whole, its vertex count being part of the answer. A pass is its polygon: the sheet names the
+/// planes in order.
+nlohmann::ordered_json answerTemplate(const Assignment& assignment, const nlohmann::ordered_json& referenceAnswer);
+
+}  // namespace vplab
