@@ -338,10 +338,29 @@ void gradeItems(NumbersGrade& g, const Assignment& assignment) {
 
 }  // namespace
 
+GradingReference gradingReference(const Scene& scene) {
+  GradingReference r{referenceAnswer(scene), {}};
+  for (const MistakeModel& model : mistakeModels()) {
+    try {
+      Json dump = mistakeDump(scene, model.id);
+      addSheetValues(dump, model.id == Mistake::transposed);
+      r.models.emplace_back(model.id, std::move(dump));
+    } catch (const Error&) {
+      // the variant's camera is invalid: that model cannot be told for this scene
+    }
+  }
+  return r;
+}
+
 NumbersGrade gradeNumbers(const Json& answer, std::string_view source, const Scene& scene, double tolerance,
                           const Assignment* assignment) {
+  return gradeNumbers(answer, source, gradingReference(scene), tolerance, assignment);
+}
+
+NumbersGrade gradeNumbers(const Json& answer, std::string_view source, const GradingReference& references,
+                          double tolerance, const Assignment* assignment) {
   if (!(tolerance >= 0 && tolerance < 1)) throw Error("the tolerance must lie in [0, 1), not " + std::to_string(tolerance));
-  const Json reference = referenceAnswer(scene);
+  const Json& reference = references.reference;
   Walker w{std::string(source), tolerance, {}, {}, {}, {}};
   w.walk(answer, reference, "", "", 0, {}, "");
   if (w.values.empty() && !assignment)
@@ -364,15 +383,8 @@ NumbersGrade gradeNumbers(const Json& answer, std::string_view source, const Sce
   if (assignment) gradeItems(g, *assignment);
   if (g.wrong == g.rounded) return g;  // nothing for the mistake models to explain
   // The mistake models: which of them predict the student's numbers (up to the student's rounding)?
-  for (const MistakeModel& model : mistakeModels()) {
-    Json dump;
-    try {
-      dump = mistakeDump(scene, model.id);
-      addSheetValues(dump, model.id == Mistake::transposed);
-    } catch (const Error&) {
-      continue;
-    }
-    ModelMatch match{model.id};
+  for (const auto& [mistake, dump] : references.models) {
+    ModelMatch match{mistake};
     bool differs = false;
     Alignments alignments;  // per polygon, computed once per model
     for (size_t i = 0; i < g.values.size(); ++i) {
@@ -399,7 +411,7 @@ NumbersGrade gradeNumbers(const Json& answer, std::string_view source, const Sce
     }
     if (!differs) continue;  // the model changes nothing the student gave: it cannot be told apart
     g.models.push_back(match);
-    if (match.contradicted == 0 && match.explained > 0) g.fitting.push_back(model.id);
+    if (match.contradicted == 0 && match.explained > 0) g.fitting.push_back(mistake);
   }
   if (g.fitting.size() == 1) g.mistake = g.fitting[0];
   std::stable_sort(g.models.begin(), g.models.end(),

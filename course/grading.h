@@ -87,4 +87,14 @@ nlohmann::ordered_json parseAnswer(std::string_view text, std::string_view sourc
 NumbersGrade gradeNumbers(const nlohmann::ordered_json& answer, std::string_view source, const Scene& scene,
                           double tolerance = 1e-3, const Assignment* assignment = nullptr);
 
+/// What every answer to one scene is graded against: the reference answer and each mistake model's
+/// (course/sheet_values.h), computed once for a whole class (vplab grade batch).
+struct GradingReference {
+  nlohmann::ordered_json reference;
+  std::vector<std::pair<Mistake, nlohmann::ordered_json>> models;  // the models whose camera is valid
+};
+GradingReference gradingReference(const Scene& scene);
+NumbersGrade gradeNumbers(const nlohmann::ordered_json& answer, std::string_view source, const GradingReference& reference,
+                          double tolerance = 1e-3, const Assignment* assignment = nullptr);
+
 }  // namespace vplab

@@ -1,6 +1,7 @@
 #include "app/course/course_commands.h"
 
 #include "app/course/exercise_writer.h"
+#include "app/course/grade_batch.h"
 #include "app/course/grade_image.h"
 #include "app/course/grade_report.h"
 #include "app/render/headless.h"
@@ -12,7 +13,9 @@
 
 #include <CLI/CLI.hpp>
 #include <stb_image.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -21,6 +24,7 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <thread>
 
 namespace vplab {
 
@@ -196,6 +200,51 @@ int gradeImageCommand(const GradeArgs& a) {
   });
 }
 
+struct BatchArgs {
+  std::string assignment, answers, out = "grades", jobs, lang = "en";
+};
+
+int gradeBatchCommand(const BatchArgs& a) {
+  if (a.assignment.empty()) throw UsageError("grade batch: --assignment FILE is required");
+  if (a.answers.empty()) throw UsageError("grade batch: --answers DIR is required");
+  BatchOptions o;
+  o.assignment = a.assignment;
+  o.answers = a.answers;
+  o.out = a.out;
+  o.lang = languageOf(a.lang);
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  o.jobs = a.jobs.empty() ? int(cores) : int(number("--jobs", a.jobs, 1, 256));
+  if (!a.jobs.empty() && std::to_string(o.jobs) != a.jobs) throw UsageError("--jobs \"" + a.jobs + "\": a whole number from 1 to 256 expected");
+  // Progress on stderr: a bar redrawn in place on a terminal, a line every tenth otherwise (a log).
+  const bool terminal = isatty(STDERR_FILENO) != 0;
+  size_t lastTenth = 0;
+  auto progress = [&](size_t done, size_t total) {
+    if (terminal) {
+      const int width = 30, filled = int(width * done / std::max<size_t>(total, 1));
+      std::cerr << "\rvplab grade batch: [" << std::string(size_t(filled), '#') << std::string(size_t(width - filled), '.')
+                << "] " << done << "/" << total << (done == total ? "\n" : "") << std::flush;
+    } else if (size_t tenth = 10 * done / std::max<size_t>(total, 1); tenth > lastTenth || done == total) {
+      lastTenth = tenth;
+      std::cerr << "vplab grade batch: " << done << "/" << total << " graded\n";
+    }
+  };
+  BatchResult r;
+  try {
+    r = gradeBatch(o, progress);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
+  size_t passed = 0, errors = 0;
+  for (const BatchRow& row : r.rows) passed += row.passed, errors += !row.error.empty();
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%.2f", r.seconds);
+  std::cout << "vplab grade batch: " << r.rows.size() << " answers in " << seconds << " s with " << o.jobs
+            << (o.jobs == 1 ? " job" : " jobs") << ": " << passed << " passed, " << r.rows.size() - passed - errors
+            << " failed, " << errors << " could not be graded; " << (std::filesystem::path(a.out) / "grades.csv").string()
+            << ", results.json and reports/ written\n";
+  return 0;
+}
+
 int exerciseCommand(const ExerciseArgs& a) {
   if (a.out.empty()) throw UsageError("exercise: --out DIR is required");
   const auto topic = exerciseTopicFromString(a.topic);
@@ -270,7 +319,7 @@ void addCourseCommands(CLI::App& app) {
       "grade", "Compare a student's numbers (grade numbers) or screenshot (grade image) with the reference and name "
                "the mistake. Exit status 0 passed, 1 wrong, 2 usage or input error");
   grade->callback([grade] {  // runs only when no subcommand ended the parse
-    finish(grade, 2, []() -> int { throw UsageError("grade: a subcommand is required: numbers or image"); });
+    finish(grade, 2, []() -> int { throw UsageError("grade: a subcommand is required: numbers, image or batch"); });
   });
   auto num = std::make_shared<GradeArgs>();
   CLI::App* numbers = grade->add_subcommand(
@@ -286,6 +335,23 @@ void addCourseCommands(CLI::App& app) {
       ->type_name("FILE");
   numbers->allow_extras();
   numbers->callback([num, numbers] { finish(numbers, 2, [&] { return gradeNumbersCommand(*num); }); });
+
+  auto bat = std::make_shared<BatchArgs>();
+  CLI::App* batch = grade->add_subcommand(
+      "batch", "Grade a class: every answer file in --answers DIR (one per student, named by the student's id) "
+               "against --assignment, in parallel; writes grades.csv, results.json and reports/ into --out DIR");
+  batch->add_option("--assignment", bat->assignment, "The assignment (assignment.json of vplab exercise; required)")
+      ->type_name("FILE");
+  batch->add_option("--answers", bat->answers, "The folder of answer files (required)")
+      ->type_name("DIR");
+  batch->add_option("--out", bat->out, "Where to write the gradebook and the reports (default: grades)")
+      ->type_name("DIR");
+  batch->add_option("--jobs", bat->jobs, "Answers graded at once (default: the number of cores)")
+      ->type_name("N");
+  batch->add_option("--lang", bat->lang, "The feedback's language: en (default) or de")
+      ->type_name("LANG");
+  batch->allow_extras();
+  batch->callback([bat, batch] { finish(batch, 2, [&] { return gradeBatchCommand(*bat); }); });
 
   auto img = std::make_shared<GradeArgs>();
   CLI::App* image = grade->add_subcommand(

@@ -284,7 +284,7 @@ TEST_F(Course, GradeNumbersInputErrorsExitWith2) {
   EXPECT_THAT(r.err, HasSubstr("--tolerance \"lots\": a number from 0 to 0.5 expected"));
   r = vplab("grade");
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_THAT(r.err, HasSubstr("a subcommand is required: numbers or image"));
+  EXPECT_THAT(r.err, HasSubstr("a subcommand is required: numbers, image or batch"));
   r = vplab("grade image --student x.png --max-diff 300");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_THAT(r.err, HasSubstr("--max-diff \"300\": a number from 0 to 255 expected"));
