@@ -1,6 +1,7 @@
 #include "course/grading.h"
 
 #include "course/assignment.h"
+#include "course/follow_through.h"
 #include "course/rational.h"
 #include "course/sheet_values.h"
 #include "io/json_read.h"
@@ -57,6 +58,14 @@ std::string typeName(const Json& j) {
   if (j.is_object()) return "an object";
   return "null";
 }
+
+std::optional<double> numberOf(const Json& j);
+
+}  // namespace
+
+std::optional<double> answerNumber(const Json& j) { return numberOf(j); }
+
+namespace {
 
 // A number the student wrote: a JSON number, or a fraction or decimal as a string ("-3/5", "0.6"),
 // as the sheet's exact solutions print them. nullopt for anything else.
@@ -323,13 +332,36 @@ std::vector<std::string> predictedKeys(const Json& answer, const Json& reference
 
 namespace {
 
-// Grades the assignment's items: each collects the values below its path.
-void gradeItems(NumbersGrade& g, const Assignment& assignment) {
+// Whether the student's value agrees with `expected` (within the tolerance or the student's
+// rounding); a polygon at its best cyclic alignment.
+bool agreesWith(const Json& s, const Json& e, const Walker& w) {
+  if (e.is_number()) return w.agrees(s, e);
+  if (!e.is_array() || !s.is_array() || s.size() != e.size()) return false;
+  const bool polygon = !e.empty() && e[0].is_array() && e[0].size() >= 3 && e[0][0].is_number();
+  const Cycle c = polygon ? alignment(s, e) : Cycle{};
+  for (size_t i = 0; i < s.size(); ++i)
+    if (!agreesWith(s[i], e[c.map(i, e.size())], w)) return false;
+  return true;
+}
+
+// Grades the assignment's items: each collects the values below its path. A wrong item whose
+// values are what the student's own earlier values give earns its points (course/follow_through.h).
+void gradeItems(NumbersGrade& g, const Assignment& assignment, const Json& answer, const GradingReference& r,
+                const Walker& w) {
   for (const AssignmentItem& item : assignment.items) {
     ItemGrade i{item.path, item.title, item.points, 0, item.required};
     for (const GradedValue& v : g.values)
       if (isWithin(v.path, item.path)) ++i.values, i.wrong += !v.right;
-    if (i.right()) i.earned = i.points;
+    if (i.right()) {
+      i.earned = i.points;
+    } else if (!i.missing()) {
+      const Json::json_pointer at(item.path);
+      if (const std::optional<Json> expected = followingValue(item.path, answer, r.reference, r.scene);
+          expected && answer.contains(at) && agreesWith(answer[at], *expected, w)) {
+        i.followsThrough = true;
+        i.earned = i.points;
+      }
+    }
     g.points += i.earned;
     g.maxPoints += i.points;
     g.items.push_back(std::move(i));
@@ -339,7 +371,7 @@ void gradeItems(NumbersGrade& g, const Assignment& assignment) {
 }  // namespace
 
 GradingReference gradingReference(const Scene& scene) {
-  GradingReference r{referenceAnswer(scene), {}};
+  GradingReference r{scene, referenceAnswer(scene), {}};
   for (const MistakeModel& model : mistakeModels()) {
     try {
       Json dump = mistakeDump(scene, model.id);
@@ -380,7 +412,7 @@ NumbersGrade gradeNumbers(const Json& answer, std::string_view source, const Gra
       g.firstStage = std::min(g.firstStage.value_or(99), v.stage);
     }
   }
-  if (assignment) gradeItems(g, *assignment);
+  if (assignment) gradeItems(g, *assignment, answer, references, w);
   if (g.wrong == g.rounded) return g;  // nothing for the mistake models to explain
   // The mistake models: which of them predict the student's numbers (up to the student's rounding)?
   for (const auto& [mistake, dump] : references.models) {

@@ -49,6 +49,7 @@ struct ItemGrade {
   double points = 0, earned = 0;
   bool required = true;
   size_t values = 0, wrong = 0;  // of the item's values the student gave
+  bool followsThrough = false;   // wrong, but what the student's own earlier values give: its points earned
   bool missing() const { return values == 0; }
   bool right() const { return values > 0 && wrong == 0; }
 };
@@ -75,6 +76,9 @@ struct NumbersGrade {
 
 struct Assignment;
 
+/// A number as an answer may write it: a JSON number, or a fraction or decimal as a string ("-3/5").
+std::optional<double> answerNumber(const nlohmann::ordered_json& j);
+
 /// Parses a student's answer file's text. Throws vplab::Error "SOURCE: line L, column C: …".
 nlohmann::ordered_json parseAnswer(std::string_view text, std::string_view source);
 
@@ -90,6 +94,7 @@ NumbersGrade gradeNumbers(const nlohmann::ordered_json& answer, std::string_view
 /// What every answer to one scene is graded against: the reference answer and each mistake model's
 /// (course/sheet_values.h), computed once for a whole class (vplab grade batch).
 struct GradingReference {
+  Scene scene;
   nlohmann::ordered_json reference;
   std::vector<std::pair<Mistake, nlohmann::ordered_json>> models;  // the models whose camera is valid
 };

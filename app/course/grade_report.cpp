@@ -79,8 +79,12 @@ GradeCase itemCase(const ItemGrade& item, const NumbersGrade& g, Language lang) 
   }
   c.passed = item.right();
   c.message = item.right() ? values(item.values, lang) + std::string(inLanguage(lang, " right: ", " richtig: ")) + points
-                           : std::to_string(item.wrong) + std::string(inLanguage(lang, " of ", " von ")) + values(item.values, lang) +
-                                 std::string(inLanguage(lang, " wrong: ", " falsch: ")) + points;
+              : item.followsThrough
+                  ? std::to_string(item.wrong) + std::string(inLanguage(lang, " of ", " von ")) + values(item.values, lang) +
+                        std::string(inLanguage(lang, " wrong, but they follow from your earlier values: ",
+                                               " falsch, folgen aber aus Ihren früheren Werten: ")) + points
+                  : std::to_string(item.wrong) + std::string(inLanguage(lang, " of ", " von ")) + values(item.values, lang) +
+                        std::string(inLanguage(lang, " wrong: ", " falsch: ")) + points;
   for (const GradedValue& v : g.values)
     if (!v.right && isWithin(v.path, item.path)) c.details.push_back(valueLine(v, lang));
   c.total = c.details.size();
@@ -225,7 +229,7 @@ GradeReport numbersReport(const NumbersGrade& g, const std::string& student, con
                      {"earned", i.earned},
                      {"values", i.values},
                      {"wrong", i.wrong},
-                     {"status", i.missing() ? "missing" : i.right() ? "right" : "wrong"}});
+                     {"status", i.missing() ? "missing" : i.right() ? "right" : i.followsThrough ? "follows" : "wrong"}});
   }
   Json groups = Json::array();
   for (GradeCase& c : groupCases(g, lang, groups)) r.cases.push_back(std::move(c));

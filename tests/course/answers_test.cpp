@@ -234,5 +234,38 @@ TEST(Answers, TheTemplateHoldsEveryTaskOfTheSheet) {
       }
 }
 
+// Consequential-error credit: wcFromMc wrong (the translation off by one in x), and every later
+// value of P1 computed right from it (by the pipeline on the scene with that translation, not by
+// the grader's own recomputation): only wcFromMc loses its points.
+TEST(Answers, AValueWrongOnlyBecauseAnEarlierOneWasEarnsItsPoints) {
+  const Exercise e = generateExercise({2, ExerciseTopic::pipeline, Projection::perspective});
+  const Assignment a = exerciseAssignment(e, solveExercise(e), Language::en);
+  const Json reference = referenceAnswer(e.scene);
+  Scene moved = e.scene;
+  moved.objects[0].transform.translate.x += 1;
+  moved.objects[0].mesh = primitiveMesh(moved.objects[0]);
+  const Json consequent = referenceAnswer(moved);
+  Json answer = answerTemplate(a, reference);
+  double max = 0, lost = 0;
+  for (const AssignmentItem& item : a.items) {
+    const Json::json_pointer p(item.path);
+    const bool follows = item.path == "/objects/0/wc_from_mc" ||
+                         (item.path.find("/polygons/0/") != std::string::npos && item.path.find("clip") == std::string::npos);
+    answer[p] = follows ? consequent[p] : reference[p];
+    max += item.points;
+    if (item.path == "/objects/0/wc_from_mc") lost = item.points;
+  }
+  const NumbersGrade g = gradeNumbers(answer, "a.json", e.scene, 1e-3, &a);
+  EXPECT_FALSE(g.passed()) << "the values are still wrong";
+  EXPECT_EQ(g.points, max - lost);
+  size_t followed = 0;
+  for (const ItemGrade& i : g.items) followed += i.followsThrough;
+  EXPECT_GE(followed, 4u) << "P1 in WC, VRC, NPC_h and its boundary coordinates at least";
+  // A later value that does not follow from the student's earlier ones earns nothing.
+  answer["/objects/0/polygons/0/vrc/0/0"_json_pointer] = 1234.5;
+  const NumbersGrade h = gradeNumbers(answer, "a.json", e.scene, 1e-3, &a);
+  EXPECT_LT(h.points, g.points);
+}
+
 }  // namespace
 }  // namespace vplab
