@@ -46,7 +46,7 @@ struct GradeArgs {
   std::string scene, student, junit, view = "camera", style = "flat", diff, backend = "auto", assignment, lang = "en";
   // Numbers as text, converted here, so that a bad value is a usage error (exit 2) like the others;
   // empty: the default (or the assignment's).
-  std::string tolerance, maxDiff = "48", meanDiff = "2", maxShare = "0.005";
+  std::string tolerance, maxDiff = "48", meanDiff = "2", maxShare = "0.005", maxShift = "1";
   bool json = false;
 };
 
@@ -177,6 +177,10 @@ int gradeImageCommand(const GradeArgs& a) {
   t.maxDiff = int(maxDiff);
   t.meanDiff = number("--mean-diff", a.meanDiff, 0, 255);
   t.maxShare = number("--max-share", a.maxShare, 0, 1);
+  const double maxShift = number("--max-shift", a.maxShift, 0, kShiftSearch);
+  if (maxShift != std::floor(maxShift))
+    throw UsageError("--max-shift \"" + a.maxShift + "\": a whole number from 0 to " + std::to_string(kShiftSearch) + " expected");
+  t.maxShift = int(maxShift);
   const Scene scene = gradeScene(a.scene);
   const std::string sceneName = a.scene.empty() ? "(built-in default scene)" : a.scene;
   return gradeOrReport(a, "image", sceneName, [&] {
@@ -369,6 +373,10 @@ void addCourseCommands(CLI::App& app) {
       ->type_name("M");
   image->add_option("--max-share", img->maxShare, "At most this share of pixels may be wrong (default 0.005)")
       ->type_name("P");
+  image->add_option("--max-shift", img->maxShift,
+                    "A picture shifted by at most N px on each axis is compared at its shift; a larger shift fails, "
+                    "named (0..16, default 1)")
+      ->type_name("N");
   image->add_option("--diff", img->diff, "Where to write the difference image (default: STUDENT.diff.png)")
       ->type_name("FILE");
   image->add_option("--backend", img->backend, "Headless OpenGL: auto (EGL, then OSMesa), egl or osmesa")

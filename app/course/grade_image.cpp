@@ -4,6 +4,9 @@
 #include "app/export/cpu_raster.h"
 #include "pipeline/error.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace vplab {
 
 namespace {
@@ -16,7 +19,47 @@ Image flipped(const Image& src, bool vertically) {
   return out;
 }
 
+// The mean channel difference over the pixels both cover at the shift, on a grid of `stride`.
+double meanDifferenceAt(const Image& student, const Image& reference, ImageShift s, int stride) {
+  double sum = 0;
+  size_t n = 0;
+  for (int y = std::max(0, -s.dy); y < std::min(reference.height, reference.height - s.dy); y += stride)
+    for (int x = std::max(0, -s.dx); x < std::min(reference.width, reference.width - s.dx); x += stride) {
+      const Rgba a = student.at(x + s.dx, y + s.dy), b = reference.at(x, y);
+      sum += std::abs(int(a.r) - int(b.r)) + std::abs(int(a.g) - int(b.g)) + std::abs(int(a.b) - int(b.b));
+      ++n;
+    }
+  return n ? sum / (3.0 * double(n)) : 1e300;
+}
+
 }  // namespace
+
+ImageShift bestShift(const Image& student, const Image& reference) {
+  if (student.width != reference.width || student.height != reference.height) return {};
+  // A grid of about 64k samples keeps the search (33 × 33 shifts) under a second at any size.
+  const int stride = std::max(1, int(std::sqrt(double(reference.width) * reference.height / 65536.0)));
+  const double atZero = meanDifferenceAt(student, reference, {}, stride);
+  ImageShift best;
+  double bestMean = atZero;
+  for (int dy = -kShiftSearch; dy <= kShiftSearch; ++dy)
+    for (int dx = -kShiftSearch; dx <= kShiftSearch; ++dx) {
+      if (std::abs(dx) * 4 >= reference.width || std::abs(dy) * 4 >= reference.height) continue;
+      const double m = meanDifferenceAt(student, reference, {dx, dy}, stride);
+      if (m < bestMean - 1e-12 ||
+          (m <= bestMean + 1e-12 && std::abs(dx) + std::abs(dy) < std::abs(best.dx) + std::abs(best.dy)))
+        bestMean = m, best = {dx, dy};
+    }
+  return bestMean < 0.5 * atZero ? best : ImageShift{};
+}
+
+Image unshifted(const Image& student, const Image& reference, ImageShift s) {
+  Image out = reference;
+  for (int y = 0; y < reference.height; ++y)
+    for (int x = 0; x < reference.width; ++x)
+      if (x + s.dx >= 0 && x + s.dx < student.width && y + s.dy >= 0 && y + s.dy < student.height)
+        out.at(x, y) = student.at(x + s.dx, y + s.dy);
+  return out;
+}
 
 ImageGrade gradeImage(ViewRenderer& renderer, const Scene& scene, const Image& student, ViewKind view, Style style,
                       const ImageThresholds& t) {
@@ -31,8 +74,11 @@ ImageGrade gradeImage(ViewRenderer& renderer, const Scene& scene, const Image& s
   ImageGrade g;
   g.thresholds = t;
   g.reference = renderImage(renderer, s, request);
-  g.comparison = compareImages(student, g.reference, t.maxDiff);
-  g.difference = differenceImage(student, g.reference, t.maxDiff);
+  g.shift = bestShift(student, g.reference);
+  g.shiftTolerated = std::abs(g.shift.dx) <= t.maxShift && std::abs(g.shift.dy) <= t.maxShift;
+  const Image compared = g.shiftTolerated && !(g.shift == ImageShift{}) ? unshifted(student, g.reference, g.shift) : student;
+  g.comparison = compareImages(compared, g.reference, t.maxDiff);
+  g.difference = differenceImage(compared, g.reference, t.maxDiff);
   if (g.passed()) return g;
   struct Candidate {
     const char *key, *description, *hint;

@@ -288,6 +288,10 @@ GradeReport imageReport(const ImageGrade& g, const std::string& student, const s
                         : "thresholds: a pixel is wrong when a channel differs by more than " + std::to_string(t.maxDiff) +
                               " (--max-diff); pass when the mean channel difference ≤ " + fixed(t.meanDiff, 2) +
                               " (--mean-diff) and at most " + fixed(100 * t.maxShare, 2) + " % of the pixels are wrong");
+  r.header.push_back(de ? "ein um höchstens " + std::to_string(t.maxShift) +
+                              " Pixel je Achse verschobenes Bild wird an seiner Verschiebung verglichen (--max-shift)"
+                        : "a picture shifted by at most " + std::to_string(t.maxShift) +
+                              " px on each axis is compared at its shift (--max-shift)");
   const ImageComparison& c = g.comparison;
   GradeCase image{de ? "Bild" : "image", g.passed(), "", {}};
   if (c.sizeMismatch) {
@@ -316,11 +320,22 @@ GradeReport imageReport(const ImageGrade& g, const std::string& student, const s
                       {"matches", m.matches},
                       {"mean_diff", m.comparison.meanChannelDelta},
                       {"wrong_share", m.comparison.differingShare}});
+  if (!(g.shift == ImageShift{})) {
+    const std::string by = "(" + std::to_string(g.shift.dx) + ", " + std::to_string(g.shift.dy) + ") px";
+    r.diagnosis.push_back(
+        g.shiftTolerated
+            ? (de ? "Ihr Bild ist um " + by + " verschoben; es wurde an dieser Verschiebung verglichen."
+                  : "Your picture is shifted by " + by + "; it was compared at that shift.")
+            : (de ? "Ihr Bild ist um " + by + " verschoben; höchstens " + std::to_string(t.maxShift) +
+                        " Pixel werden toleriert: zeichnen Sie es dort, wo DC es hinlegt (Ursprung oben links, Skript 15.2.5)."
+                  : "Your picture is shifted by " + by + "; at most " + std::to_string(t.maxShift) +
+                        " px are tolerated: draw it where DC puts it (origin top left, lecture notes 15.2.5)."));
+  }
   if (g.mistake) {
     const ImageModelResult& m = g.models[*g.mistake];
     r.diagnosis.push_back((de ? "Ihr Bild ist das des Fehlermodells " : "Your picture is that of the mistake model ") +
                           quoted(m.key, lang) + ": " + m.description + (de ? ". Siehe " : ". See ") + m.hint + ".");
-  } else if (!g.passed()) {
+  } else if (!g.passed() && g.shiftTolerated) {
     r.diagnosis.push_back(de ? "Keines der Fehlermodelle für Bilder (auf dem Kopf, gespiegelt, erst dividieren) passt zu Ihrem Bild."
                              : "None of the image mistake models (upside down, mirrored, divide first) matches your picture.");
   }
@@ -330,7 +345,9 @@ GradeReport imageReport(const ImageGrade& g, const std::string& student, const s
             {"scene", scene},
             {"lang", de ? "de" : "en"},
             {"passed", g.passed()},
-            {"thresholds", {{"max_diff", t.maxDiff}, {"mean_diff", t.meanDiff}, {"max_share", t.maxShare}}},
+            {"thresholds", {{"max_diff", t.maxDiff}, {"mean_diff", t.meanDiff}, {"max_share", t.maxShare}, {"max_shift", t.maxShift}}},
+            {"shift", {g.shift.dx, g.shift.dy}},
+            {"shift_tolerated", g.shiftTolerated},
             {"size", {c.actualWidth, c.actualHeight}},
             {"size_mismatch", c.sizeMismatch},
             {"wrong_pixels", c.differingPixels},

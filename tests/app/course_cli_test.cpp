@@ -337,6 +337,27 @@ TEST_F(Course, GradeImageNamesTheImageMistakes) {
     for (const Json& m : report["models"]) matching += m["matches"].get<bool>();
     EXPECT_EQ(matching, 1u) << "recognised as this mistake and not as another";
   }
+  // Shifted pictures: found and named; within --max-shift (1 px by default) compared at the shift.
+  auto shifted = [&](int dx, int dy) {
+    Image out(right.width, right.height);
+    for (int y = 0; y < right.height; ++y)
+      for (int x = 0; x < right.width; ++x) {
+        const int sx = std::clamp(x - dx, 0, right.width - 1), sy = std::clamp(y - dy, 0, right.height - 1);
+        out.at(x, y) = right.at(sx, sy);
+      }
+    return out;
+  };
+  writePng(shifted(3, 0), dir_ / "shifted3.png");
+  writePng(shifted(1, -1), dir_ / "shifted1.png");
+  r = vplab("grade image --scene " + scene + " --student shifted3.png");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_THAT(r.out, HasSubstr("Your picture is shifted by (3, 0) px; at most 1 px are tolerated"));
+  r = vplab("grade image --scene " + scene + " --student shifted3.png --max-shift 3 --json");
+  EXPECT_EQ(r.exitCode, 0) << r.out;
+  EXPECT_EQ(Json::parse(r.out)["shift"], Json::array({3, 0}));
+  r = vplab("grade image --scene " + scene + " --student shifted1.png");
+  EXPECT_EQ(r.exitCode, 0) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("shifted by (1, -1) px; it was compared at that shift"));
   r = vplab("grade image --scene " + scene + " --student nothing.png");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_THAT(r.err, HasSubstr("nothing.png"));
