@@ -104,11 +104,13 @@ int decimalsOf(const Json& j) {
   return frac == "0" ? 0 : int(frac.size());
 }
 
-// |student − value| within half a unit of the student's last digit: what rounding would give.
+// |student − value| within half a unit of the student's last digit: what rounding would give. A
+// whole number counts as rounded only where whole units are a plausible precision (|value| ≥ 10: DC
+// pixels), not 0 for 0.5.
 bool withinRounding(const Json& student, double value) {
   const int d = decimalsOf(student);
   const std::optional<double> s = numberOf(student);
-  if (d < 0 || !s) return false;
+  if (d < 0 || !s || (d == 0 && std::abs(value) < 10)) return false;
   const double halfUnit = 0.5 * std::pow(10.0, -d);
   return std::abs(*s - value) <= halfUnit * (1 + 1e-9) + 1e-12 * std::abs(value);
 }
@@ -412,14 +414,26 @@ NumbersGrade gradeNumbers(const Json& answer, std::string_view source, const Gra
       g.firstStage = std::min(g.firstStage.value_or(99), v.stage);
     }
   }
-  if (assignment) gradeItems(g, *assignment, answer, references, w);
-  if (g.wrong == g.rounded) return g;  // nothing for the mistake models to explain
+  if (assignment) {
+    gradeItems(g, *assignment, answer, references, w);
+    // Values that follow from the student's earlier ones are consequences, not mistakes of their own:
+    // neither a stage's departure nor something for (or against) a mistake model.
+    g.firstStage.reset();
+    for (GradedValue& v : g.values) {
+      for (const ItemGrade& i : g.items)
+        if (i.followsThrough && !v.right && isWithin(v.path, i.path)) v.consequent = true;
+      g.consequent += v.consequent && !v.rounded;
+      if (!v.right && !v.rounded && !v.consequent) g.firstStage = std::min(g.firstStage.value_or(99), v.stage);
+    }
+  }
+  if (g.wrong == g.rounded + g.consequent) return g;  // nothing for the mistake models to explain
   // The mistake models: which of them predict the student's numbers (up to the student's rounding)?
   for (const auto& [mistake, dump] : references.models) {
     ModelMatch match{mistake};
     bool differs = false;
     Alignments alignments;  // per polygon, computed once per model
     for (size_t i = 0; i < g.values.size(); ++i) {
+      if (g.values[i].consequent) continue;
       const Json* predicted = at(dump, predictedKeys(answer, reference, dump, w.pathKeys[i], alignments));
       const Json* ref = w.referenceOf[i];
       if (!ref) {

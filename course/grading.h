@@ -33,6 +33,7 @@ struct GradedValue {
   int stage = 0;
   bool right = true;
   bool rounded = false;  // wrong, but within half a unit of the student's last digit (rounding)
+  bool consequent = false;  // wrong, but what the student's own earlier values give (ItemGrade::followsThrough)
   int decimals = -1;     // the digits the student printed after the point (-1: not a plain decimal)
   std::string student, reference;  // as JSON text
 };
@@ -60,7 +61,9 @@ struct NumbersGrade {
   size_t wrong = 0;                      // every value not right, the rounded ones included
   size_t rounded = 0;                    // of those, the ones off by the student's rounding only
   int roundedDecimals = -1;              // the fewest decimals among the rounded values
-  std::optional<int> firstStage;         // the smallest stage with a wrong value not explained by rounding
+  size_t consequent = 0;                 // of those, the ones that follow from the student's earlier values
+  std::optional<int> firstStage;         // the smallest stage with a wrong value not explained by rounding or
+                                         // by the student's earlier values
   std::vector<ModelMatch> models;        // every model that differs from the reference on the values given
   std::optional<Mistake> mistake;        // the model matching every value, when exactly one does
   std::vector<Mistake> fitting;          // every model matching every value (several: they cannot be told apart)

@@ -147,10 +147,11 @@ std::vector<std::string> diagnosis(const NumbersGrade& g, Language lang) {
   if (g.rounded > 0) {
     const int needed = g.tolerance > 0 ? int(std::ceil(std::log10(0.5 / g.tolerance) - 1e-9)) : 15;
     const std::string to = g.roundedDecimals >= 0 ? std::to_string(g.roundedDecimals) : "?";
-    d.push_back(de ? values(g.rounded, lang) + " weichen nur durch Rundung (auf " + to +
+    const bool one = g.rounded == 1;
+    d.push_back(de ? values(g.rounded, lang) + (one ? " weicht" : " weichen") + " nur durch Rundung (auf " + to +
                          " Nachkommastellen) vom Ergebnis ab: die Toleranz verlangt |Δ| ≤ " + shortNumber(g.tolerance) +
                          " · max(1, |x|); geben Sie mindestens " + std::to_string(needed) + " Nachkommastellen an."
-                   : values(g.rounded, lang) + " differ from the reference only by rounding (to " + to +
+                   : values(g.rounded, lang) + (one ? " differs" : " differ") + " from the reference only by rounding (to " + to +
                          " decimals): the tolerance asks for |Δ| ≤ " + shortNumber(g.tolerance) +
                          " · max(1, |x|); give at least " + std::to_string(needed) + " decimals.");
   }
@@ -158,7 +159,7 @@ std::vector<std::string> diagnosis(const NumbersGrade& g, Language lang) {
     d.push_back((de ? "Die erste Stufe, in der Ihre Zahlen vom Ergebnis abweichen: "
                     : "The first stage where your numbers depart from the reference: ") +
                 std::string(stageName(*g.firstStage, lang)) + ".");
-  const size_t unexplained = g.wrong - g.rounded;  // wrong values that rounding does not explain
+  const size_t unexplained = g.wrong - g.rounded - g.consequent;  // wrong values of their own
   if (g.mistake) {
     const MistakeModel& m = mistakeModel(*g.mistake);
     d.push_back((de ? "Ihre Zahlen sind die des Fehlermodells " : "Your numbers are those of the mistake model ") +

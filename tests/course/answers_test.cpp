@@ -130,6 +130,19 @@ TEST(Answers, RoundedValuesAreBlamedOnRoundingNotOnAStage) {
   EXPECT_TRUE(h.firstStage);
 }
 
+// A whole number is not "rounding" of a small value: 0 for 0.5 is a mistake (exercise 3's vrcFromWc
+// has 0.5 in row 1, column 3).
+TEST(Answers, ZeroForAHalfIsNotRounding) {
+  const Scene scene = generateExercise({3, ExerciseTopic::pipeline, Projection::perspective}).scene;
+  Json answer = {{"matrices", {{"vrc_from_wc", referenceDump(scene)["matrices"]["vrc_from_wc"]}}}};
+  ASSERT_EQ(answer["matrices"]["vrc_from_wc"][1][3].get<double>(), 0.5);
+  answer["matrices"]["vrc_from_wc"][1][3] = 0.0;
+  const NumbersGrade g = gradeNumbers(answer, "a.json", scene);
+  EXPECT_EQ(g.wrong, 1u);
+  EXPECT_EQ(g.rounded, 0u);
+  EXPECT_EQ(g.firstStage, 2);
+}
+
 TEST(Answers, AMistakeIsNamedThoughTheValuesAreRounded) {
   const Scene scene = asset("behind-the-eye.json");
   const Json model = mistakeDump(scene, Mistake::transposed);
