@@ -120,4 +120,13 @@ Json answerTemplate(const Assignment& assignment, const Json& reference) {
   return answer;
 }
 
+Json answerKey(const Assignment& assignment, const Json& reference) {
+  Json key = answerTemplate(assignment, reference);
+  for (const AssignmentItem& item : assignment.items) {
+    const Json::json_pointer at(item.path);
+    key[at] = reference[at];
+  }
+  return key;
+}
+
 }  // namespace vplab

@@ -25,4 +25,7 @@ Assignment exerciseAssignment(const Exercise& exercise, const ExerciseSolution& 
 /// planes in order.
 nlohmann::ordered_json answerTemplate(const Assignment& assignment, const nlohmann::ordered_json& referenceAnswer);
 
+/// The answer key: the template with every item's values from `referenceAnswer` (solution.json).
+nlohmann::ordered_json answerKey(const Assignment& assignment, const nlohmann::ordered_json& referenceAnswer);
+
 }  // namespace vplab

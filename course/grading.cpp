@@ -409,7 +409,8 @@ NumbersGrade gradeNumbers(const Json& answer, std::string_view source, const Gra
     ++g.wrong;
     if (v.rounded) {
       ++g.rounded;
-      if (v.decimals >= 0 && (g.roundedDecimals < 0 || v.decimals < g.roundedDecimals)) g.roundedDecimals = v.decimals;
+      // The most digits printed: JSON drops trailing zeros (0.50 reads back as 0.5).
+      g.roundedDecimals = std::max(g.roundedDecimals, v.decimals);
     } else {
       g.firstStage = std::min(g.firstStage.value_or(99), v.stage);
     }

@@ -60,7 +60,7 @@ struct NumbersGrade {
   std::vector<GradedValue> values;
   size_t wrong = 0;                      // every value not right, the rounded ones included
   size_t rounded = 0;                    // of those, the ones off by the student's rounding only
-  int roundedDecimals = -1;              // the fewest decimals among the rounded values
+  int roundedDecimals = -1;              // the most decimals among the rounded values (what the student printed)
   size_t consequent = 0;                 // of those, the ones that follow from the student's earlier values
   std::optional<int> firstStage;         // the smallest stage with a wrong value not explained by rounding or
                                          // by the student's earlier values

@@ -260,7 +260,7 @@ int exerciseCommand(const ExerciseArgs& a) {
     throw UsageError("--seed \"" + a.seed + "\": a whole number from 0 to 999999999999999999 expected");
   const Exercise exercise = generateExercise({std::stoull(a.seed), *topic, *projection});
   writeExercise(exercise, a.lang == "de" ? Language::de : Language::en, a.out);
-  std::cerr << "vplab exercise: wrote sheet.md, solution.md, sheet.tex, solution.tex, scene.json, answer.json (the template to fill in), assignment.json (for vplab grade) and the figures to "
+  std::cerr << "vplab exercise: wrote sheet.md, solution.md, sheet.tex, solution.tex, scene.json, answer.json (the template to fill in), solution.json (its key), assignment.json (for vplab grade) and the figures to "
             << a.out << "\n";
   return 0;
 }

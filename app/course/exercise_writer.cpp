@@ -418,7 +418,9 @@ void writeExercise(const Exercise& exercise, Language lang, const std::filesyste
   // What the sheet asks for: the grader's assignment and the template a student fills in.
   const Assignment assignment = exerciseAssignment(exercise, solution, lang);
   writeText(assignmentJson(assignment), dir / "assignment.json");
-  writeText(prettyJson(answerTemplate(assignment, referenceAnswer(exercise.scene))) + "\n", dir / "answer.json");
+  const nlohmann::ordered_json reference = referenceAnswer(exercise.scene);
+  writeText(prettyJson(answerTemplate(assignment, reference)) + "\n", dir / "answer.json");
+  writeText(prettyJson(answerKey(assignment, reference)) + "\n", dir / "solution.json");
   // The figures: the world view for the sheet, the NPC view for the solution, as vector lines
   // (hidden-line style, made on the CPU) and as the same drawing in PNG for LaTeX.
   auto context = createHeadlessContext(Backend::automatic, false);

@@ -146,13 +146,15 @@ std::vector<std::string> diagnosis(const NumbersGrade& g, Language lang) {
     d.push_back((de ? "Nicht angegeben, aber verlangt: " : "Required but not given: ") + missing + ".");
   if (g.rounded > 0) {
     const int needed = g.tolerance > 0 ? int(std::ceil(std::log10(0.5 / g.tolerance) - 1e-9)) : 15;
-    const std::string to = g.roundedDecimals >= 0 ? std::to_string(g.roundedDecimals) : "?";
+    const std::string to = std::to_string(std::max(g.roundedDecimals, 0)) +
+                           (de ? (g.roundedDecimals == 1 ? " Nachkommastelle" : " Nachkommastellen")
+                               : (g.roundedDecimals == 1 ? " decimal" : " decimals"));
     const bool one = g.rounded == 1;
     d.push_back(de ? values(g.rounded, lang) + (one ? " weicht" : " weichen") + " nur durch Rundung (auf " + to +
-                         " Nachkommastellen) vom Ergebnis ab: die Toleranz verlangt |Δ| ≤ " + shortNumber(g.tolerance) +
+                         ") vom Ergebnis ab: die Toleranz verlangt |Δ| ≤ " + shortNumber(g.tolerance) +
                          " · max(1, |x|); geben Sie mindestens " + std::to_string(needed) + " Nachkommastellen an."
                    : values(g.rounded, lang) + (one ? " differs" : " differ") + " from the reference only by rounding (to " + to +
-                         " decimals): the tolerance asks for |Δ| ≤ " + shortNumber(g.tolerance) +
+                         "): the tolerance asks for |Δ| ≤ " + shortNumber(g.tolerance) +
                          " · max(1, |x|); give at least " + std::to_string(needed) + " decimals.");
   }
   if (g.firstStage)

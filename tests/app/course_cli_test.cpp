@@ -47,7 +47,15 @@ TEST_F(Course, ExerciseTwiceWritesTheSameBytes) {
     ++files;
     EXPECT_EQ(readFile(e.path()), readFile(dir_ / "b" / e.path().filename())) << e.path().filename();
   }
-  EXPECT_EQ(files, 11u);  // sheet and solution .md/.tex, scene.json, answer.json, assignment.json, world and npc .svg/.png
+  EXPECT_EQ(files, 12u);  // sheet and solution .md/.tex, scene.json, answer.json, solution.json, assignment.json,
+                          // world and npc .svg/.png
+  // The key passes the assignment with every point; the template fails it, every item missing.
+  ProcessResult key = vplab("grade numbers --assignment a/assignment.json --student a/solution.json --json");
+  EXPECT_EQ(key.exitCode, 0) << key.out;
+  EXPECT_EQ(Json::parse(key.out)["points"], Json::parse(key.out)["max_points"]);
+  ProcessResult blank = vplab("grade numbers --assignment a/assignment.json --student a/answer.json --json");
+  EXPECT_EQ(blank.exitCode, 1);
+  EXPECT_EQ(Json::parse(blank.out)["points"], 0.0);
   ASSERT_EQ(vplab("exercise --seed 8 --topic pipeline --out c").exitCode, 0);
   EXPECT_NE(readFile(dir_ / "a" / "sheet.md"), readFile(dir_ / "c" / "sheet.md"));
 }
