@@ -52,6 +52,12 @@ std::string quoted(std::string_view s, Language lang) {
   return lang == Language::de ? "„" + std::string(s) + "“" : "\"" + std::string(s) + "\"";
 }
 
+// " of 3 values" / " von 3 Werten" (German takes the dative after "von").
+std::string ofValues(size_t n, Language lang) {
+  if (lang == Language::de) return " von " + std::to_string(n) + (n == 1 ? " Wert" : " Werten");
+  return " of " + std::to_string(n) + (n == 1 ? " value" : " values");
+}
+
 std::string values(size_t n, Language lang) {
   return std::to_string(n) + (lang == Language::de ? (n == 1 ? " Wert" : " Werte") : (n == 1 ? " value" : " values"));
 }
@@ -80,10 +86,10 @@ GradeCase itemCase(const ItemGrade& item, const NumbersGrade& g, Language lang) 
   c.passed = item.right();
   c.message = item.right() ? values(item.values, lang) + std::string(inLanguage(lang, " right: ", " richtig: ")) + points
               : item.followsThrough
-                  ? std::to_string(item.wrong) + std::string(inLanguage(lang, " of ", " von ")) + values(item.values, lang) +
+                  ? std::to_string(item.wrong) + ofValues(item.values, lang) +
                         std::string(inLanguage(lang, " wrong, but they follow from your earlier values: ",
                                                " falsch, folgen aber aus Ihren früheren Werten: ")) + points
-                  : std::to_string(item.wrong) + std::string(inLanguage(lang, " of ", " von ")) + values(item.values, lang) +
+                  : std::to_string(item.wrong) + ofValues(item.values, lang) +
                         std::string(inLanguage(lang, " wrong: ", " falsch: ")) + points;
   for (const GradedValue& v : g.values)
     if (!v.right && isWithin(v.path, item.path)) c.details.push_back(valueLine(v, lang));
@@ -116,7 +122,7 @@ std::vector<GradeCase> groupCases(const NumbersGrade& g, Language lang, Json& gr
     const auto [wrong, total] = counts[name];
     c.total = wrong;
     c.message = c.passed ? values(total, lang) + std::string(inLanguage(lang, " right", " richtig"))
-                         : std::to_string(wrong) + std::string(inLanguage(lang, " of ", " von ")) + values(total, lang) +
+                         : std::to_string(wrong) + ofValues(total, lang) +
                                std::string(inLanguage(lang, " wrong", " falsch"));
     Json wrongValues = Json::array();
     for (const GradedValue& v : g.values)
