@@ -3,6 +3,9 @@
 #include "pipeline/error.h"
 #include "course/rational.h"
 
+#include <algorithm>
+#include <array>
+#include <iterator>
 #include <bit>
 #include <random>
 
@@ -43,12 +46,44 @@ constexpr Vec3 kDirections[] = {{0, 0, 5}, {3, 0, 4}, {-3, 0, 4}, {4, 0, 3}, {-4
                                 {0, 3, 4}, {0, 0, 4}, {0, 0, 6}};
 constexpr ObliqueParams kObliques[] = {kCavalier, kCabinet, {1, 45}, {0.5, 30}};
 
-Camera drawCamera(Draw& d, Projection projection) {
+// Integer quaternions (w, x, y, z) whose rotations have rational entries with denominator
+// n = w² + x² + y² + z² from 3 to 9: U, V, N are their rows (a right-handed orthonormal basis).
+// (None turns about z alone: that would keep N = (0, 0, 1), the gentle case's.)
+constexpr int kQuaternions[][4] = {{1, 1, 1, 0}, {1, -1, 0, 1}, {1, 0, 1, -1}, {2, 1, 0, 0}, {2, 0, -1, 0},
+                                   {2, 1, 1, 1}, {1, 2, -1, 1}, {2, 2, 1, 0}, {1, 2, 0, 2}, {2, -1, 2, 0},
+                                   {2, 0, 1, -2}};
+constexpr size_t kOrientations = std::size(kQuaternions);
+// Orientations are numbered: kQuaternions' first, then kDirections' (the gentle case, VUP along y),
+// then kAnyGentle: any of kDirections, drawn anew with each attempt.
+constexpr size_t kGentle = kOrientations, kAnyGentle = kGentle + std::size(kDirections);
+
+std::array<Vec3, 3> rotationRows(const int (&q)[4]) {
+  const double w = q[0], x = q[1], y = q[2], z = q[3], n = w * w + x * x + y * y + z * z;
+  // clang-format off
+  return {Vec3(w * w + x * x - y * y - z * z, 2 * (x * y - w * z),             2 * (x * z + w * y)) / n,
+          Vec3(2 * (x * y + w * z),           w * w - x * x + y * y - z * z,   2 * (y * z - w * x)) / n,
+          Vec3(2 * (x * z - w * y),           2 * (y * z + w * x),             w * w - x * x - y * y + z * z) / n};
+  // clang-format on
+}
+
+Camera drawCamera(Draw& d, Projection projection, size_t orientation) {
   Camera c;
   const double offsets[] = {0, 0, 0, 0.5, -0.5, 1, -1};
   c.vrp = {d.of(offsets), d.of(offsets), d.of(offsets)};
-  c.prp = c.vrp + d.of(kDirections);
-  c.vup = d.pick(4) == 0 ? Vec3(0, 2, 0) : Vec3(0, 1, 0);
+  if (orientation >= kGentle) {
+    // The lecture's gentle case: N in a coordinate plane, VUP along y.
+    c.prp = c.vrp + (orientation == kAnyGentle ? d.of(kDirections) : kDirections[orientation - kGentle]);
+    c.vup = d.pick(4) == 0 ? Vec3(0, 2, 0) : Vec3(0, 1, 0);
+  } else {
+    // A general orientation: U, V, N from a rational rotation; VPD its denominator (3 to 9) or twice
+    // it when small, so PRP is VRP plus an integer vector; VUP leans towards N or away from it.
+    const auto& q = kQuaternions[orientation];
+    const std::array<Vec3, 3> rows = rotationRows(q);
+    const double n = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+    const double vpd = n < 5 ? 2 * n : n;
+    c.prp = c.vrp + vpd * rows[2];
+    c.vup = n * rows[1] + double(d.of({0, 0, 1, -1})) * n * rows[2];
+  }
   // The device is 400 × 300: windows of the same aspect ratio, 4 × 3 or 2 × 1.5, some off centre.
   if (d.pick(2) == 0) {
     c.window.xmin = -2 + d.of({-0.5, 0.0, 0.0, 0.5});
@@ -126,8 +161,16 @@ bool wellPosed(const Exercise& e) {
   const bool clippingTopic = e.spec.topic == ExerciseTopic::clipping || e.spec.topic == ExerciseTopic::pipeline;
   if (e.pointBehindEye ? !(s.point.npcH.w < 0) : s.point.outcode != 0) return false;
   Outcode any = 0;
-  for (const PointStages& v : s.vertices) any |= v.outcode;
+  for (const PointStages& v : s.vertices) {
+    any |= v.outcode;
+    if (std::abs(v.npcH.w) < 1e-9) return false;  // a vertex in the eye's plane: no NPC, no DC
+  }
   if (clippingTopic && (std::popcount(unsigned(any)) < 2 || s.fate != Fate::clipped)) return false;
+  // The topic promises two planes cutting the polygon: two passes must create vertices.
+  size_t cutting = 0;
+  for (const ClipStep& step : s.steps)
+    cutting += std::find(step.created.begin(), step.created.end(), true) != step.created.end();
+  if (clippingTopic && cutting < 2) return false;
   if (!clippingTopic && (s.fate == Fate::rejected || s.fate == Fate::clippedAway)) return false;
   // No boundary value exactly 0 (a vertex on a plane makes a degenerate step) and, where the inputs
   // allow, exact fractions everywhere.
@@ -153,17 +196,31 @@ bool wellPosed(const Exercise& e) {
 
 }  // namespace
 
-Exercise generateExercise(const ExerciseSpec& spec) {
-  Draw d{std::mt19937_64(spec.seed * 4 + uint64_t(spec.topic))};
+Exercise generateExercise(const ExerciseSpec& spec, std::string_view studentId) {
+  // A student's variant draws from the exercise's number and the id (FNV-1a of the id's bytes).
+  uint64_t variant = 0;
+  if (!studentId.empty()) {
+    variant = 14695981039346656037ull;
+    for (unsigned char ch : studentId) variant = (variant ^ ch) * 1099511628211ull;
+  }
+  Draw d{std::mt19937_64((spec.seed * 4 + uint64_t(spec.topic)) ^ variant)};
   Exercise e;
   e.spec = spec;
+  e.studentId = std::string(studentId);
   const bool clippingTopic = spec.topic == ExerciseTopic::clipping || spec.topic == ExerciseTopic::pipeline;
   e.pointBehindEye = clippingTopic && spec.projection == Projection::perspective && spec.seed % 2 == 1;
-  e.scene.title = "Exercise " + std::to_string(spec.seed);
+  e.scene.title = "Exercise " + std::to_string(spec.seed) + (studentId.empty() ? "" : " for " + std::string(studentId));
   e.scene.device = {400, 300};
   e.scene.background = {1, 1, 1};
+  // Orientation and mapping sheets: one in four keeps the lecture's gentle orientation, the others a
+  // general one, chosen once, so that retrying a draw that is not well posed does not drift towards
+  // easier cases. Clipping and pipeline sheets keep the gentle ones: a polygon reaching behind the eye
+  // and cut by two planes is rarely found with a general N among the sheets' small numbers.
+  const size_t orientation = clippingTopic       ? kAnyGentle
+                             : d.pick(4) == 0 ? kGentle + d.pick(std::size(kDirections))
+                                              : d.pick(kOrientations);
   for (int attempt = 0; attempt < 50000; ++attempt) {
-    e.scene.camera = drawCamera(d, spec.projection);
+    e.scene.camera = drawCamera(d, spec.projection, orientation);
     if (cameraError(e.scene.camera)) continue;
     e.scene.objects = {drawPolygon(d, e.scene.camera, e.pointBehindEye)};
     e.scene.objects[0].mesh = primitiveMesh(e.scene.objects[0]);

@@ -2,19 +2,24 @@
 // for one topic of the lecture notes, and the worked solution's values, all taken from the
 // pipeline's own run (no second implementation of any stage).
 //
-// Well posed: VRP, PRP, VUP, the window, F and B are small integers and halves; PRP − VRP is a
-// Pythagorean direction so N, U, V and VPD are exact fractions; the polygon lies in MC's z = 0
+// Well posed: VRP, the window, F and B are small integers and halves; U, V, N are the rows of a
+// rational rotation (orientation and mapping sheets: from an integer quaternion, denominators 3 to 9,
+// in three sheets of four) or PRP − VRP is one of the Pythagorean directions in a coordinate plane with
+// VUP along y; PRP = VRP + VPD · N and VUP = a multiple of V plus one of N, so N, U, V and VPD are exact
+// fractions; the polygon lies in MC's z = 0
 // plane (convex, counter-clockwise) and is placed by T · R · S with 90° rotations and scales 1, 2
 // or 1/2. The point P1 is the polygon's first vertex. For `clipping` and `pipeline` the polygon
 // crosses at least two planes of the view volume and something of it remains; in the perspective
 // "behind the eye" variant (odd seeds) P1 lies behind the eye (w < 0). Otherwise P1 is inside the
-// view volume. Except for the oblique projection's cos φ and sin φ, every value the solution shows
+// view volume; no vertex has w = 0 exactly, and a clipping polygon is cut by at least two planes
+// (two passes create vertices). Except for the oblique projection's cos φ and sin φ, every value the solution shows
 // is a fraction with a denominator of at most 1000 (Rational::approximate).
 #pragma once
 #include "pipeline/clip_steps.h"
 #include "pipeline/pipeline.h"
 
 #include <cstdint>
+#include <string>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -26,13 +31,14 @@ std::string_view toString(ExerciseTopic t);
 std::optional<ExerciseTopic> exerciseTopicFromString(std::string_view s);
 
 struct ExerciseSpec {
-  uint64_t seed = 1;
+  uint64_t seed = 1;  // the exercise's number: the same for the whole class
   ExerciseTopic topic = ExerciseTopic::pipeline;
   Projection projection = Projection::perspective;
 };
 
 struct Exercise {
   ExerciseSpec spec;
+  std::string studentId;        // whose variant this is; empty: the class's sheet
   Scene scene;                  // the camera, a 400 × 300 device, one polygon object "P"
   bool pointBehindEye = false;  // the variant in which P1 lies behind the eye
 };
@@ -40,7 +46,9 @@ struct Exercise {
 /// The exercise of a seed: the same spec always gives the same exercise (a fixed 64-bit Mersenne
 /// twister and no library distributions). Throws vplab::Error if no well-posed exercise was found
 /// (which the tests show does not happen for any topic and projection over many seeds).
-Exercise generateExercise(const ExerciseSpec& spec);
+/// `studentId`: a student's own variant of exercise `seed` (vplab exercise --student-id): other numbers,
+/// the same tasks and difficulty (P1 behind the eye or not follows `seed`); empty: the class's sheet.
+Exercise generateExercise(const ExerciseSpec& spec, std::string_view studentId = {});
 
 /// P1 through the stages (lecture notes 15.2): MC, WC, VRC, homogeneous NPC, its boundary
 /// coordinates and outcode (Hill 7.4), NPC after the division and DC (meaningful when inside).

@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -39,7 +40,7 @@ struct UsageError : Error {
 
 struct ExerciseArgs {
   std::string seed = "1";
-  std::string topic = "pipeline", projection = "perspective", lang = "en", out;
+  std::string topic = "pipeline", projection = "perspective", lang = "en", out, studentId;
 };
 
 struct GradeArgs {
@@ -258,7 +259,12 @@ int exerciseCommand(const ExerciseArgs& a) {
   if (a.lang != "en" && a.lang != "de") throw UsageError("--lang \"" + a.lang + "\": en or de expected");
   if (a.seed.empty() || a.seed.size() > 18 || a.seed.find_first_not_of("0123456789") != std::string::npos)
     throw UsageError("--seed \"" + a.seed + "\": a whole number from 0 to 999999999999999999 expected");
-  const Exercise exercise = generateExercise({std::stoull(a.seed), *topic, *projection});
+  // The id is printed on the sheet (Markdown and LaTeX): letters, digits, '.', '-' and '@' only.
+  if (a.studentId.size() > 64 || std::any_of(a.studentId.begin(), a.studentId.end(), [](unsigned char c) {
+        return !std::isalnum(c) && c != '.' && c != '-' && c != '@';
+      }))
+    throw UsageError("--student-id \"" + a.studentId + "\": at most 64 letters, digits, '.', '-' or '@' expected");
+  const Exercise exercise = generateExercise({std::stoull(a.seed), *topic, *projection}, a.studentId);
   writeExercise(exercise, a.lang == "de" ? Language::de : Language::en, a.out);
   std::cerr << "vplab exercise: wrote sheet.md, solution.md, sheet.tex, solution.tex, scene.json, answer.json (the template to fill in), solution.json (its key), assignment.json (for vplab grade) and the figures to "
             << a.out << "\n";
@@ -314,6 +320,10 @@ void addCourseCommands(CLI::App& app) {
       ->type_name("PROJECTION");
   exercise->add_option("--lang", ex->lang, "en (default) or de")
       ->type_name("LANG");
+  exercise->add_option("--student-id", ex->studentId,
+                       "A student's own variant of the exercise: other numbers, the same tasks and difficulty "
+                       "(the same id gives the same bytes)")
+      ->type_name("ID");
   exercise->add_option("--out", ex->out, "The folder to write to (created; required)")
       ->type_name("DIR");
   exercise->allow_extras();

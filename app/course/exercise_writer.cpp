@@ -214,6 +214,8 @@ struct Writer {
   Document sheet() const {
     Document d;
     d.push_back({Block::title, L("Exercise", "Übung") + " " + std::to_string(e.spec.seed) + ": " + topicName()});
+    if (!e.studentId.empty())
+      d.push_back({Block::paragraph, L("Your own variant, for ", "Ihre eigene Variante, für ") + e.studentId + "."});
     givenBlocks(d);
     d.push_back({Block::figure, "world", {L("The scene, the camera and its view volume (world view).",
                                             "Szene, Kamera und Sichtvolumen (Weltansicht).")}});
@@ -363,6 +365,8 @@ struct Writer {
   Document solution() const {
     Document d;
     d.push_back({Block::title, L("Solution", "Lösung") + " " + std::to_string(e.spec.seed) + ": " + topicName()});
+    if (!e.studentId.empty())
+      d.push_back({Block::paragraph, L("The variant for ", "Die Variante für ") + e.studentId + "."});
     d.push_back({Block::paragraph, L("Exact fractions where the values are small rationals, else decimals rounded to 4 places.",
                                      "Exakte Brüche, wo die Werte kleine rationale Zahlen sind, sonst auf 4 Stellen gerundete Dezimalzahlen.")});
     if (shows(ExerciseTopic::orientation)) {

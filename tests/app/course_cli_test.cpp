@@ -56,6 +56,17 @@ TEST_F(Course, ExerciseTwiceWritesTheSameBytes) {
   ProcessResult blank = vplab("grade numbers --assignment a/assignment.json --student a/answer.json --json");
   EXPECT_EQ(blank.exitCode, 1);
   EXPECT_EQ(Json::parse(blank.out)["points"], 0.0);
+  // A student's own variant: the same id, the same bytes; another id, other numbers; ids that could
+  // break the sheet's Markdown or LaTeX are refused.
+  ASSERT_EQ(vplab("exercise --seed 7 --topic orientation --student-id s1234 --out s1").exitCode, 0);
+  ASSERT_EQ(vplab("exercise --seed 7 --topic orientation --student-id s1234 --out s2").exitCode, 0);
+  ASSERT_EQ(vplab("exercise --seed 7 --topic orientation --student-id s9876 --out s3").exitCode, 0);
+  EXPECT_EQ(readFile(dir_ / "s1" / "sheet.tex"), readFile(dir_ / "s2" / "sheet.tex"));
+  EXPECT_NE(readFile(dir_ / "s1" / "scene.json"), readFile(dir_ / "s3" / "scene.json"));
+  EXPECT_THAT(readFile(dir_ / "s1" / "sheet.md"), HasSubstr("Your own variant, for s1234."));
+  const ProcessResult bad = vplab("exercise --seed 7 --student-id 'a_b' --out s4");
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_THAT(bad.err, HasSubstr("--student-id \"a_b\": at most 64 letters, digits"));
   ASSERT_EQ(vplab("exercise --seed 8 --topic pipeline --out c").exitCode, 0);
   EXPECT_NE(readFile(dir_ / "a" / "sheet.md"), readFile(dir_ / "c" / "sheet.md"));
 }
