@@ -103,6 +103,10 @@ struct Writer {
   const Camera& cam() const { return e.scene.camera; }
   bool perspective() const { return cam().projection == Projection::perspective; }
   bool oblique() const { return cam().projection == Projection::oblique; }
+  // Solutions number their sections from 1, whichever topic they show.
+  mutable int sections_ = 0;
+  std::string section() const { return std::to_string(++sections_) + ". "; }
+
   bool shows(ExerciseTopic t) const { return e.spec.topic == ExerciseTopic::pipeline || e.spec.topic == t; }
 
   std::string topicName() const {
@@ -127,9 +131,9 @@ struct Writer {
   void matrixPair(Document& d, const std::string& name, const Mat4& m) const {
     d.push_back({Block::math, name + " = " + mat(m) + "\\qquad " + name + "^{T} = " + mat(glm::transpose(m))});
     d.push_back({Block::paragraph,
-                 L("Left the column-vector form ($p' = M \\cdot p$, as the dump prints it); right the "
+                 L("Left the column-vector form ($p' = M \\cdot p$, as answers give it); right the "
                    "lecture notes' row-vector form ($p' = p \\cdot M^T$), its transpose.",
-                   "Links die Form für Spaltenvektoren ($p' = M \\cdot p$, wie der Dump sie ausgibt); rechts "
+                   "Links die Form für Spaltenvektoren ($p' = M \\cdot p$); rechts "
                    "die Form des Skripts für Zeilenvektoren ($p' = p \\cdot M^T$), ihre Transponierte.")});
   }
 
@@ -153,11 +157,11 @@ struct Writer {
     const Camera& c = cam();
     d.push_back({Block::heading, L("Given", "Gegeben")});
     std::vector<std::string> items = {
-        "VRP $= " + vec(c.vrp) + "$, PRP $= " + vec(c.prp) + "$, VUP $= " + vec(c.vup) + "$ " + L("(WC)", "(WC)"),
-        L("window", "View Window") + " $x_{min} = " + num(c.window.xmin) + ",\\ x_{max} = " + num(c.window.xmax) +
+        "VRP $= " + vec(c.vrp) + "$, " + L("PRP", "Projektionszentrum PRP") + " $= " + vec(c.prp) + "$, VUP $= " + vec(c.vup) + "$ " + L("(WC)", "(WC)"),
+        L("window", "Fenster (Window)") + " $x_{min} = " + num(c.window.xmin) + ",\\ x_{max} = " + num(c.window.xmax) +
             ",\\ y_{min} = " + num(c.window.ymin) + ",\\ y_{max} = " + num(c.window.ymax) + "$ " +
             L("in the view plane (VRC)", "in der Bildebene (VRC)"),
-        L("front plane", "vordere Ebene") + " $F = " + num(c.front) + "$, " + L("back plane", "hintere Ebene") +
+        L("front plane", "vordere Clippingebene (Front Plane)") + " $F = " + num(c.front) + "$, " + L("back plane", "hintere Clippingebene (Back Plane)") +
             " $B = " + num(c.back) + "$ (VRC z)",
         L("projection: ", "Projektion: ") + projectionName() +
             (oblique() ? ", $d = " + num(c.oblique.d) + ",\\ \\varphi = " + num(c.oblique.phiDeg) + "^\\circ$" : ""),
@@ -221,7 +225,7 @@ struct Writer {
                                             "Szene, Kamera und Sichtvolumen (Weltansicht).")}});
     d.push_back({Block::heading, L("Tasks", "Aufgaben")});
     d.push_back({Block::items, "", tasks()});
-    d.push_back({Block::paragraph, L("Conventions (domain notes): column vectors; $N = (PRP - VRP)/|PRP - VRP|$; "
+    d.push_back({Block::paragraph, L("Conventions (as in the lecture notes): column vectors; $N = (PRP - VRP)/|PRP - VRP|$; "
                                      "front $\\to z = 1$, back $\\to z = 0$; inside when $0 \\le x, y, z \\le w$.",
                                      "Konventionen: Spaltenvektoren; $N = (PRP - VRP)/|PRP - VRP|$; "
                                      "vorne $\\to z = 1$, hinten $\\to z = 0$; innen, wenn $0 \\le x, y, z \\le w$.")});
@@ -229,7 +233,7 @@ struct Writer {
   }
 
   void modeling(Document& d) const {
-    d.push_back({Block::heading, L("1. Modeling (lecture notes 15.2.1): MC to WC", "1. Modeling (Skript 15.2.1): MC nach WC")});
+    d.push_back({Block::heading, section() + L("Modeling (lecture notes 15.2.1): MC to WC", "Modeling (Skript 15.2.1): MC nach WC")});
     d.push_back({Block::paragraph, L("Scale first, then rotate, then translate: ", "Erst skalieren, dann drehen, dann verschieben: ") +
                                        "$\\mathit{wcFromMc} = T \\cdot R \\cdot S$."});
     matrixPair(d, "\\mathit{wcFromMc}", s.wcFromMc);
@@ -239,7 +243,7 @@ struct Writer {
   void orientation(Document& d) const {
     const VrcAxes& f = s.run.vrc;
     const Camera& c = cam();
-    d.push_back({Block::heading, L("2. View orientation (15.2.2): WC to VRC", "2. View Orientation (15.2.2): WC nach VRC")});
+    d.push_back({Block::heading, section() + L("View orientation (15.2.2): WC to VRC", "View Orientation (15.2.2): WC nach VRC")});
     const Vec3 cross = glm::cross(c.vup, f.n);
     d.push_back({Block::math, "PRP - VRP = " + vec(c.prp - c.vrp) + ",\\quad VPD = |PRP - VRP| = " + num(f.vpd) +
                                   ",\\quad N = \\frac{PRP - VRP}{VPD} = " + vec(f.n)});
@@ -256,8 +260,8 @@ struct Writer {
     const VrcAxes& f = s.run.vrc;
     const Camera& c = cam();
     const Mat4& m = s.run.npcFromVrc;
-    d.push_back({Block::heading, L("3. View mapping (14, 15.2.3–15.2.4): VRC to homogeneous NPC",
-                                   "3. View Mapping (14, 15.2.3–15.2.4): VRC nach homogenen NPC")});
+    d.push_back({Block::heading, section() + L("View mapping (14, 15.2.3–15.2.4): VRC to homogeneous NPC",
+                                   "View Mapping (14, 15.2.3–15.2.4): VRC nach homogenen NPC")});
     if (perspective()) {
       d.push_back({Block::math, "d = VPD = " + num(f.vpd) + ",\\quad d_{min} = VPD - F = " + num(f.dmin) +
                                     ",\\quad d_{max} = VPD - B = " + num(f.dmax) +
@@ -283,7 +287,7 @@ struct Writer {
 
   void pointClipAndDevice(Document& d) const {
     const PointStages& p = s.point;
-    d.push_back({Block::heading, L("4. Clipping test of $P_1$ (15.2.4, Hill 7.4)", "4. Clipping-Test von $P_1$ (15.2.4, Hill 7.4)")});
+    d.push_back({Block::heading, section() + L("Clipping test of $P_1$ (15.2.4, Hill 7.4)", "Clipping-Test von $P_1$ (15.2.4, Hill 7.4)")});
     std::string bc;
     for (int i = 0; i < kPlaneCount; ++i)
       bc += std::string(i ? ",\\ " : "") + "BC_" + std::to_string(i) + " = " + num(p.bc[size_t(i)]);
@@ -293,7 +297,7 @@ struct Writer {
                                      "Outcode (Bits 5 … 0: vorne, hinten, oben, unten, rechts, links; gesetzt, wenn die "
                                      "Randkoordinate negativ ist): ") +
                                        "$" + outcodeBits(p.outcode) + "_2 = " + std::to_string(p.outcode) + "$."});
-    d.push_back({Block::heading, L("5. Division by w and device mapping (15.2.5)", "5. Division durch w und Device Mapping (15.2.5)")});
+    d.push_back({Block::heading, section() + L("Division by w and device mapping (15.2.5)", "Division durch w und Device Mapping (15.2.5)")});
     d.push_back({Block::paragraph, L("$x_{DC} = W \\cdot x,\\ y_{DC} = H \\cdot (1 - y),\\ z_{DC} = z$: origin top left, y down.",
                                      "$x_{DC} = W \\cdot x,\\ y_{DC} = H \\cdot (1 - y),\\ z_{DC} = z$: Ursprung oben links, y nach unten.")});
     matrixPair(d, "\\mathit{dcFromNpc}", s.run.dcFromNpc);
@@ -307,7 +311,7 @@ struct Writer {
                      "point could land inside the cube (the divide-first mistake, Hill 7.4).",
                      "$w = " + num(p.npcH.w) + " < 0$: $P_1$ liegt hinter dem Auge und wird vor der Division "
                      "weggeclippt. Zuerst zu dividieren ergäbe $" + vec(p.npc) + "$: $x/w$ und $y/w$ wechseln das "
-                     "Vorzeichen, der Punkt könnte im Würfel landen (der Fehler divide first, Hill 7.4).")});
+                     "Vorzeichen, der Punkt könnte im Würfel landen (der Fehler, vor dem Clipping zu dividieren, Hill 7.4).")});
     } else {
       d.push_back({Block::paragraph, L("$P_1$ lies outside the view volume: it is not mapped to DC.",
                                        "$P_1$ liegt außerhalb des Sichtvolumens und wird nicht auf DC abgebildet.")});
@@ -315,8 +319,8 @@ struct Writer {
   }
 
   void polygonClipping(Document& d) const {
-    d.push_back({Block::heading, L("6. Clipping the polygon (Sutherland–Hodgman in homogeneous coordinates)",
-                                   "6. Clipping des Polygons (Sutherland–Hodgman in homogenen Koordinaten)")});
+    d.push_back({Block::heading, section() + L("Clipping the polygon (Sutherland–Hodgman in homogeneous coordinates)",
+                                   "Clipping des Polygons (Sutherland–Hodgman in homogenen Koordinaten)")});
     std::vector<std::string> verts;
     Outcode all = 0xff, any = 0;
     for (size_t i = 0; i < s.vertices.size(); ++i) {
@@ -364,6 +368,7 @@ struct Writer {
 
   Document solution() const {
     Document d;
+    sections_ = 0;
     d.push_back({Block::title, L("Solution", "Lösung") + " " + std::to_string(e.spec.seed) + ": " + topicName()});
     if (!e.studentId.empty())
       d.push_back({Block::paragraph, L("The variant for ", "Die Variante für ") + e.studentId + "."});
@@ -378,8 +383,10 @@ struct Writer {
       pointClipAndDevice(d);
     }
     if (shows(ExerciseTopic::clipping)) polygonClipping(d);
-    d.push_back({Block::figure, "npc", {L("After view mapping, clipping and the division by w (NPC view).",
-                                          "Nach View Mapping, Clipping und Division durch w (NPC-Ansicht).")}});
+    // Each topic carries only its own figures: the NPC view shows the mapping and the clipping.
+    if (shows(ExerciseTopic::mapping) || shows(ExerciseTopic::clipping))
+      d.push_back({Block::figure, "npc", {L("After view mapping, clipping and the division by w (NPC view).",
+                                            "Nach View Mapping, Clipping und Division durch w (NPC-Ansicht).")}});
     return d;
   }
 };
@@ -430,6 +437,7 @@ void writeExercise(const Exercise& exercise, Language lang, const std::filesyste
   auto context = createHeadlessContext(Backend::automatic, false);
   ViewRenderer renderer(*context);
   for (const auto& [view, name] : {std::pair{ViewKind::world, "world"}, std::pair{ViewKind::npc, "npc"}}) {
+    if (view == ViewKind::npc && exercise.spec.topic == ExerciseTopic::orientation) continue;  // not in its solution
     RenderRequest request;
     request.view = view;
     request.style = Style::hiddenLine;

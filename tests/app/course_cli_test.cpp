@@ -71,6 +71,25 @@ TEST_F(Course, ExerciseTwiceWritesTheSameBytes) {
   EXPECT_NE(readFile(dir_ / "a" / "sheet.md"), readFile(dir_ / "c" / "sheet.md"));
 }
 
+// The sheets read like the lecture: solutions number their sections from 1 whatever the topic, a
+// topic carries only its own figures, the German sheet uses the lecture notes' terms and no tool jargon.
+TEST_F(Course, SheetsReadLikeTheLecture) {
+  for (const char* topic : {"orientation", "mapping", "clipping", "pipeline"}) {
+    SCOPED_TRACE(topic);
+    ASSERT_EQ(vplab(std::string("exercise --seed 2 --lang de --topic ") + topic + " --out " + topic).exitCode, 0);
+    const std::string solution = readFile(dir_ / topic / "solution.md");
+    EXPECT_THAT(solution, HasSubstr("## 1. "));
+    EXPECT_EQ(solution.find("## 1. 3."), std::string::npos);
+    EXPECT_EQ(fs::exists(dir_ / topic / "npc.png"), std::string(topic) != "orientation");
+    EXPECT_EQ(solution.find("npc.svg") != std::string::npos, std::string(topic) != "orientation");
+    const std::string sheet = readFile(dir_ / topic / "sheet.md");
+    for (const char* term : {"Fenster (Window)", "Projektionszentrum", "vordere Clippingebene", "hintere Clippingebene", "Bildebene"})
+      EXPECT_THAT(sheet, HasSubstr(term));
+    for (const std::string& text : {sheet, solution})
+      for (const char* jargon : {"Dump", "domain notes", "divide first"}) EXPECT_EQ(text.find(jargon), std::string::npos) << jargon;
+  }
+}
+
 // The numbers of the LaTeX math: "3", "-\frac{3}{10}", "0.7071".
 double latexValue(std::string t) {
   t.erase(std::remove(t.begin(), t.end(), ' '), t.end());
