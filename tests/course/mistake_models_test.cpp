@@ -281,7 +281,8 @@ TEST(MistakeModels, FrontBackSwappedIsNamedForAPipelineWithFrontAtZeroAndBackAtO
         v[2] = h.z;
         int code = 0;
         const double bc[6] = {h.x, h.w - h.x, h.y, h.w - h.y, h.z, h.w - h.z};
-        for (int b = 0; b < 6; ++b) code |= int(bc[b] < 0) << b;
+        for (int b = 0; b < 6; ++b)
+          if (bc[b] < 0) code |= 1 << b;
         p["outcodes"][i] = code;
         polygon.push_back(h);
       }
