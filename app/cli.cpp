@@ -126,6 +126,7 @@ struct RenderOptions {
   std::string out;
   std::string backend = "auto";
   std::string strategy = "npc";
+  std::string theme = "dark";
   float uiScale = 1.f;
   double morphT = 0;
   bool glDebug = false;
@@ -150,6 +151,7 @@ int runRender(const RenderOptions& r) {
   request.style = *styleFromString(r.style);
   request.pipeline.strategy = *clipStrategyFromString(r.strategy);
   request.morphT = r.morphT;
+  request.theme = *themeFromString(r.theme);
   request.scale = r.uiScale;
   if (!r.size.empty()) std::tie(request.width, request.height) = parseSize(r.size);
   // Non-finite results are an error here as in the dump (coordinates so large that a product
@@ -188,6 +190,7 @@ int runRender(const RenderOptions& r) {
       DisplaySettings& d = viewer.state().display;
       d.camera.style = d.world.style = d.npc.style = request.style;
     }
+    viewer.state().display.theme = request.theme;
     for (const std::string& tab : r.tabs) selectTab(viewer.state(), tab);
     viewer.frames(3);
     writePng(viewer.image(), out);
@@ -316,6 +319,10 @@ int runCommandLine(int argc, char** argv) {
                         "hidden-line (hidden edges dashed, lecture notes figure 16.1) or hidden-removed (hidden "
                         "edges left out, figure 16.3)")
       ->check(namesOf(kAllStyles));
+  renderCmd->add_option("--theme", render.theme,
+                        "dark (the screen's) or light (white ground, dark lines told apart by dashes and widths "
+                        "as well as colour: for print and a bright lecture hall)")
+      ->check(CLI::IsMember({"dark", "light"}));
   renderCmd->add_option("--size", render.size,
                         "WIDTHxHEIGHT of each view; default: the scene's device (the camera view is then "
                         "pixel-aligned with DC)");

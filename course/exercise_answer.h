@@ -6,7 +6,7 @@
 
 #include "course/assignment.h"
 #include "course/exercise.h"
-#include "course/language.h"
+#include "pipeline/language.h"
 
 #include <nlohmann/json.hpp>
 

@@ -20,7 +20,7 @@
 // stage or is a relabelling (transposed, y not flipped, front/back: the cube is symmetric under
 // z → w − z, so clipping commutes with it).
 #pragma once
-#include "course/language.h"
+#include "pipeline/language.h"
 #include "pipeline/scene.h"
 
 #include <nlohmann/json.hpp>

@@ -7,7 +7,7 @@
 // device mapping. Every number is the pipeline's own (course/exercise.h), printed as an exact
 // fraction where it is a small rational (course/rational.h), else rounded to 4 decimals.
 #pragma once
-#include "course/language.h"
+#include "pipeline/language.h"
 #include "course/exercise.h"
 
 #include <filesystem>

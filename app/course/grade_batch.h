@@ -7,7 +7,7 @@
 #pragma once
 
 #include "course/assignment.h"
-#include "course/language.h"
+#include "pipeline/language.h"
 
 #include <filesystem>
 #include <functional>

@@ -5,7 +5,7 @@
 #pragma once
 #include "app/course/grade_image.h"
 #include "course/grading.h"
-#include "course/language.h"
+#include "pipeline/language.h"
 
 #include <nlohmann/json.hpp>
 #include <string>

@@ -185,9 +185,10 @@ class ListWriter {
   }
 
   void draw(const Text& t) {
-    // The PNG's shadow (the glyphs drawn dark one pixel off in four directions) as a stroke under them.
+    // The PNG's shadow (the glyphs drawn in the outline's colour one pixel off in four directions) as a
+    // stroke under them.
     out_ += std::string("<g class=\"labels\" font-family=\"") + fonts_.cssFamily() +
-            "\" stroke=\"#000000\" stroke-width=\"2\" stroke-linejoin=\"round\" paint-order=\"stroke\">\n";
+            "\" stroke=\"" + hex(t.outline) + "\" stroke-width=\"2\" stroke-linejoin=\"round\" paint-order=\"stroke\">\n";
     for (const PlacedLabel& p : t.labels)
       out_ += "<text x=\"" + num(p.topLeft.x) + "\" y=\"" + num(p.topLeft.y + fonts_.baselinePx(p.size)) +
               "\" font-size=\"" + num(fonts_.emPx(p.size)) + "\" fill=\"" + hex(glm::vec3(p.color)) + '"' +

@@ -83,7 +83,7 @@ void GlBackend::draw(const draw::DisplayList& list, gl::RenderTarget& target) {
       drawFill(*fill, view);
     } else if (const auto* text = std::get_if<draw::Text>(&b)) {
       flush();
-      text_->draw(text->labels, view.width, view.height);
+      text_->draw(text->labels, text->outline, view.width, view.height);
       labelsPlaced_.insert(labelsPlaced_.end(), text_->placed().begin(), text_->placed().end());
     } else {
       draw::Depth depth = draw::Depth::ignore;

@@ -56,14 +56,14 @@ void TextRenderer::appendText(const PlacedLabel& label, const glm::vec2& origin,
   }
 }
 
-void TextRenderer::draw(const std::vector<PlacedLabel>& labels, int width, int height) {
+void TextRenderer::draw(const std::vector<PlacedLabel>& labels, const glm::vec3& outline, int width, int height) {
   placed_.clear();
   if (labels.empty()) return;
   std::vector<float> vertices;
   for (const PlacedLabel& l : labels) {
     placed_.emplace_back(l.topLeft.x, l.topLeft.y, l.topLeft.x + l.extent.x, l.topLeft.y + l.extent.y);
     if (l.shadow) {
-      const glm::vec4 dark(0.f, 0.f, 0.f, 0.75f * l.color.a);
+      const glm::vec4 dark(outline, 0.75f * l.color.a);
       for (const glm::vec2 o : {glm::vec2(-1, 0), glm::vec2(1, 0), glm::vec2(0, -1), glm::vec2(0, 1)})
         appendText(l, l.topLeft + o, dark, vertices);
     }

@@ -21,7 +21,7 @@ class TextRenderer {
   TextRenderer(const GladGLContext& gl, float scale = 1.f);
   ~TextRenderer();
   /// Draws labels placed by the views (labels.h) into the current viewport of width × height pixels.
-  void draw(const std::vector<PlacedLabel>& labels, int width, int height);
+  void draw(const std::vector<PlacedLabel>& labels, const glm::vec3& outline, int width, int height);
   /// Width and height in pixels of a text at a size.
   Vec2 measure(const std::string& text, TextSize size) const { return atlas_->measure(text, size); }
   float scale() const { return atlas_->scale(); }

@@ -77,6 +77,14 @@ void Menus::menuBar() {
     if (ImGui::MenuItem("Redo", "Ctrl+Y", false, s_.doc.canRedo())) s_.doc.redo();
     ImGui::EndMenu();
   }
+  if (ImGui::BeginMenu("View")) {
+    // A preference, kept when another scene is opened: white views for a bright lecture hall and
+    // for exported pictures that will be printed.
+    bool light = s_.display.theme == Theme::light;
+    if (ImGui::MenuItem("Light theme (bright hall, print)", nullptr, &light))
+      s_.display.theme = light ? Theme::light : Theme::dark;
+    ImGui::EndMenu();
+  }
   if (ImGui::BeginMenu("Help")) {
     if (ImGui::MenuItem("Mouse and keys", "F1")) s_.showHelp = true;
     ImGui::EndMenu();

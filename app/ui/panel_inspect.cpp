@@ -140,7 +140,7 @@ void probePanel(ViewerState& s) {
     ImGui::TextUnformatted(kForms[i]);
     const std::string value = num(bc[i], bcScale, 5);
     sameLineIfFits(value.c_str(), false);
-    ImGui::TextColored(bc[i] < 0 ? ImVec4(1, 0.4f, 0.35f, 1) : ImVec4(0.55f, 0.9f, 0.5f, 1), "%s", value.c_str());
+    ImGui::TextColored(bc[i] < 0 ? outsideColor() : insideColor(), "%s", value.c_str());
     const std::string plane = std::string(planeName(i)) + " (" + std::string(planeInequality(i)) + ")";
     sameLineIfFits(plane.c_str(), false);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));

@@ -128,7 +128,7 @@ void stepThroughSection(ViewerState& s) {
       ImGui::Text("%zu", i);
       ImGui::TableNextColumn();
       const double b = step.boundary[i];
-      ImGui::TextColored(b < 0 ? ImVec4(1, 0.4f, 0.35f, 1) : ImVec4(0.55f, 0.9f, 0.5f, 1), "%s", num(b, scale, 5).c_str());
+      ImGui::TextColored(b < 0 ? outsideColor() : insideColor(), "%s", num(b, scale, 5).c_str());
       ImGui::TableNextColumn();
       ImGui::TextDisabled("%s", b < 0 ? "outside" : "inside");
     }

@@ -164,8 +164,12 @@ void Session::startDocument(Scene scene, bool dirty) {
   state_.drag = {};
   state_.morphPlaying = false;
   // The view settings of a fresh start (see the constructor); the user's UI scale, aspect lock and
-  // antialiasing are preferences, not choices for a scene, and stay.
+  // antialiasing, the theme and the labels' language are preferences, not choices for a scene, and stay.
+  const Theme theme = state_.display.theme;
+  const Language language = state_.display.language;
   state_.display = DisplaySettings{};
+  state_.display.theme = theme;
+  state_.display.language = language;
   state_.display.camera.style = Style::shaded;
   state_.pipeline = ViewerState(Scene{}).pipeline;
   state_.display.world.orbit = defaultWorldOrbit(state_.doc.shown(), state_.worldAspect);

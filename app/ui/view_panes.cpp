@@ -338,7 +338,7 @@ void ViewPanes::lectureWindow() {
       ImGui::SetCursorPos(ImVec2(14, 10) * uiScale_);
       panelBehind([&] {
         ImGui::PushTextWrapPos(size.x * 0.6f);
-        if (!scene.title.empty()) ImGui::TextColored(ImVec4(1.f, 0.86f, 0.45f, 1.f), "%s", scene.title.c_str());
+        if (!scene.title.empty()) ImGui::TextColored(ui::accentColor(), "%s", scene.title.c_str());
         if (!scene.caption.empty()) ImGui::TextWrapped("%s", scene.caption.c_str());
         ImGui::PopTextWrapPos();
       });

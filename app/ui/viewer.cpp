@@ -33,8 +33,9 @@ void setUpFonts(float scale) {
   else io.Fonts->AddFontDefault();
 }
 
-void setUpStyle(float scale) {
-  ImGui::StyleColorsDark();
+void setUpStyle(float scale, Theme theme) {
+  if (theme == Theme::light) ImGui::StyleColorsLight();
+  else ImGui::StyleColorsDark();
   ImGuiStyle& style = ImGui::GetStyle();
   style.WindowRounding = 3;
   style.FrameRounding = 2;
@@ -70,7 +71,7 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
   io.IniFilename = nullptr;  // the layout is computed, not stored in the working directory
   io.ConfigWindowsMoveFromTitleBarOnly = true;
   setUpFonts(uiScale);
-  setUpStyle(uiScale);
+  setUpStyle(uiScale, s_.display.theme);
   // WebGL2 (the browser) and OpenGL ES are GLSL ES 3.00; the desktop's window is OpenGL 3.3 core.
   const bool es = gl::dialectOf(context.gl()) == gl::GlslDialect::es300;
   if (!ImGui_ImplOpenGL3_Init(es ? "#version 300 es" : "#version 330 core")) {
@@ -94,7 +95,8 @@ void Viewer::applyUiScale(float scale) {
   ImGui_ImplOpenGL3_DestroyFontsTexture();
   ImGui_ImplOpenGL3_CreateFontsTexture();
   ImGui::GetStyle() = ImGuiStyle();
-  setUpStyle(scale);
+  setUpStyle(scale, s_.display.theme);
+  styledTheme_ = s_.display.theme;
   renderer_.setScale(scale);
   relayout_ = true;
 }
@@ -157,7 +159,8 @@ double Viewer::wakeIn() const {
 
 void Viewer::frame(GLuint framebuffer, int width, int height) {
   ImGui::SetCurrentContext(imgui_);
-  if (s_.uiScale != uiScale_) applyUiScale(s_.uiScale);  // the font atlas is locked during a frame
+  // The font atlas is locked during a frame: the scale (and with it the style) changes before one.
+  if (s_.uiScale != uiScale_ || s_.display.theme != styledTheme_) applyUiScale(s_.uiScale);
   if (settleFrames_ > 0) --settleFrames_;
   images_.beginFrame();
   run_.beginFrame();
@@ -225,7 +228,7 @@ void Viewer::controlsWindow() {
   ImGui::Begin("Controls", nullptr, ImGuiWindowFlags_NoCollapse);
   const Scene& scene = s_.doc.scene();
   if (!scene.title.empty() || !scene.caption.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.86f, 0.45f, 1.f));
+    ImGui::PushStyleColor(ImGuiCol_Text, ui::accentColor());
     ImGui::TextWrapped("%s", scene.title.empty() ? "Scene" : scene.title.c_str());
     ImGui::PopStyleColor();
     if (!scene.caption.empty()) ImGui::TextWrapped("%s", scene.caption.c_str());

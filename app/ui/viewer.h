@@ -115,6 +115,7 @@ class Viewer {
   Session session_;
   Menus menus_;
   float uiScale_;
+  Theme styledTheme_ = Theme::dark;  // the ImGui colours set up (StyleColorsDark or Light)
   int lastWidth_ = 0, lastHeight_ = 0;
   bool relayout_ = true;
   unsigned lastActive_ = 0;  // the ImGui item active in the previous frame

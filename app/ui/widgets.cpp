@@ -230,7 +230,18 @@ void copiedNotice(ViewerState& s, const char* id) {
     return;
   }
   ImGui::SameLine();
-  ImGui::TextColored(ImVec4(0.55f, 0.9f, 0.5f, 1), "copied");
+  ImGui::TextColored(insideColor(), "copied");
 }
+
+namespace {
+bool lightGround() {
+  const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+  return bg.x + bg.y + bg.z > 1.5f;
+}
+}  // namespace
+
+ImVec4 accentColor() { return lightGround() ? ImVec4(0.62f, 0.36f, 0.f, 1.f) : ImVec4(1.f, 0.86f, 0.45f, 1.f); }
+ImVec4 insideColor() { return lightGround() ? ImVec4(0.1f, 0.5f, 0.1f, 1.f) : ImVec4(0.55f, 0.9f, 0.5f, 1.f); }
+ImVec4 outsideColor() { return lightGround() ? ImVec4(0.75f, 0.1f, 0.08f, 1.f) : ImVec4(1.f, 0.4f, 0.35f, 1.f); }
 
 }  // namespace vplab::ui

@@ -36,6 +36,11 @@ void tooltip(const char* english, const char* german);
 /// A (?) marker with a tooltip.
 void help(const char* english, const char* german);
 void errorText(const std::string& text);
+/// Colours of text that read on the current style's ground (the dark or the light theme): titles,
+/// a boundary coordinate inside (≥ 0) and outside (< 0).
+ImVec4 accentColor();
+ImVec4 insideColor();
+ImVec4 outsideColor();
 /// A separator with a small heading.
 void section(const char* title);
 /// A number of a panel with formatNumber (app/views/number_text.h): `digits` significant digits, noise

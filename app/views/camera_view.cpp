@@ -26,7 +26,7 @@ struct PixelsFromDc {
 // Wire: every edge. Hidden line (lecture notes figures 16.1 and 16.3): the faces fill the depth
 // buffer only, pushed back a little so their own edges pass; the visible edges solid, the hidden
 // ones dashed (hidden-line) or not at all (hidden-removed).
-void addEdges(const Scene& scene, Style style, float scale, DisplayList& list) {
+void addEdges(const Scene& scene, const theme::Palette& pal, Style style, float scale, DisplayList& list) {
   const bool hidden = style == Style::hiddenLine || style == Style::hiddenRemoved;
   const std::vector<MeshInstance> meshes = sceneMeshes(scene);
   const std::vector<Vec4> planes = userClipPlanes(scene);
@@ -43,7 +43,7 @@ void addEdges(const Scene& scene, Style style, float scale, DisplayList& list) {
     l.space = Space::wc;
     l.meshEdges = meshes;
     for (MeshInstance& m : l.meshEdges) m.color.a = alpha;
-    l.widthPx = theme::kEdgeWidth * scale;
+    l.widthPx = pal.edgeWidthPx * scale;
     l.dashPx = dashPx;
     l.depth = depth;
     l.clipPlanes = planes;
@@ -56,14 +56,14 @@ void addEdges(const Scene& scene, Style style, float scale, DisplayList& list) {
 
 // lecture notes 14.2: the images of an object's edges along each principal axis meet in the axis's
 // vanishing point. Each edge is drawn on to it, dashed, in the axis's colour.
-void addVanishingPoints(const PipelineRun& run, int sceneIndex, const PixelsFromDc& pixels, Marks& b,
-                        std::vector<TextLabel>& labels, int width, int height) {
+void addVanishingPoints(const PipelineRun& run, const theme::Palette& pal, int sceneIndex, const PixelsFromDc& pixels,
+                        Marks& b, std::vector<TextLabel>& labels, int width, int height) {
   const ObjectRun* o = nullptr;
   for (size_t i = 0; i < run.sceneIndex.size(); ++i)
     if (int(run.sceneIndex[i]) == sceneIndex) o = &run.objects[i];
   if (!o) return;
   const auto vps = vanishingPoints(run, o->wcFromMc);
-  const glm::vec4 colors[3] = {theme::kU, theme::kV, theme::kN};
+  const glm::vec4 colors[3] = {pal.u, pal.v, pal.n};
   const char* names[3] = {"x", "y", "z"};
   // The run's edge list when it clipped edges (the viewer's does), not a new one per axis and frame.
   const std::vector<Edge> ownEdges = o->edges.empty() ? uniqueEdges(*o->mesh) : std::vector<Edge>{};
@@ -101,6 +101,8 @@ DisplayList cameraView(const ViewInput& in) {
   const DisplaySettings& s = in.settings;
   const int w = in.width, h = in.height;
   const float scale = in.text.scale();
+  // The ground is the scene's own background (what the camera sees); the theme colours the marks.
+  const theme::Palette& pal = theme::palette(s.theme);
 
   DisplayList list;
   list.width = w;
@@ -120,27 +122,27 @@ DisplayList cameraView(const ViewInput& in) {
     objects.clipPlanes = userClipPlanes(scene);
     list.add(std::move(objects));
   } else {
-    addEdges(scene, style, scale, list);
+    addEdges(scene, pal, style, scale, list);
   }
 
   const PixelsFromDc pixels{{double(w) / run.device.width, double(h) / run.device.height}};
   Marks marks;
-  if (in.highlights.probeDc) marks.point(pixels(*in.highlights.probeDc), theme::kProbe, 14.f);
+  if (in.highlights.probeDc) marks.point(pixels(*in.highlights.probeDc), pal.probe, 14.f);
   if (s.overlays.cpuPolygons) {
     std::vector<Vec3> poly;
     for (const ObjectRun& o : run.objects) {
       for (size_t f = 0; f < o.faceCount(); ++f) {
         poly.clear();
         for (uint32_t ref : o.clippedFace(f)) poly.push_back(pixels(o.clippedDc(ref)));
-        marks.polyline(poly, true, theme::kCpuPolygon, 1.5f);
+        marks.polyline(poly, true, pal.cpuPolygon, 1.5f);
       }
     }
   }
   std::vector<TextLabel> labels;
   if (s.overlays.vanishingPoints)
-    addVanishingPoints(run, in.highlights.vanishingObject, pixels, marks, labels, w, h);
+    addVanishingPoints(run, pal, in.highlights.vanishingObject, pixels, marks, labels, w, h);
   marks.emit(list, Space::pixels, Depth::ignore, scale);
-  if (!labels.empty()) list.add(Text{placeLabels(labels, in.text, w, h)});
+  if (!labels.empty()) list.add(Text{placeLabels(labels, in.text, w, h), pal.labelOutline});
   return list;
 }
 

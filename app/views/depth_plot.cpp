@@ -101,7 +101,8 @@ DepthPlot depthPlot(const PipelineRun& run, int width, int plotHeight, const Tex
   DisplayList& list = out.list;
   list.width = width;
   list.height = int(std::ceil(float(plotHeight) + depthPlotExtraHeight(run, width, text, options)));
-  list.background = theme::kViewBackground;
+  // The chart keeps the dark theme in every theme: its bars' and scales' colours are chosen for it.
+  list.background = theme::kDark.viewBackground;
   // The chart looks at its own pixels: the device mapping of a width × height device undone
   // (a backend that draws observer-space batches through the observer then needs no special case).
   list.observer.space = Space::pixels;

@@ -164,6 +164,7 @@ struct Triangles {
 /// Labels placed in the view's pixels (labels.h placed them, once, for every backend).
 struct Text {
   std::vector<PlacedLabel> labels;
+  glm::vec3 outline{0, 0, 0};  // the colour of the labels' outline (PlacedLabel::shadow): the theme's ground's opposite
 };
 
 using Batch = std::variant<Fill, Lines, Points, Triangles, Text>;

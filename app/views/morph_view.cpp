@@ -50,7 +50,8 @@ void morphView(const ViewInput& in, DisplayList& list) {
   Recycled recycled(list);  // the previous frame's polygon arrays, with their capacity
   list.width = w;
   list.height = h;
-  list.background = theme::kViewBackground;
+  const theme::Palette& pal = theme::palette(in.settings.theme);
+  list.background = pal.viewBackground;
   list.antialiased = true;
 
   const double t = s.morphing.t;
@@ -77,7 +78,7 @@ void morphView(const ViewInput& in, DisplayList& list) {
   for (int i = 0; i < 8; ++i) c[size_t(i)] = morphPosition(cornerStages(run, inv, i), std::max(t, 1.0), run.device);
   for (int i = 0; i < 8; ++i)
     for (int bit : {1, 2, 4})
-      if (!(i & bit)) lines.line(c[size_t(i)], c[size_t(i | bit)], theme::kFrustum, theme::kLineWidth);
+      if (!(i & bit)) lines.line(c[size_t(i)], c[size_t(i | bit)], pal.frustum, theme::kLineWidth);
   all.insert(all.end(), c.begin(), c.end());
 
   // The axes of the space the scene is in at t (of the nearest stage), from its origin.
@@ -87,9 +88,9 @@ void morphView(const ViewInput& in, DisplayList& list) {
     hi = glm::max(hi, p);
   }
   const double axis = 0.25 * std::max(1e-6, glm::length(hi - lo));
-  lines.line({0, 0, 0}, {axis, 0, 0}, theme::kU, theme::kLineWidth);
-  lines.line({0, 0, 0}, {0, t > 3.5 ? -axis : axis, 0}, theme::kV, theme::kLineWidth);  // DC's y points down
-  lines.line({0, 0, 0}, {0, 0, axis}, theme::kN, theme::kLineWidth);
+  lines.line({0, 0, 0}, {axis, 0, 0}, pal.u, theme::kLineWidth);
+  lines.line({0, 0, 0}, {0, t > 3.5 ? -axis : axis, 0}, pal.v, theme::kLineWidth);  // DC's y points down
+  lines.line({0, 0, 0}, {0, 0, axis}, pal.n, theme::kLineWidth);
   all.push_back({0, 0, 0});
 
   const Orbit o = framed(s.morphing.orbit, all, double(w) / h);
@@ -107,17 +108,17 @@ void morphView(const ViewInput& in, DisplayList& list) {
   std::vector<TextLabel> labels;
   char title[160];
   std::snprintf(title, sizeof title, "t = %.2f   %s", t, std::string(morphStageName(t)).c_str());
-  labels.push_back({{10, 10}, title, theme::kText, TextSize::title, Anchor::topLeft});
-  labels.push_back({{10, 38}, "step: " + std::string(morphStepName(std::min(t, 3.999))), theme::kFrustum,
+  labels.push_back({{10, 10}, title, pal.text, TextSize::title, Anchor::topLeft});
+  labels.push_back({{10, 38}, "step: " + std::string(morphStepName(std::min(t, 3.999))), pal.frustum,
                     TextSize::label, Anchor::topLeft});
   auto axisLabel = [&](const Vec3& p, const char* text, const glm::vec4& color) {
     const Projected q = projectToPixels(view, p, w, h);
     if (q.visible) labels.push_back({q.pixel + Vec2(6, 0), text, color, TextSize::label, Anchor::left});
   };
-  axisLabel({axis, 0, 0}, "x", theme::kU);
-  axisLabel({0, t > 3.5 ? -axis : axis, 0}, "y", theme::kV);
-  axisLabel({0, 0, axis}, "z", theme::kN);
-  list.add(Text{placeLabels(labels, in.text, w, h)});
+  axisLabel({axis, 0, 0}, "x", pal.u);
+  axisLabel({0, t > 3.5 ? -axis : axis, 0}, "y", pal.v);
+  axisLabel({0, 0, axis}, "z", pal.n);
+  list.add(Text{placeLabels(labels, in.text, w, h), pal.labelOutline});
 }
 
 DisplayList morphView(const ViewInput& in) {

@@ -19,6 +19,11 @@ namespace {
 
 using namespace draw;
 
+bool insideCube(const Vec3& p) {
+  constexpr double e = 1e-9;
+  return p.x >= -e && p.x <= 1 + e && p.y >= -e && p.y <= 1 + e && p.z >= -e && p.z <= 1 + e;
+}
+
 // An edge by its end points in NPC, in either direction.
 std::array<double, 6> edgeKey(const Vec3& a, const Vec3& b) {
   const bool swap = std::tie(b.x, b.y, b.z) < std::tie(a.x, a.y, a.z);
@@ -26,18 +31,19 @@ std::array<double, 6> edgeKey(const Vec3& a, const Vec3& b) {
   return {p.x, p.y, p.z, q.x, q.y, q.z};
 }
 
-void addCube(Marks& b, std::vector<TextLabel>& labels, const ViewCamera& view, int w, int h, bool withLabels) {
+void addCube(const theme::Palette& pal, Language lang, Marks& b, std::vector<TextLabel>& labels, const ViewCamera& view,
+             int w, int h, bool withLabels) {
   using geometry::cubeCorner;
   for (int i = 0; i < 8; ++i)
     for (int bit : {1, 2, 4})
-      if (!(i & bit)) b.line(cubeCorner(i), cubeCorner(i | bit), theme::kCube, 1.5f);
-  b.quad(cubeCorner(4), cubeCorner(5), cubeCorner(7), cubeCorner(6), theme::kCubeFront);
+      if (!(i & bit)) b.line(cubeCorner(i), cubeCorner(i | bit), pal.cube, 1.5f);
+  b.quad(cubeCorner(4), cubeCorner(5), cubeCorner(7), cubeCorner(6), pal.cubeFront);
   const double len = geometry::kNpcAxisLength;
-  b.line({0, 0, 0}, {len, 0, 0}, theme::kU, theme::kLineWidth);
-  b.line({0, 0, 0}, {0, len, 0}, theme::kV, theme::kLineWidth);
-  b.line({0, 0, 0}, {0, 0, len}, theme::kN, theme::kLineWidth);
+  b.line({0, 0, 0}, {len, 0, 0}, pal.u, theme::kLineWidth);
+  b.line({0, 0, 0}, {0, len, 0}, pal.v, theme::kLineWidth);
+  b.line({0, 0, 0}, {0, 0, len}, pal.n, theme::kLineWidth);
   if (!withLabels) return;
-  for (const geometry::AnchoredLabel& l : geometry::npcCubeLabels()) {
+  for (const geometry::AnchoredLabel& l : geometry::npcCubeLabels(pal, lang)) {
     const Projected q = projectToPixels(view, l.at, w, h);
     if (q.visible) labels.push_back({q.pixel, l.text, l.color, TextSize::label, Anchor::center});
   }
@@ -52,11 +58,12 @@ void npcView(const ViewInput& in, DisplayList& list) {
   const float scale = in.text.scale();
   const Style style = s.npc.style;
   const OverlaySettings& ov = s.overlays;
+  const theme::Palette& pal = theme::palette(s.theme);
 
   Recycled recycled(list);  // the previous frame's polygon arrays, with their capacity
   list.width = w;
   list.height = h;
-  list.background = theme::kViewBackground;
+  list.background = pal.viewBackground;
   const ViewCamera view = viewCameraOf(observerCamera(s.npc.orbit, double(w) / h));
   list.observer = {Space::npc, view};
   list.antialiased = true;
@@ -75,7 +82,7 @@ void npcView(const ViewInput& in, DisplayList& list) {
     const ObjectRun& o = run.objects[k];
     if (keepInside) inside[k].color = glm::vec3(o.color);
     if (keepFaded) faded[k].color = glm::vec3(o.color);
-    const glm::vec4 c(glm::vec3(o.color), 1.f);
+    const glm::vec4 c = theme::ink(pal, glm::vec4(glm::vec3(o.color), 1.f));
     for (size_t f = 0; f < o.faceCount(); ++f) {
       const auto face = o.clippedFace(f);
       if (!face.empty()) {
@@ -86,14 +93,14 @@ void npcView(const ViewInput& in, DisplayList& list) {
         for (size_t i = 0; (clipped || outlined) && i < face.size(); ++i) {
           const Vec3 &a = poly[i], &b = poly[(i + 1) % poly.size()];
           if (clipped && o.isNewEdge(f, i)) {
-            newEdges.line(a, b, theme::kNewEdge, theme::kLineWidth + 0.5f);
+            newEdges.line(a, b, pal.newEdge, theme::kLineWidth + 0.5f);
             continue;
           }
           // Two faces share each mesh edge: draw it once, or its dashes would overlap out of phase.
           if (!outlined || !drawnEdges.insert(edgeKey(a, b)).second) continue;
-          if (!isFilled(style)) outlines.line(a, b, c, theme::kEdgeWidth);
+          if (!isFilled(style)) outlines.line(a, b, c, pal.edgeWidthPx);
           if (style == Style::hiddenLine)
-            dashedOutlines.line(a, b, glm::vec4(glm::vec3(c), 0.8f), theme::kEdgeWidth, theme::kDashPx);
+            dashedOutlines.line(a, b, glm::vec4(glm::vec3(c), 0.8f), pal.edgeWidthPx, theme::kDashPx);
         }
         if (keepInside) inside[k].add(poly);
       }
@@ -101,7 +108,7 @@ void npcView(const ViewInput& in, DisplayList& list) {
         geometry::fadedNpcPolygon(o, f, scratch, poly);
         if (poly.size() >= 3) {
           if (!isFilled(style))
-            fadedOutlines.polyline(poly, true, glm::vec4(glm::vec3(c), theme::kFadedAlpha), theme::kEdgeWidth);
+            fadedOutlines.polyline(poly, true, glm::vec4(glm::vec3(c), pal.fadedAlpha), pal.edgeWidthPx);
           if (keepFaded) faded[k].add(poly);
         }
       }
@@ -126,32 +133,46 @@ void npcView(const ViewInput& in, DisplayList& list) {
   outlines.emit(list, Space::npc, depth, scale);
   dashedOutlines.emit(list, Space::npc, Depth::hiddenOnly, scale);
   if (ov.fadeOutside) {
-    if (isFilled(style)) polygons(std::move(faded), theme::kFadedAlpha, shaded, false);
+    if (isFilled(style)) polygons(std::move(faded), pal.fadedAlpha, shaded, false);
     else fadedOutlines.emit(list, Space::npc, depth, scale);
   }
 
   Marks cube;
   std::vector<TextLabel> labels;
-  if (ov.cube) addCube(cube, labels, view, w, h, ov.labels);
+  if (ov.cube) addCube(pal, s.language, cube, labels, view, w, h, ov.labels);
   // The translucent front face lies in z = 1, where clipping puts the scene's cut polygons and
   // edges: pushed back, it loses every depth tie to them instead of z-fighting (the cube's lines
   // are not pushed back).
   cube.emit(list, Space::npc, Depth::test, scale, /*pushedBack=*/true);
-  if (in.highlights.probeNpc) newEdges.point(*in.highlights.probeNpc, theme::kProbe, 14.f);
+  if (in.highlights.probeNpc) newEdges.point(*in.highlights.probeNpc, pal.probe, 14.f);
   if (const auto& step = in.highlights.step) {
     // The clipping step-through: the plane being applied as a face of the cube, the polygon after
     // the step, its new vertices.
     if (step->plane >= 0 && step->plane < kPlaneCount) {
       const auto ring = geometry::cubeFaceRing(step->plane);
       using geometry::cubeCorner;
-      newEdges.quad(cubeCorner(ring[0]), cubeCorner(ring[1]), cubeCorner(ring[2]), cubeCorner(ring[3]), theme::kStepPlane);
+      newEdges.quad(cubeCorner(ring[0]), cubeCorner(ring[1]), cubeCorner(ring[2]), cubeCorner(ring[3]), pal.stepPlane);
     }
-    newEdges.polyline(step->polygonNpc, true, theme::kProbe, theme::kLineWidth + 1.f);
+    newEdges.polyline(step->polygonNpc, true, pal.probe, theme::kLineWidth + 1.f);
     for (size_t i = 0; i < step->polygonNpc.size(); ++i)
-      newEdges.point(step->polygonNpc[i], step->created[i] ? theme::kNewEdge : theme::kProbe, step->created[i] ? 13.f : 9.f);
+      newEdges.point(step->polygonNpc[i], step->created[i] ? pal.newEdge : pal.probe, step->created[i] ? 13.f : 9.f);
+  }
+  if (ov.vertexNames && ov.labels) {
+    // The polygons' vertices P1 … Pn where they lie inside the view volume (the others were clipped
+    // away; a vertex behind the eye has no place in NPC).
+    for (const geometry::NamedPoint& v : geometry::polygonVertexNames(in.scene)) {
+      const Vec4 h4 = run.npcFromWc * Vec4(v.at, 1.0);
+      if (!(h4.w > 0) || !insideCube(Vec3(h4) / h4.w)) continue;
+      const Vec3 p = Vec3(h4) / h4.w;
+      newEdges.point(p, theme::ink(pal, v.color), theme::kPointSize * 0.7f);
+      const Projected q = projectToPixels(view, p, w, h);
+      if (q.visible)
+        labels.push_back({q.pixel + Vec2(7, -9) * double(scale), v.name, theme::ink(pal, v.color), TextSize::label,
+                          Anchor::left, true, true, q.pixel});
+    }
   }
   newEdges.emit(list, Space::npc, Depth::xray, scale);
-  if (!labels.empty()) list.add(Text{placeLabels(labels, in.text, w, h)});
+  if (!labels.empty()) list.add(Text{placeLabels(labels, in.text, w, h), pal.labelOutline});
 }
 
 DisplayList npcView(const ViewInput& in) {

@@ -37,7 +37,13 @@ std::vector<Vec3> worldPoints(const Scene& scene) {
   for (const SceneObject& o : scene.objects) {
     if (!o.mesh || !o.visible) continue;
     const Mat4 m = wcFromMc(o.transform);
-    for (const Vec3& c : bounds(*o.mesh).corners()) points.push_back(transformAffine(m, c));
+    // A small mesh by its vertices (a polygon's bounding box has corners far from it, which would
+    // frame empty space), a large one by its bounding box.
+    constexpr size_t kFramedByVertices = 64;
+    if (o.mesh->positions.size() <= kFramedByVertices)
+      for (const Vec3& v : o.mesh->positions) points.push_back(transformAffine(m, v));
+    else
+      for (const Vec3& c : bounds(*o.mesh).corners()) points.push_back(transformAffine(m, c));
   }
   // The view volume's corners: the unit cube taken back from NPC (exact for every projection).
   if (!cameraError(scene.camera)) {

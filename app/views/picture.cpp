@@ -34,7 +34,8 @@ DisplayList titleStrip(const ViewInput& in, int titleHeight) {
   DisplayList strip;
   strip.width = 3 * width + 2 * kPanelGap;
   strip.height = titleHeight;
-  strip.background = theme::kViewBackground * 0.7f;
+  const theme::Palette& pal = theme::palette(in.settings.theme);
+  strip.background = pal.stripBackground;
   strip.observer.space = Space::pixels;
   strip.antialiased = true;
   const char* titles[][2] = {{"camera: what the synthetic camera sees (DC)", "camera (DC)"},
@@ -43,12 +44,12 @@ DisplayList titleStrip(const ViewInput& in, int titleHeight) {
   std::vector<TextLabel> labels;
   for (int i = 0; i < 3; ++i) {
     const bool fits = in.text.measure(titles[i][0], TextSize::title).x <= width - 12;
-    TextLabel title{{i * (width + kPanelGap) + width * 0.5, titleHeight * 0.5}, titles[i][fits ? 0 : 1], theme::kText,
+    TextLabel title{{i * (width + kPanelGap) + width * 0.5, titleHeight * 0.5}, titles[i][fits ? 0 : 1], pal.text,
                     TextSize::title, Anchor::center, false};
     title.avoid = false;
     labels.push_back(title);
   }
-  strip.add(Text{placeLabels(labels, in.text, strip.width, strip.height)});
+  strip.add(Text{placeLabels(labels, in.text, strip.width, strip.height), pal.labelOutline});
   return strip;
 }
 
@@ -67,7 +68,7 @@ void buildPicture(ViewKind kind, const ViewInput& in, Picture& out) {
   const int titleHeight = int(in.text.measure("Ag", TextSize::title).y) + 14;
   out.width = 3 * in.width + 2 * kPanelGap;
   out.height = titleHeight + in.height;
-  out.background = glm::vec3(20, 21, 26) / 255.f;
+  out.background = theme::palette(in.settings.theme).panelGap;
   out.panels.resize(4);
   out.panels[0] = {0, 0, titleStrip(in, titleHeight)};
   const ViewKind views[3] = {ViewKind::camera, ViewKind::world, ViewKind::npc};

@@ -27,6 +27,8 @@ DisplaySettings displaySettingsOf(const RenderRequest& request, const Scene& sce
   const PixelSize size = pixelSizeOf(request, scene);
   DisplaySettings settings = displaySettingsFor(scene, request.style, double(size.width) / size.height);
   settings.morphing.t = request.morphT;
+  settings.theme = request.theme;
+  settings.language = request.language;
   return settings;
 }
 

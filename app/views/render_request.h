@@ -19,6 +19,8 @@ struct RenderRequest {
   /// The CPU pipeline's run the view shows (with clipEdges: the wireframe styles and overlays draw
   /// the clipped edges).
   PipelineOptions pipeline{ClipStrategy::npc, false, true};
+  Theme theme = Theme::dark;  // without `display`: the theme of every view (app/views/theme.h)
+  Language language = Language::en;  // without `display`: the labels' language
   float scale = 1.f;  // text, line widths and markers (lecture mode on a projector, the viewer's UI scale)
   /// Every view setting as the viewer shows it (each view's style and observer, the overlays, the
   /// morph); nullopt: `vplab render`'s, from `style` and `morphT` (displaySettingsFor).

@@ -72,13 +72,29 @@ void fadedNpcPolygon(const ObjectRun& o, size_t f, ClipScratch& scratch, std::ve
     if (c.p.w > 1e-12) out.push_back(Vec3(c.p) / c.p.w);
 }
 
-std::vector<AnchoredLabel> npcCubeLabels() {
+std::vector<NamedPoint> polygonVertexNames(const Scene& scene) {
+  std::vector<const SceneObject*> polygons;
+  for (const SceneObject& o : scene.objects)
+    if (o.visible && o.shape == Shape::polygon) polygons.push_back(&o);
+  std::vector<NamedPoint> out;
+  for (const SceneObject* o : polygons) {
+    const Mat4 m = wcFromMc(o->transform);
+    const std::string prefix = polygons.size() > 1 ? o->name + "." : "";
+    for (size_t i = 0; i < o->vertices.size(); ++i)
+      out.push_back({transformAffine(m, o->vertices[i]), prefix + "P" + std::to_string(i + 1),
+                     glm::vec4(glm::vec3(o->color), 1.f)});
+  }
+  return out;
+}
+
+std::vector<AnchoredLabel> npcCubeLabels(const theme::Palette& pal, Language lang) {
   const double len = kNpcAxisLength;
-  return {{{len + 0.07, 0, 0}, "x", theme::kU},          {{0, len + 0.07, 0}, "y", theme::kV},
-          {{0, 0, len + 0.07}, "z", theme::kN},          {{-0.06, -0.06, -0.06}, "0", theme::kText},
-          {{1, -0.07, 0}, "1", theme::kU},               {{-0.07, 1, 0}, "1", theme::kV},
-          {{-0.07, -0.07, 1}, "1", theme::kN},           {{0.5, 1.08, 1}, "front z = 1", theme::kFrustum},
-          {{0.5, 1.08, 0}, "back z = 0", theme::kFrustum}};
+  const bool de = lang == Language::de;
+  return {{{len + 0.07, 0, 0}, "x", pal.u},          {{0, len + 0.07, 0}, "y", pal.v},
+          {{0, 0, len + 0.07}, "z", pal.n},          {{-0.06, -0.06, -0.06}, "0", pal.text},
+          {{1, -0.07, 0}, "1", pal.u},               {{-0.07, 1, 0}, "1", pal.v},
+          {{-0.07, -0.07, 1}, "1", pal.n},           {{0.5, 1.08, 1}, de ? "vorne z = 1" : "front z = 1", pal.frustum},
+          {{0.5, 1.08, 0}, de ? "hinten z = 0" : "back z = 0", pal.frustum}};
 }
 
 }  // namespace vplab::geometry

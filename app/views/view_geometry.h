@@ -3,6 +3,8 @@
 #pragma once
 
 #include "app/views/labels.h"
+#include "app/views/theme.h"
+#include "pipeline/language.h"
 #include "pipeline/pipeline.h"
 
 #include <glm/glm.hpp>
@@ -47,6 +49,16 @@ struct AnchoredLabel {
 };
 /// The NPC cube's axis length and its labels (axes, 0 and 1 ticks, the front and back faces).
 inline constexpr double kNpcAxisLength = 1.18;
-std::vector<AnchoredLabel> npcCubeLabels();
+std::vector<AnchoredLabel> npcCubeLabels(const theme::Palette& pal, Language lang);
+
+/// A named point in WC with its object's colour.
+struct NamedPoint {
+  Vec3 at;
+  std::string name;
+  glm::vec4 color;
+};
+/// The vertices of the scene's visible polygon objects in WC, named P1 … Pn in their order (one
+/// polygon: P1 …; several: each object's name first, "quad.P1").
+std::vector<NamedPoint> polygonVertexNames(const Scene& scene);
 
 }  // namespace vplab::geometry

@@ -1,4 +1,4 @@
-// The names of the views and styles (the command line's --view and --style, the scene files).
+// The names of the views, styles and themes (the command line's --view, --style and --theme, the scene files).
 #include "app/views/views.h"
 
 namespace vplab {
@@ -36,6 +36,14 @@ std::string_view toString(Style s) {
 std::optional<Style> styleFromString(std::string_view s) {
   for (Style st : kAllStyles)
     if (toString(st) == s) return st;
+  return std::nullopt;
+}
+
+std::string_view toString(Theme t) { return t == Theme::light ? "light" : "dark"; }
+
+std::optional<Theme> themeFromString(std::string_view s) {
+  for (Theme t : {Theme::dark, Theme::light})
+    if (toString(t) == s) return t;
   return std::nullopt;
 }
 

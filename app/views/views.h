@@ -15,6 +15,8 @@
 #include "app/views/display_list.h"
 #include "app/views/labels.h"
 #include "app/views/observer.h"
+#include "app/views/theme.h"
+#include "pipeline/language.h"
 #include "pipeline/pipeline.h"
 
 #include <array>
@@ -42,6 +44,7 @@ enum class Style { flat, shaded, wire, hiddenLine, hiddenRemoved };
 inline constexpr std::array kAllStyles = {Style::flat, Style::shaded, Style::wire, Style::hiddenLine, Style::hiddenRemoved};
 std::string_view toString(Style s);
 std::optional<Style> styleFromString(std::string_view s);
+std::optional<Theme> themeFromString(std::string_view s);  // "dark" or "light"
 inline bool isFilled(Style s) { return s == Style::flat || s == Style::shaded; }
 
 struct OverlaySettings {
@@ -55,6 +58,7 @@ struct OverlaySettings {
   bool cpuPolygons = false;  // camera: the CPU clipper's DC polygons over the GPU image
   bool difference = false;   // camera: where the GPU image and the CPU raster differ
   bool vanishingPoints = false;  // camera: the selected object's vanishing points and lines (lecture notes 14.2)
+  bool vertexNames = false;      // world and NPC: the polygons' vertices named P1 … Pn (as the exercise sheets do)
   bool operator==(const OverlaySettings&) const = default;
 };
 
@@ -107,6 +111,8 @@ struct DisplaySettings {
   ViewSettings morph{Style::shaded, {}};
   MorphSettings morphing;
   OverlaySettings overlays;
+  Theme theme = Theme::dark;            // app/views/theme.h: the screen's, or light for print and bright halls
+  Language language = Language::en;     // of the labels in the views (the viewer's, a sheet's)
   // Equal settings (and highlights) draw equal views (the viewer reuses a view's last image,
   // app/render/view_images.h).
   bool operator==(const DisplaySettings&) const = default;

@@ -14,6 +14,7 @@ namespace {
 using namespace draw;
 
 void addArrow(Marks& b, const Vec3& from, const Vec3& to, const Vec3& eye, const glm::vec4& color, float dash = 0.f) {
+  // The arrows are the camera's axes: solid, but for VUP's dashes, in every theme.
   b.line(from, to, color, theme::kLineWidth + 0.5f, dash);
   const Vec3 dir = to - from;
   const double len = glm::length(dir);
@@ -43,7 +44,7 @@ void addFilledObjects(const ViewInput& in, DisplayList& list) {
     return;
   }
   Fill outside = inside;
-  outside.alpha = theme::kFadedAlpha;
+  outside.alpha = theme::palette(in.settings.theme).fadedAlpha;
   outside.volume.keep = VolumeTest::Keep::outside;
   outside.clipPlanes.clear();  // the faded rest, outside the volume, is not cut by the user planes
   list.add(std::move(inside));
@@ -62,20 +63,21 @@ void addEdges(const ViewInput& in, float scale, DisplayList& list) {
     occluder.depthOnly = true;
     list.add(std::move(occluder));
   }
+  const theme::Palette& pal = theme::palette(in.settings.theme);
   Marks solid, dashed, faded;
   for (const ObjectRun& o : in.run.objects) {
-    const glm::vec4 c(glm::vec3(o.color), 1.f);
+    const glm::vec4 c = theme::ink(pal, glm::vec4(glm::vec3(o.color), 1.f));
     for (size_t i = 0; i < o.edges.size() && i < o.edgeRanges.size(); ++i) {
       const Vec3 a = o.wc(o.edges[i].a), b = o.wc(o.edges[i].b);
       if (in.settings.overlays.fadeOutside)
-        faded.line(a, b, glm::vec4(glm::vec3(c), theme::kFadedAlpha), theme::kEdgeWidth);
+        faded.line(a, b, glm::vec4(glm::vec3(c), pal.fadedAlpha), pal.edgeWidthPx);
       const EdgeRange& r = o.edgeRanges[i];
       if (!r.visible) continue;
       // Boundary coordinates are linear along the WC segment, so t carries over from NPC.
       const Vec3 p0 = a + r.t0 * (b - a), p1 = a + r.t1 * (b - a);
-      solid.line(p0, p1, c, theme::kEdgeWidth);
+      solid.line(p0, p1, c, pal.edgeWidthPx);
       if (style == Style::hiddenLine)
-        dashed.line(p0, p1, glm::vec4(glm::vec3(c), 0.8f), theme::kEdgeWidth, theme::kDashPx);
+        dashed.line(p0, p1, glm::vec4(glm::vec3(c), 0.8f), pal.edgeWidthPx, theme::kDashPx);
     }
   }
   const Depth depth = hidden ? Depth::test : Depth::ignore;
@@ -92,11 +94,13 @@ DisplayList worldView(const ViewInput& in) {
   const OverlaySettings& ov = in.settings.overlays;
   const int w = in.width, h = in.height;
   const float scale = in.text.scale();
+  const theme::Palette& pal = theme::palette(in.settings.theme);
+  const bool de = in.settings.language == Language::de;
 
   DisplayList list;
   list.width = w;
   list.height = h;
-  list.background = theme::kViewBackground;
+  list.background = pal.viewBackground;
   const ViewCamera view = viewCameraOf(observerCamera(in.settings.world.orbit, double(w) / h));
   list.observer = {Space::wc, view};
   list.antialiased = true;
@@ -123,7 +127,7 @@ DisplayList worldView(const ViewInput& in) {
         for (size_t i = 0; i < face.size(); ++i)
           if (o.isNewEdge(fi, i))
             b.line(geometry::wcOfNpc(wcFromNpc, o.clippedNpc(face[i])),
-                   geometry::wcOfNpc(wcFromNpc, o.clippedNpc(face[(i + 1) % face.size()])), theme::kNewEdge,
+                   geometry::wcOfNpc(wcFromNpc, o.clippedNpc(face[(i + 1) % face.size()])), pal.newEdge,
                    theme::kLineWidth + 0.5f);
       }
   }
@@ -131,17 +135,18 @@ DisplayList worldView(const ViewInput& in) {
     const auto c = geometry::viewVolumeCorners(wcFromNpc);
     // Corner i has x = bit 0, y = bit 1, z = bit 2 (z = 1 front, 0 back).
     const int front[4] = {4, 5, 7, 6}, back[4] = {0, 1, 3, 2};
-    b.quad(c[4], c[5], c[7], c[6], theme::kFrontPlane);
-    b.quad(c[0], c[1], c[3], c[2], theme::kBackPlane);
+    b.quad(c[4], c[5], c[7], c[6], pal.frontPlane);
+    b.quad(c[0], c[1], c[3], c[2], pal.backPlane);
     for (int i = 0; i < 4; ++i) {
-      b.line(c[front[i]], c[front[(i + 1) % 4]], theme::kFrustum, theme::kLineWidth);
-      b.line(c[back[i]], c[back[(i + 1) % 4]], theme::kFrustum, theme::kLineWidth);
-      b.line(c[front[i]], c[back[i]], theme::kFrustum, theme::kLineWidth);
-      if (run.camera.projection == Projection::perspective)
-        b.line(run.camera.prp, c[front[i]], glm::vec4(glm::vec3(theme::kFrustum), 0.6f), 1.5f, theme::kDashPx);
+      b.line(c[front[i]], c[front[(i + 1) % 4]], pal.frustum, pal.frustumWidthPx);
+      b.line(c[back[i]], c[back[(i + 1) % 4]], pal.frustum, pal.frustumWidthPx);
+      b.line(c[front[i]], c[back[i]], pal.frustum, pal.frustumWidthPx);
+      if (run.camera.projection == Projection::perspective)  // the projectors from PRP
+        b.line(run.camera.prp, c[front[i]], glm::vec4(glm::vec3(pal.frustum), 0.6f), 1.5f, pal.projectorDashPx);
     }
-    label(c[7], "front F", theme::kFrustum, {6, -10});
-    label(c[3], "back B", theme::kFrustum, {6, -10});
+    // The lecture's names: vordere/hintere Clippingebene (front and back plane).
+    label(c[7], de ? "vordere Ebene F" : "front F", pal.frustum, {6, -10});
+    label(c[3], de ? "hintere Ebene B" : "back B", pal.frustum, {6, -10});
   }
   // User clip planes (DGL wiki): a translucent square on each, around its point, with its normal.
   const double planeSize = geometry::clipPlaneSquareSize(run.camera);
@@ -149,10 +154,10 @@ DisplayList worldView(const ViewInput& in) {
     if (!p.enabled) continue;
     const Vec3 n = glm::normalize(p.normal);
     const auto q = geometry::clipPlaneSquare(p, planeSize);
-    b.quad(q[0], q[1], q[2], q[3], theme::kClipPlane);
-    b.polyline(q, true, glm::vec4(glm::vec3(theme::kClipPlane), 0.8f), 1.5f);
-    addArrow(b, p.point, p.point + n * (0.3 * planeSize), view.camera.prp, glm::vec4(glm::vec3(theme::kClipPlane), 1.f));
-    label(p.point + n * (0.3 * planeSize), "clip plane", glm::vec4(glm::vec3(theme::kClipPlane), 1.f));
+    b.quad(q[0], q[1], q[2], q[3], pal.clipPlane);
+    b.polyline(q, true, glm::vec4(glm::vec3(pal.clipPlane), 0.8f), 1.5f);
+    addArrow(b, p.point, p.point + n * (0.3 * planeSize), view.camera.prp, glm::vec4(glm::vec3(pal.clipPlane), 1.f));
+    label(p.point + n * (0.3 * planeSize), de ? "Clipebene" : "clip plane", glm::vec4(glm::vec3(pal.clipPlane), 1.f));
   }
   if (ov.viewPlane) {
     const ViewWindow& win = run.camera.window;
@@ -160,49 +165,56 @@ DisplayList worldView(const ViewInput& in) {
                                       transformAffine(wcFromVrc, {win.xmax, win.ymin, 0}),
                                       transformAffine(wcFromVrc, {win.xmax, win.ymax, 0}),
                                       transformAffine(wcFromVrc, {win.xmin, win.ymax, 0})};
-    b.quad(corners[0], corners[1], corners[2], corners[3], theme::kWindowFill);
-    b.polyline(corners, true, theme::kWindow, theme::kLineWidth);
-    label(corners[3], "window", theme::kWindow, {6, -10});
+    b.quad(corners[0], corners[1], corners[2], corners[3], pal.windowFill);
+    b.polyline(corners, true, pal.window, pal.windowWidthPx, pal.windowDashPx);
+    label(corners[3], de ? "Fenster" : "window", pal.window, {6, -10});
   }
   if (ov.cameraAxes) {
     const Camera& cam = run.camera;
     const double len = 0.3 * std::max(cam.window.width(), cam.window.height());
-    addArrow(b, cam.vrp, cam.vrp + len * run.vrc.u, view.camera.prp, theme::kU);
-    addArrow(b, cam.vrp, cam.vrp + len * run.vrc.v, view.camera.prp, theme::kV);
-    addArrow(b, cam.vrp, cam.vrp + len * run.vrc.n, view.camera.prp, theme::kN);
-    addArrow(b, cam.vrp, cam.vrp + len * glm::normalize(cam.vup), view.camera.prp, theme::kVup, theme::kDashPx);
-    b.point(cam.vrp, theme::kVrp, theme::kPointSize);
-    b.point(cam.prp, theme::kPrp, theme::kPointSize);
+    addArrow(b, cam.vrp, cam.vrp + len * run.vrc.u, view.camera.prp, pal.u);
+    addArrow(b, cam.vrp, cam.vrp + len * run.vrc.v, view.camera.prp, pal.v);
+    addArrow(b, cam.vrp, cam.vrp + len * run.vrc.n, view.camera.prp, pal.n);
+    addArrow(b, cam.vrp, cam.vrp + len * glm::normalize(cam.vup), view.camera.prp, pal.vup, theme::kDashPx);
+    b.point(cam.vrp, pal.vrp, theme::kPointSize);
+    b.point(cam.prp, pal.prp, theme::kPointSize);
     if (cam.projection == Projection::perspective)
-      b.line(cam.vrp, cam.prp, glm::vec4(glm::vec3(theme::kN), 0.5f), 1.5f, theme::kDashPx);
-    label(cam.vrp + len * run.vrc.u, "U", theme::kU);
-    label(cam.vrp + len * run.vrc.v, "V", theme::kV);
-    label(cam.vrp + len * run.vrc.n, "N", theme::kN);
-    label(cam.vrp + len * glm::normalize(cam.vup), "VUP", theme::kVup);
-    label(cam.vrp, "VRP", theme::kVrp, {8, 12});
-    label(cam.prp, "PRP", theme::kPrp);
+      b.line(cam.vrp, cam.prp, glm::vec4(glm::vec3(pal.n), 0.5f), 1.5f, theme::kDashPx);
+    label(cam.vrp + len * run.vrc.u, "U", pal.u);
+    label(cam.vrp + len * run.vrc.v, "V", pal.v);
+    label(cam.vrp + len * run.vrc.n, "N", pal.n);
+    label(cam.vrp + len * glm::normalize(cam.vup), "VUP", pal.vup);
+    label(cam.vrp, "VRP", pal.vrp, {8, 12});
+    label(cam.prp, "PRP", pal.prp);
+  }
+  if (ov.vertexNames) {
+    // The polygons' vertices as the exercise sheets name them: P1 … Pn in the given order.
+    for (const geometry::NamedPoint& v : geometry::polygonVertexNames(scene)) {
+      b.point(v.at, theme::ink(pal, v.color), theme::kPointSize * 0.7f);
+      label(v.at, v.name, theme::ink(pal, v.color), {7, -9});
+    }
   }
   const Highlights& hl = in.highlights;
   for (const Highlights::HandleMark& m : hl.handles) {
-    b.point(m.wc, m.hot ? theme::kHandleHot : theme::kHandle, m.hot ? 15.f : 9.f);
-    if (m.hot) label(m.wc, m.name, theme::kHandleHot, {10, -12});
+    b.point(m.wc, m.hot ? pal.handleHot : pal.handle, m.hot ? 15.f : 9.f);
+    if (m.hot) label(m.wc, m.name, pal.handleHot, {10, -12});
   }
-  if (hl.probeWc) b.point(*hl.probeWc, theme::kProbe, 14.f);
+  if (hl.probeWc) b.point(*hl.probeWc, pal.probe, 14.f);
   if (const auto& step = hl.step) {
     // The clipping step-through in WC: the frustum's face of the plane being applied, the polygon.
     if (step->plane >= 0 && step->plane < kPlaneCount) {
       const auto c = geometry::viewVolumeCorners(wcFromNpc);
       const auto ring = geometry::cubeFaceRing(step->plane);
-      b.quad(c[size_t(ring[0])], c[size_t(ring[1])], c[size_t(ring[2])], c[size_t(ring[3])], theme::kStepPlane);
+      b.quad(c[size_t(ring[0])], c[size_t(ring[1])], c[size_t(ring[2])], c[size_t(ring[3])], pal.stepPlane);
     }
     std::vector<Vec3> poly;
     for (const Vec3& p : step->polygonNpc) poly.push_back(geometry::wcOfNpc(wcFromNpc, p));
-    b.polyline(poly, true, theme::kProbe, theme::kLineWidth + 1.f);
+    b.polyline(poly, true, pal.probe, theme::kLineWidth + 1.f);
     for (size_t i = 0; i < poly.size(); ++i)
-      b.point(poly[i], step->created[i] ? theme::kNewEdge : theme::kProbe, step->created[i] ? 13.f : 9.f);
+      b.point(poly[i], step->created[i] ? pal.newEdge : pal.probe, step->created[i] ? 13.f : 9.f);
   }
   b.emit(list, Space::wc, Depth::xray, scale);
-  if (!labels.empty()) list.add(Text{placeLabels(labels, in.text, w, h)});
+  if (!labels.empty()) list.add(Text{placeLabels(labels, in.text, w, h), pal.labelOutline});
   return list;
 }
 

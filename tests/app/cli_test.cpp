@@ -146,6 +146,33 @@ void expectFailure(const ProcessResult& r, const std::vector<std::string>& menti
   EXPECT_THAT(r.err, Not(HasSubstr("terminate called"))) << what;
 }
 
+// The share of a picture's pixels darker than a grey of 64 (ITU-R BT.601 luma): a printout's black.
+double darkShare(const Image& image) {
+  size_t dark = 0;
+  for (const Rgba& p : image.pixels) dark += 0.299 * p.r + 0.587 * p.g + 0.114 * p.b < 64;
+  return double(dark) / double(image.pixels.size());
+}
+
+// --theme light (issue 21): the world and NPC views on white for print and a bright hall (the dark
+// theme's pictures are more than 90 % black), the whole window with ImGui's light colours; a theme
+// it does not know is a usage error.
+TEST_F(Cli, RenderInTheLightTheme) {
+  for (const char* view : {"world", "npc"}) {
+    SCOPED_TRACE(view);
+    ASSERT_EQ(vplab(std::string("render --view ") + view + " --style hidden-line --size 480x360 --out dark.png").exitCode, 0);
+    const ProcessResult r = vplab(std::string("render --view ") + view + " --style hidden-line --size 480x360 --theme light --out light.png");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_GT(darkShare(readPng(dir_ / "dark.png")), 0.9);
+    EXPECT_LT(darkShare(readPng(dir_ / "light.png")), 0.05);
+  }
+  ASSERT_EQ(vplab("render --view ui --size 800x450 --theme light --out ui.png").exitCode, 0);
+  EXPECT_LT(darkShare(readPng(dir_ / "ui.png")), 0.5) << "the panels light too";
+  const ProcessResult bad = vplab("render --theme sepia --out x.png");
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_THAT(bad.err, HasSubstr("--theme"));
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
 TEST_F(Cli, RenderErrorsAreClearAndFail) {
   writeFile(dir_ / "malformed.json", "{ \"camera\": { \"vrp\": [0, 0, 0],\n  \"prp\": [0, 0 }\n");
   writeFile(dir_ / "eye-on-vrp.json", defaultSceneWith([](nlohmann::json& j) { j["camera"]["prp"] = j["camera"]["vrp"]; }));

@@ -52,7 +52,7 @@ TEST(CameraView, HiddenLineFillsTheDepthFirstThenVisibleEdgesThenHiddenOnesDashe
   const Lines& visible = std::get<Lines>(list.batches[1]);
   EXPECT_EQ(visible.depth, Depth::test);
   EXPECT_EQ(visible.dashPx, 0.f);
-  EXPECT_FLOAT_EQ(visible.widthPx, theme::kEdgeWidth);
+  EXPECT_FLOAT_EQ(visible.widthPx, theme::kDark.edgeWidthPx);
   ASSERT_EQ(visible.meshEdges.size(), f.scene.objects.size());
   EXPECT_EQ(visible.meshEdges[0].color, glm::vec4(glm::vec3(f.scene.objects[0].color), 1.f));
   const Lines& hidden = std::get<Lines>(list.batches[2]);

@@ -34,7 +34,7 @@ TEST(NpcView, FilledPolygonsAreTheClippersThenTheFadedRest) {
   ASSERT_EQ(inside.lights.size(), 1u);  // one white light by the observer's eye
   EXPECT_EQ(inside.lights[0].position, Vec3(list.observer.camera.eyeWc) + Vec3(0.6, 1.2, 0.4));
   EXPECT_FLOAT_EQ(inside.ambient, 0.3f);
-  EXPECT_FLOAT_EQ(faded.alpha, theme::kFadedAlpha);
+  EXPECT_FLOAT_EQ(faded.alpha, theme::kDark.fadedAlpha);
   // The cube's front face is pushed back, behind the cut faces lying in z = 1.
   const auto triangles = test::batchesOf<Triangles>(list);
   ASSERT_FALSE(triangles.empty());

@@ -25,7 +25,7 @@ TEST(Picture, AllIsATitleStripOverThreePanelsSixPixelsApart) {
   const DisplayList& strip = p.panels[0].list;
   EXPECT_EQ(strip.width, p.width);
   EXPECT_EQ(strip.height, title);
-  EXPECT_EQ(strip.background, theme::kViewBackground * 0.7f);
+  EXPECT_EQ(strip.background, theme::kDark.stripBackground);
   EXPECT_EQ(p.panels[1].list.observer.space, Space::wc);
   EXPECT_FALSE(p.panels[1].list.antialiased);  // the camera view
   EXPECT_TRUE(p.panels[2].list.antialiased);   // the world view

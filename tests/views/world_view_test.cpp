@@ -37,9 +37,9 @@ TEST(WorldView, FrustumLinesJoinTheViewVolumesCorners) {
     for (const Lines* l : test::batchesOf<Lines>(list))
       for (size_t i = 0; i < l->segments.size(); i += 2) {
         const Vertex &a = l->segments[i], &b = l->segments[i + 1];
-        if (glm::vec3(a.color) != glm::vec3(theme::kFrustum)) continue;
+        if (glm::vec3(a.color) != glm::vec3(theme::kDark.frustum)) continue;
         EXPECT_EQ(l->depth, Depth::xray);
-        if (a.color.a == theme::kFrustum.a) {
+        if (a.color.a == theme::kDark.frustum.a) {
           const int ca = cubeCornerOf(f.run, a.position), cb = cubeCornerOf(f.run, b.position);
           ASSERT_GE(ca, 0) << name;
           ASSERT_GE(cb, 0) << name;
@@ -70,7 +70,7 @@ TEST(WorldView, FilledObjectsInsideSolidOutsideFadedWithTheirRuns) {
   EXPECT_EQ(inside.alpha, 1.f);
   EXPECT_EQ(inside.clipPlanes.size(), 2u);
   EXPECT_EQ(outside.volume.keep, VolumeTest::Keep::outside);
-  EXPECT_FLOAT_EQ(outside.alpha, theme::kFadedAlpha);
+  EXPECT_FLOAT_EQ(outside.alpha, theme::kDark.fadedAlpha);
   EXPECT_TRUE(outside.clipPlanes.empty());
   ASSERT_EQ(inside.meshes.size(), f.run.objects.size());
   for (size_t k = 0; k < inside.meshes.size(); ++k) {
@@ -101,7 +101,7 @@ TEST(WorldView, HiddenLineEdgesFromTheCpuClipperAfterTheOccluder) {
   }
   EXPECT_EQ(faded.segments.size(), 2 * edges);
   EXPECT_EQ(faded.depth, Depth::test);
-  EXPECT_FLOAT_EQ(faded.segments[0].color.a, theme::kFadedAlpha);
+  EXPECT_FLOAT_EQ(faded.segments[0].color.a, theme::kDark.fadedAlpha);
   EXPECT_EQ(solid.segments.size(), 2 * visible);
   EXPECT_EQ(solid.depth, Depth::test);
   EXPECT_EQ(dashed.segments.size(), 2 * visible);

@@ -1,4 +1,5 @@
-// The languages of the course kit's sheets and feedback: English and the lecture's German.
+// The languages vplab speaks: English and the lecture's German (the course kit's sheets and feedback,
+// the labels in the views). A plain value every layer may use.
 #pragma once
 
 #include <string_view>
