@@ -12,11 +12,28 @@
 
 namespace vplab {
 
-/// The sheet's items: for orientation wcFromMc, P1 in WC, N, U, V, VPD, vrcFromWc and P1 in VRC; for
-/// mapping npcFromVrc, P1 in homogeneous NPC, its boundary coordinates and outcode, and where P1 is
-/// inside its NPC and DC; for clipping the six Sutherland–Hodgman passes, dcFromNpc and the clipped
-/// polygon in DC; the pipeline topic all of them. Matrices and the clipped polygon are worth 2
-/// points, everything else 1. The scene is "scene.json" (written beside it).
+/// Whether a sheet of `topic` has the tasks of `part`: each topic its own; the pipeline topic
+/// orientation and mapping (P1 through every stage, its clipping test and DC), not the polygon's
+/// clipping, which is a sheet of its own (a weekly sheet's size).
+bool exerciseShows(ExerciseTopic topic, ExerciseTopic part);
+
+/// One numbered task of a sheet: its text (LaTeX math in $…$) and the items it asks for.
+struct ExerciseTask {
+  std::string text;
+  std::vector<AssignmentItem> items;
+};
+/// A task's points: the sum of its items'.
+double points(const ExerciseTask& task);
+
+/// The sheet's tasks, in order: for orientation wcFromMc and P1 in WC; N, U, V, VPD, vrcFromWc and
+/// P1 in VRC; for mapping npcFromVrc and P1 in homogeneous NPC; P1's boundary coordinates and outcode
+/// and where P1 is inside its NPC and DC; for clipping the six Sutherland–Hodgman passes; dcFromNpc
+/// and the clipped polygon in DC. Matrices and the clipped polygon are worth 2 points, everything
+/// else 1.
+std::vector<ExerciseTask> exerciseTasks(const Exercise& exercise, const ExerciseSolution& solution, Language lang);
+
+/// The sheet's items as an assignment (course/assignment.h): every task's, in order. The scene is
+/// "scene.json" (written beside it).
 Assignment exerciseAssignment(const Exercise& exercise, const ExerciseSolution& solution, Language lang);
 
 /// The template of an answer to `assignment`: each item's place in `referenceAnswer` with its

@@ -19,13 +19,15 @@ mkdir -p "$out"
   --out "$out/depth-nonlinearity.png"
 "$vplab" render --scene "$root/assets/scenes/clip-planes.json" --view all --style shaded --size 480x360 \
   --out "$out/clip-planes.png"
+"$vplab" render --view all --style hidden-line --size 480x360 --theme light --out "$out/all-light.png"
 "$vplab" render --view camera --style hidden-line --out "$out/camera-hidden-line.svg"
 for t in 0 1 2 2.5 3 4; do
   "$vplab" render --view morph --morph-t "$t" --size 320x240 --out "$out/morph-$t.png"
 done
-# For course staff: the first pages of an exercise sheet and its solution (pdflatex, pdftoppm).
+# For course staff: the first page of a German clipping sheet as it prints, and the first page of its
+# solution (pdflatex, pdftoppm).
 tmp="$(mktemp -d)"
-"$vplab" exercise --seed 3 --topic pipeline --out "$tmp/ex"
+"$vplab" exercise --seed 3 --topic clipping --lang de --out "$tmp/ex"
 for doc in sheet solution; do
   (cd "$tmp/ex" && pdflatex -interaction=nonstopmode -halt-on-error "$doc.tex" >/dev/null)
   pdftoppm -r 70 -png -f 1 -l 1 -singlefile "$tmp/ex/$doc.pdf" "$out/course-$doc"

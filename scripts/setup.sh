@@ -16,8 +16,9 @@ packages=(
   xvfb xauth x11-utils xdotool fonts-dejavu-core
   clang libfuzzer-14-dev libclang-rt-14-dev time  # sanitizer and fuzz stages of test.sh; time -v
 )
-# vplab exercise: the .tex sheets are compiled by the tests (pdflatex) and turned into pictures (pdftoppm)
-packages+=(texlive-latex-base texlive-latex-recommended poppler-utils)
+# vplab exercise: the .tex sheets are compiled by the tests (pdflatex; German with babel ngerman, T1 with
+# Latin Modern) and turned into pictures (pdftoppm)
+packages+=(texlive-latex-base texlive-latex-recommended texlive-lang-german lmodern poppler-utils)
 # the SVG backend's tests rasterise its documents with rsvg-convert
 packages+=(librsvg2-bin)
 

@@ -10,6 +10,7 @@
 #include "course/rational.h"
 #include "io/scene_io.h"
 
+#include <cstdio>
 #include <fstream>
 
 namespace vplab {
@@ -19,9 +20,9 @@ namespace {
 // ---- A small document model, written out as Markdown or as LaTeX ------------------------------
 
 struct Block {
-  enum Kind { title, heading, paragraph, math, figure, items } kind;
+  enum Kind { title, heading, paragraph, math, figure, items, numbered } kind;
   std::string text;                 // math: LaTeX; figure: the file's stem; others: text with $…$ math
-  std::vector<std::string> list{};  // items
+  std::vector<std::string> list{};  // items, numbered
 };
 using Document = std::vector<Block>;
 
@@ -38,33 +39,54 @@ std::string markdown(const Document& doc) {
         for (const std::string& item : b.list) out += "- " + item + "\n";
         out += "\n";
         break;
+      case Block::numbered:
+        for (size_t i = 0; i < b.list.size(); ++i) out += std::to_string(i + 1) + ". " + b.list[i] + "\n";
+        out += "\n";
+        break;
     }
   }
   return out;
 }
 
-std::string latex(const Document& doc) {
+std::string latex(const Document& doc, Language lang) {
+  // babel sets the hyphenation and the words LaTeX writes itself in the sheet's language; T1 with Latin
+  // Modern hyphenates words with umlauts and needs no bitmap fonts made on the fly.
   std::string out =
       "\\documentclass[a4paper,11pt]{article}\n"
       "\\usepackage[utf8]{inputenc}\n"
+      "\\usepackage[T1]{fontenc}\n"
+      "\\usepackage{lmodern}\n"
+      "\\usepackage[" + std::string(lang == Language::de ? "ngerman" : "english") + "]{babel}\n"
       "\\usepackage{amsmath,amssymb,graphicx}\n"
       "\\usepackage[margin=2cm]{geometry}\n"
       "\\setlength{\\parindent}{0pt}\\setlength{\\parskip}{0.6em}\n"
+      // Lines of long formulas may end short rather than run into the margin.
+      "\\setlength{\\emergencystretch}{3em}\n"
       "\\begin{document}\n";
   for (const Block& b : doc) {
     switch (b.kind) {
       case Block::title: out += "\\section*{" + b.text + "}\n\n"; break;
       case Block::heading: out += "\\subsection*{" + b.text + "}\n\n"; break;
-      case Block::paragraph: out += b.text + "\n\n"; break;
+      case Block::paragraph:
+        // A list of formulas (inlineList) has few places to break: ragged, it never runs into the margin.
+        if (b.text.find("$, $") != std::string::npos) out += "{\\raggedright " + b.text + "\\par}\n\n";
+        else out += b.text + "\n\n";
+        break;
       case Block::math: out += "\\[\n" + b.text + "\n\\]\n\n"; break;
       case Block::figure:
-        out += "\\begin{center}\n\\includegraphics[width=0.62\\textwidth]{" + b.text + ".png}\\\\\n" + b.list.at(0) +
-               "\n\\end{center}\n\n";
+        // A minipage cannot be split: the figure and its caption stay on one page.
+        out += "\\begin{center}\n\\begin{minipage}{0.7\\textwidth}\\centering\n\\includegraphics[width=\\linewidth]{" +
+               b.text + ".png}\\\\[0.3em]\n" + b.list.at(0) + "\n\\end{minipage}\n\\end{center}\n\n";
         break;
       case Block::items:
         out += "\\begin{itemize}\n";
         for (const std::string& item : b.list) out += "\\item " + item + "\n";
         out += "\\end{itemize}\n\n";
+        break;
+      case Block::numbered:
+        out += "\\begin{enumerate}\n";
+        for (const std::string& item : b.list) out += "\\item " + item + "\n";
+        out += "\\end{enumerate}\n\n";
         break;
     }
   }
@@ -83,6 +105,19 @@ std::string vec(std::initializer_list<double> xs) {
 std::string vec(const Vec3& v) { return vec({v.x, v.y, v.z}); }
 std::string vec(const Vec4& v) { return vec({v.x, v.y, v.z, v.w}); }
 
+double numberWidth(const std::string& latexNum);  // below, with the other widths
+
+/// The printed width of a matrix's entries in characters (column by column, the widest entry).
+double matrixWidth(const Mat4& m) {
+  double w = 0;
+  for (int c = 0; c < 4; ++c) {
+    double widest = 0;
+    for (const auto& r : rowsOf(m)) widest = std::max(widest, numberWidth(num(r[size_t(c)])));
+    w += widest + 2;
+  }
+  return w;
+}
+
 std::string mat(const Mat4& m) {
   std::string s = "\\begin{pmatrix}";
   for (const auto& r : rowsOf(m)) {
@@ -90,6 +125,74 @@ std::string mat(const Mat4& m) {
     s += " \\\\";
   }
   return s + " \\end{pmatrix}";
+}
+
+// ---- Keeping lines on the page -------------------------------------------------------------------
+// TeX breaks a paragraph between formulas, never inside a displayed one nor at a comma inside an
+// inline one: lists are written one formula per item, and displays whose estimated width would
+// leave the text block are split.
+
+/// The printed width of a LaTeX number in characters: a fraction is as wide as its longer part.
+double numberWidth(const std::string& latexNum) {
+  const size_t frac = latexNum.find("\\frac{");
+  if (frac == std::string::npos) return double(latexNum.size());
+  const size_t mid = latexNum.find("}{", frac), end = latexNum.rfind('}');
+  const double a = double(mid - frac - 6), b = double(end - mid - 2);
+  return double(frac) + std::max(a, b) * 0.8;  // the parts are set smaller
+}
+
+/// A rough width of a formula in characters: commands count as one, braces and scripts' markers as
+/// none, a fraction as its wider part.
+double mathWidth(std::string_view m) {
+  double w = 0;
+  for (size_t i = 0; i < m.size(); ++i) {
+    const char ch = m[i];
+    if (ch == '\\') {
+      size_t j = i + 1;
+      while (j < m.size() && std::isalpha(static_cast<unsigned char>(m[j]))) ++j;
+      const std::string_view name = m.substr(i + 1, j - i - 1);
+      if (name == "frac") {  // \frac{a}{b}
+        const size_t mid = m.find("}{", j), end = mid == std::string_view::npos ? mid : m.find('}', mid + 2);
+        if (end != std::string_view::npos) {
+          w += std::max(mathWidth(m.substr(j + 1, mid - j - 1)), mathWidth(m.substr(mid + 2, end - mid - 2))) * 0.8;
+          i = end;
+          continue;
+        }
+      }
+      w += name == "quad" ? 2 : name.empty() ? 0.5 : name.size() > 6 ? double(name.size()) * 0.7 : 1;  // \mathit{…}: its text counts
+      i = name.empty() ? i + 1 : j - 1;
+    } else if (ch != '{' && ch != '}' && ch != '^' && ch != '_' && ch != '&') {
+      w += 1;
+    }
+  }
+  return w;
+}
+
+/// What fits on one displayed line of an A4 page with 2 cm margins at 11 pt, in mathWidth's characters.
+constexpr double kDisplayWidth = 62;
+
+/// Formulas joined by \quad on display lines, a new line where the next would not fit.
+std::vector<std::string> displayLines(const std::vector<std::string>& parts) {
+  std::vector<std::string> lines;
+  double width = 0;
+  for (const std::string& part : parts) {
+    const double w = mathWidth(part);
+    if (!lines.empty() && width + 3 + w <= kDisplayWidth) {
+      lines.back() += ",\\quad " + part;
+      width += 3 + w;
+    } else {
+      lines.push_back(part);
+      width = w;
+    }
+  }
+  return lines;
+}
+
+/// Formulas in running text, one per item, so that a line may break between them.
+std::string inlineList(const std::vector<std::string>& items, const std::string& separator = ", ") {
+  std::string out;
+  for (size_t i = 0; i < items.size(); ++i) out += (i ? separator : "") + "$" + items[i] + "$";
+  return out;
 }
 
 // ---- The texts, in English and German ----------------------------------------------------------
@@ -107,7 +210,12 @@ struct Writer {
   mutable int sections_ = 0;
   std::string section() const { return std::to_string(++sections_) + ". "; }
 
-  bool shows(ExerciseTopic t) const { return e.spec.topic == ExerciseTopic::pipeline || e.spec.topic == t; }
+  /// Formulas on as many displayed lines as the page's width needs.
+  static void displays(Document& d, const std::vector<std::string>& parts) {
+    for (std::string& line : displayLines(parts)) d.push_back({Block::math, std::move(line)});
+  }
+
+  bool shows(ExerciseTopic t) const { return exerciseShows(e.spec.topic, t); }
 
   std::string topicName() const {
     switch (e.spec.topic) {
@@ -129,7 +237,13 @@ struct Writer {
 
   // Two matrices: the column form p' = M·p (the dump's) and the lecture notes' row form p' = p·M^T.
   void matrixPair(Document& d, const std::string& name, const Mat4& m) const {
-    d.push_back({Block::math, name + " = " + mat(m) + "\\qquad " + name + "^{T} = " + mat(glm::transpose(m))});
+    const std::string column = name + " = " + mat(m), row = name + "^{T} = " + mat(glm::transpose(m));
+    if (matrixWidth(m) * 2 + 16 <= kDisplayWidth) {
+      d.push_back({Block::math, column + "\\qquad " + row});
+    } else {  // side by side they would leave the page
+      d.push_back({Block::math, column});
+      d.push_back({Block::math, row});
+    }
     d.push_back({Block::paragraph,
                  L("Left the column-vector form ($p' = M \\cdot p$, as answers give it); right the "
                    "lecture notes' row-vector form ($p' = p \\cdot M^T$), its transpose.",
@@ -160,7 +274,7 @@ struct Writer {
         "VRP $= " + vec(c.vrp) + "$, " + L("PRP", "Projektionszentrum PRP") + " $= " + vec(c.prp) + "$, VUP $= " + vec(c.vup) + "$ " + L("(WC)", "(WC)"),
         L("window", "Fenster (Window)") + " $x_{min} = " + num(c.window.xmin) + ",\\ x_{max} = " + num(c.window.xmax) +
             ",\\ y_{min} = " + num(c.window.ymin) + ",\\ y_{max} = " + num(c.window.ymax) + "$ " +
-            L("in the view plane (VRC)", "in der Bildebene (VRC)"),
+            L("in the view plane (VRC)", "in der Sichtebene (Bildebene, VRC)"),
         L("front plane", "vordere Clippingebene (Front Plane)") + " $F = " + num(c.front) + "$, " + L("back plane", "hintere Clippingebene (Back Plane)") +
             " $B = " + num(c.back) + "$ (VRC z)",
         L("projection: ", "Projektion: ") + projectionName() +
@@ -169,10 +283,10 @@ struct Writer {
             std::to_string(e.scene.device.height) + "$ " + L("pixels, origin top left, y down", "Pixel, Ursprung oben links, y nach unten"),
     };
     const SceneObject& o = e.scene.objects[0];
-    std::string poly;
+    std::vector<std::string> poly;
     for (size_t i = 0; i < o.vertices.size(); ++i)
-      poly += (i ? ",\\ " : "") + std::string("P_") + std::to_string(i + 1) + " = " + vec(o.vertices[i]);
-    items.push_back(L("the polygon ", "das Polygon ") + "$" + poly + "$ " + L("in MC", "in Modellkoordinaten (MC)"));
+      poly.push_back("P_" + std::to_string(i + 1) + " = " + vec(o.vertices[i]));
+    items.push_back(L("the polygon ", "das Polygon ") + inlineList(poly) + " " + L("in MC", "in Modellkoordinaten (MC)"));
     std::string model = "\\mathit{wcFromMc} = ";
     model += "T" + vec(o.transform.translate);
     for (auto it = o.transform.rotations.rbegin(); it != o.transform.rotations.rend(); ++it)
@@ -184,35 +298,29 @@ struct Writer {
       d.push_back({Block::paragraph, L("For the view mapping, $P_1$ in VRC is ", "Für das View Mapping ist $P_1$ in VRC ") +
                                          "$" + vec(s.point.vrc) + "$."});
     if (e.spec.topic == ExerciseTopic::clipping) {
-      std::string pts;
+      std::vector<std::string> pts;
       for (size_t i = 0; i < s.vertices.size(); ++i)
-        pts += (i ? ",\\ " : "") + std::string("P_") + std::to_string(i + 1) + " = " + vec(s.vertices[i].npcH);
+        pts.push_back("P_" + std::to_string(i + 1) + " = " + vec(s.vertices[i].npcH));
       d.push_back({Block::paragraph, L("The polygon in homogeneous NPC $(x, y, z, w)$ is ",
-                                       "Das Polygon in homogenen NPC $(x, y, z, w)$ ist ") + "$" + pts + "$."});
+                                       "Das Polygon in homogenen NPC $(x, y, z, w)$ ist ") + inlineList(pts) + "."});
     }
   }
 
+  // The tasks as the grader counts them (course/exercise_answer.h): numbered, each with its points.
+  std::string pointsText(double p) const {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", p);
+    return text + (p == 1 ? L(" point", " Punkt") : L(" points", " Punkte"));
+  }
   std::vector<std::string> tasks() const {
     std::vector<std::string> t;
-    if (shows(ExerciseTopic::orientation)) {
-      t.push_back(L("Compute $\\mathit{wcFromMc}$ and $P_1$ in WC.", "Berechnen Sie $\\mathit{wcFromMc}$ und $P_1$ in WC."));
-      t.push_back(L("Compute $N$, $U$, $V$ and VPD, the matrix $\\mathit{vrcFromWc}$ and $P_1$ in VRC.",
-                    "Berechnen Sie $N$, $U$, $V$ und VPD, die Matrix $\\mathit{vrcFromWc}$ und $P_1$ in VRC."));
-    }
-    if (shows(ExerciseTopic::mapping)) {
-      t.push_back(L("Compute the view mapping $\\mathit{npcFromVrc}$ and $P_1$ in homogeneous NPC.",
-                    "Berechnen Sie das View Mapping $\\mathit{npcFromVrc}$ und $P_1$ in homogenen NPC."));
-      t.push_back(L("Give the boundary coordinates and the outcode of $P_1$; where it is inside, its NPC and DC.",
-                    "Geben Sie die Randkoordinaten und den Outcode von $P_1$ an; falls innen, seine NPC und DC."));
-    }
-    if (shows(ExerciseTopic::clipping))
-      t.push_back(L("Clip the polygon in homogeneous NPC with Sutherland–Hodgman, plane by plane "
-                    "(left, right, bottom, top, back, front): each edge's boundary values, $t$ and the new vertex. "
-                    "Then divide by $w$ and map the result to DC.",
-                    "Clippen Sie das Polygon in homogenen NPC mit Sutherland–Hodgman, Ebene für Ebene "
-                    "(links, rechts, unten, oben, hinten, vorne): Randwerte jeder Kante, $t$ und der neue Punkt. "
-                    "Dividieren Sie dann durch $w$ und bilden Sie das Ergebnis auf DC ab."));
+    for (const ExerciseTask& task : exerciseTasks(e, s, lang)) t.push_back(task.text + " (" + pointsText(points(task)) + ")");
     return t;
+  }
+  double totalPoints() const {
+    double sum = 0;
+    for (const ExerciseTask& task : exerciseTasks(e, s, lang)) sum += points(task);
+    return sum;
   }
 
   Document sheet() const {
@@ -224,7 +332,8 @@ struct Writer {
     d.push_back({Block::figure, "world", {L("The scene, the camera and its view volume (world view).",
                                             "Szene, Kamera und Sichtvolumen (Weltansicht).")}});
     d.push_back({Block::heading, L("Tasks", "Aufgaben")});
-    d.push_back({Block::items, "", tasks()});
+    d.push_back({Block::numbered, "", tasks()});
+    d.push_back({Block::paragraph, L("In all: ", "Insgesamt: ") + pointsText(totalPoints()) + "."});
     d.push_back({Block::paragraph, L("Conventions (as in the lecture notes): column vectors; $N = (PRP - VRP)/|PRP - VRP|$; "
                                      "front $\\to z = 1$, back $\\to z = 0$; inside when $0 \\le x, y, z \\le w$.",
                                      "Konventionen: Spaltenvektoren; $N = (PRP - VRP)/|PRP - VRP|$; "
@@ -245,10 +354,10 @@ struct Writer {
     const Camera& c = cam();
     d.push_back({Block::heading, section() + L("View orientation (15.2.2): WC to VRC", "View Orientation (15.2.2): WC nach VRC")});
     const Vec3 cross = glm::cross(c.vup, f.n);
-    d.push_back({Block::math, "PRP - VRP = " + vec(c.prp - c.vrp) + ",\\quad VPD = |PRP - VRP| = " + num(f.vpd) +
-                                  ",\\quad N = \\frac{PRP - VRP}{VPD} = " + vec(f.n)});
-    d.push_back({Block::math, "VUP \\times N = " + vec(cross) + ",\\quad U = \\frac{VUP \\times N}{|VUP \\times N|} = " +
-                                  vec(f.u) + ",\\quad V = N \\times U = " + vec(f.v)});
+    displays(d, {"PRP - VRP = " + vec(c.prp - c.vrp), "VPD = |PRP - VRP| = " + num(f.vpd),
+                 "N = \\frac{PRP - VRP}{VPD} = " + vec(f.n)});
+    displays(d, {"VUP \\times N = " + vec(cross), "U = \\frac{VUP \\times N}{|VUP \\times N|} = " + vec(f.u),
+                 "V = N \\times U = " + vec(f.v)});
     d.push_back({Block::paragraph, L("$U$, $V$, $N$ as rows, after the translation by $-VRP$: ",
                                      "$U$, $V$, $N$ als Zeilen, nach der Verschiebung um $-VRP$: ") +
                                        "$\\mathit{vrcFromWc} = [U\\ 0;\\ V\\ 0;\\ N\\ 0;\\ 0\\ 0\\ 0\\ 1] \\cdot T(-VRP)$."});
@@ -263,9 +372,8 @@ struct Writer {
     d.push_back({Block::heading, section() + L("View mapping (14, 15.2.3–15.2.4): VRC to homogeneous NPC",
                                    "View Mapping (14, 15.2.3–15.2.4): VRC nach homogenen NPC")});
     if (perspective()) {
-      d.push_back({Block::math, "d = VPD = " + num(f.vpd) + ",\\quad d_{min} = VPD - F = " + num(f.dmin) +
-                                    ",\\quad d_{max} = VPD - B = " + num(f.dmax) +
-                                    ",\\quad k = \\frac{d_{min}}{d_{max} - d_{min}} = " + num(m[2][2])});
+      displays(d, {"d = VPD = " + num(f.vpd), "d_{min} = VPD - F = " + num(f.dmin), "d_{max} = VPD - B = " + num(f.dmax),
+                   "k = \\frac{d_{min}}{d_{max} - d_{min}} = " + num(m[2][2])});
       d.push_back({Block::paragraph,
                    L("The shear into a regular pyramid and the scaling into the cube, folded into one matrix; "
                      "$w' = z_e = VPD - z$ is the distance in front of the eye.",
@@ -275,11 +383,11 @@ struct Writer {
       if (oblique()) {
         const double dc = c.oblique.d * std::cos(radians(c.oblique.phiDeg));
         const double ds = c.oblique.d * std::sin(radians(c.oblique.phiDeg));
-        d.push_back({Block::math, "x_s = x + z \\cdot d\\cos\\varphi = x + " + num(dc) + "\\,z,\\quad y_s = y - z \\cdot "
-                                  "d\\sin\\varphi = y - " + num(ds) + "\\,z"});
+        displays(d, {"x_s = x + z \\cdot d\\cos\\varphi = x + " + num(dc) + "\\,z",
+                     "y_s = y - z \\cdot d\\sin\\varphi = y - " + num(ds) + "\\,z"});
       }
-      d.push_back({Block::math, "x' = \\frac{x_s - x_{min}}{x_{max} - x_{min}},\\quad y' = \\frac{y_s - y_{min}}"
-                                "{y_{max} - y_{min}},\\quad z' = \\frac{z - B}{F - B},\\quad w' = 1"});
+      displays(d, {"x' = \\frac{x_s - x_{min}}{x_{max} - x_{min}}", "y' = \\frac{y_s - y_{min}}{y_{max} - y_{min}}",
+                   "z' = \\frac{z - B}{F - B}", "w' = 1"});
     }
     matrixPair(d, "\\mathit{npcFromVrc}", m);
     d.push_back({Block::math, "P_1^{NPC_h} = \\mathit{npcFromVrc} \\cdot P_1^{VRC} = " + vec(s.point.npcH)});
@@ -288,10 +396,9 @@ struct Writer {
   void pointClipAndDevice(Document& d) const {
     const PointStages& p = s.point;
     d.push_back({Block::heading, section() + L("Clipping test of $P_1$ (15.2.4, Hill 7.4)", "Clipping-Test von $P_1$ (15.2.4, Hill 7.4)")});
-    std::string bc;
-    for (int i = 0; i < kPlaneCount; ++i)
-      bc += std::string(i ? ",\\ " : "") + "BC_" + std::to_string(i) + " = " + num(p.bc[size_t(i)]);
-    d.push_back({Block::math, bc});
+    std::vector<std::string> bc;
+    for (int i = 0; i < kPlaneCount; ++i) bc.push_back("BC_" + std::to_string(i) + " = " + num(p.bc[size_t(i)]));
+    displays(d, bc);
     d.push_back({Block::paragraph, L("Outcode (bits 5 … 0: front, back, top, bottom, right, left; a bit is set when its "
                                      "boundary coordinate is negative): ",
                                      "Outcode (Bits 5 … 0: vorne, hinten, oben, unten, rechts, links; gesetzt, wenn die "
@@ -344,19 +451,19 @@ struct Writer {
         d.push_back({Block::paragraph, "**" + head + "**: " + L("no vertex outside, nothing to do.", "kein Punkt außerhalb, nichts zu tun.")});
         continue;
       }
-      std::string bcs;
+      std::vector<std::string> bcs;
       for (size_t i = 0; i < step.boundary.size(); ++i)
-        bcs += (i ? ",\\ " : "") + std::string("Q_") + std::to_string(i + 1) + ": " + num(step.boundary[i]);
+        bcs.push_back("Q_" + std::to_string(i + 1) + ": " + num(step.boundary[i]));
       d.push_back({Block::paragraph, "**" + head + "**: " + L("input ", "Eingabe ") + "$Q_1 \\ldots Q_" +
-                                         std::to_string(step.input.size()) + "$, " + L("boundary values ", "Randwerte ") + "$" + bcs + "$."});
+                                         std::to_string(step.input.size()) + "$, " + L("boundary values ", "Randwerte ") + inlineList(bcs) + "."});
       std::vector<std::string> cuts;
       for (const ClipIntersection& c : s.intersections[k])
         cuts.push_back(L("edge ", "Kante ") + "$Q_" + std::to_string(c.inside + 1) + " Q_" + std::to_string(c.outside + 1) +
                        "$: $t = " + num(c.t) + "$, " + L("new vertex ", "neuer Punkt ") + "$" + vec(c.vertex) + "$");
       d.push_back({Block::items, "", cuts});
-      std::string out;
-      for (size_t i = 0; i < step.output.size(); ++i) out += (i ? ",\\ " : "") + vec(step.output[i].p);
-      d.push_back({Block::paragraph, L("Result: ", "Ergebnis: ") + (out.empty() ? L("nothing remains.", "nichts bleibt.") : "$" + out + "$")});
+      std::vector<std::string> out;
+      for (const ClipVertex& v : step.output) out.push_back(vec(v.p));
+      d.push_back({Block::paragraph, L("Result: ", "Ergebnis: ") + (out.empty() ? L("nothing remains.", "nichts bleibt.") : inlineList(out))});
     }
     d.push_back({Block::paragraph, L("Divided by $w$ and mapped to DC, the clipped polygon is",
                                      "Durch $w$ dividiert und auf DC abgebildet ist das geclippte Polygon")});
@@ -412,7 +519,7 @@ void writeText(const std::string& text, const std::filesystem::path& file) {
 ExerciseDocuments exerciseDocuments(const Exercise& exercise, const ExerciseSolution& solution, Language lang) {
   const Writer w{exercise, solution, lang};
   const Document sheet = w.sheet(), sol = w.solution();
-  return {markdown(sheet), markdown(sol), boldToLatex(latex(sheet)), boldToLatex(latex(sol))};
+  return {markdown(sheet), markdown(sol), boldToLatex(latex(sheet, lang)), boldToLatex(latex(sol, lang))};
 }
 
 void writeExercise(const Exercise& exercise, Language lang, const std::filesystem::path& dir) {
@@ -434,15 +541,25 @@ void writeExercise(const Exercise& exercise, Language lang, const std::filesyste
   writeText(prettyJson(answerKey(assignment, reference)) + "\n", dir / "solution.json");
   // The figures: the world view for the sheet, the NPC view for the solution, as vector lines
   // (hidden-line style, made on the CPU) and as the same drawing in PNG for LaTeX.
+  // They print: the light theme (white ground, the view volume thin and solid, the window thick and
+  // dashed, the polygon thick with its vertices named P1 … Pn), labels in the sheet's language and
+  // large enough to read at the figure's printed width.
+  constexpr float kPrintScale = 1.5f;
   auto context = createHeadlessContext(Backend::automatic, false);
-  ViewRenderer renderer(*context);
+  ViewRenderer renderer(*context, kPrintScale);
   for (const auto& [view, name] : {std::pair{ViewKind::world, "world"}, std::pair{ViewKind::npc, "npc"}}) {
     if (view == ViewKind::npc && exercise.spec.topic == ExerciseTopic::orientation) continue;  // not in its solution
     RenderRequest request;
     request.view = view;
     request.style = Style::hiddenLine;
-    request.width = 640;
-    request.height = 480;
+    request.width = 800;
+    request.height = 600;
+    request.scale = kPrintScale;
+    DisplaySettings display = displaySettingsFor(exercise.scene, request.style, 4.0 / 3.0);
+    display.theme = Theme::light;
+    display.language = lang;
+    display.overlays.vertexNames = true;
+    request.display = display;
     writeSvg(svgOfRequest(exercise.scene, request), dir / (std::string(name) + ".svg"));
     writePng(renderImage(renderer, exercise.scene, request), dir / (std::string(name) + ".png"));
   }

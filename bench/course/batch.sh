@@ -44,3 +44,8 @@ for jobs in 1 2; do
 done
 echo
 head -4 out2/grades.csv | cut -c1-160
+grep -m1 "^empty" out2/grades.csv | cut -c1-160
+grep -m1 "^negated" out2/grades.csv | cut -c1-160
+grep -m1 "^rounded" out2/grades.csv | cut -c1-160
+grep -m1 "^right" out2/grades.csv | cut -c1-160
+grep -m1 "^transposed" out2/grades.csv | cut -c1-160

@@ -16,6 +16,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <functional>
 
@@ -248,8 +250,38 @@ TEST(Answers, TheTemplateHoldsEveryTaskOfTheSheet) {
         const NumbersGrade all = gradeNumbers(filled, "answer.json", e.scene, 1e-3, &a);
         EXPECT_TRUE(all.passed());
         EXPECT_EQ(all.points, all.maxPoints);
-        EXPECT_GE(a.items.size(), topic == ExerciseTopic::pipeline ? 20u : 4u);
+        EXPECT_GE(a.items.size(), topic == ExerciseTopic::pipeline ? 12u : 4u);  // P1 through every stage
       }
+}
+
+// A week's sheet: the pipeline topic follows P1 through every stage (at most 6 tasks' worth, 20
+// points) and leaves the polygon's clipping to the clipping sheet; every task is numbered on the
+// sheet with the points its items carry in the assignment.
+TEST(Answers, EveryTopicIsAWeeksSheetAndItsTasksCarryTheAssignmentsPoints) {
+  for (ExerciseTopic topic : {ExerciseTopic::orientation, ExerciseTopic::mapping, ExerciseTopic::clipping, ExerciseTopic::pipeline})
+    for (uint64_t seed : {1u, 2u, 3u}) {
+      SCOPED_TRACE(std::string(toString(topic)) + ", seed " + std::to_string(seed));
+      const Exercise e = generateExercise({seed, topic, Projection::perspective});
+      const ExerciseSolution s = solveExercise(e);
+      const std::vector<ExerciseTask> tasks = exerciseTasks(e, s, Language::en);
+      const Assignment a = exerciseAssignment(e, s, Language::en);
+      double sum = 0;
+      size_t items = 0;
+      for (const ExerciseTask& t : tasks) {
+        EXPECT_FALSE(t.items.empty()) << t.text;
+        sum += points(t);
+        items += t.items.size();
+      }
+      double assigned = 0;
+      for (const AssignmentItem& i : a.items) assigned += i.points;
+      EXPECT_EQ(sum, assigned);
+      EXPECT_EQ(items, a.items.size());
+      EXPECT_LE(tasks.size(), 4u);
+      EXPECT_LE(sum, 20.0);
+      const bool clips = std::any_of(a.items.begin(), a.items.end(),
+                                     [](const AssignmentItem& i) { return i.path.find("clip_steps") != std::string::npos; });
+      EXPECT_EQ(clips, topic == ExerciseTopic::clipping);
+    }
 }
 
 // Consequential-error credit: wcFromMc wrong (the translation off by one in x), and every later
