@@ -48,6 +48,10 @@ void buildMesh(SceneObject& o, const std::filesystem::path& baseDir, const Limit
     o.mesh = primitiveMesh(o);
     return;
   }
+  if (o.obj) {  // carried by the scene
+    o.mesh = std::make_shared<Mesh>(parseObj(*o.obj, o.name + " (its OBJ in the scene)", limits, used));
+    return;
+  }
   if (o.file.empty()) throw Error("a mesh object needs a file");
   const std::filesystem::path file(o.file);
   const std::filesystem::path p = file.is_absolute() ? file : baseDir / file;

@@ -158,7 +158,7 @@ ModelTransform readTransform(const Reader& r, const Json& j, const std::string& 
 
 SceneObject readObject(const Reader& r, const Json& j, const std::string& path, size_t index,
                        const std::filesystem::path& baseDir, const Limits& limits, const MeshSize& used) {
-  r.object(j, path, {"name", "shape", "segments", "vertices", "file", "color", "visible", "translate", "rotate", "scale"});
+  r.object(j, path, {"name", "shape", "segments", "vertices", "file", "obj", "color", "visible", "translate", "rotate", "scale"});
   SceneObject o;
   const std::string s = r.string(r.required(j, path, "shape"), path + "/shape");
   const auto shape = shapeFromString(s);
@@ -171,6 +171,7 @@ SceneObject readObject(const Reader& r, const Json& j, const std::string& path, 
   onlyFor("segments", o.shape == Shape::cylinder || o.shape == Shape::sphere, "cylinder and sphere");
   onlyFor("vertices", o.shape == Shape::polygon, "polygon");
   onlyFor("file", o.shape == Shape::mesh, "mesh");
+  onlyFor("obj", o.shape == Shape::mesh, "mesh");
   if (auto it = j.find("segments"); it != j.end()) {
     const int lo = o.shape == Shape::sphere ? 4 : 3;
     o.segments = r.integer(*it, path + "/segments", lo, std::min(kMaxSegments, limits.segments));
@@ -183,7 +184,15 @@ SceneObject readObject(const Reader& r, const Json& j, const std::string& path, 
     if (v.size() < 3) r.fail(vp, "a polygon needs at least 3 vertices, not " + std::to_string(v.size()));
     for (size_t i = 0; i < v.size(); ++i) o.vertices.push_back(r.vec3(v[i], vp + "/" + std::to_string(i)));
   }
-  if (o.shape == Shape::mesh) o.file = r.string(r.required(j, path, "file"), path + "/file");
+  if (o.shape == Shape::mesh) {
+    // The OBJ in a file beside the scene, or carried in the scene as text: one of the two.
+    if (j.contains("file") && j.contains("obj"))
+      r.fail(path, "a mesh takes \"file\" (an OBJ file) or \"obj\" (the OBJ text), not both");
+    if (!j.contains("file") && !j.contains("obj"))
+      r.fail(path, "a mesh needs \"file\" (an OBJ file) or \"obj\" (the OBJ text)");
+    if (j.contains("file")) o.file = r.string(j["file"], path + "/file");
+    else o.obj = std::make_shared<const std::string>(r.string(j["obj"], path + "/obj"));
+  }
   if (auto it = j.find("color"); it != j.end()) o.color = r.color(*it, path + "/color");
   if (auto it = j.find("visible"); it != j.end()) o.visible = r.boolean(*it, path + "/visible");
   o.transform = readTransform(r, j, path);
@@ -208,7 +217,10 @@ Json toJson(const SceneObject& o) {
     j["vertices"] = Json::array();
     for (const Vec3& v : o.vertices) j["vertices"].push_back(toJson(v));
   }
-  if (o.shape == Shape::mesh) j["file"] = o.file;
+  if (o.shape == Shape::mesh) {
+    if (o.obj) j["obj"] = *o.obj;
+    else j["file"] = o.file;
+  }
   j["color"] = toJson(o.color);
   if (!o.visible) j["visible"] = false;
   j["translate"] = toJson(o.transform.translate);
@@ -284,6 +296,26 @@ Scene loadScene(const std::filesystem::path& file, const Limits& limits) {
   Scene scene = parseScene(readRegularFile(file, limits.sceneFileBytes, "scene file"), file.string(),
                            file.parent_path(), limits);
   scene.path = file;
+  return scene;
+}
+
+namespace {
+std::string sizeText(std::uintmax_t bytes) {
+  return bytes >= (std::uintmax_t(1) << 20) ? std::to_string(bytes >> 20) + " MiB" : std::to_string((bytes + 1023) >> 10) + " kB";
+}
+}  // namespace
+
+Scene carryingItsMeshes(Scene scene, const Limits& limits) {
+  for (SceneObject& o : scene.objects) {
+    if (o.shape != Shape::mesh || o.obj) continue;
+    const std::filesystem::path file(o.file);
+    const std::filesystem::path p = file.is_absolute() || scene.path.empty() ? file : scene.path.parent_path() / file;
+    o.obj = std::make_shared<const std::string>(readRegularFile(p, limits.objFileBytes, "OBJ file"));
+    o.file.clear();
+  }
+  if (const size_t bytes = sceneToJson(scene).size(); bytes > limits.sceneFileBytes)
+    throw Error("the scene with its meshes would be " + sizeText(bytes) + ", more than a scene file may be (" +
+                sizeText(limits.sceneFileBytes) + "): keep the OBJ files beside the scene");
   return scene;
 }
 

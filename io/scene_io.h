@@ -11,7 +11,8 @@
 //     "lights": [ {"position": [x,y,z], "color": [r,g,b]} ],
 //     "clip_planes": [ {"normal": [a,b,c], "point": [x,y,z], "enabled": true} ],   (at most 6, WC)
 //     "objects": [ { "name": .., "shape": "cube" | "tetrahedron" | "cylinder" | "sphere" | "polygon" | "mesh",
-//                    "segments": n, "vertices": [[x,y,z], ...], "file": "meshes/bunny.obj",
+//                    "segments": n, "vertices": [[x,y,z], ...],
+//                    "file": "meshes/bunny.obj" or "obj": "v 0 0 0\nv 1 0 0\n…\nf 1 2 3\n" (a mesh: one of the two),
 //                    "color": [r,g,b], "visible": true,
 //                    "translate": [x,y,z],
 //                    "rotate": [ {"axis": [x,y,z], "deg": a, "through": [x,y,z]} ],
@@ -43,6 +44,13 @@ Scene parseScene(std::string_view json, std::string_view source, const std::file
 
 /// The scene as JSON text in the format above (2-space indentation).
 std::string sceneToJson(const Scene& scene);
+
+/// The scene as one file that carries its meshes: each mesh object's OBJ file (relative to the
+/// scene's path) read into its `obj` text, so the scene opens anywhere (a scene saved in the page
+/// names no in-page file). Throws vplab::Error naming the file when an OBJ cannot be read, or the
+/// size when the scene with its meshes would exceed `limits.sceneFileBytes` (then keep the OBJ
+/// beside the scene).
+Scene carryingItsMeshes(Scene scene, const Limits& limits = kDefaultLimits);
 
 /// Writes the scene atomically (a temporary file renamed over the target). Throws vplab::Error.
 void saveScene(const Scene& scene, const std::filesystem::path& file);

@@ -24,6 +24,9 @@ struct SceneObject {
   int segments = 32;             // cylinder and sphere
   std::vector<Vec3> vertices;    // polygon, MC
   std::string file;              // mesh: an OBJ file, relative to the scene file
+  /// mesh: or the OBJ text itself, carried by the scene (one file for the page's meshes); shared,
+  /// as the mesh is, so that undo steps do not copy it. Null: none.
+  std::shared_ptr<const std::string> obj;
   Vec3 color{0.8, 0.8, 0.8};     // 0..1
   ModelTransform transform;      // MC → WC
   bool visible = true;

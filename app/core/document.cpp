@@ -73,8 +73,8 @@ void Document::replace(Scene scene, bool dirty) {
   refreshShown();
 }
 
-void Document::save(const std::filesystem::path& file) {
-  writeFileAtomically(file, sceneToJson(scene_));
+void Document::save(const std::filesystem::path& file, bool carryMeshes) {
+  writeFileAtomically(file, sceneToJson(carryMeshes ? carryingItsMeshes(scene_) : scene_));
   scene_.path = file;
   stable_.path = file;
   shown_.path = file;

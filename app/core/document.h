@@ -42,8 +42,9 @@ class Document {
   /// history, clean unless `dirty` (a recovered scene still has its unsaved changes).
   void replace(Scene scene, bool dirty = false);
   /// Writes the scene atomically (app/core/atomic_file.h); on success it is no longer dirty. Throws
-  /// vplab::Error and leaves the file as it was.
-  void save(const std::filesystem::path& file);
+  /// vplab::Error and leaves the file as it was. `carryMeshes`: the file carries its meshes' OBJ
+  /// text (io/scene_io.h carryingItsMeshes; the page's downloads), the document keeps its files.
+  void save(const std::filesystem::path& file, bool carryMeshes = false);
 
   /// Counts replace(): a frame that began with another document must not record an undo step
   /// between the two scenes.

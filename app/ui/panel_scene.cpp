@@ -95,7 +95,8 @@ void objectEditor(ViewerState& s, SceneObject& o) {
     }
     tooltip("n: the number of facets around (lecture notes 16.2).", "n: Anzahl der Facetten (16.2).");
   }
-  if (o.shape == Shape::mesh) ImGui::TextDisabled("OBJ: %s (%zu faces)", o.file.c_str(), o.mesh ? o.mesh->faceCount() : 0);
+  if (o.shape == Shape::mesh)
+    ImGui::TextDisabled("OBJ: %s (%zu faces)", o.obj ? "carried in the scene" : o.file.c_str(), o.mesh ? o.mesh->faceCount() : 0);
   transformEditor(s, o);
 }
 

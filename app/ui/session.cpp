@@ -247,7 +247,7 @@ void Session::saveScene(const std::filesystem::path& file) {
 
 void Session::writeScene(const std::filesystem::path& file) {
   try {
-    state_.doc.save(file);
+    state_.doc.save(file, /*carryMeshes=*/browser_);  // a scene downloaded from the page names no in-page file
     setStatus("saved " + file.string(), false);
   } catch (const Error& e) {
     setStatus(e.what(), true);

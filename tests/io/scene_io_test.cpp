@@ -82,6 +82,55 @@ TEST(SceneIo, LoadSceneWithMeshFile) {
   EXPECT_EQ(run.sceneIndex, (std::vector<size_t>{0, 1}));
 }
 
+// A scene that carries its mesh (issue 24: a scene saved in the page named an OBJ by its in-page
+// path): the OBJ text in "obj" instead of a "file"; read as strictly as an OBJ file, one of the
+// two, written back as it was read. carryingItsMeshes reads every OBJ file into its object.
+TEST(SceneIo, AMeshCarriedInTheScene) {
+  nlohmann::json j = minimalScene();
+  j["objects"][0] = {{"shape", "mesh"}, {"name", "tri"}, {"obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"}};
+  const Scene s = parseScene(j.dump(), "carried.json", "/nowhere");
+  ASSERT_TRUE(s.objects[0].mesh);
+  EXPECT_EQ(s.objects[0].mesh->faceCount(), 1u);
+  EXPECT_TRUE(s.objects[0].file.empty());
+  const Scene again = parseScene(sceneToJson(s), "again.json", "/nowhere");
+  ASSERT_TRUE(again.objects[0].obj);
+  EXPECT_EQ(*again.objects[0].obj, *s.objects[0].obj);
+
+  j["objects"][0]["obj"] = "v 0 0 0\nv 1 0 0\nf 1 2 7\n";
+  EXPECT_THAT(errorOf([&] { parseScene(j.dump(), "bad.json", "/nowhere"); }),
+              testing::AllOf(HasSubstr("bad.json: /objects/0"), HasSubstr("tri (its OBJ in the scene)"), HasSubstr(":3")));
+  j["objects"][0]["file"] = "x.obj";
+  EXPECT_THAT(errorOf([&] { parseScene(j.dump(), "both.json", "/nowhere"); }),
+              HasSubstr("a mesh takes \"file\" (an OBJ file) or \"obj\" (the OBJ text), not both"));
+  j["objects"][0].erase("file");
+  j["objects"][0].erase("obj");
+  EXPECT_THAT(errorOf([&] { parseScene(j.dump(), "neither.json", "/nowhere"); }), HasSubstr("/objects/0: a mesh needs \"file\" (an OBJ file) or \"obj\" (the OBJ text)"));
+  j["objects"][0] = {{"shape", "cube"}, {"obj", "v 0 0 0"}};
+  EXPECT_THAT(errorOf([&] { parseScene(j.dump(), "cube.json", "/nowhere"); }), HasSubstr("/objects/0/obj: is only for mesh"));
+}
+
+TEST(SceneIo, CarryingItsMeshesReadsEachObjFile) {
+  const Scene s = loadScene(kData + "/scene_mesh.json");  // box_quads_normals.obj beside it
+  const Scene carried = carryingItsMeshes(s);
+  ASSERT_TRUE(carried.objects[0].obj);
+  EXPECT_TRUE(carried.objects[0].file.empty());
+  EXPECT_EQ(*carried.objects[0].obj, readFile(kData + "/box_quads_normals.obj"));
+  EXPECT_EQ(s.objects[0].file, "box_quads_normals.obj") << "the scene itself keeps its file";
+  // Opened elsewhere (no OBJ beside it), the same mesh.
+  const Scene opened = parseScene(sceneToJson(carried), "elsewhere.json", "/nowhere");
+  ASSERT_TRUE(opened.objects[0].mesh);
+  EXPECT_EQ(opened.objects[0].mesh->positions, s.objects[0].mesh->positions);
+  EXPECT_EQ(opened.objects[0].mesh->faceCount(), s.objects[0].mesh->faceCount());
+  // A missing OBJ is named; so is a scene that would be larger than a scene file may be.
+  Scene lost = s;
+  lost.objects[0].file = "gone.obj";
+  EXPECT_THAT(errorOf([&] { carryingItsMeshes(lost); }), HasSubstr("gone.obj"));
+  Limits small;
+  small.sceneFileBytes = 1024;
+  EXPECT_THAT(errorOf([&] { carryingItsMeshes(s, small); }),
+              HasSubstr("more than a scene file may be (1 kB): keep the OBJ files beside the scene"));
+}
+
 TEST(SceneIo, SyntaxErrorNamesFileLineAndColumn) {
   // The stray comma is on line 3, column 18.
   const std::string text = "{\n  \"camera\": {\n    \"vrp\": [0, 0,, 0]\n  }\n}\n";
@@ -128,7 +177,7 @@ TEST(SceneIo, BadScenesNameTheJsonPath) {
       {"missing shape", [](J& j) { j["objects"][0].erase("shape"); }, {"/objects/0: missing required key \"shape\""}},
       {"missing polygon vertices", [](J& j) { j["objects"][0] = {{"shape", "polygon"}}; },
        {"/objects/0: missing required key \"vertices\""}},
-      {"missing mesh file", [](J& j) { j["objects"][0] = {{"shape", "mesh"}}; }, {"/objects/0: missing required key \"file\""}},
+      {"missing mesh file", [](J& j) { j["objects"][0] = {{"shape", "mesh"}}; }, {"/objects/0: a mesh needs \"file\" (an OBJ file) or \"obj\" (the OBJ text)"}},
       {"missing device height", [](J& j) { j["device"] = {{"width", 10}}; }, {"/device: missing required key \"height\""}},
       {"missing rotation deg", [](J& j) { j["objects"][0]["rotate"] = {{{"axis", {0, 1, 0}}}}; },
        {"/objects/0/rotate/0: missing required key \"deg\""}},

@@ -114,6 +114,15 @@ async function desktopRender(dir, name, { scene, view = 'camera', style, size = 
  * in); on a time-out the error says `what` was awaited,
  * the page's last state (without its rects) and what its console said.
  */
+// A scene file in `dir` with the default scene's camera and one mesh object: the OBJ `objFile`.
+function objScene(dir, objFile) {
+  const scene = JSON.parse(readFileSync(path.join(scenesDir, 'default.json'), 'utf8'));
+  scene.objects = [{ name: 'alone', shape: 'mesh', file: objFile }];
+  const file = path.join(dir, 'obj-alone.json');
+  writeFileSync(file, JSON.stringify(scene));
+  return file;
+}
+
 async function waitForState(page, predicate, what, messages, timeout = 30_000) {
   try {
     await unlessPageFails(page.waitForFunction(`(${String(predicate)})(window.vplab.state())`, { timeout, polling: 100 }),
@@ -513,6 +522,49 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     assert.ok(prevented.every((p) => p === false), 'the page prevented the browser\'s own Ctrl+S or Ctrl+O');
     assert.equal((await vplabState(page)).status, status, 'the lab acted on Ctrl+S or Ctrl+O');
     assertCleanConsole(pageConsole, 'while touching and pressing the browser\'s shortcuts');
+  });
+
+  test('(k) an OBJ dropped onto the page is saved inside the scene, and the desktop opens that one file', { timeout: 120_000 }, async () => {
+    await freshPage(server.url);
+    const objFile = path.join(scenesDir, '..', 'meshes', 'house.obj');
+    const obj = readFileSync(objFile, 'utf8');
+    await afterInput(page, () => page.evaluate((name, content) => {
+      const transfer = new DataTransfer();
+      transfer.items.add(new File([content], name, { type: 'model/obj' }));
+      for (const type of ['dragenter', 'dragover', 'drop']) {
+        window.dispatchEvent(new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }));
+      }
+    }, 'house.obj', obj));
+    await waitForState(page, (s) => s.dirty && !s.loading, 'the dropped OBJ to be added', pageConsole);
+    const added = await vplabState(page);
+    assert.equal(added.statusIsError, false, `adding the dropped OBJ failed: ${added.status}`);
+    const downloads = await catchDownloads(browser, context);
+    try {
+      await click(page, rectPoint(await cssRect(page, added, 'menu.file')));
+      await waitForState(page, (s) => Boolean(s.rects['menu.save']), 'the File menu\'s Save item', pageConsole, 5000);
+      await waitFrames(page, 5);
+      const menu = await vplabState(page);
+      const since = pageConsole.length;
+      await click(page, rectPoint(await cssRect(page, menu, 'menu.save')));
+      const download = await unlessPageFails(downloads.next(30_000), pageConsole, 'the download of File > Save', since);
+      const saved = path.join(work.dir, 'saved-with-house.json');
+      copyFileSync(download.file, saved);
+      const text = readFileSync(saved, 'utf8');
+      assert.ok(!text.includes('/uploads'), 'the saved scene names an in-page file');
+      const scene = JSON.parse(text);
+      const house = scene.objects.find((o) => o.shape === 'mesh');
+      assert.ok(house, 'the saved scene has no mesh object');
+      assert.equal(house.obj, obj, 'the saved scene does not carry the OBJ as it was dropped');
+      assert.equal(house.file, undefined);
+      // The desktop opens that one file, in a folder without the OBJ: the house is there, face for face.
+      const { stdout } = await runVplab(['dump', '--scene', saved]);
+      const { stdout: alone } = await runVplab(['dump', '--scene', objScene(work.dir, objFile)]);
+      const dumped = JSON.parse(stdout).objects.at(-1);
+      assert.equal(dumped.polygons.length, JSON.parse(alone).objects[0].polygons.length, 'the desktop\'s house has other faces');
+      assertCleanConsole(pageConsole, 'while saving a scene with a dropped OBJ');
+    } finally {
+      await downloads.remove();
+    }
   });
 
   test('(g) a scene dropped onto the page opens, and its camera view matches vplab render of that file', { timeout: 120_000 }, async () => {
