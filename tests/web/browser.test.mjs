@@ -114,6 +114,17 @@ async function desktopRender(dir, name, { scene, view = 'camera', style, size = 
  * in); on a time-out the error says `what` was awaited,
  * the page's last state (without its rects) and what its console said.
  */
+// What a file dragged from the desktop delivers: a drop event whose DataTransfer holds the file.
+function dropFile(page, name, content, type) {
+  return page.evaluate((name, content, type) => {
+    const transfer = new DataTransfer();
+    transfer.items.add(new File([content], name, { type }));
+    for (const event of ['dragenter', 'dragover', 'drop']) {
+      window.dispatchEvent(new DragEvent(event, { dataTransfer: transfer, bubbles: true, cancelable: true }));
+    }
+  }, name, content, type);
+}
+
 // A scene file in `dir` with the default scene's camera and one mesh object: the OBJ `objFile`.
 function objScene(dir, objFile) {
   const scene = JSON.parse(readFileSync(path.join(scenesDir, 'default.json'), 'utf8'));
@@ -528,13 +539,7 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     await freshPage(server.url);
     const objFile = path.join(scenesDir, '..', 'meshes', 'house.obj');
     const obj = readFileSync(objFile, 'utf8');
-    await afterInput(page, () => page.evaluate((name, content) => {
-      const transfer = new DataTransfer();
-      transfer.items.add(new File([content], name, { type: 'model/obj' }));
-      for (const type of ['dragenter', 'dragover', 'drop']) {
-        window.dispatchEvent(new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }));
-      }
-    }, 'house.obj', obj));
+    await afterInput(page, () => dropFile(page, 'house.obj', obj, 'model/obj'));
     await waitForState(page, (s) => s.dirty && !s.loading, 'the dropped OBJ to be added', pageConsole);
     const added = await vplabState(page);
     assert.equal(added.statusIsError, false, `adding the dropped OBJ failed: ${added.status}`);
@@ -571,14 +576,7 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     await freshPage(server.url);
     const file = path.join(scenesDir, 'perspective.json');
     const text = readFileSync(file, 'utf8');
-    // What a file dragged from the desktop delivers: a drop event whose DataTransfer holds the file.
-    await afterInput(page, () => page.evaluate((name, content) => {
-      const transfer = new DataTransfer();
-      transfer.items.add(new File([content], name, { type: 'application/json' }));
-      for (const type of ['dragenter', 'dragover', 'drop']) {
-        window.dispatchEvent(new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }));
-      }
-    }, 'perspective.json', text));
+    await afterInput(page, () => dropFile(page, 'perspective.json', text, 'application/json'));
     await waitForState(page, (s) => s.title.includes('perspective') && !s.loading, 'the dropped scene to open', pageConsole);
     const state = await vplabState(page);
     const { camera } = JSON.parse(text);
