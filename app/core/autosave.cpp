@@ -3,6 +3,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <ctime>
@@ -119,9 +120,17 @@ void Autosave::removeFile() {
   savedRevision_ = 0;
 }
 
-std::optional<Recovery> Autosave::find(const std::filesystem::path& directory) {
-  std::optional<Recovery> newest;
-  std::filesystem::file_time_type newestTime;
+std::optional<Recovery> Autosave::read(const std::filesystem::path& file) {
+  try {
+    const auto j = nlohmann::json::parse(readText(file));
+    return Recovery{file, j.at("scene_path").get<std::string>(), j.at("saved_at").get<std::string>()};
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+std::vector<Recovery> Autosave::findAll(const std::filesystem::path& directory) {
+  std::vector<std::pair<std::filesystem::file_time_type, Recovery>> found;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(directory, ec)) {
     const std::string name = entry.path().filename().string();
@@ -132,17 +141,19 @@ std::optional<Recovery> Autosave::find(const std::filesystem::path& directory) {
     if (vplabRunning(std::stol(digits))) continue;
     std::error_code e;
     const auto time = entry.last_write_time(e);
-    if (e || (newest && time <= newestTime)) continue;
-    try {
-      const auto j = nlohmann::json::parse(readText(entry.path()));
-      Recovery r{entry.path(), j.at("scene_path").get<std::string>(), j.at("saved_at").get<std::string>()};
-      newest = std::move(r);
-      newestTime = time;
-    } catch (const std::exception&) {
-      continue;  // not one of ours, or damaged: load() would say why; it is not offered
-    }
+    if (e) continue;
+    if (std::optional<Recovery> r = read(entry.path())) found.emplace_back(time, std::move(*r));
   }
-  return newest;
+  std::stable_sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<Recovery> newestFirst;
+  for (auto& [time, r] : found) newestFirst.push_back(std::move(r));
+  return newestFirst;
+}
+
+std::optional<Recovery> Autosave::find(const std::filesystem::path& directory) {
+  std::vector<Recovery> all = findAll(directory);
+  if (all.empty()) return std::nullopt;
+  return std::move(all.front());
 }
 
 Scene Autosave::load(const Recovery& recovery) {

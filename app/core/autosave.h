@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/core/document.h"
 
@@ -49,8 +50,14 @@ class Autosave {
   /// The last autosave's error (the state directory not writable, …); empty after a success.
   const std::string& error() const { return error_; }
 
-  /// The newest recovery file in `directory` whose process has ended, if any.
+  /// Every recovery file in `directory` whose process has ended, newest first (several sessions
+  /// may have crashed, or several browser tabs been closed, each with its own unsaved scene).
+  static std::vector<Recovery> findAll(const std::filesystem::path& directory);
+  /// The newest of findAll, if any.
   static std::optional<Recovery> find(const std::filesystem::path& directory);
+  /// `file` as a recovery file (any name): nothing when it is not one of ours or is damaged
+  /// (load() would say why).
+  static std::optional<Recovery> read(const std::filesystem::path& file);
   /// Reads a recovery file's scene. Throws vplab::Error naming the file.
   static Scene load(const Recovery& recovery);
   /// Removes a recovery file (recovered or declined).

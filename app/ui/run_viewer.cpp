@@ -142,12 +142,12 @@ int runViewerWindow(ViewerLaunch launch) {
   EndSignals signals;
   const std::filesystem::path stateDir = Autosave::defaultDirectory();
   if (!stateDir.empty()) {
-    if (auto recovery = Autosave::find(stateDir)) {
-      std::cerr << "vplab: " << recovery->file.string() << " holds unsaved changes of "
-                << (recovery->scenePath.empty() ? std::string("the default lecture scene") : recovery->scenePath.string())
+    std::vector<Recovery> recoveries = Autosave::findAll(stateDir);
+    for (const Recovery& r : recoveries)
+      std::cerr << "vplab: " << r.file.string() << " holds unsaved changes of "
+                << (r.scenePath.empty() ? std::string("the default lecture scene") : r.scenePath.string())
                 << " from a session that did not end normally; the viewer offers to recover them\n";
-      viewer.session().offerRecovery(*recovery);
-    }
+    viewer.session().offerRecoveries(std::move(recoveries));
     viewer.session().enableAutosave(stateDir, kAutosaveDelay);
   }
   try {

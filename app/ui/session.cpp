@@ -341,9 +341,36 @@ void Session::endSession() {
   if (autosave_) autosave_->removeFile();
 }
 
-void Session::offerRecovery(Recovery recovery) {
-  recovery_ = std::move(recovery);
-  askRecovery_ = true;
+void Session::offerRecoveries(std::vector<Recovery> recoveries) {
+  recoveries_ = std::move(recoveries);
+  askRecovery_ = !recoveries_.empty();
+}
+
+namespace {
+
+std::string sceneName(const Recovery& r) {
+  return r.scenePath.empty() ? "the default lecture scene" : r.scenePath.string();
+}
+
+}  // namespace
+
+/// The i-th kept scene becomes this session's document; the others stay kept for the next start.
+void Session::recover(size_t i) {
+  const Recovery r = recoveries_[i];
+  try {
+    startDocument(Autosave::load(r), /*dirty=*/true);
+    Autosave::discard(r);  // this session's autosave keeps them from now on
+    if (autosave_) autosave_->writeNow(state_.doc);
+    const size_t others = recoveries_.size() - 1;
+    setStatus("recovered the unsaved changes of " + sceneName(r) +
+                  (others == 0 ? std::string()
+                               : "; " + std::to_string(others) + " other kept scene" + (others == 1 ? " is" : "s are") +
+                                     (browser_ ? " offered in the next tab or visit" : " offered at the next start")),
+              false);
+  } catch (const Error& e) {
+    setStatus(e.what(), true);  // the file stays for another try
+  }
+  recoveries_.clear();
 }
 
 void Session::recoveryDialog() {
@@ -352,29 +379,46 @@ void Session::recoveryDialog() {
     askRecovery_ = false;
   }
   if (!ImGui::BeginPopupModal("Recover unsaved changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-  const std::string scene = recovery_->scenePath.empty() ? "the default lecture scene" : recovery_->scenePath.string();
-  ImGui::Text("vplab did not end normally. Unsaved changes of %s", scene.c_str());
-  ImGui::Text("were kept at %s (%s).", recovery_->savedAt.c_str(), recovery_->file.string().c_str());
-  if (ImGui::Button("Recover them")) {
-    ImGui::CloseCurrentPopup();
-    try {
-      startDocument(Autosave::load(*recovery_), /*dirty=*/true);
-      Autosave::discard(*recovery_);  // this session's autosave keeps them from now on
-      if (autosave_) autosave_->writeNow(state_.doc);
-      setStatus("recovered the unsaved changes of " + scene, false);
-    } catch (const Error& e) {
-      setStatus(e.what(), true);  // the file stays for another try
+  const char* ended = browser_ ? "A visit to vplab was left" : "vplab did not end normally";
+  if (recoveries_.size() == 1) {
+    const Recovery& r = recoveries_.front();
+    ImGui::Text("%s with unsaved changes of %s;", ended, sceneName(r).c_str());
+    if (browser_) ImGui::Text("they were kept at %s.", r.savedAt.c_str());
+    else ImGui::Text("they were kept at %s (%s).", r.savedAt.c_str(), r.file.string().c_str());
+  } else {
+    ImGui::Text("%zu %s left with unsaved changes. Recover one here;", recoveries_.size(),
+                browser_ ? "tabs or visits were" : "sessions were");
+    ImGui::Text("the others stay kept and are offered %s.", browser_ ? "in the next tab or visit" : "at the next start");
+  }
+  std::optional<size_t> recovered, discarded;
+  for (size_t i = 0; i < recoveries_.size(); ++i) {
+    ImGui::PushID(int(i));
+    if (recoveries_.size() > 1) {
+      ImGui::Separator();
+      ImGui::Text("%s, kept at %s", sceneName(recoveries_[i]).c_str(), recoveries_[i].savedAt.c_str());
     }
-    recovery_.reset();
+    if (ImGui::Button("Recover them")) recovered = i;
+    const std::string suffix = i == 0 ? std::string() : "." + std::to_string(i);
+    ui::recordRect(state_, ("recovery.recover" + suffix).c_str());
+    ImGui::SameLine();
+    if (ImGui::Button("Discard them")) discarded = i;
+    ui::recordRect(state_, ("recovery.discard" + suffix).c_str());
+    ImGui::PopID();
   }
-  ui::recordRect(state_, "recovery.recover");
-  ImGui::SameLine();
-  if (ImGui::Button("Discard them")) {
-    ImGui::CloseCurrentPopup();
-    Autosave::discard(*recovery_);
-    recovery_.reset();
+  if (recoveries_.size() > 1) {
+    ImGui::Separator();
+    if (ImGui::Button("Later")) {
+      recoveries_.clear();  // all stay kept
+      setStatus("the kept scenes are offered again " + std::string(browser_ ? "in the next tab or visit" : "at the next start"), false);
+    }
+    ui::recordRect(state_, "recovery.later");
   }
-  ui::recordRect(state_, "recovery.discard");
+  if (recovered) recover(*recovered);
+  if (discarded) {
+    Autosave::discard(recoveries_[*discarded]);
+    recoveries_.erase(recoveries_.begin() + std::ptrdiff_t(*discarded));
+  }
+  if (recoveries_.empty()) ImGui::CloseCurrentPopup();
   ImGui::EndPopup();
 }
 

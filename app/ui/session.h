@@ -69,9 +69,14 @@ class Session {
   std::filesystem::path writeRecoveryNow();
   /// A normal end (quit): this session leaves no recovery file.
   void endSession();
-  /// At start: an earlier session left unsaved changes; a dialog offers to recover them.
-  void offerRecovery(Recovery recovery);
-  bool recoveryOffered() const { return recovery_.has_value(); }
+  /// At start: earlier sessions (crashed processes, closed browser tabs) left unsaved changes,
+  /// newest first; a dialog offers to recover one of them (this session's document) or discard
+  /// each. What is neither stays kept and is offered again at the next start.
+  void offerRecoveries(std::vector<Recovery> recoveries);
+  void offerRecovery(Recovery recovery) { offerRecoveries({std::move(recovery)}); }
+  bool recoveryOffered() const { return !recoveries_.empty(); }
+  /// How many kept scenes the dialog offers.
+  size_t recoveriesOffered() const { return recoveries_.size(); }
 
   // ------------------------------------------------------------ files and links
   /// Whether `file` is one of the scenes shipped with vplab (assets/scenes/): Save never writes there.
@@ -100,6 +105,7 @@ class Session {
   void writeScene(const std::filesystem::path& file);
   void loadingWindow(float scale);
   void recoveryDialog();
+  void recover(size_t i);
   void quitDialog();
   void discardDialog();
 
@@ -112,7 +118,7 @@ class Session {
   SceneLoader loader_;
   std::unique_ptr<Autosave> autosave_;
   std::string autosaveError_;  // the last one shown
-  std::optional<Recovery> recovery_;
+  std::vector<Recovery> recoveries_;
   bool askRecovery_ = false;
 };
 

@@ -39,11 +39,11 @@ namespace {
 constexpr int kSettleFrames = 3;  // as the window's loop: ImGui shows the effect of input over ~2 frames
 constexpr double kLongestWait = 60.0;
 constexpr double kAutosaveDelay = 3.0;  // seconds after the last change, as the desktop's
-// The autosave's directory in the in-memory file system, mirrored to localStorage after each frame.
-// A recovery file brought back from localStorage is named for process 0, which never runs: the
-// viewer's Autosave::find offers it, as a file left by a session that ended.
+// The autosave's directory in the in-memory file system, mirrored to this tab's localStorage key
+// after each frame. The scenes kept by tabs that are gone are brought back under kKeptDir, each
+// file standing for its localStorage key until it is recovered or discarded.
 const std::filesystem::path kStateDir = "/state/vplab";
-const std::filesystem::path kKeptRecovery = kStateDir / "recovery-0.json";
+const std::filesystem::path kKeptDir = "/state/kept";
 
 }  // namespace
 
@@ -60,7 +60,8 @@ struct Page {
   unsigned frames = 0;
   std::string shownHash, shownTitle;
   bool shownUnsaved = false;
-  std::string storedAutosave;  // what localStorage holds (empty: nothing)
+  std::string storedAutosave;  // what this tab's localStorage key holds (empty: nothing)
+  std::vector<std::pair<std::filesystem::path, std::string>> kept;  // offered kept scenes: file, key
   std::string reply;  // the last string handed to JavaScript (valid until the next call)
 
   Page() {
@@ -71,24 +72,39 @@ struct Page {
     startAutosave();
   }
 
-  /// Unsaved changes of an earlier visit are offered back (the recovery dialog); from now on this
-  /// visit's are autosaved.
+  /// Unsaved changes of tabs that are gone (closed, crashed, this one before a reload) are offered
+  /// back, all of them (the recovery dialog); from now on this tab's are autosaved under its own key.
   void startAutosave() {
     std::error_code ec;
-    std::filesystem::create_directories(kStateDir, ec);
-    const std::string kept = page::storedRecovery();
-    if (!kept.empty()) {
-      std::ofstream(kKeptRecovery, std::ios::binary) << kept;
-      storedAutosave = kept;
-      if (auto recovery = Autosave::find(kStateDir)) viewer.session().offerRecovery(*recovery);
+    std::filesystem::create_directories(kKeptDir, ec);
+    std::vector<Recovery> offered;
+    for (const page::KeptScene& scene : page::keptScenes()) {
+      const std::filesystem::path file = kKeptDir / (std::to_string(kept.size()) + ".json");
+      std::ofstream(file, std::ios::binary) << scene.text;
+      if (std::optional<Recovery> r = Autosave::read(file)) {
+        offered.push_back(std::move(*r));
+        kept.emplace_back(file, scene.key);
+      } else {
+        page::dropKeptScene(scene.key);  // not a scene of ours: nothing to recover from it
+      }
     }
+    // Newest first, as the desktop's (saved_at is "YYYY-MM-DD HH:MM:SS": its text sorts as its time).
+    std::stable_sort(offered.begin(), offered.end(), [](const Recovery& a, const Recovery& b) { return a.savedAt > b.savedAt; });
+    viewer.session().offerRecoveries(std::move(offered));
     viewer.session().enableAutosave(kStateDir, kAutosaveDelay);
   }
 
   /// localStorage follows the autosave file: written when it was, removed when the session has
   /// nothing unsaved any more (saved, discarded, recovered and saved). Frames are drawn only on a
-  /// change, and the file is a scene without its meshes (a few kB): it is read and compared.
+  /// change, and the file is a scene without its meshes (a few kB): it is read and compared. A kept
+  /// scene recovered or discarded (its file gone) leaves localStorage too.
   void mirrorAutosave() {
+    std::erase_if(kept, [](const auto& k) {
+      std::error_code ec;
+      if (std::filesystem::exists(k.first, ec)) return false;
+      page::dropKeptScene(k.second);
+      return true;
+    });
     const Autosave* autosave = viewer.session().autosave();
     if (!autosave) return;
     std::ifstream in(autosave->file(), std::ios::binary);
@@ -100,7 +116,7 @@ struct Page {
         viewer.state().statusIsError = true;
       }
       storedAutosave = std::move(text);
-    } else if (!storedAutosave.empty() && !viewer.session().recoveryOffered()) {
+    } else if (!storedAutosave.empty()) {
       page::storeRecovery("");
       storedAutosave.clear();
     }
@@ -200,6 +216,7 @@ struct Page {
     j["devicePixelRatio"] = pixelRatio;
     j["loading"] = viewer.session().loader().busy();
     j["recoveryOffered"] = viewer.session().recoveryOffered();
+    j["recoveriesOffered"] = viewer.session().recoveriesOffered();
     return j.dump();
   }
 };

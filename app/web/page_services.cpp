@@ -2,6 +2,7 @@
 
 #include <emscripten.h>
 #include <emscripten/html5.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdlib>
 #include <memory>
@@ -19,19 +20,12 @@ EM_JS(char*, jsLocationHash, (), {
   var s = location.hash.replace(/^#/, ""); var n = lengthBytesUTF8(s) + 1; var p = _malloc(n);
   stringToUTF8(s, p, n); return p;
 });
-EM_JS(char*, jsStoredRecovery, (), {
-  var s = null;
-  try { s = localStorage.getItem("vplab.recovery"); } catch (e) {}
-  if (s === null) return 0;
+EM_JS(char*, jsKeptScenes, (), {
+  var s = JSON.stringify(vplabPage.keptScenes());
   var n = lengthBytesUTF8(s) + 1; var p = _malloc(n); stringToUTF8(s, p, n); return p;
 });
-EM_JS(int, jsStoreRecovery, (const char* text), {
-  try {
-    var s = UTF8ToString(text);
-    if (s === "") localStorage.removeItem("vplab.recovery"); else localStorage.setItem("vplab.recovery", s);
-    return 1;
-  } catch (e) { return 0; }
-});
+EM_JS(void, jsDropKeptScene, (const char* key), { vplabPage.dropKeptScene(UTF8ToString(key)); });
+EM_JS(int, jsStoreRecovery, (const char* text), { return vplabPage.storeRecovery(UTF8ToString(text)) ? 1 : 0; });
 EM_JS(void, jsReplaceLocationHash, (const char* fragment), { vplabPage.replaceHash(UTF8ToString(fragment)); });
 EM_JS(void, jsSetUnsaved, (int unsaved), { vplabPage.unsaved = !!unsaved; });
 EM_JS(void, jsFirstFrame, (), { vplabPage.firstFrame(); });
@@ -85,10 +79,19 @@ std::string locationHash() {
   return text ? std::string(text.get()) : std::string();
 }
 
-std::string storedRecovery() {
-  std::unique_ptr<char, decltype(&std::free)> text(jsStoredRecovery(), &std::free);
-  return text ? std::string(text.get()) : std::string();
+std::vector<KeptScene> keptScenes() {
+  std::unique_ptr<char, decltype(&std::free)> text(jsKeptScenes(), &std::free);
+  std::vector<KeptScene> kept;
+  try {
+    for (const auto& k : nlohmann::json::parse(text ? text.get() : "[]"))
+      kept.push_back({k.at("key").get<std::string>(), k.at("text").get<std::string>()});
+  } catch (const std::exception&) {
+    // index.html writes this list itself; a broken one offers nothing rather than stopping the page
+  }
+  return kept;
 }
+
+void dropKeptScene(const std::string& key) { jsDropKeptScene(key.c_str()); }
 
 bool storeRecovery(const std::string& text) { return jsStoreRecovery(text.c_str()) != 0; }
 

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace vplab::page {
 
@@ -44,11 +45,20 @@ void firstFrameDrawn();
 void setPageTitle(const std::string& title);
 /// Says on the page, over the canvas, that the lab stopped (an unexpected error); also console.error.
 void showFatalError(const std::string& message);
-/// The recovery file kept in the browser's localStorage (under "vplab.recovery"), the page's
-/// counterpart of the desktop's state directory: the autosave of unsaved changes survives a closed
-/// tab, a crash or a reload. Empty when none is kept.
-std::string storedRecovery();
-/// Keeps `text` (the autosave file's content) in localStorage; an empty text removes it. Returns
+/// The autosave in the browser's localStorage, the page's counterpart of the desktop's state
+/// directory: unsaved changes survive a closed tab, a crash or a reload. Each tab keeps its own
+/// (under "vplab.recovery.TAB", TAB kept in the tab's sessionStorage), so two tabs never overwrite
+/// each other's; index.html finds, before the lab starts, which kept scenes belong to no open tab
+/// (each open tab holds a Web Lock named for it).
+struct KeptScene {
+  std::string key;   // its localStorage key
+  std::string text;  // the autosave file's content
+};
+/// The scenes left by tabs that are no longer open (and by this tab before a reload).
+std::vector<KeptScene> keptScenes();
+/// Removes a kept scene (recovered or discarded).
+void dropKeptScene(const std::string& key);
+/// Keeps `text` (this tab's autosave file) in localStorage; an empty text removes it. Returns
 /// false when the browser refused (storage full or disabled).
 bool storeRecovery(const std::string& text);
 /// window.devicePixelRatio (1 on a plain screen, 2 on most laptops' and tablets' screens).

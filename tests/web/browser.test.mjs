@@ -440,6 +440,60 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     assertCleanConsole(pageConsole, 'while recovering');
   });
 
+  test('(l) two tabs keep their own autosaves, and the next visit offers every scene left unsaved', { timeout: 180_000 }, async () => {
+    await freshPage(server.url);
+    const recoveryKeys = (p) => p.evaluate(() => Object.keys(localStorage).filter((k) => k.startsWith('vplab.recovery')).sort());
+    /** Drags VRP's field by `dx` CSS px in `p` and waits until its autosave is in localStorage. */
+    async function changeAndAutosave(p, component, dx) {
+      const s = await vplabState(p);
+      const field = await cssRect(p, s, 'camera.vrp');
+      const from = rectPoint(field, (2 * component + 1) / 6, 0.5);
+      const keys = (await recoveryKeys(p)).length;
+      await drag(p, from, { x: from.x + dx, y: from.y }, { steps: 5 });
+      const changed = await vplabState(p);
+      assert.ok(changed.dirty, 'dragging a VRP field made no unsaved change');
+      await p.waitForFunction((n) => Object.keys(localStorage).filter((k) => k.startsWith('vplab.recovery')).length > n,
+        { timeout: 15_000, polling: 200 }, keys).catch(() => assert.fail('no autosave reached localStorage within 15 s of the change'));
+      return changed.camera;
+    }
+    const tabA = page;
+    const cameraA = await changeAndAutosave(tabA, 2, 30); // VRP z
+    // A second tab of the same browser while the first is open: the first's scene is not offered.
+    const { page: tabB, console: consoleB } = await openPage(context, server.url);
+    await waitFrames(tabB, 3);
+    assert.equal((await vplabState(tabB)).recoveryOffered, false, 'a second tab is offered the first tab\'s open scene');
+    const cameraB = await changeAndAutosave(tabB, 0, -30); // VRP x
+    assert.notDeepEqual(cameraA, cameraB);
+    assert.equal((await recoveryKeys(tabB)).length, 2, 'the two tabs do not keep two autosaves');
+
+    await tabA.close();
+    await tabB.close();
+    // The next visit offers both, newest first; it recovers the second tab's.
+    ({ page, console: pageConsole } = await openPage(context, server.url));
+    await waitFrames(page, 5);
+    const next = await vplabState(page);
+    assert.equal(next.recoveriesOffered, 2, 'the next visit does not offer both scenes left unsaved');
+    await click(page, rectPoint(await cssRect(page, next, 'recovery.recover')));
+    await waitForState(page, (s) => !s.recoveryOffered, 'the recovery dialog to close', pageConsole);
+    assert.deepEqual((await vplabState(page)).camera, cameraB, 'the newest kept scene is not the second tab\'s');
+    assert.match((await vplabState(page)).status, /1 other kept scene is offered in the next tab or visit/);
+
+    // Another tab now is offered the first tab's scene only (the recovered one is this open tab's).
+    const { page: tabD, console: consoleD } = await openPage(context, server.url);
+    await waitFrames(tabD, 5);
+    const d = await vplabState(tabD);
+    assert.equal(d.recoveriesOffered, 1, 'the next tab is not offered exactly the scene still kept');
+    await click(tabD, rectPoint(await cssRect(tabD, d, 'recovery.recover')));
+    await waitForState(tabD, (s) => !s.recoveryOffered, 'the recovery dialog to close', consoleD);
+    assert.deepEqual((await vplabState(tabD)).camera, cameraA, 'the scene still kept is not the first tab\'s');
+    await waitFrames(tabD, 2);
+    assert.equal((await recoveryKeys(tabD)).length, 2, 'localStorage keeps more than the two open tabs\' autosaves');
+    assertCleanConsole(consoleB, 'in the second tab');
+    assertCleanConsole(consoleD, 'in the fourth tab');
+    assertCleanConsole(pageConsole, 'while recovering');
+    await tabD.close();
+  });
+
   test('(i) File > Export a view downloads the camera view as PNG and the world view as SVG', { timeout: 120_000 }, async () => {
     await freshPage(server.url);
     const downloads = await catchDownloads(browser, context);

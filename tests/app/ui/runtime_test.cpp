@@ -357,6 +357,76 @@ TEST(Autosave, ARecoveryFileOfAnEndedProcessIsOfferedAndRecovered) {
   EXPECT_TRUE(fs::exists(v->viewer().session().autosave()->file())) << "this session keeps the changes at once";
 }
 
+namespace {
+
+/// A child process that autosaves `preset` with its front plane at `front` and ends without
+/// cleaning up (a crash); returns its recovery file.
+fs::path crashWithUnsavedFront(const fs::path& state, const char* presetName, double front) {
+  const pid_t child = ::fork();
+  if (child == 0) {
+    Document doc(loadScene(preset(presetName)));
+    doc.scene().camera.front = front;
+    doc.endFrame(false);
+    Autosave a(state, 0);
+    a.writeNow(doc);
+    ::_exit(a.error().empty() ? 0 : 1);
+  }
+  int status = 0;
+  if (::waitpid(child, &status, 0) != child || !WIFEXITED(status) || WEXITSTATUS(status) != 0) return {};
+  return state / ("recovery-" + std::to_string(child) + ".json");
+}
+
+}  // namespace
+
+TEST(Autosave, EverySessionLeftWithUnsavedChangesIsOfferedAndTheOthersStayKept) {
+  TempDir dir;
+  const fs::path state = dir.path / "state";
+  const fs::path older = crashWithUnsavedFront(state, "perspective.json", 0.75);
+  ASSERT_TRUE(fs::exists(older));
+  // Modification times have a file system's resolution: the newer one is made visibly newer.
+  const fs::path newer = crashWithUnsavedFront(state, "parallel.json", 0.5);
+  ASSERT_TRUE(fs::exists(newer));
+  fs::last_write_time(older, fs::last_write_time(newer) - std::chrono::seconds(10));
+
+  const std::vector<Recovery> all = Autosave::findAll(state);
+  ASSERT_EQ(all.size(), 2u);
+  EXPECT_EQ(all[0].file, newer) << "the newest is offered first";
+  EXPECT_EQ(all[1].file, older);
+
+  auto v = makeViewer();
+  v->viewer().session().enableAutosave(state, 3);
+  v->viewer().session().offerRecoveries(all);
+  v->frames(3);
+  EXPECT_EQ(v->viewer().session().recoveriesOffered(), 2u);
+  clickId(*v, "recovery.recover.1");  // the older one
+  v->frames(2);
+  EXPECT_FALSE(v->viewer().session().recoveryOffered());
+  EXPECT_EQ(v->state().doc.scene().camera.front, 0.75);
+  EXPECT_EQ(v->state().doc.path(), preset("perspective.json"));
+  EXPECT_FALSE(fs::exists(older)) << "the recovered one is taken over";
+  EXPECT_TRUE(fs::exists(newer)) << "the other one is kept for the next start";
+  EXPECT_THAT(v->state().status, HasSubstr("1 other kept scene is offered at the next start"));
+  const std::vector<Recovery> left = Autosave::findAll(state);
+  ASSERT_EQ(left.size(), 1u);
+  EXPECT_EQ(left[0].file, newer);
+
+  // Discarding one of several leaves the dialog open with the rest.
+  const fs::path third = crashWithUnsavedFront(state, "perspective.json", 0.25);
+  auto w = makeViewer();
+  w->viewer().session().offerRecoveries(Autosave::findAll(state));
+  w->frames(3);
+  ASSERT_EQ(w->viewer().session().recoveriesOffered(), 2u);
+  clickId(*w, "recovery.discard");
+  w->frames(2);
+  EXPECT_EQ(w->viewer().session().recoveriesOffered(), 1u);
+  EXPECT_EQ(Autosave::findAll(state).size(), 1u);
+  clickId(*w, "recovery.discard");
+  w->frames(2);
+  EXPECT_FALSE(w->viewer().session().recoveryOffered());
+  EXPECT_TRUE(Autosave::findAll(state).empty());
+  EXPECT_FALSE(w->state().doc.dirty()) << "discarding recovers nothing";
+}
+
 TEST(Autosave, AFailureIsShownNotSwallowed) {
   TempDir dir;
   const fs::path notADirectory = dir.path / "file";
