@@ -37,6 +37,7 @@ std::string glErrorName(GLenum e) {
     case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
     case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
     case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    case 0x9242: return "CONTEXT_LOST_WEBGL (the browser took the WebGL context away)";
     default: return "GL error " + std::to_string(e);
   }
 }
@@ -98,6 +99,12 @@ void GlContext::checkErrors(std::string_view where) {
   for (const std::string& m : debugLog_->errors) problems += "\n  KHR_debug: " + m;
   debugLog_->errors.clear();
   if (!problems.empty()) throw Error("OpenGL error while " + std::string(where) + ":" + problems);
+}
+
+void GlContext::discardErrors() {
+  for (int i = 0; i < 64 && gl_.GetError() != GL_NO_ERROR; ++i) {
+  }
+  debugLog_->errors.clear();
 }
 
 std::unique_ptr<GlContext> createHeadlessContext(Backend backend, bool debug) {

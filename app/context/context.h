@@ -50,6 +50,9 @@ class GlContext {
   /// Throws vplab::Error naming `where` and every GL error reported since the last check
   /// (glGetError and, in debug contexts, KHR_debug messages).
   void checkErrors(std::string_view where);
+  /// Reads off every GL error reported since the last check without reporting it: the ones of
+  /// deleting the names a lost context took with it (WebGL), which say nothing about what follows.
+  void discardErrors();
 
  protected:
   GlContext() = default;

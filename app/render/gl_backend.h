@@ -40,6 +40,7 @@ class GlBackend {
   /// Whether fills with MeshInstance::run draw only the faces that can show in their volume pass
   /// (single-sampled targets only; see partition). On by default; off: every face, as tests compare.
   void setPartitioned(bool on) { partitioned_ = on; }
+  bool partitioned() const { return partitioned_; }
   /// The triangles the last partitioned fill drew of mesh instance `i` in its inside and outside
   /// pass ({0, 0} when it was not partitioned).
   std::array<size_t, 2> partitionedTriangles(size_t i) const;

@@ -5,6 +5,7 @@
 #include "app/export/image_compare.h"
 #include "app/gl/texture_io.h"
 #include "app/render/view_worker.h"
+#include "pipeline/error.h"
 
 #include <chrono>
 #include <utility>
@@ -174,6 +175,14 @@ std::optional<double> ViewImages::wakeIn(double busyStep) const {
 
 void ViewImages::forget() {
   for (Slot& s : slots_) s.stamp = {};
+}
+
+void ViewImages::recreateGlObjects() {
+  if (worker_) throw Error("the views' render thread cannot recreate its context's objects");
+  targets_ = ViewTargets(ctx_.gl());
+  divideFirst_ = gl::RenderTarget(ctx_.gl());
+  divideFirstRevision_ = 0;
+  for (Slot& s : slots_) s = Slot{};
 }
 
 std::optional<std::string> ViewImages::takeError() { return std::exchange(error_, std::nullopt); }

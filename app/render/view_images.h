@@ -90,6 +90,9 @@ class ViewImages {
   unsigned drawn() const { return drawn_; }
   /// Every view is drawn again when next asked for.
   void forget();
+  /// The context lost every object (a WebGL context lost and restored): the render targets are
+  /// made again and every view is drawn anew. Only without a render thread (the page has none).
+  void recreateGlObjects();
   /// The last failure to draw a view, once.
   std::optional<std::string> takeError();
 

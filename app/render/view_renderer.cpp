@@ -4,13 +4,22 @@
 
 namespace vplab {
 
-ViewRenderer::ViewRenderer(GlContext& context, float textScale) : ctx_(context), backend_(context, textScale) {}
+ViewRenderer::ViewRenderer(GlContext& context, float textScale) : ctx_(context) { backend_.emplace(context, textScale); }
+
+void ViewRenderer::recreateGlObjects() {
+  const float scale = backend_->text().scale();
+  const bool partitioned = backend_->partitioned();
+  backend_.reset();  // deletes names a lost context took with it: errors that say nothing of the new ones
+  ctx_.discardErrors();
+  backend_.emplace(ctx_, scale);
+  backend_->setPartitioned(partitioned);
+}
 
 void ViewRenderer::drawView(Builder build, draw::DisplayList& list, const Scene& scene, const PipelineRun& run,
                             const DisplaySettings& s, const Highlights& h, gl::RenderTarget& target) {
-  const ViewInput in{scene, run, s, h, target.width(), target.height(), backend_.text().atlas()};
+  const ViewInput in{scene, run, s, h, target.width(), target.height(), backend_->text().atlas()};
   build(in, list);
-  backend_.draw(list, target);
+  backend_->draw(list, target);
 }
 
 void ViewRenderer::drawCamera(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, const Highlights& h,
@@ -40,9 +49,9 @@ void ViewRenderer::drawDivideFirst(const Scene& scene, const PipelineRun& run, c
 
 Image ViewRenderer::render(ViewKind kind, const Scene& scene, const PipelineRun& run, const DisplaySettings& s,
                            const Highlights& h, int width, int height) {
-  const ViewInput in{scene, run, s, h, width, height, backend_.text().atlas()};
+  const ViewInput in{scene, run, s, h, width, height, backend_->text().atlas()};
   buildPicture(kind, in, picture_);
-  Image image = backend_.render(picture_);
+  Image image = backend_->render(picture_);
   ctx_.checkErrors("rendering the " + std::string(toString(kind)) + " view");
   return image;
 }

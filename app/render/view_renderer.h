@@ -12,6 +12,7 @@
 #include "pipeline/pipeline.h"
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace vplab {
@@ -40,17 +41,20 @@ class ViewRenderer {
                int width, int height);
 
   GlContext& context() { return ctx_; }
+  /// The context lost every object (a WebGL context lost and restored): the backend's shaders,
+  /// buffers and text atlas are made again; its settings (text scale, partitioning) stay.
+  void recreateGlObjects();
   /// Whether the world view draws each of its two passes from the faces that can show in it
   /// (GlBackend::setPartitioned; on by default, used only without multisampling).
-  void setPartitionedWorld(bool on) { backend_.setPartitioned(on); }
+  void setPartitionedWorld(bool on) { backend_->setPartitioned(on); }
   /// The triangles the last partitioned world view drew of its i-th visible scene object in its
   /// inside and its outside pass ({0, 0} when it was not partitioned).
-  std::array<size_t, 2> partitionedTriangles(size_t i) const { return backend_.partitionedTriangles(i); }
+  std::array<size_t, 2> partitionedTriangles(size_t i) const { return backend_->partitionedTriangles(i); }
   /// Where the last view drawn put its labels (x0, y0, x1, y1, pixels), for the tests.
-  const std::vector<glm::vec4>& labelsPlaced() const { return backend_.labelsPlaced(); }
+  const std::vector<glm::vec4>& labelsPlaced() const { return backend_->labelsPlaced(); }
   /// Larger text, lines and points for a projector (lecture mode).
-  void setScale(float scale) { backend_.setTextScale(scale); }
-  float scale() const { return backend_.text().scale(); }
+  void setScale(float scale) { backend_->setTextScale(scale); }
+  float scale() const { return backend_->text().scale(); }
 
  private:
   using Builder = void (*)(const ViewInput&, draw::DisplayList&);
@@ -58,7 +62,7 @@ class ViewRenderer {
                 const DisplaySettings& s, const Highlights& h, gl::RenderTarget& target);
 
   GlContext& ctx_;
-  GlBackend backend_;
+  std::optional<GlBackend> backend_;  // always engaged (optional: made again by recreateGlObjects)
   // Each view's last list, its storage reused by the view's next (the NPC view's polygons of a
   // large scene are not allocated anew when the views are drawn in turn).
   draw::DisplayList camera_, world_, npc_, morph_, divideFirst_;

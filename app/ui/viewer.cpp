@@ -287,4 +287,17 @@ Image Viewer::exportImage(ViewKind kind, int width, int height) { return menus_.
 
 void Viewer::forgetViewImages() { images_.forget(); }
 
+void Viewer::recreateGlObjects() {
+  makeCurrent();
+  ImGui_ImplOpenGL3_Shutdown();  // deletes names a lost context took with it (errors, discarded)
+  ctx_.discardErrors();
+  renderer_.recreateGlObjects();
+  images_.recreateGlObjects();
+  const bool es = gl::dialectOf(ctx_.gl()) == gl::GlslDialect::es300;
+  if (!ImGui_ImplOpenGL3_Init(es ? "#version 300 es" : "#version 330 core"))
+    throw Error("ImGui's OpenGL3 renderer could not be initialised again on the " + std::string(ctx_.backend()) + " context");
+  ctx_.discardErrors();  // the render targets' old names, deleted
+  requestFrames(3);
+}
+
 }  // namespace vplab

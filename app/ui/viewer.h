@@ -85,6 +85,11 @@ class Viewer {
   Image exportImage(ViewKind kind, int width, int height);
   /// Every view is drawn again in the next frame (the browser's frame-time benchmark).
   void forgetViewImages();
+  /// The context lost every GL object and is usable again (a WebGL context lost and restored): the
+  /// views' backend, their render targets and ImGui's renderer (its shaders and font texture) are
+  /// made again. The document, its undo history, the views' observers and settings stay: they hold
+  /// no GL object. Throws vplab::Error when the context cannot make them.
+  void recreateGlObjects();
 
   /// Written by F12 into the working directory; the runner reads the window back.
   bool screenshotRequested() const { return s_.screenshotRequested; }

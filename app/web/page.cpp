@@ -58,6 +58,7 @@ struct Page {
   page::BrowserFiles* files = nullptr;  // owned by the viewer
   double nextWake = 0;                  // emscripten_get_now() ms at which the viewer wants a frame
   unsigned frames = 0;
+  bool graphicsLost = false;  // between webglcontextlost and webglcontextrestored: nothing is drawn
   std::string shownHash, shownTitle;
   bool shownUnsaved = false;
   std::string storedAutosave;  // what this tab's localStorage key holds (empty: nothing)
@@ -144,6 +145,7 @@ struct Page {
   }
 
   void tick() {
+    if (graphicsLost) return;
     followPixelRatio();
     int w = 0, h = 0;
     window.framebufferSize(w, h);  // resizes the canvas to the page first
@@ -187,6 +189,25 @@ struct Page {
     if (frames == 1) page::firstFrameDrawn();
   }
 
+  /// The browser took the WebGL context away (webglcontextlost): nothing is drawn until it is given
+  /// back, and unsaved changes are kept in localStorage at once, for a reload if it never is.
+  void loseGraphics() {
+    graphicsLost = true;
+    viewer.session().writeRecoveryNow();
+    mirrorAutosave();
+  }
+
+  /// The context is back, empty (webglcontextrestored): every GL object is made again and the frame
+  /// drawn; the document, its undo history and the views' settings never left.
+  void restoreGraphics() {
+    window.makeCurrent();
+    page::forgetLostGlObjects();
+    viewer.recreateGlObjects();
+    graphicsLost = false;
+    input.changed = true;
+    nextWake = 0;
+  }
+
   /// The state the browser tests read (window.vplab.state()).
   std::string stateJson() {
     const ViewerState& s = viewer.state();
@@ -215,6 +236,7 @@ struct Page {
     j["canvas"] = {w, h};
     j["devicePixelRatio"] = pixelRatio;
     j["loading"] = viewer.session().loader().busy();
+    j["graphicsLost"] = graphicsLost;
     j["recoveryOffered"] = viewer.session().recoveryOffered();
     j["recoveriesOffered"] = viewer.session().recoveriesOffered();
     return j.dump();
@@ -228,6 +250,12 @@ void tick(void* arg) {
   try {
     p->tick();
   } catch (const std::exception& e) {
+    // The context went in the middle of a frame, before its webglcontextlost event: that event
+    // comes next and says so; this is no reason to stop.
+    if (page::graphicsContextLost()) {
+      p->loseGraphics();
+      return;
+    }
     emscripten_cancel_main_loop();
     page::showFatalError(std::string("vplab stopped: ") + e.what());
   }
@@ -289,6 +317,20 @@ EMSCRIPTEN_KEEPALIVE void vplab_wheel(Page* p, double x, double y, double steps)
 /// The address's fragment changed (a link pasted, the back button): shown unless it is the page's own.
 EMSCRIPTEN_KEEPALIVE void vplab_hash_changed(Page* p, const char* fragment) { p->showLink(fragment, false); }
 
+/// webglcontextlost (index.html prevented its default, so the browser may give the context back).
+EMSCRIPTEN_KEEPALIVE void vplab_graphics_lost(Page* p) { p->loseGraphics(); }
+
+/// webglcontextrestored: returns "" when the lab draws again, else why not.
+EMSCRIPTEN_KEEPALIVE const char* vplab_graphics_restored(Page* p) {
+  p->reply.clear();
+  try {
+    p->restoreGraphics();
+  } catch (const std::exception& e) {
+    p->reply = e.what();
+  }
+  return p->reply.c_str();
+}
+
 EMSCRIPTEN_KEEPALIVE const char* vplab_state_json(Page* p) { return (p->reply = p->stateJson()).c_str(); }
 
 /// Writes a PNG of `view` at width × height as File > Export draws it; returns its path in the
@@ -298,6 +340,7 @@ EMSCRIPTEN_KEEPALIVE const char* vplab_export_png(Page* p, const char* view, int
   try {
     const auto kind = vplab::viewKindFromString(view);
     if (!kind) throw vplab::Error(std::string("no view \"") + view + "\"");
+    if (p->graphicsLost) throw vplab::Error("the graphics context is lost: nothing can be drawn until the browser gives it back");
     if (width < 1 || height < 1 || width > 8192 || height > 8192)
       throw vplab::Error("an exported view has 1 to 8192 pixels a side, not " + std::to_string(width) + " × " + std::to_string(height));
     p->window.makeCurrent();
@@ -332,6 +375,7 @@ EMSCRIPTEN_KEEPALIVE const char* vplab_dump(Page* p) {
 /// its GPU process; a read of a pixel does).
 EMSCRIPTEN_KEEPALIVE double vplab_bench_frames(Page* p, int frames) {
   frames = std::clamp(frames, 1, 1000);
+  if (p->graphicsLost) return -1;
   int w = 0, h = 0;
   p->window.framebufferSize(w, h);
   const double start = emscripten_get_now();

@@ -30,6 +30,16 @@ EM_JS(void, jsReplaceLocationHash, (const char* fragment), { vplabPage.replaceHa
 EM_JS(void, jsSetUnsaved, (int unsaved), { vplabPage.unsaved = !!unsaved; });
 EM_JS(void, jsFirstFrame, (), { vplabPage.firstFrame(); });
 EM_JS(void, jsSetTitle, (const char* title), { document.title = UTF8ToString(title); });
+EM_JS(int, jsContextLost, (), {
+  var gl = Module.canvas && Module.canvas.getContext("webgl2");
+  return gl && gl.isContextLost() ? 1 : 0;
+});
+EM_JS(void, jsForgetLostGlObjects, (), {
+  [GL.buffers, GL.programs, GL.framebuffers, GL.renderbuffers, GL.textures, GL.shaders, GL.vaos, GL.queries,
+   GL.samplers, GL.transformFeedbacks, GL.syncs].forEach(function(table) {
+    if (table) for (var i = 0; i < table.length; ++i) table[i] = null;
+  });
+});
 EM_JS(void, jsFatal, (const char* message), { vplabPage.fatal(UTF8ToString(message)); });
 // clang-format on
 
@@ -100,6 +110,8 @@ void setUnsavedChanges(bool unsaved) { jsSetUnsaved(unsaved ? 1 : 0); }
 void firstFrameDrawn() { jsFirstFrame(); }
 void setPageTitle(const std::string& title) { jsSetTitle(title.c_str()); }
 void showFatalError(const std::string& message) { jsFatal(message.c_str()); }
+void forgetLostGlObjects() { jsForgetLostGlObjects(); }
+bool graphicsContextLost() { return jsContextLost() != 0; }
 double devicePixelRatio() { return emscripten_get_device_pixel_ratio(); }
 
 }  // namespace vplab::page

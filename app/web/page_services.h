@@ -61,6 +61,11 @@ void dropKeptScene(const std::string& key);
 /// Keeps `text` (this tab's autosave file) in localStorage; an empty text removes it. Returns
 /// false when the browser refused (storage full or disabled).
 bool storeRecovery(const std::string& text);
+/// Whether the canvas's WebGL context is lost now (its webglcontextlost event may not have come yet).
+bool graphicsContextLost();
+/// Forgets every GL name of a lost context in emscripten's tables (the context was restored without
+/// them): deleting one then is a no-op, not a call that WebGL warns about in the console.
+void forgetLostGlObjects();
 /// window.devicePixelRatio (1 on a plain screen, 2 on most laptops' and tablets' screens).
 double devicePixelRatio();
 

@@ -494,6 +494,64 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     await tabD.close();
   });
 
+  test('(m) a lost WebGL context is restored with the same picture and the undo history; one never given back offers a reload that recovers the scene', { timeout: 180_000 }, async () => {
+    await freshPage(server.url);
+    const start = await vplabState(page);
+    const field = await cssRect(page, start, 'camera.vrp');
+    const from = rectPoint(field, 5 / 6, 0.5); // VRP z
+    await drag(page, from, { x: from.x + 30, y: from.y }, { steps: 5 });
+    const changed = await vplabState(page);
+    assert.ok(changed.dirty && changed.camera.vrp[2] !== start.camera.vrp[2], 'dragging VRP z made no change');
+    await waitFrames(page, 3);
+    const before = await page.screenshot({ type: 'png' });
+    const messageShown = () => page.evaluate(() => {
+      const m = document.getElementById('vplab-message');
+      return m.hidden ? null : m.textContent;
+    });
+
+    // The reproduction of the issue: the extension takes the context away and gives it back 1 s later.
+    await page.evaluate(() => {
+      const x = document.querySelector('canvas').getContext('webgl2').getExtension('WEBGL_lose_context');
+      x.loseContext();
+      setTimeout(() => x.restoreContext(), 1000);
+    });
+    await waitForState(page, (s) => s.graphicsLost, 'the page to notice the lost context', pageConsole);
+    assert.match(await messageShown() ?? '', /graphics context was lost \(CONTEXT_LOST_WEBGL.*restoring/,
+      'the page does not say that the context was lost');
+    await waitForState(page, (s) => !s.graphicsLost, 'the context to be restored', pageConsole)
+      .catch(async (e) => assert.fail(`${e.message}\n  the page says: ${await messageShown()}`));
+    await waitFrames(page, 5);
+    assert.equal(await messageShown(), null, 'the message stays after the context came back');
+    const after = await page.screenshot({ type: 'png' });
+    await assertSimilar('after-context-restored', after, before, { max: 0, mean: 0, largePixels: 0 });
+    const restored = await vplabState(page);
+    assert.deepEqual(restored.camera, changed.camera, 'the camera changed with the context');
+    assert.equal(restored.dirty, true);
+    await afterInput(page, async () => {
+      await page.keyboard.down('Control');
+      await page.keyboard.press('z');
+      await page.keyboard.up('Control');
+    });
+    await waitFrames(page, 3);
+    assert.deepEqual((await vplabState(page)).camera, start.camera, 'Ctrl+Z after the restore does not undo the drag');
+    assertCleanConsole(pageConsole, 'while the context was lost and restored');
+
+    // Never given back: after 10 s the page says so and offers a reload, which offers the scene back.
+    await drag(page, from, { x: from.x + 30, y: from.y }, { steps: 5 });
+    const unsaved = await vplabState(page);
+    await page.evaluate(() => document.querySelector('canvas').getContext('webgl2').getExtension('WEBGL_lose_context').loseContext());
+    await page.waitForSelector('#vplab-reload', { timeout: 20_000 });
+    assert.match(await messageShown(), /has not given it back.*reload the page and recover it/);
+    await Promise.all([page.waitForNavigation({ waitUntil: 'load' }), page.click('#vplab-reload')]);
+    await page.waitForFunction(() => window.vplab && window.vplab.firstFrameMs !== null, { timeout: 60_000 });
+    await waitFrames(page, 5);
+    const next = await vplabState(page);
+    assert.equal(next.recoveriesOffered, 1, 'the reload does not offer the scene back');
+    await click(page, rectPoint(await cssRect(page, next, 'recovery.recover')));
+    await waitForState(page, (s) => !s.recoveryOffered, 'the recovery dialog to close', pageConsole);
+    assert.deepEqual((await vplabState(page)).camera, unsaved.camera, 'the reload recovers another camera');
+  });
+
   test('(i) File > Export a view downloads the camera view as PNG and the world view as SVG', { timeout: 120_000 }, async () => {
     await freshPage(server.url);
     const downloads = await catchDownloads(browser, context);

@@ -427,6 +427,36 @@ TEST(Autosave, EverySessionLeftWithUnsavedChangesIsOfferedAndTheOthersStayKept) 
   EXPECT_FALSE(w->state().doc.dirty()) << "discarding recovers nothing";
 }
 
+// ---------------------------------------------------------------- a lost graphics context (issue 24 item 1)
+
+TEST(Graphics, EveryGlObjectMadeAgainGivesThePictureBackAndKeepsTheDocument) {
+  auto v = makeViewer();
+  v->key(keys::kP);  // an edit: the projection changes, one undo step
+  v->frames(4);
+  ASSERT_TRUE(v->state().doc.canUndo());
+  const Camera edited = v->state().doc.scene().camera;
+  const Image before = v->image();
+  const unsigned drawn = v->viewer().viewsDrawn();
+
+  // What the page does when WebGL gives its context back: every GL object is made again.
+  v->viewer().recreateGlObjects();
+  v->frames(4);  // the frame's GL error check passes: nothing of the old objects is left to fail
+  EXPECT_GT(v->viewer().viewsDrawn(), drawn) << "the views were not drawn again into new targets";
+  const Image after = v->image();
+  ASSERT_EQ(after.width, before.width);
+  ASSERT_EQ(after.height, before.height);
+  // The same draws on the same renderer give the same bytes: anything else is an object not made
+  // again (an empty font atlas, a view target left black).
+  size_t differing = 0;
+  for (size_t i = 0; i < before.pixels.size(); ++i) differing += before.pixels[i] != after.pixels[i];
+  EXPECT_EQ(differing, 0u) << "bytes differ after the GL objects were made again";
+  EXPECT_EQ(v->state().doc.scene().camera, edited);
+  ASSERT_TRUE(v->state().doc.canUndo()) << "the undo history was lost";
+  v->key(keys::kZ, /*ctrl=*/true);
+  v->frames(2);
+  EXPECT_NE(v->state().doc.scene().camera.projection, edited.projection) << "undo after the restore does not undo the edit";
+}
+
 TEST(Autosave, AFailureIsShownNotSwallowed) {
   TempDir dir;
   const fs::path notADirectory = dir.path / "file";
