@@ -1,12 +1,16 @@
 // Where the viewer's windows go on a display: controls on the left, the world and camera views
 // above, the NPC view and the inspector below. Fits a 1280 × 720 projector and laptop screens; the
 // user may move and resize them, and the layout is computed again when the display changes size.
+// A phone's screen cannot hold that (README "In the browser"): there the compact layout shows one
+// view at a time, a switcher at the bottom, and one panel below the view (upright) or beside it.
 #pragma once
 
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
+
+#include "app/ui/viewer_state.h"
 
 namespace vplab::ui {
 
@@ -16,7 +20,40 @@ struct Rect {
 
 struct Layout {
   Rect controls, world, camera, npc, inspect;
+  bool compact = false;  // then the views share one rect, the panels another, and only the chosen are shown
+  Rect switcher;         // compact: the bar that chooses the view and the panel
 };
+
+/// Whether a display of `display` pixels at UI scale `scale` is too small for the desktop layout:
+/// narrower than 760 or lower than 460 units (a phone upright or on its side; the desktop layout's
+/// controls take 300 units and each view needs some 200 to be more than a sliver).
+inline bool tooSmallForDesktop(ImVec2 display, float scale) {
+  return display.x < 760.f * scale || display.y < 460.f * scale;
+}
+
+/// The compact layout: the view fills what the menu and the switcher leave; a panel, when one is
+/// open, takes the lower 58 % upright or the right half on its side (the view stays in sight while
+/// a field is dragged).
+inline Layout computeCompactLayout(ImVec2 display, float menuHeight, float switcherHeight, bool panelOpen) {
+  Layout l;
+  l.compact = true;
+  const float top = menuHeight;
+  const float h = std::max(1.f, display.y - top - switcherHeight);
+  l.switcher = {{0, top + h}, {display.x, switcherHeight}};
+  Rect view{{0, top}, {display.x, h}}, panel = view;
+  if (panelOpen && display.x >= display.y) {  // on its side: the panel beside the view
+    const float w = std::floor(display.x * 0.5f);
+    view.size.x = w;
+    panel = {{w, top}, {display.x - w, h}};
+  } else if (panelOpen) {  // upright: the panel below the view
+    const float upper = std::floor(h * 0.42f);
+    view.size.y = upper;
+    panel = {{0, top + upper}, {display.x, h - upper}};
+  }
+  l.world = l.camera = l.npc = view;
+  l.controls = l.inspect = panel;
+  return l;
+}
 
 inline Layout computeLayout(ImVec2 display, float menuHeight, float scale) {
   Layout l;
@@ -34,11 +71,31 @@ inline Layout computeLayout(ImVec2 display, float menuHeight, float scale) {
   return l;
 }
 
-/// Positions the next window: always on a relayout frame, else only the first time.
-inline void placeNext(const Rect& r, bool relayout) {
-  const ImGuiCond cond = relayout ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+/// Positions the next window: always on a relayout frame or in the compact layout (whose windows
+/// do not move), else only the first time.
+inline void placeNext(const Layout& l, const Rect& r, bool relayout) {
+  const ImGuiCond cond = relayout || l.compact ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
   ImGui::SetNextWindowPos(r.pos, cond);
   ImGui::SetNextWindowSize(r.size, cond);
+}
+
+/// The windows' flags in layout `l` besides `flags`: fixed in place in the compact layout.
+inline ImGuiWindowFlags layoutFlags(const Layout& l, ImGuiWindowFlags flags) {
+  return l.compact ? flags | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse : flags;
+}
+
+/// The switcher's height at UI scale `scale` (a row of buttons large enough for a finger).
+inline float switcherHeight() {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  return ImGui::GetFrameHeight() + style.FramePadding.y * 2 + style.WindowPadding.y * 2;
+}
+
+/// The layout of this frame: compact where it is allowed and the display is too small.
+inline Layout currentLayout(const ViewerState& s, float scale) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  if (s.compactAllowed && tooSmallForDesktop(display, scale))
+    return computeCompactLayout(display, ImGui::GetFrameHeight(), switcherHeight(), s.compactPanel != ViewerState::noPanel);
+  return computeLayout(display, ImGui::GetFrameHeight(), scale);
 }
 
 }  // namespace vplab::ui

@@ -147,7 +147,10 @@ void ViewPanes::stepHighlight() {
 void ViewPanes::viewWindows() {
   ImGuiIO& io = ImGui::GetIO();
   const ImVec2 fbScale = io.DisplayFramebufferScale;
-  const ui::Layout layout = ui::computeLayout(io.DisplaySize, ImGui::GetFrameHeight(), uiScale_);
+  const ui::Layout layout = ui::currentLayout(s_, uiScale_);
+  // The compact layout shows only the view chosen in its switcher.
+  auto shown = [&](ViewKind kind) { return !layout.compact || s_.compactView == kind; };
+  const ImGuiWindowFlags flags = ui::layoutFlags(layout, kViewFlags);
 
   Highlights& hl = s_.highlights;
   hl = {};
@@ -167,11 +170,29 @@ void ViewPanes::viewWindows() {
     s_.drag = {};
 
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
-  ui::placeNext(layout.world, relayout_);
-  if (ImGui::Begin("World view (WC)", nullptr, kViewFlags)) {
+  if (shown(ViewKind::world)) worldWindow(layout, flags, fbScale);
+  if (shown(ViewKind::camera)) {
+    ui::placeNext(layout, layout.camera, relayout_);
+    if (ImGui::Begin("Camera view (DC)", nullptr, flags)) cameraWindowContents();
+    ImGui::End();
+  }
+  if (shown(ViewKind::npc)) npcWindow(layout, flags, fbScale);
+  ImGui::PopStyleVar();
+  ctx_.gl().BindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void ViewPanes::worldWindow(const ui::Layout& layout, ImGuiWindowFlags flags, ImVec2 fbScale) {
+  ui::placeNext(layout, layout.world, relayout_);
+  if (ImGui::Begin("World view (WC)", nullptr, flags)) {
     const ImVec2 size = ImGui::GetContentRegionAvail();
     if (size.x >= 8 && size.y >= 8) {
-      s_.worldAspect = aspectOf(size);
+      // On a phone the view's shape changes with the panel and the phone's turn: the scene is framed
+      // for the new shape until the user turns the view (then the user's observer stays).
+      const double aspect = aspectOf(size);
+      if (layout.compact && std::abs(aspect - s_.worldAspect) > 1e-3 &&
+          s_.display.world.orbit == defaultWorldOrbit(s_.doc.shown(), s_.worldAspect))
+        s_.display.world.orbit = defaultWorldOrbit(s_.doc.shown(), aspect);
+      s_.worldAspect = aspect;
       const GLuint texture = drawView(ViewKind::world, size);
       const ViewCamera observer = viewCameraOf(observerCamera(s_.display.world.orbit, s_.worldAspect));
       const bool hovered = viewImage("world", texture, size);
@@ -183,13 +204,11 @@ void ViewPanes::viewWindows() {
     }
   }
   ImGui::End();
+}
 
-  ui::placeNext(layout.camera, relayout_);
-  if (ImGui::Begin("Camera view (DC)", nullptr, kViewFlags)) cameraWindowContents();
-  ImGui::End();
-
-  ui::placeNext(layout.npc, relayout_);
-  if (ImGui::Begin("NPC view", nullptr, kViewFlags)) {
+void ViewPanes::npcWindow(const ui::Layout& layout, ImGuiWindowFlags flags, ImVec2 fbScale) {
+  ui::placeNext(layout, layout.npc, relayout_);
+  if (ImGui::Begin("NPC view", nullptr, flags)) {
     const ImVec2 size = ImGui::GetContentRegionAvail();
     if (size.x >= 8 && size.y >= 8) {
       const GLuint texture = drawView(ViewKind::npc, size);
@@ -202,8 +221,6 @@ void ViewPanes::viewWindows() {
     }
   }
   ImGui::End();
-  ImGui::PopStyleVar();
-  ctx_.gl().BindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 // The camera view: the GPU's image at the device's size, scaled to fit. With the divide-first

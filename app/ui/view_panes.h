@@ -7,6 +7,7 @@
 
 #include "app/context/context.h"
 #include "app/render/view_images.h"
+#include "app/ui/layout.h"
 #include "app/ui/shown_run.h"
 #include "app/ui/viewer_state.h"
 
@@ -43,6 +44,8 @@ class ViewPanes {
   std::optional<Vec3> probePositionOf(ViewKind view) const;
   void stepHighlight();
   void cameraWindowContents();
+  void worldWindow(const ui::Layout& layout, ImGuiWindowFlags flags, ImVec2 fbScale);
+  void npcWindow(const ui::Layout& layout, ImGuiWindowFlags flags, ImVec2 fbScale);
   void orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const ViewCamera& observer, int w, int h, Vec2 mouse);
   void recordHandles(ImVec2 origin, const ViewCamera& observer, ImVec2 fbScale);
   void worldInteraction(bool hovered, const ViewCamera& observer, int w, int h, Vec2 mouse);

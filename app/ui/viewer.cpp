@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <tuple>
 
 namespace vplab {
 
@@ -191,6 +192,7 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
     updateRun();
     panes_.viewWindows();
     inspectWindow();
+    compactSwitcher();
     panes_.morphWindow();
   }
   menus_.helpWindow();
@@ -223,9 +225,10 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
 // ---------------------------------------------------------------- 3 layout and windows
 
 void Viewer::controlsWindow() {
-  const ui::Layout l = ui::computeLayout(ImGui::GetIO().DisplaySize, ImGui::GetFrameHeight(), uiScale_);
-  ui::placeNext(l.controls, relayout_);
-  ImGui::Begin("Controls", nullptr, ImGuiWindowFlags_NoCollapse);
+  const ui::Layout l = ui::currentLayout(s_, uiScale_);
+  if (l.compact && s_.compactPanel != ViewerState::controlsPanel) return;
+  ui::placeNext(l, l.controls, relayout_);
+  ImGui::Begin("Controls", nullptr, ui::layoutFlags(l, ImGuiWindowFlags_NoCollapse));
   const Scene& scene = s_.doc.scene();
   if (!scene.title.empty() || !scene.caption.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ui::accentColor());
@@ -262,9 +265,10 @@ void Viewer::controlsWindow() {
 }
 
 void Viewer::inspectWindow() {
-  const ui::Layout l = ui::computeLayout(ImGui::GetIO().DisplaySize, ImGui::GetFrameHeight(), uiScale_);
-  ui::placeNext(l.inspect, relayout_);
-  ImGui::Begin("Inspect", nullptr, ImGuiWindowFlags_NoCollapse);
+  const ui::Layout l = ui::currentLayout(s_, uiScale_);
+  if (l.compact && s_.compactPanel != ViewerState::inspectPanel) return;
+  ui::placeNext(l, l.inspect, relayout_);
+  ImGui::Begin("Inspect", nullptr, ui::layoutFlags(l, ImGuiWindowFlags_NoCollapse));
   // A new probe (a vertex clicked in a view) brings the probe forward; the tabs stay in place while
   // the panel scrolls.
   if (s_.probe && s_.probe != s_.probeShown) s_.inspectTab = ViewerState::probeTab;
@@ -279,6 +283,40 @@ void Viewer::inspectWindow() {
   }
   ImGui::EndChild();
   ImGui::End();
+}
+
+/// The compact layout's switcher (a phone): the three views, one at a time, and the two panels, each
+/// opened and closed again by its button. A probe brings the inspector forward, as on the desktop.
+void Viewer::compactSwitcher() {
+  const ui::Layout l = ui::currentLayout(s_, uiScale_);
+  s_.compactShown = l.compact;
+  if (!l.compact) return;
+  if (s_.probe && s_.probe != s_.probeShown && s_.compactPanel == ViewerState::noPanel) s_.compactPanel = ViewerState::inspectPanel;
+  ImGui::SetNextWindowPos(l.switcher.pos);
+  ImGui::SetNextWindowSize(l.switcher.size);
+  const ImGuiStyle& style = ImGui::GetStyle();
+  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(style.FramePadding.x * 1.5f, style.FramePadding.y * 2));
+  ImGui::Begin("##switcher", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+  auto choice = [&](const char* name, const char* id, bool selected) {
+    ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(selected ? ImGuiCol_TabActive : ImGuiCol_Tab));
+    const bool pressed = ImGui::Button(name);
+    ImGui::PopStyleColor();
+    ui::recordRect(s_, id);
+    ImGui::SameLine();
+    return pressed;
+  };
+  for (const auto& [kind, name, id] : {std::tuple{ViewKind::world, "World", "switch.world"},
+                                       std::tuple{ViewKind::camera, "Camera", "switch.camera"},
+                                       std::tuple{ViewKind::npc, "NPC", "switch.npc"}})
+    if (choice(name, id, s_.compactView == kind)) s_.compactView = kind;
+  ImGui::SeparatorEx(ImGuiSeparatorFlags_Vertical);
+  ImGui::SameLine();
+  for (const auto& [panel, name, id] : {std::tuple{int(ViewerState::controlsPanel), "Controls", "switch.controls"},
+                                        std::tuple{int(ViewerState::inspectPanel), "Inspect", "switch.inspect"}})
+    if (choice(name, id, s_.compactPanel == panel)) s_.compactPanel = s_.compactPanel == panel ? ViewerState::noPanel : panel;
+  ImGui::End();
+  ImGui::PopStyleVar();
 }
 
 // ---------------------------------------------------------------- 4 export

@@ -105,6 +105,7 @@ class Viewer {
  private:
   void controlsWindow();
   void inspectWindow();
+  void compactSwitcher();
   /// The pipeline's run of the shown scene, when it changed (app/ui/shown_run.h).
   void updateRun();
   void setStatus(std::string message, bool error);

@@ -78,6 +78,13 @@ struct ViewerState {
   double morphSpeed = 0.5;      // stages per second
   StepThrough stepThrough;
   bool lectureMode = false;     // one view fills the window, no panels (F11)
+  // The compact layout of a phone's screen (ui::tooSmallForDesktop): one view at a time, chosen in
+  // the switcher at the bottom, and at most one panel below it (upright) or beside it (on its side).
+  bool compactAllowed = false;  // the page allows it; the desktop window keeps its layout
+  ViewKind compactView = ViewKind::world;
+  enum CompactPanel { noPanel, controlsPanel, inspectPanel };
+  int compactPanel = noPanel;
+  bool compactShown = false;    // the last frame had the compact layout
   ViewKind lectureView = ViewKind::world;
   float uiScale = 1.f;          // fonts and handles; applied at the start of the next frame
   std::vector<SceneFileInfo> presets;  // assets/scenes/, for the presets menu

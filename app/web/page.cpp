@@ -10,6 +10,7 @@
 // gets at start: the page's state lives in one owned struct, not in globals.
 #include "app/context/context_glfw.h"
 #include "app/gl/render_target.h"
+#include "app/ui/text_fit.h"
 #include "app/ui/viewer.h"
 #include "app/ui/window_input.h"
 #include "app/web/page_services.h"
@@ -47,10 +48,19 @@ const std::filesystem::path kKeptDir = "/state/kept";
 
 }  // namespace
 
+/// The UI scale the page's size asks for: the canvas's pixels are screen pixels (devicePixelRatio
+/// × CSS pixels), so the scale follows the ratio (text and handles keep their size on a high-DPI
+/// screen), and a phone's small CSS size (its shorter side under 440 CSS px) takes it down a little,
+/// to 0.85 at most, so that a panel holds a line of fields (README "In the browser").
+double pageScale() {
+  const double ratio = std::clamp(page::devicePixelRatio(), 1.0, 4.0);
+  const auto [cssWidth, cssHeight] = page::canvasCssSize();
+  const double shorter = std::min(cssWidth, cssHeight);
+  return ratio * (shorter > 0 ? std::clamp(shorter / 440.0, 0.85, 1.0) : 1.0);
+}
+
 struct Page {
-  // The canvas's pixels are screen pixels (devicePixelRatio × CSS pixels); the UI scale follows
-  // the ratio, so text and handles keep their size on a high-DPI screen.
-  double pixelRatio = std::clamp(page::devicePixelRatio(), 1.0, 4.0);
+  double pixelRatio = pageScale();  // the scale the page's size asked for last (pageScale)
   GlfwWindow window{1280, 720, "vplab", false};
   Viewer viewer{window, defaultScene(), float(pixelRatio)};
   GlfwBackend backend{window.handle()};
@@ -69,6 +79,7 @@ struct Page {
     auto chooser = std::make_unique<page::BrowserFiles>();
     files = chooser.get();
     viewer.session().useFileChooser(std::move(chooser), /*browser=*/true);
+    viewer.state().compactAllowed = true;  // a phone's screen: one view at a time (app/ui/layout.h)
     showLink(page::locationHash(), /*atStart=*/true);
     startAutosave();
   }
@@ -135,9 +146,10 @@ struct Page {
     input.changed = true;
   }
 
-  /// Follows devicePixelRatio (browser zoom, a window moved to another screen) with the UI scale.
+  /// Follows devicePixelRatio (browser zoom, a window moved to another screen) and the CSS size (a
+  /// phone turned) with the UI scale; a scale the user chose (View ▸ UI scale) is kept relative.
   void followPixelRatio() {
-    const double ratio = std::clamp(page::devicePixelRatio(), 1.0, 4.0);
+    const double ratio = pageScale();
     if (ratio == pixelRatio) return;
     viewer.state().uiScale = float(viewer.state().uiScale * ratio / pixelRatio);
     pixelRatio = ratio;
@@ -234,7 +246,12 @@ struct Page {
     int w = 0, h = 0;
     glfwGetFramebufferSize(window.handle(), &w, &h);
     j["canvas"] = {w, h};
-    j["devicePixelRatio"] = pixelRatio;
+    j["devicePixelRatio"] = page::devicePixelRatio();
+    j["uiScale"] = s.uiScale;
+    j["compact"] = s.compactShown;
+    j["compactView"] = std::string(toString(s.compactView));
+    j["compactPanel"] = s.compactPanel == ViewerState::controlsPanel ? "controls"
+                        : s.compactPanel == ViewerState::inspectPanel ? "inspect" : "";
     j["loading"] = viewer.session().loader().busy();
     j["graphicsLost"] = graphicsLost;
     j["recoveryOffered"] = viewer.session().recoveryOffered();
@@ -329,6 +346,13 @@ EMSCRIPTEN_KEEPALIVE const char* vplab_graphics_restored(Page* p) {
     p->reply = e.what();
   }
   return p->reply.c_str();
+}
+
+/// The desktop's cut-off rule on the page's last frame (ui::textCutOff): a JSON list of the places
+/// where text is cut off, empty when everything fits.
+EMSCRIPTEN_KEEPALIVE const char* vplab_text_cut_off(Page* p) {
+  p->viewer.makeCurrent();
+  return (p->reply = nlohmann::json(vplab::ui::textCutOff()).dump()).c_str();
 }
 
 EMSCRIPTEN_KEEPALIVE const char* vplab_state_json(Page* p) { return (p->reply = p->stateJson()).c_str(); }

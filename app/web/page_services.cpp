@@ -111,6 +111,12 @@ void firstFrameDrawn() { jsFirstFrame(); }
 void setPageTitle(const std::string& title) { jsSetTitle(title.c_str()); }
 void showFatalError(const std::string& message) { jsFatal(message.c_str()); }
 void forgetLostGlObjects() { jsForgetLostGlObjects(); }
+std::pair<double, double> canvasCssSize() {
+  double w = 0, h = 0;
+  if (emscripten_get_element_css_size("#canvas", &w, &h) != EMSCRIPTEN_RESULT_SUCCESS) return {0, 0};
+  return {w, h};
+}
+
 bool graphicsContextLost() { return jsContextLost() != 0; }
 double devicePixelRatio() { return emscripten_get_device_pixel_ratio(); }
 

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vplab::page {
@@ -66,6 +67,8 @@ bool graphicsContextLost();
 /// Forgets every GL name of a lost context in emscripten's tables (the context was restored without
 /// them): deleting one then is a no-op, not a call that WebGL warns about in the console.
 void forgetLostGlObjects();
+/// The canvas's size in CSS pixels (width, height).
+std::pair<double, double> canvasCssSize();
 /// window.devicePixelRatio (1 on a plain screen, 2 on most laptops' and tablets' screens).
 double devicePixelRatio();
 

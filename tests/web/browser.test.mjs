@@ -468,23 +468,23 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
 
     await tabA.close();
     await tabB.close();
+    /** A new tab that is offered `count` kept scenes and recovers the newest. */
+    async function openAndRecover(count, what) {
+      const opened = await openPage(context, server.url);
+      await waitFrames(opened.page, 5);
+      const offered = await vplabState(opened.page);
+      assert.equal(offered.recoveriesOffered, count, what);
+      await click(opened.page, rectPoint(await cssRect(opened.page, offered, 'recovery.recover')));
+      await waitForState(opened.page, (s) => !s.recoveryOffered, 'the recovery dialog to close', opened.console);
+      return opened;
+    }
     // The next visit offers both, newest first; it recovers the second tab's.
-    ({ page, console: pageConsole } = await openPage(context, server.url));
-    await waitFrames(page, 5);
-    const next = await vplabState(page);
-    assert.equal(next.recoveriesOffered, 2, 'the next visit does not offer both scenes left unsaved');
-    await click(page, rectPoint(await cssRect(page, next, 'recovery.recover')));
-    await waitForState(page, (s) => !s.recoveryOffered, 'the recovery dialog to close', pageConsole);
+    ({ page, console: pageConsole } = await openAndRecover(2, 'the next visit does not offer both scenes left unsaved'));
     assert.deepEqual((await vplabState(page)).camera, cameraB, 'the newest kept scene is not the second tab\'s');
     assert.match((await vplabState(page)).status, /1 other kept scene is offered in the next tab or visit/);
 
     // Another tab now is offered the first tab's scene only (the recovered one is this open tab's).
-    const { page: tabD, console: consoleD } = await openPage(context, server.url);
-    await waitFrames(tabD, 5);
-    const d = await vplabState(tabD);
-    assert.equal(d.recoveriesOffered, 1, 'the next tab is not offered exactly the scene still kept');
-    await click(tabD, rectPoint(await cssRect(tabD, d, 'recovery.recover')));
-    await waitForState(tabD, (s) => !s.recoveryOffered, 'the recovery dialog to close', consoleD);
+    const { page: tabD, console: consoleD } = await openAndRecover(1, 'the next tab is not offered exactly the scene still kept');
     assert.deepEqual((await vplabState(tabD)).camera, cameraA, 'the scene still kept is not the first tab\'s');
     await waitFrames(tabD, 2);
     assert.equal((await recoveryKeys(tabD)).length, 2, 'localStorage keeps more than the two open tabs\' autosaves');
@@ -550,6 +550,88 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     await click(page, rectPoint(await cssRect(page, next, 'recovery.recover')));
     await waitForState(page, (s) => !s.recoveryOffered, 'the recovery dialog to close', pageConsole);
     assert.deepEqual((await vplabState(page)).camera, unsaved.camera, 'the reload recovers another camera');
+  });
+
+  test('(n) on a phone, upright and on its side, one view at a time and every panel are reached by touch, with nothing cut off', { timeout: 300_000 }, async () => {
+    for (const [width, height] of [[390, 844], [844, 390]]) {
+      const upright = height > width;
+      const where = upright ? 'upright' : 'on its side';
+      await freshPage(server.url, { viewport: { width, height, deviceScaleFactor: 3, isMobile: true, hasTouch: true } });
+      const cdp = await page.createCDPSession();
+      const touch = (type, points) => cdp.send('Input.dispatchTouchEvent',
+        { type, touchPoints: points.map(([x, y], id) => ({ x, y, id })) });
+      const tap = async (point) => {
+        await afterInput(page, () => touch('touchStart', [[point.x, point.y]]));
+        await afterInput(page, () => touch('touchEnd', []));
+      };
+      const swipe = async (from, to, steps = 8) => {
+        await afterInput(page, () => touch('touchStart', [[from.x, from.y]]));
+        for (let i = 1; i <= steps; ++i)
+          await afterInput(page, () => touch('touchMove', [[from.x + (to.x - from.x) * i / steps, from.y + (to.y - from.y) * i / steps]]));
+        await afterInput(page, () => touch('touchEnd', []));
+      };
+      const tapId = async (id) => tap(rectPoint(await cssRect(page, await vplabState(page), id)));
+      const cutOff = async (what) => {
+        const problems = await page.evaluate(() => window.vplab.textCutOff());
+        if (problems.length) await keepArtifacts(`phone-${upright ? 'upright' : 'side'}-${what}`, { actual: await page.screenshot({ type: 'png' }) });
+        assert.deepEqual(problems, [], `text cut off ${where} in ${what}`);
+      };
+
+      const start = await vplabState(page);
+      assert.equal(start.compact, true, `a phone ${where} gets the desktop's layout`);
+      assert.deepEqual(start.canvas, [width * 3, height * 3]);
+      assert.ok(start.uiScale > 2.5 && start.uiScale <= 3, `UI scale ${start.uiScale} at a pixel ratio of 3 on a phone`);
+      // Every view, one at a time, filling the width.
+      for (const view of ['camera', 'npc', 'world']) {
+        await tapId(`switch.${view}`);
+        await waitFrames(page, 3);
+        const s = await vplabState(page);
+        assert.equal(s.compactView, view, `the switcher's ${view} button does not show the ${view} view`);
+        const r = await cssRect(page, s, `view.${view}`);
+        if (view !== 'camera') assert.ok(r.w > 0.95 * width, `the ${view} view is ${r.w} CSS px wide of ${width}`);
+        await cutOff(`the ${view} view`);
+      }
+      if (upright) await keepArtifacts('phone-upright-world', { actual: await page.screenshot({ type: 'png' }) });
+
+      // The controls: a field dragged with a finger.
+      await tapId('switch.controls');
+      await waitFrames(page, 3);
+      let s = await vplabState(page);
+      assert.equal(s.compactPanel, 'controls');
+      for (const tab of ['Scene', 'Clipping', 'Display', 'Lecture', 'Camera']) {
+        await tapId(`tab.controls.${tab}`);
+        await waitFrames(page, 2);
+        await cutOff(`the controls' ${tab} tab`);
+      }
+      if (upright) await keepArtifacts('phone-upright-controls', { actual: await page.screenshot({ type: 'png' }) });
+      s = await vplabState(page);
+      const field = await cssRect(page, s, 'camera.vrp');
+      const from = rectPoint(field, 1 / 6, 0.5);
+      await swipe(from, { x: from.x + 40, y: from.y });
+      const afterField = await vplabState(page);
+      assert.ok(afterField.camera.vrp[0] > s.camera.vrp[0], `a finger on VRP x left it at ${afterField.camera.vrp[0]}`);
+
+      // A handle in the world view, beside or above the open panel: PRP, dragged with a finger.
+      const handle = rectPoint(await cssRect(page, afterField, 'handle.prp'));
+      const view = await cssRect(page, afterField, 'view.world');
+      assert.ok(handle.x > view.x && handle.x < view.x + view.w && handle.y > view.y && handle.y < view.y + view.h,
+        `the PRP handle is not in the world view ${where}`);
+      await swipe(handle, { x: handle.x + Math.sign(view.x + view.w / 2 - handle.x) * 30, y: handle.y + 15 });
+      const afterHandle = await vplabState(page);
+      assert.notDeepEqual(afterHandle.camera.prp, afterField.camera.prp, `a finger on the PRP handle did not move it ${where}`);
+
+      // The inspector, each tab.
+      await tapId('switch.inspect');
+      await waitFrames(page, 3);
+      assert.equal((await vplabState(page)).compactPanel, 'inspect');
+      for (const tab of ['Matrices', 'Depth', 'Vertex probe']) {
+        await tapId(`tab.inspect.${tab}`);
+        await waitFrames(page, 2);
+        await cutOff(`the inspector's ${tab} tab`);
+      }
+      if (!upright) await keepArtifacts('phone-side-inspect', { actual: await page.screenshot({ type: 'png' }) });
+      assertCleanConsole(pageConsole, `on a phone ${where}`);
+    }
   });
 
   test('(i) File > Export a view downloads the camera view as PNG and the world view as SVG', { timeout: 120_000 }, async () => {

@@ -4,6 +4,7 @@
 #include "app/views/image.h"
 #include "app/export/cpu_raster.h"
 #include "app/ui/headless_viewer.h"
+#include "app/ui/text_fit.h"
 #include "app/ui/keys.h"
 #include "tests/support/gl_test_support.h"
 
@@ -111,39 +112,25 @@ namespace {
 
 // ---------------------------------------------------------------- item 6: nothing cut off
 
-/// Glyphs of the UI font drawn across the clip rectangle of their window, column or child (text cut
-/// off at the side), and ellipses ImGui put in for a shortened tab or header: "window: where".
-std::vector<std::string> clippedText() {
-  std::vector<std::string> problems;
-  const ImDrawData* data = ImGui::GetDrawData();
-  const ImGuiIO& io = ImGui::GetIO();
-  // A glyph's vertex has one of its glyph's texture corners (other shapes use the white pixel or
-  // the baked lines).
-  std::set<std::pair<float, float>> corners;
-  for (const ImFontGlyph& g : ImGui::GetFont()->Glyphs)
-    for (float u : {g.U0, g.U1})
-      for (float v : {g.V0, g.V1}) corners.insert({u, v});
-  const ImFontGlyph* ellipsis = ImGui::GetFont()->FindGlyphNoFallback(0x2026);
-  for (int l = 0; l < data->CmdListsCount; ++l) {
-    const ImDrawList* list = data->CmdLists[l];
-    const std::string owner = list->_OwnerName ? list->_OwnerName : "?";
-    for (const ImDrawCmd& cmd : list->CmdBuffer) {
-      if (cmd.UserCallback || cmd.TextureId != io.Fonts->TexID) continue;
-      for (unsigned i = 0; i < cmd.ElemCount; ++i) {
-        const ImDrawVert& v = list->VtxBuffer[list->IdxBuffer[cmd.IdxOffset + i] + cmd.VtxOffset];
-        if (!corners.count({v.uv.x, v.uv.y})) continue;  // a shape, not a glyph
-        char where[96];
-        std::snprintf(where, sizeof where, " at (%.0f, %.0f)", v.pos.x, v.pos.y);
-        if (v.pos.x < cmd.ClipRect.x - 0.5f || v.pos.x > cmd.ClipRect.z + 0.5f) {
-          problems.push_back(owner + ": text cut off" + where);
-          break;  // one per command is enough
-        }
-        if (ellipsis && v.uv.x == ellipsis->U0 && v.uv.y == ellipsis->V0) {
-          problems.push_back(owner + ": text shortened to \"…\"" + where);
-          break;
-        }
+/// ui::textCutOff() of every scrolled panel from top to bottom (ImGui draws only what is in view); a
+/// page with problems is left in the test output directory as PREFIX-page-N.png.
+std::vector<std::string> clippedTextOfEveryPage(HeadlessViewer& v, const std::string& prefix) {
+  std::vector<std::string> problems = ui::textCutOff();
+  for (int page = 0; page < 30; ++page) {
+    std::vector<std::pair<ImGuiWindow*, float>> before;
+    for (ImGuiWindow* w : ImGui::GetCurrentContext()->Windows)
+      if (w->Active && w->ScrollMax.y > 0 && w->Scroll.y < w->ScrollMax.y - 0.5f) {
+        before.emplace_back(w, w->Scroll.y);
+        ImGui::SetScrollY(w, w->Scroll.y + w->InnerRect.GetHeight() * 0.8f);
       }
-    }
+    if (before.empty()) break;
+    v.frames(2);
+    bool moved = false;
+    for (const auto& [w, y] : before) moved |= w->Scroll.y != y;
+    if (!moved) break;
+    const std::vector<std::string> more = ui::textCutOff();
+    if (!more.empty()) writePng(v.image(), test::outputDir() / (prefix + "-page-" + std::to_string(page + 1) + ".png"));
+    for (const std::string& p : more) problems.push_back(p);
   }
   return problems;
 }
@@ -198,28 +185,9 @@ TEST(UiLecture, NoTextIsCutOffAtAnyScale) {
     for (const Shown& s : shown) {
       SCOPED_TRACE(std::string(s.what) + " at UI scale " + std::to_string(scale));
       s.show(*v);
-      // Every scrolled panel from top to bottom: ImGui draws only what is in view.
-      std::vector<std::string> problems = clippedText();
-      for (int page = 0; page < 30; ++page) {
-        std::vector<std::pair<ImGuiWindow*, float>> before;
-        for (ImGuiWindow* w : ImGui::GetCurrentContext()->Windows)
-          if (w->Active && w->ScrollMax.y > 0 && w->Scroll.y < w->ScrollMax.y - 0.5f) {
-            before.emplace_back(w, w->Scroll.y);
-            ImGui::SetScrollY(w, w->Scroll.y + w->InnerRect.GetHeight() * 0.8f);
-          }
-        if (before.empty()) break;
-        v->frames(2);
-        bool moved = false;
-        for (const auto& [w, y] : before) moved |= w->Scroll.y != y;
-        if (!moved) break;
-        const std::vector<std::string> more = clippedText();
-        if (!more.empty()) {  // the page to look at
-          char file[160];
-          std::snprintf(file, sizeof file, "ui-%.1f-%s-page-%d.png", scale, s.what, page + 1);
-          writePng(v->image(), test::outputDir() / file);
-        }
-        for (const std::string& p : more) problems.push_back(p);
-      }
+      char prefix[128];
+      std::snprintf(prefix, sizeof prefix, "ui-%.1f-%s", scale, s.what);
+      std::vector<std::string> problems = clippedTextOfEveryPage(*v, prefix);
       if (std::string(s.what) == "Depth") {  // the plot at least ten lines high at every scale
         EXPECT_GE(v->state().rects.at("depth.plot").w, 10 * ImGui::GetTextLineHeight());
       }
@@ -231,6 +199,86 @@ TEST(UiLecture, NoTextIsCutOffAtAnyScale) {
       EXPECT_TRUE(problems.empty()) << problems.size() << " places:" << list;
     }
   }
+}
+
+
+// ---------------------------------------------------------------- issue 24 item 2: a phone's screen
+
+bool windowShown(const char* name) {
+  const ImGuiWindow* w = ImGui::FindWindowByName(name);
+  return w && w->Active;
+}
+
+// A phone (390 × 844 CSS px at a pixel ratio of 2, upright and on its side) gets the compact layout:
+// one view at a time filling the screen, chosen in the switcher, and the panels below or beside it.
+// Every view and every panel's tab is reached from the switcher, with no text cut off.
+TEST(UiCompact, APhoneShowsOneViewAtATimeAndEveryPanelWithNothingCutOff) {
+  const float scale = 2.f * 0.886f;  // the page's: the pixel ratio × the CSS size's factor (page.cpp)
+  for (const auto& [w, h] : {std::pair{780, 1688}, std::pair{1688, 780}}) {
+    const bool upright = h > w;
+    SCOPED_TRACE(upright ? "upright" : "on its side");
+    auto v = std::make_unique<HeadlessViewer>(*test::egl().context, defaultScene(), w, h, scale);
+    v->state().compactAllowed = true;
+    v->frames(3);
+    const std::map<ViewKind, const char*> windows = {
+        {ViewKind::world, "World view (WC)"}, {ViewKind::camera, "Camera view (DC)"}, {ViewKind::npc, "NPC view"}};
+    for (const auto& [kind, id] : {std::pair{ViewKind::camera, "switch.camera"}, std::pair{ViewKind::npc, "switch.npc"},
+                                   std::pair{ViewKind::world, "switch.world"}}) {
+      const auto [x, y] = v->centreOf(id);
+      v->click(x, y);
+      v->frames(2);
+      for (const auto& [k, name] : windows) EXPECT_EQ(windowShown(name), k == kind) << name << " after " << id;
+      const ImGuiWindow* shown = ImGui::FindWindowByName(windows.at(kind));
+      EXPECT_GE(shown->Size.x, 0.99f * float(w)) << windows.at(kind) << " does not fill the screen's width";
+      EXPECT_GE(shown->Size.y, 0.8f * float(h)) << windows.at(kind) << " does not fill the screen's height";
+      EXPECT_FALSE(windowShown("Controls") || windowShown("Inspect"));
+    }
+    char name[64];
+    std::snprintf(name, sizeof name, "compact-%s-world.png", upright ? "upright" : "side");
+    writePng(v->image(), test::outputDir() / name);
+
+    for (const auto& [panel, tabs] :
+         {std::pair{"Controls", std::vector<std::string>{"Camera", "Scene", "Clipping", "Display", "Lecture"}},
+          std::pair{"Inspect", std::vector<std::string>{"Vertex probe", "Matrices", "Depth"}}}) {
+      const std::string lower = panel == std::string("Controls") ? "controls" : "inspect";
+      const auto [x, y] = v->centreOf("switch." + lower);
+      v->click(x, y);
+      v->frames(2);
+      ASSERT_TRUE(windowShown(panel)) << panel << " does not open";
+      EXPECT_TRUE(windowShown("World view (WC)")) << "the view is not in sight beside the open panel";
+      const ImGuiWindow* p = ImGui::FindWindowByName(panel);
+      EXPECT_GE(p->Size.x, (upright ? 0.99f : 0.49f) * float(w)) << "the panel is not below (upright) or beside the view";
+      for (const std::string& tab : tabs) {
+        SCOPED_TRACE(tab);
+        const auto [tx, ty] = v->centreOf("tab." + lower + "." + tab);
+        v->click(tx, ty);
+        v->frames(2);
+        std::snprintf(name, sizeof name, "compact-%s-%s", upright ? "upright" : "side", tab.c_str());
+        writePng(v->image(), test::outputDir() / (std::string(name) + ".png"));
+        const std::vector<std::string> problems = clippedTextOfEveryPage(*v, name);
+        std::string list;
+        for (size_t i = 0; i < std::min<size_t>(problems.size(), 6); ++i) list += "\n  " + problems[i];
+        EXPECT_TRUE(problems.empty()) << problems.size() << " places:" << list;
+      }
+    }
+    EXPECT_FALSE(windowShown("Controls")) << "opening the inspector leaves the controls open";
+    const auto [x, y] = v->centreOf("switch.inspect");
+    v->click(x, y);
+    v->frames(2);
+    EXPECT_FALSE(windowShown("Inspect")) << "the inspector's button does not close it again";
+  }
+}
+
+// The desktop window keeps its layout at any size; a large page keeps the desktop's.
+TEST(UiCompact, TheDesktopLayoutStaysWhereItFitsOrIsNotAllowed) {
+  auto v = makeViewer();
+  v->state().compactAllowed = true;  // 1280 × 720 at scale 1 holds the desktop layout
+  v->frames(2);
+  EXPECT_TRUE(windowShown("World view (WC)") && windowShown("Camera view (DC)") && windowShown("NPC view") &&
+              windowShown("Controls") && windowShown("Inspect"));
+  auto small = std::make_unique<HeadlessViewer>(*test::egl().context, defaultScene(), 700, 900, 1.f);
+  small->frames(3);  // not allowed (the desktop window): all five windows, squeezed as the user made it
+  EXPECT_TRUE(windowShown("World view (WC)") && windowShown("Camera view (DC)") && windowShown("Controls"));
 }
 
 }  // namespace
