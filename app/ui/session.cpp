@@ -391,7 +391,11 @@ void Session::recoveryDialog() {
     ImGui::Text("the others stay kept and are offered %s.", browser_ ? "in the next tab or visit" : "at the next start");
   }
   std::optional<size_t> recovered, discarded;
-  for (size_t i = 0; i < recoveries_.size(); ++i) {
+  // The newest few, so that the dialog fits a screen after many crashes; the others come up as
+  // these are discarded.
+  constexpr size_t kListed = 6;
+  const size_t listed = std::min(recoveries_.size(), kListed);
+  for (size_t i = 0; i < listed; ++i) {
     ImGui::PushID(int(i));
     if (recoveries_.size() > 1) {
       ImGui::Separator();
@@ -404,6 +408,10 @@ void Session::recoveryDialog() {
     if (ImGui::Button("Discard them")) discarded = i;
     ui::recordRect(state_, ("recovery.discard" + suffix).c_str());
     ImGui::PopID();
+  }
+  if (recoveries_.size() > listed) {
+    ImGui::Separator();
+    ImGui::Text("and %zu older ones, listed as these are discarded", recoveries_.size() - listed);
   }
   if (recoveries_.size() > 1) {
     ImGui::Separator();

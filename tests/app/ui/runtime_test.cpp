@@ -427,6 +427,24 @@ TEST(Autosave, EverySessionLeftWithUnsavedChangesIsOfferedAndTheOthersStayKept) 
   EXPECT_FALSE(w->state().doc.dirty()) << "discarding recovers nothing";
 }
 
+TEST(Autosave, AfterManyCrashesTheDialogListsTheNewestAndTheRestComeUpAsTheyGo) {
+  TempDir dir;
+  const fs::path state = dir.path / "state";
+  for (int i = 0; i < 8; ++i) ASSERT_FALSE(crashWithUnsavedFront(state, "perspective.json", 0.1 * (i + 1)).empty());
+  auto v = makeViewer();
+  v->viewer().session().offerRecoveries(Autosave::findAll(state));
+  v->frames(3);
+  EXPECT_EQ(v->viewer().session().recoveriesOffered(), 8u);
+  EXPECT_TRUE(v->state().rects.count("recovery.recover.5")) << "the six newest are listed";
+  EXPECT_FALSE(v->state().rects.count("recovery.recover.6")) << "a list of every crash would not fit a screen";
+  clickId(*v, "recovery.discard");
+  v->frames(2);
+  EXPECT_EQ(v->viewer().session().recoveriesOffered(), 7u);
+  EXPECT_TRUE(v->state().rects.count("recovery.recover.5"));
+  EXPECT_FALSE(v->state().rects.count("recovery.recover.6"));
+  EXPECT_EQ(Autosave::findAll(state).size(), 7u);
+}
+
 // ---------------------------------------------------------------- a lost graphics context (issue 24 item 1)
 
 TEST(Graphics, EveryGlObjectMadeAgainGivesThePictureBackAndKeepsTheDocument) {
