@@ -12,7 +12,7 @@ WEB_BUILD="${VPLAB_WEB_BUILD:-$VPLAB_ROOT/build-web}"
 IMGUI_VERSION=1.86
 source "$VPLAB_ROOT/scripts/lib.sh"
 
-packages=(emscripten nodejs cmake make python3-glad dpkg-dev
+packages=(emscripten nodejs cmake make python3-glad dpkg-dev brotli
           libglm-dev nlohmann-json3-dev libtinyobjloader-dev libstb-dev fonts-dejavu-core)
 vplab_install_missing "${packages[@]}"
 
@@ -59,3 +59,7 @@ emcmake cmake --preset web -B "$WEB_BUILD" -DVPLAB_IMGUI_SOURCE="$imgui" \
   "-DCMAKE_CROSSCOMPILING_EMULATOR=$(command -v node);--no-experimental-fetch" >/dev/null
 cmake --build "$WEB_BUILD" -j "$(nproc)"
 echo "web.sh: built $WEB_BUILD/index.html (serve it: python3 -m http.server -d $WEB_BUILD -b 127.0.0.1 8000)" >&2
+
+# ---------------------------------------------------------------- the bundle for course pages (scripts/web_bundle.py)
+version=$(sed -n 's/^project(vplab VERSION \([0-9][0-9.]*\).*/\1/p' "$VPLAB_ROOT/CMakeLists.txt")
+python3 "$VPLAB_ROOT/scripts/web_bundle.py" "$WEB_BUILD" "${version:?web.sh: no version in CMakeLists.txt}"
