@@ -12,6 +12,7 @@
 #include "io/scene_io.h"
 
 #include <CLI/CLI.hpp>
+#include <vplab_version.h>
 
 #include <cmath>
 #include <csignal>
@@ -265,7 +266,7 @@ int runCommandLine(int argc, char** argv) {
   CLI::App app{"vplab — Viewing Pipeline Lab: the 3D viewing pipeline (modeling, view orientation, "
                "view mapping, clipping in homogeneous coordinates, device mapping), step by step.\n"
                "Without a subcommand, opens the interactive viewer."};
-  app.set_version_flag("--version", "vplab 0.1.0");
+  app.set_version_flag("--version", "vplab " VPLAB_VERSION " (git " VPLAB_COMMIT ")");
 
   ViewerOptions viewer;
   app.add_option("--scene", viewer.scene, "Scene file (JSON) to open; default: the built-in lecture scene")

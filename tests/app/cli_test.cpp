@@ -17,9 +17,11 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -72,6 +74,20 @@ class Cli : public test::ProcessTest {
 };
 
 // ---------------------------------------------------------------- determinism
+
+TEST_F(Cli, VersionNamesTheReleaseAndTheCommitItWasBuiltFrom) {
+  const ProcessResult r = vplab("--version");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  // The oracles: the project's version in CMakeLists.txt, and git asked in the source tree.
+  const fs::path source = fs::path(VPLAB_ASSETS).parent_path();
+  const std::string cmake = readFile(source / "CMakeLists.txt");
+  std::smatch version;
+  ASSERT_TRUE(std::regex_search(cmake, version, std::regex(R"(project\(vplab VERSION ([0-9.]+))")));
+  ProcessResult git = sh("git -C " + shellQuoted(source.string()) + " rev-parse --short=12 HEAD");
+  while (!git.out.empty() && std::isspace(static_cast<unsigned char>(git.out.back()))) git.out.pop_back();
+  const std::string commit = git.exitCode == 0 && !git.out.empty() ? git.out : "unknown";
+  EXPECT_EQ(r.out, "vplab " + version[1].str() + " (git " + commit + ")\n");
+}
 
 TEST_F(Cli, RenderTwiceWritesTheSameBytes) {
   const std::vector<std::string> cases = {"--view camera --style flat", "--view all --style shaded --size 320x240",
