@@ -1,5 +1,6 @@
 #include "app/cli.h"
 
+#include "app/core/assets.h"
 #include "bench/bench_command.h"
 #include "app/course/course_commands.h"
 #include "app/export/svg.h"
@@ -262,6 +263,24 @@ int runViewer(const ViewerOptions& v) {
 
 }  // namespace
 
+namespace {
+
+/// `vplab presets`: name, title and file of each bundled scene, one per line.
+int runPresets() {
+  const std::vector<SceneFileInfo> presets = listPresetScenes();
+  if (presets.empty())
+    throw Error("no bundled scenes found: an installed vplab reads them from share/vplab/scenes beside its bin/ "
+                "directory (cmake --install), a built one from the source tree's assets/scenes");
+  for (const SceneFileInfo& p : presets) {
+    const std::string name = p.file.stem().string();
+    std::cout << name << std::string(name.size() < 26 ? 26 - name.size() : 1, ' ') << p.title << "\n    "
+              << p.file.string() << "\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
 int runCommandLine(int argc, char** argv) {
   CLI::App app{"vplab — Viewing Pipeline Lab: the 3D viewing pipeline (modeling, view orientation, "
                "view mapping, clipping in homogeneous coordinates, device mapping), step by step.\n"
@@ -269,8 +288,13 @@ int runCommandLine(int argc, char** argv) {
   app.set_version_flag("--version", "vplab " VPLAB_VERSION " (git " VPLAB_COMMIT ")");
 
   ViewerOptions viewer;
-  app.add_option("--scene", viewer.scene, "Scene file (JSON) to open; default: the built-in lecture scene")
-      ->check(CLI::ExistingFile);
+  CLI::Option* sceneOption =
+      app.add_option("--scene", viewer.scene, "Scene file (JSON) to open; default: the built-in lecture scene")
+          ->check(CLI::ExistingFile);
+  // A file manager and the desktop entry (packaging/vplab.desktop) open a scene by its name alone.
+  app.add_option("file", viewer.scene, "A scene file to open, as --scene FILE")
+      ->check(CLI::ExistingFile)
+      ->excludes(sceneOption);
   app.add_option("--quit-after-frames", viewer.quitAfterFrames,
                  "Quit by itself after N frames (for smoke tests and scripted screenshots)")
       ->check(CLI::Range(1, 100000000));
@@ -356,6 +380,9 @@ int runCommandLine(int argc, char** argv) {
   benchCmd->add_option("--frames", bench.frames, "Frames per frame-time measurement")->check(CLI::Range(5, 10000));
   benchCmd->add_option("--only", benchOnly, "Comma-separated parts: pipeline, frames, startup, input");
 
+  CLI::App* presetsCmd = app.add_subcommand(
+      "presets", "List the bundled scenes (the viewer's File > Presets): each one's name, title and file");
+
   addCourseCommands(app);  // exercise, grade (app/course/)
 
   try {
@@ -368,6 +395,7 @@ int runCommandLine(int argc, char** argv) {
   }
   try {
     if (dumpCmd->parsed()) return runDump(dump);
+    if (presetsCmd->parsed()) return runPresets();
     if (renderCmd->parsed()) {
       render.styleGiven = renderCmd->count("--style") > 0;
       return runRender(render);

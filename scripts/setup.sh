@@ -13,7 +13,7 @@ packages=(
   libegl-dev libgl-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
   nlohmann-json3-dev libtinyobjloader-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth x11-utils xdotool fonts-dejavu-core
+  xvfb xauth x11-utils xdotool fonts-dejavu-core strace desktop-file-utils
   clang libfuzzer-14-dev libclang-rt-14-dev time  # sanitizer and fuzz stages of test.sh; time -v
 )
 # vplab exercise: the .tex sheets are compiled by the tests (pdflatex; German with babel ngerman, T1 with

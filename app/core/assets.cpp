@@ -7,13 +7,29 @@
 
 namespace vplab {
 
+namespace {
+
+bool within(const std::filesystem::path& file, const std::filesystem::path& dir) {
+  const auto [d, f] = std::mismatch(dir.begin(), dir.end(), file.begin(), file.end());
+  return d == dir.end();
+}
+
+}  // namespace
+
 std::filesystem::path assetsDirectory() {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   std::vector<fs::path> candidates;
-  if (!ec) candidates = {exe.parent_path() / "assets", exe.parent_path().parent_path() / "assets"};
-  candidates.push_back(VPLAB_SOURCE_ASSETS);
+  if (!ec) {
+    const fs::path bin = exe.parent_path();
+    // Installed (cmake --install, the .deb): PREFIX/bin/vplab reads PREFIX/share/vplab, the GNU
+    // layout's data directory relative to its binary directory (GNUInstallDirs).
+    candidates = {(bin / VPLAB_DATA_FROM_BIN).lexically_normal(), bin / "assets", bin.parent_path() / "assets"};
+  }
+  // The source tree it was built from, only for a program in its build tree (the tests' programs too):
+  // an installed vplab never reads a source tree.
+  if (ec || within(exe, VPLAB_BUILD_DIR)) candidates.push_back(VPLAB_SOURCE_ASSETS);
   for (const fs::path& p : candidates)
     if (fs::is_directory(p / "scenes", ec)) return p;
   return {};

@@ -1,6 +1,6 @@
-// Where vplab finds its assets (the preset scenes), whatever the working directory: next to the
-// executable (an installed tree), one level up (the build tree: build/vplab and assets/), or the
-// source tree it was built from.
+// Where vplab finds its assets (the preset scenes and their meshes), whatever the working directory:
+// PREFIX/share/vplab for an installed PREFIX/bin/vplab, assets/ next to the executable or one level
+// up, or, for a program in its build tree only, the source tree it was built from.
 #pragma once
 
 #include <filesystem>

@@ -89,6 +89,19 @@ TEST_F(Cli, VersionNamesTheReleaseAndTheCommitItWasBuiltFrom) {
   EXPECT_EQ(r.out, "vplab " + version[1].str() + " (git " + commit + ")\n");
 }
 
+// The desktop entry and a file manager give the scene by its name alone (`vplab FILE`).
+TEST_F(Cli, ASceneGivenByItsNameAloneIsOpenedAsWithScene) {
+  const fs::path scene = fs::path(VPLAB_ASSETS) / "scenes" / "perspective.json";
+  const ProcessResult r = vplab(shellQuoted(scene.string()), "env -u DISPLAY -u WAYLAND_DISPLAY");
+  ASSERT_EQ(r.exitCode, 0) << r.err;  // no display: the viewer leaves the scene's dump
+  EXPECT_EQ(readFile(dir_ / "vplab-dump.json"), dumpJson(runPipeline(loadScene(scene))));
+  const ProcessResult both = vplab(shellQuoted(scene.string()) + " --scene " + shellQuoted(scene.string()));
+  EXPECT_EQ(both.exitCode, 2) << "a scene given twice is a usage error";
+  const ProcessResult missing = vplab("no-such-scene.json");
+  EXPECT_EQ(missing.exitCode, 2);
+  EXPECT_THAT(missing.err, HasSubstr("no-such-scene.json"));
+}
+
 TEST_F(Cli, RenderTwiceWritesTheSameBytes) {
   const std::vector<std::string> cases = {"--view camera --style flat", "--view all --style shaded --size 320x240",
                                           "--view world --style hidden-line --size 320x240",
