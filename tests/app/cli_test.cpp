@@ -78,15 +78,22 @@ class Cli : public test::ProcessTest {
 TEST_F(Cli, VersionNamesTheReleaseAndTheCommitItWasBuiltFrom) {
   const ProcessResult r = vplab("--version");
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  // The oracles: the project's version in CMakeLists.txt, and git asked in the source tree.
+  // The oracles: the project's version in CMakeLists.txt, and git asked in the source tree: the
+  // commit named is HEAD or, when commits were made since the last build, one of its ancestors.
   const fs::path source = fs::path(VPLAB_ASSETS).parent_path();
   const std::string cmake = readFile(source / "CMakeLists.txt");
   std::smatch version;
   ASSERT_TRUE(std::regex_search(cmake, version, std::regex(R"(project\(vplab VERSION ([0-9.]+))")));
-  ProcessResult git = sh("git -C " + shellQuoted(source.string()) + " rev-parse --short=12 HEAD");
-  while (!git.out.empty() && std::isspace(static_cast<unsigned char>(git.out.back()))) git.out.pop_back();
-  const std::string commit = git.exitCode == 0 && !git.out.empty() ? git.out : "unknown";
-  EXPECT_EQ(r.out, "vplab " + version[1].str() + " (git " + commit + ")\n");
+  std::smatch said;
+  ASSERT_TRUE(std::regex_match(r.out, said, std::regex("vplab ([0-9.]+) \\(git ([0-9a-f]{12}|unknown)\\)\n"))) << r.out;
+  EXPECT_EQ(said[1].str(), version[1].str());
+  const std::string git = "git -C " + shellQuoted(source.string());
+  if (sh(git + " rev-parse HEAD").exitCode != 0) {
+    EXPECT_EQ(said[2].str(), "unknown") << "not a git checkout, or no git: no commit can be named";
+    return;
+  }
+  EXPECT_EQ(sh(git + " merge-base --is-ancestor " + said[2].str() + " HEAD").exitCode, 0)
+      << said[2].str() << " is not a commit of this checkout's history";
 }
 
 // The desktop entry and a file manager give the scene by its name alone (`vplab FILE`).
