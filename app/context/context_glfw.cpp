@@ -56,6 +56,10 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title, bool deb
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debug ? GLFW_TRUE : GLFW_FALSE);
+  // X11's WM_CLASS: the desktop entry's StartupWMClass (packaging/vplab.desktop) matches the window to
+  // the menu's entry and its icon.
+  glfwWindowHintString(GLFW_X11_CLASS_NAME, "vplab");
+  glfwWindowHintString(GLFW_X11_INSTANCE_NAME, "vplab");
   window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (!window_) {
     const std::string problem = glfwProblem();
@@ -82,6 +86,14 @@ void GlfwWindow::makeCurrent() { glfwMakeContextCurrent(window_); }
 std::unique_ptr<GlContext> GlfwWindow::createShared() { return std::make_unique<GlfwSharedContext>(window_, debug()); }
 void GlfwWindow::releaseCurrent() { glfwMakeContextCurrent(nullptr); }
 void GlfwWindow::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
+void GlfwWindow::setIcon(const Image& icon) {
+  if (icon.empty()) return;
+  // GLFWimage is RGBA8, top row first: the layout of vplab::Image.
+  static_assert(sizeof(Rgba) == 4);
+  GLFWimage image{icon.width, icon.height, const_cast<unsigned char*>(&icon.pixels.front().r)};
+  glfwSetWindowIcon(window_, 1, &image);
+  glfwGetError(nullptr);  // Wayland has no window icons: its error is not the next call's
+}
 bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_); }
 void GlfwWindow::setShouldClose(bool close) { glfwSetWindowShouldClose(window_, close ? GLFW_TRUE : GLFW_FALSE); }
 void GlfwWindow::swapBuffers() { glfwSwapBuffers(window_); }

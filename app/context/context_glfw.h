@@ -2,6 +2,7 @@
 #pragma once
 
 #include "app/context/context.h"
+#include "app/views/image.h"
 
 #include <string>
 
@@ -24,6 +25,9 @@ class GlfwWindow final : public GlContext {
 
   GLFWwindow* handle() const { return window_; }
   void setTitle(const std::string& title);
+  /// The window's icon (the desktop's task bar and switcher; X11's _NET_WM_ICON). Not every platform
+  /// has one (Wayland): then nothing happens.
+  void setIcon(const Image& icon);
   bool shouldClose() const;
   void setShouldClose(bool close);
   void swapBuffers();

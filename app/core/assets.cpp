@@ -35,6 +35,19 @@ std::filesystem::path assetsDirectory() {
   return {};
 }
 
+std::filesystem::path iconFile() {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  std::vector<fs::path> candidates;
+  if (const fs::path data = assetsDirectory(); !data.empty())
+    candidates.push_back((data / "../icons/hicolor/256x256/apps/vplab.png").lexically_normal());
+  if (!ec && within(exe, VPLAB_BUILD_DIR)) candidates.push_back(fs::path(VPLAB_BUILD_DIR) / "generated/vplab-icon.png");
+  for (const fs::path& p : candidates)
+    if (fs::is_regular_file(p, ec)) return p;
+  return {};
+}
+
 std::vector<SceneFileInfo> listPresetScenes() {
   namespace fs = std::filesystem;
   std::vector<SceneFileInfo> scenes;

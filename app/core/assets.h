@@ -12,6 +12,11 @@ namespace vplab {
 /// The assets directory, or an empty path when none is found.
 std::filesystem::path assetsDirectory();
 
+/// vplab's icon (256 × 256 PNG, drawn by `vplab render` at build time): PREFIX/share/icons/hicolor/
+/// 256x256/apps/vplab.png beside an installed vplab's data, or the build tree's generated/vplab-icon.png
+/// for a program in its build tree. Empty when there is none (the window then has the desktop's default).
+std::filesystem::path iconFile();
+
 struct SceneFileInfo {
   std::filesystem::path file;
   std::string title;  // the scene's "title", or its file name

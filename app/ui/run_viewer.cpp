@@ -6,6 +6,7 @@
 #include "app/ui/run_viewer.h"
 
 #include "app/context/context_glfw.h"
+#include "app/core/assets.h"
 #include "app/gl/render_target.h"
 #include "app/ui/window_input.h"
 #include "app/ui/viewer.h"
@@ -129,6 +130,13 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
 int runViewerWindow(ViewerLaunch launch) {
   const std::string title = "vplab";
   GlfwWindow window(launch.width, launch.height, title, launch.glDebug);
+  if (const std::filesystem::path icon = iconFile(); !icon.empty()) {
+    try {
+      window.setIcon(readPng(icon));
+    } catch (const std::exception& e) {
+      std::cerr << "vplab: the window has no icon (" << e.what() << ")\n";
+    }
+  }
   Viewer viewer(window, std::move(launch.scene), launch.uiScale);
   GlfwBackend backend(window.handle());
   // glfwPostEmptyEvent is thread-safe: a finished run or view image wakes the event wait.
