@@ -5,10 +5,13 @@ Runs `vplab --version`, `vplab --help` and `--help` of every subcommand (and the
 so the manual and the completion say what the built program takes, never a copy kept by hand.
 CMake runs it at build time (app/CMakeLists.txt) and installs both.
 
-Usage: cli_docs.py VPLAB_EXECUTABLE --man OUT.1 --bash OUT
+Usage: cli_docs.py VPLAB_EXECUTABLE --man OUT.1[.gz] --bash OUT
+A name ending in .gz is written gzip-compressed with no time stamp (the same bytes every build), as
+Debian's policy wants manual pages.
 """
 import argparse
 import datetime
+import gzip
 import os
 import re
 import subprocess
@@ -134,8 +137,11 @@ def main():
     args = parser.parse_args()
     found = commands(args.exe)
     for out, text in ((args.man, man_page(args.exe, found)), (args.bash, completion(found))):
-        with open(out + ".part", "w", encoding="utf-8") as f:
-            f.write(text)
+        data = text.encode("utf-8")
+        if out.endswith(".gz"):
+            data = gzip.compress(data, compresslevel=9, mtime=0)
+        with open(out + ".part", "wb") as f:
+            f.write(data)
         os.replace(out + ".part", out)
 
 

@@ -14,6 +14,7 @@ packages=(
   nlohmann-json3-dev libtinyobjloader-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth x11-utils xdotool fonts-dejavu-core strace desktop-file-utils
+  dpkg-dev file lintian  # the .deb: cpack's dpkg-shlibdeps (dpkg-dev) and file; lintian checks it
   clang libfuzzer-14-dev libclang-rt-14-dev time  # sanitizer and fuzz stages of test.sh; time -v
 )
 # vplab exercise: the .tex sheets are compiled by the tests (pdflatex; German with babel ngerman, T1 with

@@ -14,7 +14,7 @@ fail() { echo "install_test: $*" >&2; exit 1; }
 
 cmake --install "$build" --prefix "$prefix" >/dev/null
 for f in bin/vplab share/vplab/scenes/default.json share/vplab/scenes/mesh-obj.json share/vplab/meshes/house.obj \
-         share/applications/vplab.desktop share/icons/hicolor/256x256/apps/vplab.png share/man/man1/vplab.1 \
+         share/applications/vplab.desktop share/icons/hicolor/256x256/apps/vplab.png share/man/man1/vplab.1.gz \
          share/bash-completion/completions/vplab share/doc/vplab/CHANGELOG.md; do
   [ -f "$prefix/$f" ] || fail "cmake --install wrote no $f"
 done
@@ -47,7 +47,8 @@ grep -qx 'Exec=vplab %f' "$desktop" && grep -qx 'Icon=vplab' "$desktop" && grep 
 if command -v desktop-file-validate >/dev/null; then desktop-file-validate "$desktop"; fi
 [ "$(od -An -tu1 -j16 -N8 "$prefix/share/icons/hicolor/256x256/apps/vplab.png" | tr -s ' ')" = " 0 0 1 0 0 0 1 0" ] ||
   fail "the icon is not 256 × 256"
-man="$prefix/share/man/man1/vplab.1"
+man="$work/vplab.1"
+zcat "$prefix/share/man/man1/vplab.1.gz" >"$man"
 for sub in dump render bench presets exercise 'grade numbers' 'grade batch' 'grade image'; do
   grep -q "^\.SH VPLAB ${sub^^}$" "$man" || fail "the manual page has no section for vplab $sub"
 done
