@@ -60,7 +60,7 @@ chroot "$root" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root LAN
   size=$(stat -c %s camera.png); [ "$size" -gt 5000 ] || fail "camera.png has only $size bytes: blank?"
   vplab render --scene /usr/share/vplab/scenes/mesh-obj.json --view world --out world.svg
   grep -q "font-family=\"DejaVu Sans" world.svg || fail "the SVG does not use DejaVu Sans: the font is missing"
-  vplab dump --out dump.json
+  vplab dump >dump.json
   grep -q "\"npc_from_vrc\"" dump.json || fail "vplab dump wrote no stages"
   vplab exercise --seed 1 --topic pipeline --out sheet >/dev/null
   [ -s sheet/answer.json ] || fail "vplab exercise wrote no answer template"
