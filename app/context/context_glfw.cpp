@@ -86,11 +86,9 @@ void GlfwWindow::makeCurrent() { glfwMakeContextCurrent(window_); }
 std::unique_ptr<GlContext> GlfwWindow::createShared() { return std::make_unique<GlfwSharedContext>(window_, debug()); }
 void GlfwWindow::releaseCurrent() { glfwMakeContextCurrent(nullptr); }
 void GlfwWindow::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
-void GlfwWindow::setIcon(const Image& icon) {
-  if (icon.empty()) return;
-  // GLFWimage is RGBA8, top row first: the layout of vplab::Image.
-  static_assert(sizeof(Rgba) == 4);
-  GLFWimage image{icon.width, icon.height, const_cast<unsigned char*>(&icon.pixels.front().r)};
+void GlfwWindow::setIcon(int width, int height, const std::uint8_t* rgba) {
+  if (width <= 0 || height <= 0 || !rgba) return;
+  GLFWimage image{width, height, const_cast<unsigned char*>(rgba)};  // GLFW only reads it
   glfwSetWindowIcon(window_, 1, &image);
   glfwGetError(nullptr);  // Wayland has no window icons: its error is not the next call's
 }

@@ -2,7 +2,8 @@
 #pragma once
 
 #include "app/context/context.h"
-#include "app/views/image.h"
+
+#include <cstdint>
 
 #include <string>
 
@@ -25,9 +26,9 @@ class GlfwWindow final : public GlContext {
 
   GLFWwindow* handle() const { return window_; }
   void setTitle(const std::string& title);
-  /// The window's icon (the desktop's task bar and switcher; X11's _NET_WM_ICON). Not every platform
-  /// has one (Wayland): then nothing happens.
-  void setIcon(const Image& icon);
+  /// The window's icon (the desktop's task bar and switcher; X11's _NET_WM_ICON): width × height
+  /// RGBA8 pixels, top row first. Not every platform has one (Wayland): then nothing happens.
+  void setIcon(int width, int height, const std::uint8_t* rgba);
   bool shouldClose() const;
   void setShouldClose(bool close);
   void swapBuffers();

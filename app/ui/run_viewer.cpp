@@ -132,7 +132,9 @@ int runViewerWindow(ViewerLaunch launch) {
   GlfwWindow window(launch.width, launch.height, title, launch.glDebug);
   if (const std::filesystem::path icon = iconFile(); !icon.empty()) {
     try {
-      window.setIcon(readPng(icon));
+      const Image image = readPng(icon);
+      static_assert(sizeof(Rgba) == 4);  // RGBA8, top row first: what GLFW takes
+      if (!image.empty()) window.setIcon(image.width, image.height, &image.pixels.front().r);
     } catch (const std::exception& e) {
       std::cerr << "vplab: the window has no icon (" << e.what() << ")\n";
     }
