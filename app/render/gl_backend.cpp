@@ -52,9 +52,13 @@ const ViewCamera& GlBackend::View::cameraFor(draw::Space s) const {
 }
 
 void GlBackend::draw(const draw::DisplayList& list, gl::RenderTarget& target) {
-  ++serial_;
-  polygonSlot_ = 0;
-  labelsPlaced_.clear();
+  Cursor cursor;
+  size_t all = SIZE_MAX;
+  drawSlice(list, target, cursor, all, polygonBuffers_);
+}
+
+bool GlBackend::drawSlice(const draw::DisplayList& list, gl::RenderTarget& target, Cursor& c, size_t& triangles,
+                          PolygonBuffers& polygons) {
   View view;
   view.width = target.width();
   view.height = target.height();
@@ -65,8 +69,16 @@ void GlBackend::draw(const draw::DisplayList& list, gl::RenderTarget& target) {
   view.pixels.npcFromVrc = glm::inverse(dcFromNpc(Device{view.width, view.height}));
 
   target.bind();
-  gl_.ClearColor(list.background.r, list.background.g, list.background.b, 1.f);
-  gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (!c.started) {
+    c = Cursor{};
+    c.started = true;
+    c.serial = ++lastSerial_;
+    labelsPlaced_.clear();
+    gl_.ClearColor(list.background.r, list.background.g, list.background.b, 1.f);
+    gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  }
+  serial_ = c.serial;
+  polygonSlot_ = c.polygonSlot;
   gl_.Enable(GL_DEPTH_TEST);
   gl_.DepthFunc(GL_LESS);
   gl_.Disable(GL_BLEND);
@@ -77,10 +89,20 @@ void GlBackend::draw(const draw::DisplayList& list, gl::RenderTarget& target) {
     if (!marks.empty()) drawMarks(marks, draw::Depth::xray, view);
     marks.clear();
   };
-  for (const draw::Batch& b : list.batches) {
+  // A slice ends only inside a fill, after the x-ray run before it was drawn: the next slice starts
+  // at that fill with nothing of an x-ray run pending.
+  for (size_t i = c.batch; i < list.batches.size(); ++i) {
+    const draw::Batch& b = list.batches[i];
     if (const auto* fill = std::get_if<draw::Fill>(&b)) {
       flush();
-      drawFill(*fill, view);
+      if (!drawFill(*fill, view, c, triangles, polygons)) {
+        c.batch = i;
+        c.polygonSlot = polygonSlot_;
+        return false;
+      }
+      c.mesh = 0;
+      c.pass = 0;
+      c.index = 0;
     } else if (const auto* text = std::get_if<draw::Text>(&b)) {
       flush();
       text_->draw(text->labels, text->outline, view.width, view.height);
@@ -107,6 +129,9 @@ void GlBackend::draw(const draw::DisplayList& list, gl::RenderTarget& target) {
     }
   }
   flush();
+  c.batch = list.batches.size();
+  c.polygonSlot = polygonSlot_;
+  return true;
 }
 
 Image GlBackend::render(const draw::Picture& picture) {
@@ -148,7 +173,8 @@ void GlBackend::setFillProgram(const gl::Program& p, const draw::Fill& fill, con
   }
 }
 
-void GlBackend::drawFill(const draw::Fill& fill, const View& view) {
+bool GlBackend::drawFill(const draw::Fill& fill, const View& view, Cursor& cursor, size_t& triangles,
+                         PolygonBuffers& polygons) {
   const ViewCamera& camera = view.cameraFor(fill.space);
   const bool blended = fill.alpha < 1.f && !fill.depthOnly;
   if (fill.depthOnly) {  // lecture notes 16.1: the faces fill only the depth buffer, pushed back
@@ -163,8 +189,8 @@ void GlBackend::drawFill(const draw::Fill& fill, const View& view) {
     gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     gl_.DepthMask(GL_FALSE);
   }
-  if (!fill.meshes.empty()) drawMeshes(fill, camera, view.samples);
-  if (!fill.polygons.empty()) drawPolygons(fill, camera);
+  bool drawn = cursor.pass == 2 || fill.meshes.empty() || drawMeshes(fill, camera, view.samples, cursor, triangles);
+  if (drawn && !fill.polygons.empty()) drawn = drawPolygons(fill, camera, cursor, triangles, polygons);
   if (blended) {
     gl_.DepthMask(GL_TRUE);
     gl_.Disable(GL_BLEND);
@@ -173,9 +199,11 @@ void GlBackend::drawFill(const draw::Fill& fill, const View& view) {
     gl_.Disable(GL_POLYGON_OFFSET_FILL);
     gl_.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   }
+  return drawn;
 }
 
-void GlBackend::drawMeshes(const draw::Fill& fill, const ViewCamera& camera, int samples) {
+bool GlBackend::drawMeshes(const draw::Fill& fill, const ViewCamera& camera, int samples, Cursor& c,
+                           size_t& triangles) {
   const int planes = int(std::min<size_t>(fill.clipPlanes.size(), size_t(kMaxUserPlanes)));
   const int lights = fill.lit ? int(std::clamp<size_t>(fill.lights.size(), 1, 4)) : 0;
   const bool volume = fill.volume.keep != draw::VolumeTest::Keep::all;
@@ -190,11 +218,29 @@ void GlBackend::drawMeshes(const draw::Fill& fill, const ViewCamera& camera, int
   if (early) setFillProgram(*early, fill, camera, planes);
   setFillProgram(program, fill, camera, planes);
   setClipDistances(planes);
-  const gl::Program* current = &program;
-  for (size_t i = 0; i < fill.meshes.size(); ++i) {
+  // Draws the elements [c.index, count) of the bound element list, as many triangles as are left.
+  auto drawRange = [&](GLsizei count) {
+    const size_t left = size_t(std::max<GLsizei>(count - c.index, 0)) / 3;
+    const size_t now = std::min(left, triangles);
+    if (now > 0) {
+      gl_.DrawElements(GL_TRIANGLES, GLsizei(3 * now), GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(size_t(c.index) * sizeof(uint32_t)));
+      c.index += GLsizei(3 * now);
+      triangles -= now;
+    }
+    return now == left;
+  };
+  bool done = true;
+  for (size_t i = c.mesh; i < fill.meshes.size() && done; ++i) {
+    if (i != c.mesh) {
+      c.mesh = i;
+      c.pass = 0;
+      c.index = 0;
+    }
     const draw::MeshInstance& m = fill.meshes[i];
     if (!m.mesh) continue;
     const GpuMesh& g = meshes_.get(m.mesh);
+    const gl::Program* current = &program;
     auto setObject = [&] {
       current->set("wcFromMc", m.spaceFromMc);
       current->set("wcNormalFromMc", normalMatrix(m.spaceFromMc));
@@ -204,29 +250,36 @@ void GlBackend::drawMeshes(const draw::Fill& fill, const ViewCamera& camera, int
     const VolumePart* part = partitioned && m.run ? partition(i, m, fill.volume.npcFromSpace) : nullptr;
     if (!part) {
       setObject();
-      gl_.DrawElements(GL_TRIANGLES, g.faceIndexCount, GL_UNSIGNED_INT, nullptr);
+      done = drawRange(g.faceIndexCount);
       continue;
     }
     // The VAO's element buffer is the part's until restored below.
-    auto drawPart = [&](size_t list) {
-      if (part->count[list] == 0) return;
-      gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, part->indices[list].id());
-      gl_.DrawElements(GL_TRIANGLES, part->count[list], GL_UNSIGNED_INT, nullptr);
-    };
-    if (early && part->count[kInsideFaces] > 0) {
-      current = early;
-      current->use();
-      setObject();
-      drawPart(kInsideFaces);
-      current = &program;
-      current->use();
+    if (c.pass == 0) {
+      if (early && part->count[kInsideFaces] > 0) {
+        current = early;
+        current->use();
+        setObject();
+        gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, part->indices[kInsideFaces].id());
+        done = drawRange(part->count[kInsideFaces]);
+        current = &program;
+        current->use();
+      }
+      if (done) {
+        c.pass = 1;
+        c.index = 0;
+      }
     }
-    setObject();
-    drawPart(fill.volume.keep == draw::VolumeTest::Keep::inside ? kInsidePass : kOutsidePass);
+    const size_t list = fill.volume.keep == draw::VolumeTest::Keep::inside ? kInsidePass : kOutsidePass;
+    if (done && part->count[list] > 0) {
+      setObject();
+      gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, part->indices[list].id());
+      done = drawRange(part->count[list]);
+    }
     gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.faceIndices.id());
   }
   gl_.BindVertexArray(0);
   setClipDistances(0);
+  return done;
 }
 
 std::array<size_t, 2> GlBackend::partitionedTriangles(size_t i) const {
@@ -328,21 +381,8 @@ const GlBackend::VolumePart* GlBackend::partition(size_t instance, const draw::M
   return &part;
 }
 
-void GlBackend::drawPolygons(const draw::Fill& fill, const ViewCamera& camera) {
-  // Fan triangulation: a polygon of n corners gives n − 2 triangles, three GPU vertices each.
-  std::vector<std::pair<GLint, GLsizei>> ranges;  // per set: first vertex, vertex count
-  GLsizei vertices = 0;
-  for (const draw::PolygonSet& set : fill.polygons) {
-    const GLint first = vertices;
-    for (size_t k = 0; k < set.ends.size(); ++k) {
-      const uint32_t n = set.ends[k] - (k ? set.ends[k - 1] : 0);
-      if (n >= 3) vertices += GLsizei(3 * (n - 2));
-    }
-    ranges.push_back({first, vertices - first});
-  }
-  if (vertices == 0) return;
-
-  if (polygonSlot_ >= polygonBuffers_.size()) {
+void GlBackend::uploadPolygons(const draw::Fill& fill, GLsizei vertices, PolygonBuffers& polygons) {
+  if (polygonSlot_ >= polygons.size()) {
     PolygonBuffer b{gl::makeVertexArray(gl_), gl::makeBuffer(gl_)};
     gl_.BindVertexArray(b.vao.id());
     gl_.BindBuffer(GL_ARRAY_BUFFER, b.vbo.id());
@@ -350,9 +390,9 @@ void GlBackend::drawPolygons(const draw::Fill& fill, const ViewCamera& camera) {
     gl_.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), nullptr);
     gl_.EnableVertexAttribArray(1);
     gl_.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), reinterpret_cast<void*>(sizeof(glm::vec3)));
-    polygonBuffers_.push_back(std::move(b));
+    polygons.push_back(std::move(b));
   }
-  PolygonBuffer& buffer = polygonBuffers_[polygonSlot_++];
+  PolygonBuffer& buffer = polygons[polygonSlot_++];
   gl_.BindVertexArray(buffer.vao.id());
   gl_.BindBuffer(GL_ARRAY_BUFFER, buffer.vbo.id());
   const GLsizeiptr bytes = GLsizeiptr(vertices) * GLsizeiptr(2 * sizeof(glm::vec3));
@@ -397,6 +437,30 @@ void GlBackend::drawPolygons(const draw::Fill& fill, const ViewCamera& camera) {
   if (es_) gl_.BufferSubData(GL_ARRAY_BUFFER, 0, bytes, polygonStaging_.data());
   else gl_.UnmapBuffer(GL_ARRAY_BUFFER);
 
+}
+
+bool GlBackend::drawPolygons(const draw::Fill& fill, const ViewCamera& camera, Cursor& c, size_t& triangles,
+                             PolygonBuffers& polygons) {
+  // Fan triangulation: a polygon of n corners gives n − 2 triangles, three GPU vertices each.
+  std::vector<std::pair<GLint, GLsizei>> ranges;  // per set: first vertex, vertex count
+  GLsizei vertices = 0;
+  for (const draw::PolygonSet& set : fill.polygons) {
+    const GLint first = vertices;
+    for (size_t k = 0; k < set.ends.size(); ++k) {
+      const uint32_t n = set.ends[k] - (k ? set.ends[k - 1] : 0);
+      if (n >= 3) vertices += GLsizei(3 * (n - 2));
+    }
+    ranges.push_back({first, vertices - first});
+  }
+  if (vertices == 0) return true;
+  if (c.pass == 2) {  // a slice going on: the polygons are in the buffer their first slice wrote
+    gl_.BindVertexArray(polygons[polygonSlot_ - 1].vao.id());
+  } else {
+    uploadPolygons(fill, vertices, polygons);
+    c.pass = 2;
+    c.mesh = 0;
+    c.index = 0;
+  }
   const int lights = fill.lit ? int(std::clamp<size_t>(fill.lights.size(), 1, 4)) : 0;
   const gl::Program& p = sceneProgram(false, lights, false);
   draw::Fill state;  // the fill's uniforms without volume test and user planes (CPU polygons are clipped)
@@ -407,12 +471,24 @@ void GlBackend::drawPolygons(const draw::Fill& fill, const ViewCamera& camera) {
   setFillProgram(p, state, camera, 0);
   p.set("wcFromMc", Mat4(1.0));
   p.set("wcNormalFromMc", Mat3(1.0));
-  for (size_t i = 0; i < fill.polygons.size(); ++i) {
-    if (ranges[i].second == 0) continue;
-    p.set("color", fill.polygons[i].color);
-    gl_.DrawArrays(GL_TRIANGLES, ranges[i].first, ranges[i].second);
+  bool done = true;
+  for (size_t i = c.mesh; i < fill.polygons.size() && done; ++i) {
+    if (i != c.mesh) {
+      c.mesh = i;
+      c.index = 0;
+    }
+    const size_t left = size_t(std::max<GLsizei>(ranges[i].second - c.index, 0)) / 3;
+    const size_t now = std::min(left, triangles);
+    if (now > 0) {
+      p.set("color", fill.polygons[i].color);
+      gl_.DrawArrays(GL_TRIANGLES, ranges[i].first + c.index, GLsizei(3 * now));
+      c.index += GLsizei(3 * now);
+      triangles -= now;
+    }
+    done = now == left;
   }
   gl_.BindVertexArray(0);
+  return done;
 }
 
 // ---------------------------------------------------------------- 4 lines, points, triangles

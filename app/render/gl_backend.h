@@ -30,6 +30,37 @@ class GlBackend {
   /// Clears `target` (bound, whole viewport) to the list's background and draws its batches in order.
   /// GL errors are left for the caller's GlContext::checkErrors, which names what it drew.
   void draw(const draw::DisplayList& list, gl::RenderTarget& target);
+
+  /// CPU polygons, fan-triangulated (position, Newell normal per corner), one buffer per polygon
+  /// fill of a list so that filling one never waits for the rasterizer to finish another. Each keeps
+  /// its storage from frame to frame and is written in place through glMapBufferRange.
+  struct PolygonBuffer {
+    gl::VertexArray vao;
+    gl::Buffer vbo;
+    GLsizeiptr capacity = 0;
+  };
+  using PolygonBuffers = std::vector<PolygonBuffer>;
+
+  /// Where a list drawn in slices goes on: the next batch and, in a fill, the next mesh instance (or
+  /// polygon set), pass and index. A new Cursor is the list's start.
+  struct Cursor {
+    bool started = false;
+    size_t batch = 0;
+    size_t mesh = 0;     // the mesh instance, or in pass 2 the polygon set
+    int pass = 0;        // 0: the whole mesh, or the inside faces drawn early; 1: the volume pass;
+                         // 2: the fill's polygons (in their buffer since the pass began)
+    GLsizei index = 0;   // the next element of the pass's index list, or vertex of the set (3 per triangle)
+    uint64_t serial = 0;     // the draw it is (the volume partition made for it)
+    size_t polygonSlot = 0;  // the polygon buffers its fills took so far
+  };
+  /// Draws `list` as draw() does, in slices: from `cursor` on, at most `triangles` of its meshes' and
+  /// polygons' triangles (taken off the count; the other batches, a few thousand primitives, are
+  /// drawn whole when reached). The first slice clears `target`. A slice's GL state is its own and
+  /// its polygons stay in `polygons` (the view's own buffers), so other lists may be drawn between
+  /// two slices. True when the list is drawn to its end. A software renderer takes seconds for a
+  /// million triangles: the page draws such a view across frames.
+  bool drawSlice(const draw::DisplayList& list, gl::RenderTarget& target, Cursor& cursor, size_t& triangles,
+                 PolygonBuffers& polygons);
   /// Each panel into its own target (4× multisampled when its list is antialiased), read back and
   /// put at the panel's place on the picture's background.
   Image render(const draw::Picture& picture);
@@ -56,9 +87,13 @@ class GlBackend {
     ViewCamera pixels;  // Space::pixels: the view's own pixels, y down
     const ViewCamera& cameraFor(draw::Space s) const;
   };
-  void drawFill(const draw::Fill& fill, const View& view);
-  void drawMeshes(const draw::Fill& fill, const ViewCamera& camera, int samples);
-  void drawPolygons(const draw::Fill& fill, const ViewCamera& camera);
+  /// Each returns false when `triangles` ran out before the fill was drawn (see drawSlice).
+  bool drawFill(const draw::Fill& fill, const View& view, Cursor& cursor, size_t& triangles, PolygonBuffers& polygons);
+  bool drawMeshes(const draw::Fill& fill, const ViewCamera& camera, int samples, Cursor& cursor, size_t& triangles);
+  bool drawPolygons(const draw::Fill& fill, const ViewCamera& camera, Cursor& cursor, size_t& triangles,
+                    PolygonBuffers& polygons);
+  /// Fan-triangulates the fill's polygons (`vertices` GPU vertices) into the next of `polygons`.
+  void uploadPolygons(const draw::Fill& fill, GLsizei vertices, PolygonBuffers& polygons);
   void drawMeshEdges(const draw::Lines& lines, const View& view);
   /// One OverlayBatch's worth of lines, points and triangles (a run of consecutive x-ray batches
   /// is drawn as one: all hidden parts first, then all visible ones, as the views expect).
@@ -88,21 +123,14 @@ class GlBackend {
   GpuMeshCache meshes_;
   OverlayRenderer overlay_;
   std::unique_ptr<TextRenderer> text_;
-  /// CPU polygons, fan-triangulated (position, Newell normal per corner), one buffer per polygon
-  /// fill of a list so that filling one never waits for the rasterizer to finish another. Each keeps
-  /// its storage from frame to frame and is written in place through glMapBufferRange.
-  struct PolygonBuffer {
-    gl::VertexArray vao;
-    gl::Buffer vbo;
-    GLsizeiptr capacity = 0;
-  };
-  std::vector<PolygonBuffer> polygonBuffers_;
+  PolygonBuffers polygonBuffers_;  // a list drawn whole (draw)
   size_t polygonSlot_ = 0;
   std::vector<glm::vec3> polygonStaging_;  // OpenGL ES (WebGL2): the polygons' vertices before glBufferSubData
   std::vector<VolumePart> parts_;
   std::vector<glm::vec4> labelsPlaced_;
   bool partitioned_ = true;
-  uint64_t serial_ = 0;
+  uint64_t serial_ = 0;      // the draw under way (its slices keep it)
+  uint64_t lastSerial_ = 0;  // the last one given out: each draw's is new
   std::array<std::vector<uint32_t>, kPartLists> partIndices_;  // scratch
   std::vector<uint8_t> vertexSides_;                          // scratch
 };

@@ -21,6 +21,27 @@ constexpr double kFrameWaitForViews = 0.03;
 
 }  // namespace
 
+gl::RenderTarget& ViewTargets::of(ViewKind kind) {
+  switch (kind) {
+    case ViewKind::world: return world;
+    case ViewKind::npc: return npc;
+    case ViewKind::morph: return morph;
+    case ViewKind::camera:
+    case ViewKind::all: return camera;
+    case ViewKind::divideFirst:
+    case ViewKind::depth: break;
+  }
+  throw Error("the " + std::string(toString(kind)) + " view has no render target of its own");
+}
+
+GLuint showCameraView(GlContext& context, ViewTargets& t, const ViewRequest& r) {
+  if (!r.settings.overlays.difference) return t.camera.colorTexture();
+  // The GPU's image against the CPU's clipped polygons filled: differing pixels in magenta.
+  const Image gpu = t.camera.read();
+  const Image cpu = rasterizeClippedPolygons(*r.run, r.scene->background, gpu.width, gpu.height);
+  return uploadImageTo(context.gl(), t.difference, differenceImage(gpu, cpu, 0));
+}
+
 GLuint drawViewInto(GlContext& context, ViewRenderer& renderer, ViewTargets& t, const ViewRequest& r) {
   const Scene& scene = *r.scene;
   const PipelineRun& run = *r.run;
@@ -45,13 +66,7 @@ GLuint drawViewInto(GlContext& context, ViewRenderer& renderer, ViewTargets& t, 
       // At the device's W × H: pixel-aligned with DC (shown scaled to fit).
       t.camera.resize(scene.device.width, scene.device.height, 1);
       renderer.drawCamera(scene, run, r.settings, r.highlights, t.camera);
-      if (!r.settings.overlays.difference) return t.camera.colorTexture();
-      {
-        // The GPU's image against the CPU's clipped polygons filled: differing pixels in magenta.
-        const Image gpu = t.camera.read();
-        const Image cpu = rasterizeClippedPolygons(run, scene.background, gpu.width, gpu.height);
-        return uploadImageTo(context.gl(), t.difference, differenceImage(gpu, cpu, 0));
-      }
+      return showCameraView(context, t, r);
     case ViewKind::divideFirst:
     case ViewKind::depth: break;  // drawn by the panels that show them, not as view windows
   }
@@ -59,7 +74,7 @@ GLuint drawViewInto(GlContext& context, ViewRenderer& renderer, ViewTargets& t, 
 }
 
 ViewImages::ViewImages(GlContext& context, ViewRenderer& renderer)
-    : ctx_(context), renderer_(renderer), targets_(context.gl()), divideFirst_(context.gl()) {}
+    : ctx_(context), renderer_(renderer), targets_(context.gl()), back_(context.gl()), divideFirst_(context.gl()) {}
 
 ViewImages::~ViewImages() = default;
 
@@ -68,7 +83,23 @@ void ViewImages::useWorker(std::unique_ptr<GlContext> context, std::function<voi
   for (Slot& s : slots_) s = {};
 }
 
+void ViewImages::drawInSlices(size_t trianglesPerFrame) {
+  if (worker_) throw Error("the views are drawn on a render thread: not in slices");
+  trianglesPerFrame_ = trianglesPerFrame;
+}
+
 void ViewImages::beginFrame() {
+  // Slices adapt to what they cost: a frame after a slice that took far longer than aimed at halves
+  // them, one well under it lets them grow by a quarter (AIMD, as TCP paces what it sends).
+  const auto now = std::chrono::steady_clock::now();
+  if (trianglesPerFrame_ > 0 && slicedLastFrame_) {
+    const double seconds = std::chrono::duration<double>(now - frameStart_).count();
+    if (seconds > 1.5 * kSliceFrameSeconds) trianglesPerFrame_ = std::max(kMinSliceTriangles, trianglesPerFrame_ / 2);
+    else if (seconds < 0.75 * kSliceFrameSeconds) trianglesPerFrame_ = std::min(kMaxSliceTriangles, trianglesPerFrame_ + trianglesPerFrame_ / 4);
+  }
+  frameStart_ = now;
+  slicedLastFrame_ = false;
+  trianglesLeft_ = trianglesPerFrame_;
   frameWaitLeft_ = kFrameWaitForViews;
   ++frameNumber_;
   for (Slot& s : slots_) s.asked = false;
@@ -76,7 +107,10 @@ void ViewImages::beginFrame() {
 
 void ViewImages::endFrame() {
   for (Slot& s : slots_)
-    if (!s.asked) s.pending = s.busy = false;  // not shown any more: its image is not waited for
+    if (!s.asked) {  // not shown any more: its image is not waited for
+      s.pending = s.busy = false;
+      s.slicing.reset();
+    }
 }
 
 GLuint ViewImages::image(ViewRequest r, unsigned runRevision) {
@@ -89,6 +123,7 @@ GLuint ViewImages::image(ViewRequest r, unsigned runRevision) {
   Stamp stamp{runRevision, r.settings, r.highlights, r.width, r.height, r.samples, r.uiScale};
   if (slot.texture != 0 && slot.stamp == stamp) return slot.texture;
   if (worker_) return onWorker(slot, std::move(r), std::move(stamp));
+  if (trianglesPerFrame_ > 0) return inSlices(slot, std::move(r), std::move(stamp));
   try {
     slot.texture = drawViewInto(ctx_, renderer_, targets_, r);
   } catch (const std::exception& e) {
@@ -133,6 +168,43 @@ GLuint ViewImages::onWorker(Slot& slot, ViewRequest r, Stamp stamp) {
   return slot.texture;
 }
 
+GLuint ViewImages::inSlices(Slot& slot, ViewRequest r, Stamp stamp) {
+  const ViewKind kind = r.kind;
+  try {
+    gl::RenderTarget& back = back_.of(kind);
+    if (!slot.slicing || !(slot.requested == stamp)) {  // a new image: its list is built now
+      const bool device = kind == ViewKind::camera || kind == ViewKind::all;  // at the device's W × H
+      back.resize(device ? r.scene->device.width : r.width, device ? r.scene->device.height : r.height,
+                  device ? 1 : r.samples);
+      renderer_.startSlices(kind, *r.scene, *r.run, r.settings, r.highlights, back, slot.slices);
+      slot.slicing = std::move(r);
+      slot.requested = std::move(stamp);
+      slot.pending = true;
+    }
+    if (trianglesLeft_ > 0 || slot.slices.cursor.batch == 0) {
+      slicedLastFrame_ = true;
+      // A slice may draw nothing of the meshes (none left in this frame) and still the rest of the
+      // list up to its first fill: a view of a small scene is complete in the frame that asks.
+      if (renderer_.drawSlice(slot.slices, back, trianglesLeft_)) {
+        back.resolve();
+        std::swap(targets_.of(kind), back);  // the complete image is shown; the old one drawn over next
+        slot.texture = kind == ViewKind::camera || kind == ViewKind::all ? showCameraView(ctx_, targets_, *slot.slicing)
+                                                                         : targets_.of(kind).colorTexture();
+        slot.stamp = slot.requested;
+        slot.pending = false;
+        slot.slicing.reset();
+        ++drawn_;
+      }
+    }
+  } catch (const std::exception& e) {
+    error_ = "drawing the " + std::string(toString(kind)) + " view failed: " + e.what();
+    slot.pending = false;
+    slot.slicing.reset();
+  }
+  slot.busy = slot.pending;
+  return slot.texture;
+}
+
 GLuint ViewImages::divideFirst(const Scene& scene, const PipelineRun& run, const DisplaySettings& settings,
                                unsigned runRevision) {
   // The GPU always clips correctly; the wrong strategy's result exists only as the CPU's clipped
@@ -167,6 +239,7 @@ std::optional<double> ViewImages::wakeIn(double busyStep) const {
   std::optional<double> wake;
   for (ViewKind kind : kAllViewKinds) {
     if (!slots_[size_t(kind)].pending) continue;
+    if (!worker_) return 0.0;  // drawn in slices: the next one in the next frame
     if (worker_->hasFinished(kind)) return 0.0;
     wake = busyStep;
   }
@@ -174,12 +247,16 @@ std::optional<double> ViewImages::wakeIn(double busyStep) const {
 }
 
 void ViewImages::forget() {
-  for (Slot& s : slots_) s.stamp = {};
+  for (Slot& s : slots_) {
+    s.stamp = {};
+    if (s.slicing) s.requested = {};  // started over when next asked for
+  }
 }
 
 void ViewImages::recreateGlObjects() {
   if (worker_) throw Error("the views' render thread cannot recreate its context's objects");
   targets_ = ViewTargets(ctx_.gl());
+  back_ = ViewTargets(ctx_.gl());
   divideFirst_ = gl::RenderTarget(ctx_.gl());
   divideFirstRevision_ = 0;
   for (Slot& s : slots_) s = Slot{};

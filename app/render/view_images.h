@@ -38,11 +38,16 @@ struct ViewTargets {
   explicit ViewTargets(const GladGLContext& gl) : world(gl), camera(gl), npc(gl), morph(gl) {}
   gl::RenderTarget world, camera, npc, morph;
   gl::Texture difference;
+  /// The target `kind` is drawn into (the camera view's for camera and all).
+  gl::RenderTarget& of(ViewKind kind);
 };
 
 /// Draws one view into `targets` on the current context; returns the texture that shows it (the
 /// camera view at the device's W × H, or its difference image with the CPU's polygons).
 GLuint drawViewInto(GlContext& context, ViewRenderer& renderer, ViewTargets& targets, const ViewRequest& r);
+/// The texture that shows the camera view drawn into `targets.camera`: its colour, or with the
+/// difference overlay the image of where it differs from the CPU's clipped polygons.
+GLuint showCameraView(GlContext& context, ViewTargets& targets, const ViewRequest& r);
 
 class ViewWorker;
 
@@ -59,6 +64,17 @@ class ViewImages {
   /// window's event wait (called on the render thread).
   void useWorker(std::unique_ptr<GlContext> context, std::function<void()> wake);
   bool hasWorker() const { return worker_ != nullptr; }
+  /// Without a render thread (the page): draws each view in slices across frames, about
+  /// `trianglesPerFrame` triangles of all views in a frame to begin with, then as many as keep a
+  /// frame near kSliceFrameSeconds; a view shows its last image, busy, until its new one is
+  /// complete. 0: each view whole in the frame that asks for it (the default).
+  void drawInSlices(size_t trianglesPerFrame);
+  /// Triangles the views may draw in the next frame (drawInSlices), as adapted to the frame times.
+  size_t sliceTriangles() const { return trianglesPerFrame_; }
+  /// The frame time slices aim at: SwiftShader runs the draw calls after the frame that made them,
+  /// and the frame after waits for them, so a slice's cost shows in the next frame's time.
+  static constexpr double kSliceFrameSeconds = 0.05;
+  static constexpr size_t kMinSliceTriangles = 2000, kMaxSliceTriangles = size_t(1) << 24;
 
   /// A new frame: no view asked for yet; the frame may wait a little for the render thread.
   void beginFrame();
@@ -120,13 +136,23 @@ class ViewImages {
     bool asked = false;  // asked for in this frame
     double lastSeconds = 0;  // how long its last image took on the render thread, from the request
     std::chrono::steady_clock::time_point askedTime;
+    // Drawn in slices (drawInSlices): the image asked for, drawn into back_ (its scene and run kept
+    // alive for the list, which points into them), and how far.
+    std::optional<ViewRequest> slicing;
+    ViewRenderer::Slices slices;
   };
   GLuint onWorker(Slot& slot, ViewRequest r, Stamp stamp);
+  GLuint inSlices(Slot& slot, ViewRequest r, Stamp stamp);
 
   static constexpr size_t kViews = kViewKindCount;
   GlContext& ctx_;
   ViewRenderer& renderer_;
   ViewTargets targets_;           // the images drawn in the window's thread
+  ViewTargets back_;              // drawn in slices: the images not complete yet (swapped in when they are)
+  size_t trianglesPerFrame_ = 0;  // drawInSlices; 0: whole
+  size_t trianglesLeft_ = 0;      // in this frame
+  bool slicedLastFrame_ = false;  // the last frame drew a slice: its time tells what one costs
+  std::chrono::steady_clock::time_point frameStart_;
   gl::RenderTarget divideFirst_;
   unsigned divideFirstRevision_ = 0;  // the run it was drawn from (0: none yet)
   std::array<Slot, kViews> slots_;

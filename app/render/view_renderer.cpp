@@ -1,5 +1,7 @@
 #include "app/render/view_renderer.h"
 
+#include "pipeline/error.h"
+
 #include <string>
 
 namespace vplab {
@@ -45,6 +47,21 @@ void ViewRenderer::drawMorph(const Scene& scene, const PipelineRun& run, const D
 void ViewRenderer::drawDivideFirst(const Scene& scene, const PipelineRun& run, const DisplaySettings& s,
                                    gl::RenderTarget& target) {
   drawView(&divideFirstView, divideFirst_, scene, run, s, Highlights{}, target);  // it marks nothing
+}
+
+void ViewRenderer::startSlices(ViewKind kind, const Scene& scene, const PipelineRun& run, const DisplaySettings& s,
+                               const Highlights& h, const gl::RenderTarget& target, Slices& slices) {
+  const ViewInput in{scene, run, s, h, target.width(), target.height(), backend_->text().atlas()};
+  switch (kind) {
+    case ViewKind::world: worldView(in, slices.list); break;
+    case ViewKind::npc: npcView(in, slices.list); break;
+    case ViewKind::morph: morphView(in, slices.list); break;
+    case ViewKind::camera:
+    case ViewKind::all: cameraView(in, slices.list); break;
+    case ViewKind::divideFirst:
+    case ViewKind::depth: throw Error("the " + std::string(toString(kind)) + " view is not drawn in slices");
+  }
+  slices.cursor = {};
 }
 
 Image ViewRenderer::render(ViewKind kind, const Scene& scene, const PipelineRun& run, const DisplaySettings& s,

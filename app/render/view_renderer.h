@@ -35,6 +35,22 @@ class ViewRenderer {
   /// The divide-first comparison: `run` must be the divide-first strategy's (views.h, divideFirstView).
   void drawDivideFirst(const Scene& scene, const PipelineRun& run, const DisplaySettings& s, gl::RenderTarget& target);
 
+  /// A view drawn in slices across frames (ViewImages without a render thread): its display list,
+  /// built when it starts, and where its drawing stopped. The scene and run it was built from must
+  /// live until it is drawn (the list points into them).
+  struct Slices {
+    draw::DisplayList list;
+    GlBackend::Cursor cursor;
+    GlBackend::PolygonBuffers polygons;  // its own: other views are drawn between its slices
+  };
+  /// Builds `kind`'s list (world, camera, NPC or morph) for `target`, already sized, into `slices`.
+  void startSlices(ViewKind kind, const Scene& scene, const PipelineRun& run, const DisplaySettings& s,
+                   const Highlights& h, const gl::RenderTarget& target, Slices& slices);
+  /// Draws the next at most `triangles` triangles of it (GlBackend::drawSlice); true when complete.
+  bool drawSlice(Slices& slices, gl::RenderTarget& target, size_t& triangles) {
+    return backend_->drawSlice(slices.list, target, slices.cursor, triangles, slices.polygons);
+  }
+
   /// Renders a view headless into an image: camera at width × height, world and NPC likewise,
   /// all as three panels of width × height with a title strip.
   Image render(ViewKind kind, const Scene& scene, const PipelineRun& run, const DisplaySettings& s, const Highlights& h,

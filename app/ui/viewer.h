@@ -77,6 +77,9 @@ class Viewer {
   bool runPending() const { return run_.pending(); }
   /// Whether `kind` shows an older image while its current one is being drawn.
   bool viewBusy(ViewKind kind) const { return images_.busy(kind); }
+  /// Without a render thread (the page): the views are drawn across frames in slices of about this
+  /// many triangles to begin with (ViewImages::drawInSlices), so no frame waits for a million of them.
+  void drawViewsInSlices(size_t trianglesPerFrame) { images_.drawInSlices(trianglesPerFrame); }
   /// Asks for `n` more frames (something changed that ImGui shows only after it laid it out again).
   void requestFrames(int n) { settleFrames_ = std::max(settleFrames_, n); }
 

@@ -40,6 +40,7 @@ namespace {
 constexpr int kSettleFrames = 3;  // as the window's loop: ImGui shows the effect of input over ~2 frames
 constexpr double kLongestWait = 60.0;
 constexpr double kAutosaveDelay = 3.0;  // seconds after the last change, as the desktop's
+constexpr size_t kFirstSliceTriangles = 20000;  // then adapted to the frame times (ViewImages)
 // The autosave's directory in the in-memory file system, mirrored to this tab's localStorage key
 // after each frame. The scenes kept by tabs that are gone are brought back under kKeptDir, each
 // file standing for its localStorage key until it is recovered or discarded.
@@ -80,6 +81,9 @@ struct Page {
     files = chooser.get();
     viewer.session().useFileChooser(std::move(chooser), /*browser=*/true);
     viewer.state().compactAllowed = true;  // a phone's screen: one view at a time (app/ui/layout.h)
+    // SwiftShader takes about 7 s for the three views of a million triangles: a large scene's views
+    // are drawn across frames (README "Large scenes in the page").
+    viewer.drawViewsInSlices(kFirstSliceTriangles);
     showLink(page::locationHash(), /*atStart=*/true);
     startAutosave();
   }

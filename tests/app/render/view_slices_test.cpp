@@ -1,0 +1,134 @@
+// Views drawn in slices across frames (the page: no render thread; issue 24 item 3). A view drawn in
+// many slices, with other views drawn between them, must be the view drawn whole, pixel for pixel: a
+// slice's GL state is its own, the depth buffer and the polygon buffers carry over, and the world
+// view's volume partition is the one made for its own draw. ViewImages shows a view's last complete
+// image, busy, until the new one is finished, and never a half-drawn one.
+#include "app/gl/render_target.h"
+#include "app/gl/texture_io.h"
+#include "app/render/view_images.h"
+#include "app/views/render_request.h"
+#include "pipeline/primitives.h"
+#include "tests/support/gl_test_support.h"
+
+#include <gtest/gtest.h>
+
+namespace vplab {
+namespace {
+
+// A sphere of 120 segments (14 400 faces) cut by the right, top and front planes beside the default
+// scene's objects: meshes on both sides of the volume, clipped polygons, labels, overlays.
+Scene cutSphereScene() {
+  Scene s = defaultScene();
+  SceneObject o = s.objects[0];
+  o.name = "sphere";
+  o.shape = Shape::sphere;
+  o.segments = 120;
+  o.mesh = std::make_shared<const Mesh>(sphere(120));
+  o.transform = {};
+  o.transform.translate = {1.6, 1.0, 1.5};
+  o.transform.scale = {1.6, 1.6, 1.6};
+  s.objects.push_back(std::move(o));
+  return s;
+}
+
+Image drawWhole(ViewRenderer& renderer, ViewKind kind, const Scene& scene, const PipelineRun& run,
+                const DisplaySettings& settings, int samples) {
+  gl::RenderTarget target(renderer.context().gl());
+  target.resize(400, 300, samples);
+  switch (kind) {
+    case ViewKind::world: renderer.drawWorld(scene, run, settings, {}, target); break;
+    case ViewKind::npc: renderer.drawNpc(scene, run, settings, {}, target); break;
+    case ViewKind::morph: renderer.drawMorph(scene, run, settings, {}, target); break;
+    default: renderer.drawCamera(scene, run, settings, {}, target); break;
+  }
+  target.resolve();
+  return target.read();
+}
+
+TEST(ViewSlices, AViewDrawnInSlicesIsTheViewDrawnWholeWithOtherViewsBetween) {
+  ViewRenderer& renderer = *test::egl().renderer;
+  const Scene scene = cutSphereScene();
+  const PipelineRun run = runPipeline(scene, {ClipStrategy::npc, false, true});
+  for (Style style : {Style::shaded, Style::flat, Style::hiddenLine}) {
+    DisplaySettings settings = displaySettingsFor(scene, style, 400.0 / 300.0);
+    orbitBy(settings.world.orbit, 70, -15);
+    settings.morphing.t = 2.5;
+    for (ViewKind kind : {ViewKind::camera, ViewKind::world, ViewKind::npc, ViewKind::morph}) {
+      for (int samples : {1, 4}) {
+        const Image whole = drawWhole(renderer, kind, scene, run, settings, samples);
+        ASSERT_GE(test::distinctColours(whole), 4u) << toString(kind);
+        gl::RenderTarget target(renderer.context().gl());
+        target.resize(400, 300, samples);
+        ViewRenderer::Slices slices;
+        renderer.startSlices(kind, scene, run, settings, {}, target, slices);
+        // 1000 triangles a slice: the sphere alone takes dozens. Between two slices another view is
+        // drawn whole (its own state, partition and polygon buffers), as the page draws its views.
+        int count = 0;
+        for (bool done = false; !done; ++count) {
+          size_t triangles = 1000;
+          done = renderer.drawSlice(slices, target, triangles);
+          if (!done) {
+            EXPECT_EQ(triangles, 0u) << "a slice stopped before its triangles ran out";
+          }
+          drawWhole(renderer, kind == ViewKind::world ? ViewKind::npc : ViewKind::world, scene, run, settings, 1);
+          ASSERT_LT(count, 10000) << "the slices never end";
+        }
+        target.resolve();
+        // The camera and world views fill the sphere's 28 800 triangles (meshes), the NPC and morph
+        // views its clipped polygons' 7 000 or so: dozens of slices, or 8.
+        EXPECT_GE(count, 6) << toString(kind) << ": drawn in " << count << " slices";
+        EXPECT_EQ(test::differingPixels(whole, target.read()), 0u)
+            << toString(kind) << ", " << toString(style) << ", " << samples << " samples, " << count << " slices";
+      }
+    }
+  }
+}
+
+// The frames of a page: each draws what is left of its slice budget, the view is asked for again.
+TEST(ViewSlices, ViewImagesShowTheLastCompleteImageBusyUntilTheNewOneIsDone) {
+  test::GlFixture& gl = test::egl();
+  ViewImages images(*gl.context, *gl.renderer);
+  images.drawInSlices(1000);
+  auto scene = std::make_shared<const Scene>(cutSphereScene());
+  auto run = std::make_shared<const PipelineRun>(runPipeline(*scene, {ClipStrategy::npc, false, true}));
+  ViewRequest request{ViewKind::world, scene, run, displaySettingsFor(*scene, Style::shaded, 400.0 / 300.0), {}, 400, 300, 1, 1.f};
+  auto frame = [&](const ViewRequest& r, unsigned revision) {
+    images.beginFrame();
+    const GLuint texture = images.image(r, revision);
+    images.endFrame();
+    if (const auto error = images.takeError()) ADD_FAILURE() << *error;
+    return texture;
+  };
+
+  int frames = 1;
+  GLuint first = frame(request, 1);
+  for (; first == 0; ++frames) {
+    EXPECT_TRUE(images.busy(ViewKind::world));
+    EXPECT_EQ(images.wakeIn(0.1), 0.0) << "a view drawn in slices asks for the next frame at once";
+    ASSERT_LT(frames, 1000);
+    first = frame(request, 1);
+  }
+  EXPECT_GT(frames, 3) << "drawn in one frame: no slices";
+  EXPECT_FALSE(images.busy(ViewKind::world));
+  EXPECT_EQ(images.wakeIn(0.1), std::nullopt);
+  const Image firstImage = readTexture(gl.context->gl(), first);
+  EXPECT_EQ(test::differingPixels(firstImage, drawWhole(*gl.renderer, ViewKind::world, *scene, *run, request.settings, 1)), 0u);
+  EXPECT_EQ(frame(request, 1), first) << "the same request draws nothing again";
+
+  // The observer turns: the old image stays shown, unchanged, until the new one is complete.
+  ViewRequest turned = request;
+  orbitBy(turned.settings.world.orbit, 40, 10);
+  GLuint shown = frame(turned, 1);
+  int busyFrames = 0;
+  for (; images.busy(ViewKind::world); ++busyFrames) {
+    EXPECT_EQ(test::differingPixels(readTexture(gl.context->gl(), shown), firstImage), 0u) << "a half-drawn image was shown";
+    ASSERT_LT(busyFrames, 1000);
+    shown = frame(turned, 1);
+  }
+  EXPECT_GT(busyFrames, 1);
+  EXPECT_EQ(test::differingPixels(readTexture(gl.context->gl(), shown),
+                                  drawWhole(*gl.renderer, ViewKind::world, *scene, *run, turned.settings, 1)), 0u);
+}
+
+}  // namespace
+}  // namespace vplab
