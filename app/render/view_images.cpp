@@ -86,26 +86,35 @@ void ViewImages::useWorker(std::unique_ptr<GlContext> context, std::function<voi
 void ViewImages::drawInSlices(size_t trianglesPerFrame) {
   if (worker_) throw Error("the views are drawn on a render thread: not in slices");
   trianglesPerFrame_ = trianglesPerFrame;
+  for (Slot& s : slots_) {  // an image under way is drawn again, as asked for next
+    if (!s.slicing) continue;
+    s.slicing.reset();
+    s.pending = s.busy = false;
+  }
 }
 
 void ViewImages::beginFrame() {
-  // Slices adapt to what they cost: a frame after a slice that took far longer than aimed at halves
-  // them, one well under it lets them grow by a quarter (AIMD, as TCP paces what it sends).
+  // Slices adapt to what they cost: a frame after slices that took far longer than aimed at halves
+  // them, one under it lets them grow by a quarter (AIMD, as TCP paces what it sends).
   const auto now = std::chrono::steady_clock::now();
+  trianglesLeft_ = trianglesPerFrame_;
   if (trianglesPerFrame_ > 0 && slicedLastFrame_) {
     const double seconds = std::chrono::duration<double>(now - frameStart_).count();
-    if (seconds > 1.5 * kSliceFrameSeconds) trianglesPerFrame_ = std::max(kMinSliceTriangles, trianglesPerFrame_ / 2);
-    else if (seconds < 0.75 * kSliceFrameSeconds) trianglesPerFrame_ = std::min(kMaxSliceTriangles, trianglesPerFrame_ + trianglesPerFrame_ / 4);
+    if (seconds > 2 * kSliceFrameSeconds)  // halved, down to kMinSliceTriangles (a smaller start stays)
+      trianglesPerFrame_ = std::max(std::min(kMinSliceTriangles, trianglesPerFrame_), trianglesPerFrame_ / 2);
+    else if (seconds < kSliceFrameSeconds) trianglesPerFrame_ = std::min(kMaxSliceTriangles, trianglesPerFrame_ + trianglesPerFrame_ / 4);
+    trianglesLeft_ = trianglesPerFrame_;
   }
   frameStart_ = now;
   slicedLastFrame_ = false;
-  trianglesLeft_ = trianglesPerFrame_;
+  slicedThisFrame_ = false;
   frameWaitLeft_ = kFrameWaitForViews;
   ++frameNumber_;
   for (Slot& s : slots_) s.asked = false;
 }
 
 void ViewImages::endFrame() {
+  slicedLastFrame_ = slicedThisFrame_;
   for (Slot& s : slots_)
     if (!s.asked) {  // not shown any more: its image is not waited for
       s.pending = s.busy = false;
@@ -182,7 +191,7 @@ GLuint ViewImages::inSlices(Slot& slot, ViewRequest r, Stamp stamp) {
       slot.pending = true;
     }
     if (trianglesLeft_ > 0 || slot.slices.cursor.batch == 0) {
-      slicedLastFrame_ = true;
+      slicedThisFrame_ = true;
       // A slice may draw nothing of the meshes (none left in this frame) and still the rest of the
       // list up to its first fill: a view of a small scene is complete in the frame that asks.
       if (renderer_.drawSlice(slot.slices, back, trianglesLeft_)) {
@@ -257,6 +266,7 @@ void ViewImages::recreateGlObjects() {
   if (worker_) throw Error("the views' render thread cannot recreate its context's objects");
   targets_ = ViewTargets(ctx_.gl());
   back_ = ViewTargets(ctx_.gl());
+  slicedLastFrame_ = false;
   divideFirst_ = gl::RenderTarget(ctx_.gl());
   divideFirstRevision_ = 0;
   for (Slot& s : slots_) s = Slot{};

@@ -65,8 +65,9 @@ class ViewImages {
   void useWorker(std::unique_ptr<GlContext> context, std::function<void()> wake);
   bool hasWorker() const { return worker_ != nullptr; }
   /// Without a render thread (the page): draws each view in slices across frames, about
-  /// `trianglesPerFrame` triangles of all views in a frame to begin with, then as many as keep a
-  /// frame near kSliceFrameSeconds; a view shows its last image, busy, until its new one is
+  /// `trianglesPerFrame` triangles of all views in a frame to begin with, then adapted to the frame
+  /// times (halved after a frame over 2 × kSliceFrameSeconds, a quarter more after one under it,
+  /// never under kMinSliceTriangles); a view shows its last image, busy, until its new one is
   /// complete. 0: each view whole in the frame that asks for it (the default).
   void drawInSlices(size_t trianglesPerFrame);
   /// Triangles the views may draw in the next frame (drawInSlices), as adapted to the frame times.
@@ -74,7 +75,9 @@ class ViewImages {
   /// The frame time slices aim at: SwiftShader runs the draw calls after the frame that made them,
   /// and the frame after waits for them, so a slice's cost shows in the next frame's time.
   static constexpr double kSliceFrameSeconds = 0.05;
-  static constexpr size_t kMinSliceTriangles = 2000, kMaxSliceTriangles = size_t(1) << 24;
+  /// SwiftShader draws about 400 000 triangles a second (three views of a million in 7 s): 10 000
+  /// take it some 25 ms, so even a slow machine's frames keep a view filling in.
+  static constexpr size_t kMinSliceTriangles = 10000, kMaxSliceTriangles = size_t(1) << 24;
 
   /// A new frame: no view asked for yet; the frame may wait a little for the render thread.
   void beginFrame();
@@ -152,6 +155,7 @@ class ViewImages {
   size_t trianglesPerFrame_ = 0;  // drawInSlices; 0: whole
   size_t trianglesLeft_ = 0;      // in this frame
   bool slicedLastFrame_ = false;  // the last frame drew a slice: its time tells what one costs
+  bool slicedThisFrame_ = false;
   std::chrono::steady_clock::time_point frameStart_;
   gl::RenderTarget divideFirst_;
   unsigned divideFirstRevision_ = 0;  // the run it was drawn from (0: none yet)

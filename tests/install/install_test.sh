@@ -78,7 +78,12 @@ if command -v Xvfb >/dev/null && command -v xdotool >/dev/null && command -v xpr
   PATH="$prefix/bin:$PATH" "${command[@]}" 2>"$work/viewer-err" & viewer=$!
   wid=$(timeout 60 xdotool search --sync --onlyvisible --class '^vplab$' | head -1) ||
     fail "the desktop entry's command opened no window of class vplab: $(cat "$work/viewer-err")"
-  title=$(xprop -id "$wid" -notype WM_NAME)
+  # The title names the scene from the first frames on (the window opens as "vplab"): wait for it.
+  for _ in $(seq 100); do
+    title=$(xprop -id "$wid" -notype WM_NAME)
+    [ "$title" = 'WM_NAME = "vplab — default.json"' ] && break
+    sleep 0.1
+  done
   [ "$title" = 'WM_NAME = "vplab — default.json"' ] || fail "the window's title is $title"
   [ "$(xprop -id "$wid" -notype WM_CLASS)" = 'WM_CLASS = "vplab", "vplab"' ] || fail "the window's class: $(xprop -id "$wid" WM_CLASS)"
   xprop -id "$wid" -len 1000000 -notype -f _NET_WM_ICON 32c ' $0+' _NET_WM_ICON >"$work/icon"

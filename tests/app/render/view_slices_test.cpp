@@ -88,6 +88,8 @@ TEST(ViewSlices, AViewDrawnInSlicesIsTheViewDrawnWholeWithOtherViewsBetween) {
 TEST(ViewSlices, ViewImagesShowTheLastCompleteImageBusyUntilTheNewOneIsDone) {
   test::GlFixture& gl = test::egl();
   ViewImages images(*gl.context, *gl.renderer);
+  // 1000 triangles in the first frame, then at most a quarter more a frame however fast the frames
+  // are (and never more when they are slow): the world view's thousands of triangles take many.
   images.drawInSlices(1000);
   auto scene = std::make_shared<const Scene>(cutSphereScene());
   auto run = std::make_shared<const PipelineRun>(runPipeline(*scene, {ClipStrategy::npc, false, true}));
