@@ -8,6 +8,7 @@
 #include "app/views/image.h"
 #include "app/render/view_renderer.h"
 #include "pipeline/error.h"
+#include "pipeline/primitives.h"
 
 #include <gtest/gtest.h>
 
@@ -20,6 +21,24 @@
 #include <string>
 
 namespace vplab::test {
+
+/// The default scene with its objects replaced by (or, with `keepObjects`, joined by) a finely
+/// tessellated sphere (120 segments, 14 400 faces) cut by the right, top and front planes: thousands
+/// of faces on both sides of the view volume, hundreds of them crossing, slivers at its poles.
+inline Scene cutSphereScene(bool keepObjects = false) {
+  Scene s = defaultScene();
+  SceneObject o = s.objects[0];
+  if (!keepObjects) s.objects.clear();
+  o.name = "sphere";
+  o.shape = Shape::sphere;
+  o.segments = 120;
+  o.mesh = std::make_shared<const Mesh>(sphere(120));
+  o.transform = {};
+  o.transform.translate = {1.6, 1.0, 1.5};
+  o.transform.scale = {1.6, 1.6, 1.6};
+  s.objects.push_back(std::move(o));
+  return s;
+}
 
 /// A context and the renderer made on it, torn down with the context current (the renderer's GL
 /// objects belong to it, whichever context the test made current last).

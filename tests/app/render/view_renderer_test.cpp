@@ -70,21 +70,7 @@ TEST(WorldViewPartition, SamePixelsInEveryPreset) {
   }
 }
 
-// A finely tessellated sphere cut by the right, top and front planes: thousands of faces on both
-// sides, hundreds of them crossing, slivers at its poles.
-Scene cutSphere() {
-  Scene s = defaultScene();
-  s.objects.resize(1);
-  SceneObject& o = s.objects[0];
-  o.name = "sphere";
-  o.shape = Shape::sphere;
-  o.segments = 120;
-  o.mesh = std::make_shared<const Mesh>(sphere(120));
-  o.transform = {};
-  o.transform.translate = {1.6, 1.0, 1.5};
-  o.transform.scale = {1.6, 1.6, 1.6};
-  return s;
-}
+Scene cutSphere() { return test::cutSphereScene(); }
 
 TEST(WorldViewPartition, SamePixelsOnACutSphere) { expectSamePictures(cutSphere(), "cut sphere"); }
 

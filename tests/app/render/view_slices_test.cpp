@@ -15,21 +15,9 @@
 namespace vplab {
 namespace {
 
-// A sphere of 120 segments (14 400 faces) cut by the right, top and front planes beside the default
-// scene's objects: meshes on both sides of the volume, clipped polygons, labels, overlays.
-Scene cutSphereScene() {
-  Scene s = defaultScene();
-  SceneObject o = s.objects[0];
-  o.name = "sphere";
-  o.shape = Shape::sphere;
-  o.segments = 120;
-  o.mesh = std::make_shared<const Mesh>(sphere(120));
-  o.transform = {};
-  o.transform.translate = {1.6, 1.0, 1.5};
-  o.transform.scale = {1.6, 1.6, 1.6};
-  s.objects.push_back(std::move(o));
-  return s;
-}
+// The cut sphere (test::cutSphereScene) beside the default scene's objects: meshes on both sides of
+// the volume, clipped polygons, labels, overlays.
+Scene cutSphereScene() { return test::cutSphereScene(/*keepObjects=*/true); }
 
 Image drawWhole(ViewRenderer& renderer, ViewKind kind, const Scene& scene, const PipelineRun& run,
                 const DisplaySettings& settings, int samples) {
