@@ -1,12 +1,13 @@
 // Index: 1 names and accessors  2 the vertex pass (stages 1–3, classification, stage 5 of the
 //        vertices inside)  3 the face pass (stage 4: trivial accept and reject, per-face clipping),
-//        edges, bounding box  4 stage 5 of the created vertices  5 the run
+//        edges, bounding box  4 stage 5 of the created vertices  5 the run, in steps (PipelineJob)
 #include "pipeline/pipeline.h"
 
 #include "pipeline/error.h"
 #include "pipeline/view_mapping.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace vplab {
 
@@ -145,13 +146,12 @@ namespace {
 // [[gnu::flatten]]: GCC otherwise leaves GLM's vector operators out of line in this file (they are
 // used too often), which costs a call per operation in the one loop that must run at the speed of
 // a plain transform.
+// Over the vertices [begin, end): a run in steps (PipelineJob) passes over them a range at a time;
+// the arrays are sized by the object's start (startObject).
 template <class Classify>
-[[gnu::flatten]] void vertexPass(ObjectRun& o, const Mat4& dcFromNpcM, Classify classify, PipelineStats& stats) {
+[[gnu::flatten]] void vertexPass(ObjectRun& o, const Mat4& dcFromNpcM, Classify classify, PipelineStats& stats,
+                                 size_t begin, size_t end) {
   const Mesh& mesh = *o.mesh;
-  const size_t n = mesh.positions.size();
-  o.npcH.resize(n);
-  o.outcodes.resize(n);
-  o.dc.resize(n);
   const Vec4 c0(o.npcFromMc[0]), c1(o.npcFromMc[1]), c2(o.npcFromMc[2]), c3(o.npcFromMc[3]);
   // dcFromNpc scales x and y and moves y (docs/conventions.md stage 5): its diagonal and last column are all
   // there is to it, so the vertices inside cost two multiplications more than the division.
@@ -162,7 +162,7 @@ template <class Classify>
   Outcode* oc = o.outcodes.data();
   Vec3* dc = o.dc.data();
   uint64_t mapped = 0;
-  for (size_t i = 0; i < n; ++i) {
+  for (size_t i = begin; i < end; ++i) {
     const Vec4 h = c0 * mc[i].x + c1 * mc[i].y + c2 * mc[i].z + c3;
     npcH[i] = h;
     const Outcode code = classify(i, h);
@@ -189,11 +189,12 @@ Outcode userBits(const ObjectRun& o, const Vec4& p) {
 // The strategy's classification. `kUser`: whether the user planes' bits are needed (decided once
 // per object, so the common case without user planes carries no test per vertex).
 template <bool kUser>
-void classifyVerticesWith(ObjectRun& o, const Mat4& dcFromNpcM, PipelineStats& stats) {
+void classifyVerticesWith(ObjectRun& o, const Mat4& dcFromNpcM, PipelineStats& stats, size_t begin, size_t end) {
   switch (o.strategy) {
     case ClipStrategy::npc:
       vertexPass(o, dcFromNpcM,
-                 [&](size_t, const Vec4& h) { return Outcode(outcodeOf(h) | (kUser ? userBits(o, h) : 0)); }, stats);
+                 [&](size_t, const Vec4& h) { return Outcode(outcodeOf(h) | (kUser ? userBits(o, h) : 0)); }, stats,
+                 begin, end);
       break;
     case ClipStrategy::wc:
       vertexPass(o, dcFromNpcM,
@@ -201,7 +202,7 @@ void classifyVerticesWith(ObjectRun& o, const Mat4& dcFromNpcM, PipelineStats& s
                    const Vec3 wc = o.wc(uint32_t(i));
                    return Outcode(outcodeOf(wcBoundary(o.planesWc, wc)) | (kUser ? userBits(o, Vec4(wc, 1.0)) : 0));
                  },
-                 stats);
+                 stats, begin, end);
       break;
     case ClipStrategy::divideFirst:
       vertexPass(o, dcFromNpcM,
@@ -209,14 +210,14 @@ void classifyVerticesWith(ObjectRun& o, const Mat4& dcFromNpcM, PipelineStats& s
                    const Vec4 d = dividedFirst(h);
                    return Outcode(outcodeOf(boundaryCoordinates(d)) | (kUser ? userBits(o, d) : 0));
                  },
-                 stats);
+                 stats, begin, end);
       break;
   }
 }
 
-void classifyVertices(ObjectRun& o, const Mat4& dcFromNpcM, PipelineStats& stats) {
-  if (o.userForms.empty()) classifyVerticesWith<false>(o, dcFromNpcM, stats);
-  else classifyVerticesWith<true>(o, dcFromNpcM, stats);
+void classifyVertices(ObjectRun& o, const Mat4& dcFromNpcM, PipelineStats& stats, size_t begin, size_t end) {
+  if (o.userForms.empty()) classifyVerticesWith<false>(o, dcFromNpcM, stats, begin, end);
+  else classifyVerticesWith<true>(o, dcFromNpcM, stats, begin, end);
 }
 
 // ---------------------------------------------------------------- 3 the face pass (stage 4)
@@ -278,11 +279,12 @@ template <class Source>
 }
 
 // Trivial accept and reject by the outcodes (lecture notes 15.2.4), Sutherland–Hodgman for the rest. Per face
-// only its fate is written.
+// only its fate is written. Over the faces [begin, end), in ascending ranges (clippedFaces stays
+// sorted); finishFaces adds what is counted once per object.
 template <class Source>
-void clipFaces(ObjectRun& o, const Source& source, ClipScratch& scratch, PipelineStats& stats) {
+void clipFaces(ObjectRun& o, const Source& source, ClipScratch& scratch, PipelineStats& stats, uint32_t begin,
+               uint32_t end) {
   const Mesh& mesh = *o.mesh;
-  const uint32_t faces = uint32_t(mesh.faceCount());
   const uint32_t* idx = mesh.indices.data();
   const uint32_t* start = mesh.faceStart.data();
   const Outcode* oc = o.outcodes.data();
@@ -303,12 +305,12 @@ void clipFaces(ObjectRun& o, const Source& source, ClipScratch& scratch, Pipelin
     }
   };
   if (o.uniformFaceSize == 3) {  // triangles (the GPU's and the benchmark's meshes): no faceStart
-    for (uint32_t f = 0; f < faces; ++f) {
+    for (uint32_t f = begin; f < end; ++f) {
       const Outcode a = oc[idx[3 * f]], b = oc[idx[3 * f + 1]], c = oc[idx[3 * f + 2]];
       decide(f, Outcode(a & b & c), Outcode(a | b | c));
     }
   } else {
-    for (uint32_t f = 0; f < faces; ++f) {
+    for (uint32_t f = begin; f < end; ++f) {
       Outcode all = kAllPlanes, any = 0;
       for (uint32_t k = start[f]; k < start[f + 1]; ++k) {
         all &= oc[idx[k]];
@@ -317,17 +319,30 @@ void clipFaces(ObjectRun& o, const Source& source, ClipScratch& scratch, Pipelin
       decide(f, all, any);
     }
   }
-  const uint64_t kept = o.clippedFaces.size();  // clipped with something left
   stats.polygonsTriviallyAccepted += accepted;
   stats.polygonsTriviallyRejected += rejected;
+  stats.polygonsClippedAway += clipped;  // finishFaces moves those with something left to polygonsClipped
+}
+
+void finishFaces(const ObjectRun& o, PipelineStats& stats) {
+  const uint64_t kept = o.clippedFaces.size();  // clipped with something left
   stats.polygonsClipped += kept;
-  stats.polygonsClippedAway += clipped - kept;
+  stats.polygonsClippedAway -= kept;
   stats.verticesCreated += o.createdNpcH.size();
 }
 
-void clipEdges(ObjectRun& o, PipelineStats& stats) {
-  o.edgeRanges.resize(o.edges.size());
-  for (size_t i = 0; i < o.edges.size(); ++i) {
+void clipFaces(ObjectRun& o, const PipelineRun& run, ClipScratch& scratch, PipelineStats& stats, uint32_t begin,
+               uint32_t end) {
+  switch (o.strategy) {
+    case ClipStrategy::npc: clipFaces(o, NpcSource{o}, scratch, stats, begin, end); break;
+    case ClipStrategy::wc: clipFaces(o, WcSource{o, run.npcFromWc}, scratch, stats, begin, end); break;
+    case ClipStrategy::divideFirst: clipFaces(o, DivideFirstSource{o}, scratch, stats, begin, end); break;
+  }
+}
+
+// Over the edges [begin, end); edgeRanges is sized by the object's start.
+void clipEdges(ObjectRun& o, PipelineStats& stats, size_t begin, size_t end) {
+  for (size_t i = begin; i < end; ++i) {
     const Edge& e = o.edges[i];
     const Outcode a = o.outcodes[e.a], b = o.outcodes[e.b];
     if (a & b) {
@@ -381,9 +396,10 @@ void mapCreatedToDevice(ObjectRun& o, const Mat4& dcFromNpc, PipelineStats& stat
   stats.verticesOutput += o.createdNpcH.size();
 }
 
-// ---------------------------------------------------------------- 5 the run
+// ---------------------------------------------------------------- 5 the run, in steps
 
-void runObject(ObjectRun& o, const PipelineRun& run, ClipScratch& scratch, PipelineStats& stats) {
+// An object's start: its matrices, its arrays sized, its per-run state cleared, the box test.
+void startObject(ObjectRun& o, const PipelineRun& run, PipelineStats& stats) {
   const Mesh& mesh = *o.mesh;
   o.vrcFromWc = run.vrcFromWc;
   o.npcFromMc = run.npcFromWc * o.wcFromMc;
@@ -394,6 +410,9 @@ void runObject(ObjectRun& o, const PipelineRun& run, ClipScratch& scratch, Pipel
   stats.verticesTransformed += mesh.vertexCount();
   stats.polygons += mesh.faceCount();
 
+  o.npcH.resize(mesh.vertexCount());
+  o.outcodes.resize(mesh.vertexCount());
+  o.dc.resize(mesh.vertexCount());
   o.fate.resize(mesh.faceCount());
   o.clippedFaces.clear();
   o.clippedStart.assign(1, 0);
@@ -407,31 +426,27 @@ void runObject(ObjectRun& o, const PipelineRun& run, ClipScratch& scratch, Pipel
   }
   if (run.options.clipEdges && o.edges.empty()) o.edges = uniqueEdges(mesh);
   if (!run.options.clipEdges) o.edges.clear();
-  o.edgeRanges.clear();
+  o.edgeRanges.resize(o.edges.size());
   stats.edges += o.edges.size();
 
   o.box = BoxVerdict::notTested;
-  Outcode common = 0;
   if (run.options.boundingBoxTest) {
+    Outcode common = 0;
     o.box = boxVerdict(mesh, o.npcFromMc, run.userPlanesNpc, common);
+    o.boxCode = o.box == BoxVerdict::inside ? 0 : common;
     ++stats.objectsBoxTested;
   }
-  if (!o.classified()) {
-    // Decided by the box: the vertices are transformed (and those inside mapped), not classified.
-    const Outcode code = o.box == BoxVerdict::inside ? 0 : common;
-    vertexPass(o, run.dcFromNpc, [code](size_t, const Vec4&) { return code; }, stats);
-    decideByBox(o, stats);
+  if (o.classified()) stats.verticesClassified += mesh.vertexCount();
+}
+
+// Vertices [begin, end) of an object started by startObject.
+void passVertices(ObjectRun& o, const PipelineRun& run, PipelineStats& stats, size_t begin, size_t end) {
+  if (o.classified()) {
+    classifyVertices(o, run.dcFromNpc, stats, begin, end);
   } else {
-    stats.verticesClassified += mesh.vertexCount();
-    classifyVertices(o, run.dcFromNpc, stats);
-    switch (o.strategy) {
-      case ClipStrategy::npc: clipFaces(o, NpcSource{o}, scratch, stats); break;
-      case ClipStrategy::wc: clipFaces(o, WcSource{o, run.npcFromWc}, scratch, stats); break;
-      case ClipStrategy::divideFirst: clipFaces(o, DivideFirstSource{o}, scratch, stats); break;
-    }
-    if (!o.edges.empty()) clipEdges(o, stats);
+    // Decided by the box: the vertices are transformed (and those inside mapped), not classified.
+    vertexPass(o, run.dcFromNpc, [code = o.boxCode](size_t, const Vec4&) { return code; }, stats, begin, end);
   }
-  mapCreatedToDevice(o, run.dcFromNpc, stats);
 }
 
 uint32_t uniformFaceSize(const Mesh& mesh) {
@@ -444,7 +459,11 @@ uint32_t uniformFaceSize(const Mesh& mesh) {
 
 }  // namespace
 
-void runPipeline(const Scene& scene, const PipelineOptions& options, PipelineRun& run) {
+// The run's phases for each object, in order; the units of work are its vertices, faces, edges.
+enum class PipelineJob::Phase : uint8_t { start, vertices, faces, edges, finish };
+
+PipelineJob::PipelineJob(const Scene& scene, const PipelineOptions& options, PipelineRun& run)
+    : run_(run) {
   // Every matrix first: an invalid camera or transform throws before `run` changes.
   const VrcAxes frame = vrcAxes(scene.camera);
   const Mat4 vrcFromWcM = vrcFromWc(frame, scene.camera.vrp);
@@ -489,12 +508,6 @@ void runPipeline(const Scene& scene, const PipelineOptions& options, PipelineRun
   run.sceneIndex = visible;
   run.stats = {};
   run.objects.resize(visible.size());
-
-  // The clipper's buffers grow to the largest face clipped (no pass over every face to size them).
-  ClipScratch scratch;
-  scratch.a.reserve(16);
-  scratch.b.reserve(16);
-
   for (size_t k = 0; k < visible.size(); ++k) {
     const SceneObject& so = scene.objects[visible[k]];
     ObjectRun& o = run.objects[k];
@@ -508,14 +521,88 @@ void runPipeline(const Scene& scene, const PipelineOptions& options, PipelineRun
     o.color = so.color;
     o.mesh = so.mesh;
     o.wcFromMc = wcFromMcs[k];
-    runObject(o, run, scratch, run.stats);
+    total_ += so.mesh->vertexCount() + so.mesh->faceCount() + (options.clipEdges ? so.mesh->indices.size() / 2 : 0);  // edges: about half the corners
   }
-  run.stats.objects = visible.size();
-  switch (options.strategy) {
-    case ClipStrategy::npc: run.stats.operations = npcStrategyCost(run.stats); break;
-    case ClipStrategy::wc: run.stats.operations = wcStrategyCost(run.stats); break;
-    case ClipStrategy::divideFirst: run.stats.operations = divideFirstCost(run.stats); break;
+  // The clipper's buffers grow to the largest face clipped (no pass over every face to size them).
+  scratch_.a.reserve(16);
+  scratch_.b.reserve(16);
+}
+
+bool PipelineJob::step(uint64_t budget) {
+  PipelineRun& run = run_;
+  while (!done() && budget > 0) {
+    ObjectRun& o = run.objects[object_];
+    // Takes up to `budget` units of the phase's `count`; returns the range [next_, end).
+    auto take = [&](size_t count) {
+      const size_t end = next_ + size_t(std::min<uint64_t>(budget, count - next_));
+      budget -= end - next_;
+      done_ += end - next_;
+      return end;
+    };
+    auto nextPhase = [&](Phase p) {
+      phase_ = p;
+      next_ = 0;
+    };
+    switch (phase_) {
+      case Phase::start:
+        startObject(o, run, run.stats);
+        nextPhase(Phase::vertices);
+        break;
+      case Phase::vertices: {
+        const size_t end = take(o.vertexCount());
+        passVertices(o, run, run.stats, next_, end);
+        next_ = end;
+        if (next_ == o.vertexCount()) nextPhase(o.classified() ? Phase::faces : Phase::finish);
+        break;
+      }
+      case Phase::faces: {
+        const size_t end = take(o.faceCount());
+        clipFaces(o, run, scratch_, run.stats, uint32_t(next_), uint32_t(end));
+        next_ = end;
+        if (next_ == o.faceCount()) {
+          finishFaces(o, run.stats);
+          nextPhase(Phase::edges);
+        }
+        break;
+      }
+      case Phase::edges: {
+        const size_t end = take(o.edges.size());
+        clipEdges(o, run.stats, next_, end);
+        next_ = end;
+        if (next_ == o.edges.size()) nextPhase(Phase::finish);
+        break;
+      }
+      case Phase::finish:
+        if (!o.classified()) {
+          decideByBox(o, run.stats);
+          done_ += o.faceCount();
+        }
+        mapCreatedToDevice(o, run.dcFromNpc, run.stats);
+        ++object_;
+        nextPhase(Phase::start);
+        break;
+    }
   }
+  if (done() && !finished_) {
+    finished_ = true;
+    run.stats.objects = run.objects.size();
+    switch (run.options.strategy) {
+      case ClipStrategy::npc: run.stats.operations = npcStrategyCost(run.stats); break;
+      case ClipStrategy::wc: run.stats.operations = wcStrategyCost(run.stats); break;
+      case ClipStrategy::divideFirst: run.stats.operations = divideFirstCost(run.stats); break;
+    }
+  }
+  return finished_;
+}
+
+double PipelineJob::progress() const {
+  if (finished_) return 1.0;
+  return total_ ? std::min(0.99, double(done_) / double(total_)) : 0.0;
+}
+
+void runPipeline(const Scene& scene, const PipelineOptions& options, PipelineRun& run) {
+  PipelineJob job(scene, options, run);
+  job.step(std::numeric_limits<uint64_t>::max());
 }
 
 PipelineRun runPipeline(const Scene& scene, const PipelineOptions& options) {

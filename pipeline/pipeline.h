@@ -80,6 +80,7 @@ struct ObjectRun {
   // or the box's common bits (box outside).
   std::vector<Outcode> outcodes;
   BoxVerdict box = BoxVerdict::notTested;
+  Outcode boxCode = 0;  // the outcode every vertex gets when the box decides (0 inside, common bits outside)
   bool classified() const { return box == BoxVerdict::notTested || box == BoxVerdict::crossing; }
   /// The boundary values the strategy tests for vertex v (NPC: Blinn's BCs of npcH; WC: the
   /// frustum's plane equations at wc, equal in exact arithmetic; divide first: the BCs of npcH / w;
@@ -155,6 +156,37 @@ struct PipelineRun {
   std::vector<ObjectRun> objects;  // one per visible scene object, in scene order
   std::vector<size_t> sceneIndex;  // objects[i] is scene.objects[sceneIndex[i]]
   PipelineStats stats;
+};
+
+/// The five stages run in steps, so that a page with no threads can run a large scene across frames
+/// (README "Large scenes in the page"): each step does about `budget` units of work (a vertex, a
+/// face or an edge each), and the run's results equal runPipeline's bit for bit however it was cut.
+/// `run` must outlive the job (the scene need not: the run holds its meshes); `run` is complete only when step returns true (until then
+/// it is half old, half new: not to be shown). A job dropped before it is done leaves `run` fit to be
+/// run into again.
+class PipelineJob {
+ public:
+  /// Computes every matrix: throws vplab::Error when the camera or a transform is invalid, before
+  /// `run` changes.
+  PipelineJob(const Scene& scene, const PipelineOptions& options, PipelineRun& run);
+  PipelineJob(const PipelineJob&) = delete;
+  PipelineJob& operator=(const PipelineJob&) = delete;
+
+  /// Does at most about `budget` units; returns whether the run is complete.
+  bool step(uint64_t budget);
+  bool done() const { return object_ == run_.objects.size(); }
+  /// The share of the work done, from 0 to 1 (1 only once complete).
+  double progress() const;
+
+ private:
+  enum class Phase : uint8_t;
+  PipelineRun& run_;
+  ClipScratch scratch_;
+  size_t object_ = 0;
+  Phase phase_{};
+  size_t next_ = 0;  // the phase's next vertex, face or edge
+  uint64_t done_ = 0, total_ = 0;
+  bool finished_ = false;
 };
 
 /// Runs the five stages over the scene's visible objects, reusing `run`'s buffers.

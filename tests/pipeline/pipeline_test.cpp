@@ -586,6 +586,62 @@ TEST(Pipeline, ReusedRunEqualsAFreshRun) {
   }
 }
 
+// A run in steps (PipelineJob: the page runs a large scene across frames) equals the whole run bit for
+// bit, however the steps cut it: budgets of 1 to 40 units cut every pass in the middle of an object,
+// at its ends and between objects; progress only grows and reaches 1 exactly when the run is done.
+TEST(PipelineJob, StepsOfAnySizeEqualTheWholeRun) {
+  test::Rng rng(11);
+  std::vector<Scene> scenes;
+  for (const Camera& c : someCameras(rng)) scenes.push_back(test::randomPolygonScene(rng, c, rng.integer(1, 12), rng.chance(0.5)));
+  const std::vector<PipelineOptions> options = {{ClipStrategy::npc, false, false}, {ClipStrategy::wc, true, true},
+                                                {ClipStrategy::divideFirst, false, true}, {ClipStrategy::npc, true, true},
+                                                {ClipStrategy::wc, false, false}};
+  PipelineRun stepped;
+  for (int k = 0; k < 40; ++k) {
+    SCOPED_TRACE(k);
+    const Scene& s = scenes[size_t(rng.integer(0, int(scenes.size()) - 1))];
+    const PipelineOptions& o = options[size_t(rng.integer(0, int(options.size()) - 1))];
+    const PipelineRun whole = runPipeline(s, o);
+    PipelineJob job(s, o, stepped);
+    const uint64_t budget = uint64_t(rng.integer(1, 40));
+    double last = job.progress();
+    int steps = 0;
+    while (!job.step(budget)) {
+      ++steps;
+      EXPECT_GE(job.progress(), last);
+      EXPECT_LT(job.progress(), 1.0);
+      last = job.progress();
+      ASSERT_LT(steps, 1'000'000);
+    }
+    EXPECT_EQ(job.progress(), 1.0);
+    EXPECT_TRUE(job.step(budget));  // a finished job stays finished and changes nothing
+    // The vertices and the faces not decided by a box each take a unit (the edges more still).
+    const uint64_t units = whole.stats.vertices + whole.stats.polygons - whole.stats.polygonsDecidedByBox;
+    EXPECT_GE(uint64_t(steps + 1) * budget, units) << "a step did more than its budget";
+    if (units > 2 * budget) {
+      EXPECT_GT(steps, 0);
+    }
+    expectSameRun(stepped, whole);
+  }
+}
+
+// A job dropped half way (a newer camera replaced it) leaves its run fit to be run into again.
+TEST(PipelineJob, ADroppedJobLeavesTheRunReusable) {
+  test::Rng rng(12);
+  const Scene s = test::randomPolygonScene(rng, test::randomCamera(rng, Projection::perspective), 8, true);
+  const PipelineOptions o{ClipStrategy::npc, false, true};
+  PipelineRun run;
+  for (uint64_t cut : {1u, 7u, 50u, 200u}) {
+    {
+      PipelineJob job(s, o, run);
+      job.step(cut);
+    }
+    runPipeline(s, o, run);
+    SCOPED_TRACE(cut);
+    expectSameRun(run, runPipeline(s, o));
+  }
+}
+
 TEST(Pipeline, HiddenObjectsAndObjectsWithoutMeshAreSkipped) {
   Scene s = test::sceneWith(test::checkCamera(), {test::shapeObject("a", Shape::cube, {}), test::shapeObject("b", Shape::cube, {}),
                                                   test::shapeObject("c", Shape::tetrahedron, {})});
