@@ -3,6 +3,8 @@
 
 #include "pipeline/error.h"
 
+#include <chrono>
+
 namespace vplab {
 
 namespace {
@@ -11,6 +13,10 @@ namespace {
 /// (well under a millisecond) arrives in it. A scene whose last run took longer is not waited for at
 /// all: the 1M-triangle sphere's run (0.1–0.2 s) arrives a few frames later.
 constexpr double kFrameWaitForRun = 0.02;
+
+/// A run in steps looks at the clock after this many units of work (a vertex, face or edge each) at
+/// first, then adapts (stepJob).
+constexpr uint64_t kFirstUnitsPerCheck = 20000;
 
 }  // namespace
 
@@ -25,7 +31,15 @@ void ShownRun::update() {
     ranShownRevision_ = state_.doc.shownRevision();
     ranOptions_ = o;
     auto scene = std::make_shared<const Scene>(state_.doc.shown());  // shares the meshes: a cheap copy
-    if (worker_) {
+    job_.reset();  // a run in steps of an older state is dropped (its buffer stays fit for reuse)
+    if (stepSeconds_ > 0) {
+      try {
+        job_ = std::make_unique<Job>(std::move(scene), o, nextRun());
+        unitsPerCheck_ = kFirstUnitsPerCheck;
+      } catch (const Error& e) {
+        state_.runError = e.what();  // the previous run stays
+      }
+    } else if (worker_) {
       ticket_ = worker_->request(std::move(scene), o);
       pending_ = true;
       askedAt_ = frameNumber_;
@@ -33,8 +47,7 @@ void ShownRun::update() {
       // Into the run published before the current one when nothing holds it any more: its buffers
       // are reused (a large scene's arrays are not allocated anew). The render thread may still draw
       // from it: then a new one.
-      std::shared_ptr<PipelineRun>& into = runs_[0] == state_.ran ? runs_[1] : runs_[0];
-      if (!into || into.use_count() > 1) into = std::make_shared<PipelineRun>();
+      std::shared_ptr<PipelineRun>& into = nextRun();
       try {
         runPipeline(*scene, o, *into);
         publish(std::move(scene), into);
@@ -43,6 +56,7 @@ void ShownRun::update() {
       }
     }
   }
+  if (job_) stepJob();
   if (!pending_) return;
   // Only the frame that asked for the run waits for it, when it is expected in time (a small scene's
   // arrives in it); later frames only look whether it is finished.
@@ -56,6 +70,38 @@ void ShownRun::update() {
   if (done->ticket == ticket_) pending_ = false;
 }
 
+std::shared_ptr<PipelineRun>& ShownRun::nextRun() {
+  std::shared_ptr<PipelineRun>& into = runs_[0] == state_.ran ? runs_[1] : runs_[0];
+  if (!into || into.use_count() > 1) into = std::make_shared<PipelineRun>();
+  return into;
+}
+
+// Steps until the frame's share of time is spent, looking at the clock every unitsPerCheck_ units
+// (adapted so that a look comes about every millisecond: a clock read per vertex would cost more
+// than the vertex).
+void ShownRun::stepJob() {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  for (;;) {
+    const Clock::time_point before = Clock::now();
+    const bool done = job_->job.step(unitsPerCheck_);
+    const double took = std::chrono::duration<double>(Clock::now() - before).count();
+    if (took < 0.0005) unitsPerCheck_ = std::min<uint64_t>(unitsPerCheck_ * 2, 1u << 24);
+    else if (took > 0.002) unitsPerCheck_ = std::max<uint64_t>(unitsPerCheck_ / 2, 1000);
+    if (done) {
+      publish(std::move(job_->scene), std::move(job_->into));
+      job_.reset();
+      return;
+    }
+    if (std::chrono::duration<double>(Clock::now() - start).count() >= stepSeconds_) return;
+  }
+}
+
+std::optional<double> ShownRun::progress() const {
+  if (!job_) return std::nullopt;
+  return job_->job.progress();
+}
+
 void ShownRun::publish(std::shared_ptr<const Scene> scene, std::shared_ptr<const PipelineRun> run) {
   state_.ranScene = std::move(scene);
   state_.ran = std::move(run);
@@ -64,6 +110,7 @@ void ShownRun::publish(std::shared_ptr<const Scene> scene, std::shared_ptr<const
 }
 
 std::optional<double> ShownRun::wakeIn(double busyStep) const {
+  if (job_) return 0.0;  // the next step is due in the next frame
   if (!pending_) return std::nullopt;
   return worker_->hasFinished() ? 0.0 : busyStep;
 }

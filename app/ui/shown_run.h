@@ -2,7 +2,8 @@
 // scene (Document::shownRevision) or the options changed: frames drawn for hover and ImGui's settling
 // cost none. Headless (the UI tests, `vplab render --view ui`) it runs in the frame that needs it; in
 // the window on a worker thread (app/core/pipeline_worker.h), so the window never waits for the
-// pipeline. A finished run is published whole into the viewer's state with the scene it ran on
+// pipeline; in the page, which has no threads, in steps across frames (PipelineJob), a few ms of
+// each frame. A finished run is published whole into the viewer's state with the scene it ran on
 // (ViewerState::ran, ranScene), never copied.
 #pragma once
 
@@ -25,6 +26,9 @@ class ShownRun {
   /// Runs the pipeline on a worker thread from now on; `wake` wakes the window's event wait (called
   /// on the worker).
   void useWorker(std::function<void()> wake);
+  /// Runs the pipeline in steps from now on, spending about `secondsPerFrame` of each frame on it (a
+  /// small scene's run still completes in the frame that asks for it).
+  void runInSteps(double secondsPerFrame) { stepSeconds_ = secondsPerFrame; }
   /// A new frame: the frame that asks for a run may wait a little for it.
   void beginFrame() { ++frameNumber_; }
   /// Runs, or asks the worker for, a run when the shown scene or the options changed; publishes a
@@ -33,14 +37,19 @@ class ShownRun {
 
   /// Counts the runs published: what a view's image was drawn from.
   unsigned revision() const { return revision_; }
-  /// Whether a run is under way on the worker (the views show the last one meanwhile).
-  bool pending() const { return pending_; }
+  /// Whether a run is under way on the worker or in steps (the views show the last one meanwhile).
+  bool pending() const { return pending_ || job_ != nullptr; }
+  /// How far the run under way in steps is, from 0 to 1 (nothing when none is).
+  std::optional<double> progress() const;
   /// Seconds until the window should draw again for the run: 0 when the worker has finished one,
   /// `busyStep` while it works, else nothing.
   std::optional<double> wakeIn(double busyStep) const;
 
  private:
   void publish(std::shared_ptr<const Scene> scene, std::shared_ptr<const PipelineRun> run);
+  /// The run buffer to run into next: not the one shown, and held by nobody else.
+  std::shared_ptr<PipelineRun>& nextRun();
+  void stepJob();
 
   ViewerState& state_;
   // In the frame: the runs, state_.ran one of them; the other is run into next, reusing its
@@ -56,6 +65,17 @@ class ShownRun {
   uint64_t frameNumber_ = 0;
   bool pending_ = false;
   double lastSeconds_ = 0;         // how long the worker's last run took
+  // In steps: the run under way, the scene it runs and the buffer it runs into (nextRun's).
+  double stepSeconds_ = 0;         // 0: not in steps
+  struct Job {
+    std::shared_ptr<const Scene> scene;
+    std::shared_ptr<PipelineRun> into;
+    PipelineJob job;
+    Job(std::shared_ptr<const Scene> s, const PipelineOptions& o, std::shared_ptr<PipelineRun> r)
+        : scene(std::move(s)), into(std::move(r)), job(*scene, o, *into) {}
+  };
+  std::unique_ptr<Job> job_;
+  uint64_t unitsPerCheck_ = 0;  // units of work between two looks at the clock
 };
 
 }  // namespace vplab

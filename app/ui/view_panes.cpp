@@ -15,6 +15,7 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 
 namespace vplab {
@@ -98,7 +99,10 @@ void ViewPanes::busyMark(ViewKind kind) {
   if (!images_.busy(kind) && !run_.pending()) return;
   const ImVec2 max = ImGui::GetItemRectMax();
   const ImVec2 min = ImGui::GetItemRectMin();
-  const char* text = "updating…";
+  // A run in steps (the page) says how far it is; a view drawn in slices only that it is busy.
+  char progress[32] = "updating…";
+  if (const std::optional<double> p = run_.progress()) std::snprintf(progress, sizeof progress, "updating… %d %%", int(*p * 100));
+  const char* text = progress;
   const float pad = 4 * uiScale_, radius = ImGui::GetTextLineHeight() * 0.4f;
   const ImVec2 textSize = ImGui::CalcTextSize(text);
   const ImVec2 size(pad * 3 + radius * 2 + textSize.x, pad * 2 + textSize.y);

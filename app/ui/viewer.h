@@ -73,8 +73,13 @@ class Viewer {
   /// finished. `wake` wakes the window's event wait (called on the worker). Without it (headless,
   /// the UI tests) the pipeline runs in the frame that needs it.
   void usePipelineWorker(std::function<void()> wake);
-  /// Whether a run of the pipeline is under way on the worker (the views show the last one).
+  /// Without threads (the page): the pipeline runs in steps, about `secondsPerFrame` of each frame
+  /// (PipelineJob), so no frame waits for a large scene's run.
+  void runPipelineInSteps(double secondsPerFrame) { run_.runInSteps(secondsPerFrame); }
+  /// Whether a run of the pipeline is under way on the worker or in steps (the views show the last one).
   bool runPending() const { return run_.pending(); }
+  /// How far the run in steps is (0 to 1), while one is under way.
+  std::optional<double> runProgress() const { return run_.progress(); }
   /// Whether `kind` shows an older image while its current one is being drawn.
   bool viewBusy(ViewKind kind) const { return images_.busy(kind); }
   /// Without a render thread (the page): the views are drawn across frames in slices of about this

@@ -41,6 +41,7 @@ constexpr int kSettleFrames = 3;  // as the window's loop: ImGui shows the effec
 constexpr double kLongestWait = 60.0;
 constexpr double kAutosaveDelay = 3.0;  // seconds after the last change, as the desktop's
 constexpr size_t kFirstSliceTriangles = 20000;  // then adapted to the frame times (ViewImages)
+constexpr double kPipelineSecondsPerFrame = 0.03;  // a frame's share of the pipeline's run in steps (ShownRun)
 // The autosave's directory in the in-memory file system, mirrored to this tab's localStorage key
 // after each frame. The scenes kept by tabs that are gone are brought back under kKeptDir, each
 // file standing for its localStorage key until it is recovered or discarded.
@@ -84,6 +85,8 @@ struct Page {
     // SwiftShader takes about 7 s for the three views of a million triangles: a large scene's views
     // are drawn across frames (README "Large scenes in the page").
     viewer.drawViewsInSlices(kFirstSliceTriangles);
+    // Its pipeline run (0.5 s for the million-triangle sphere) in steps of a few ms a frame.
+    viewer.runPipelineInSteps(kPipelineSecondsPerFrame);
     showLink(page::locationHash(), /*atStart=*/true);
     startAutosave();
   }
@@ -257,6 +260,7 @@ struct Page {
     j["compactPanel"] = s.compactPanel == ViewerState::controlsPanel ? "controls"
                         : s.compactPanel == ViewerState::inspectPanel ? "inspect" : "";
     j["loading"] = viewer.session().loader().busy();
+    if (const std::optional<double> p = viewer.runProgress()) j["runProgress"] = *p;
     j["graphicsLost"] = graphicsLost;
     j["recoveryOffered"] = viewer.session().recoveryOffered();
     j["recoveriesOffered"] = viewer.session().recoveriesOffered();

@@ -1,6 +1,7 @@
 // The viewer with the CPU pipeline on a worker thread (app/core/pipeline_worker.h, README "The
 // viewer"): it goes on drawing frames while a large scene's run is under way, then shows what the
-// synchronous viewer shows (the worker alone: tests/app/core/pipeline_worker_test.cpp).
+// synchronous viewer shows (the worker alone: tests/app/core/pipeline_worker_test.cpp). And the
+// page's way without threads: the run in steps across frames.
 #include "app/ui/headless_viewer.h"
 #include "app/core/pipeline_worker.h"
 #include "io/dump.h"
@@ -49,6 +50,56 @@ TEST(PipelineWorker, TheViewerDrawsOnWhileALargeSceneRunsThenShowsTheNewRun) {
     writePng(b, (test::outputDir() / "pipeline_worker_sync.png").string());
   }
   EXPECT_EQ(differ, 0u) << "the worker's run draws what the synchronous one draws";
+}
+
+// The page's way, without threads (ShownRun::runInSteps): a large scene's run goes on across frames,
+// a few ms of each; the views show the last run meanwhile (its progress in their busy mark); a
+// change in the middle drops the run under way for one of the newest state; and the run finally
+// shown is the synchronous viewer's, bit for bit, and so is the picture. 1 ns a frame: each frame
+// does one step, whatever the machine's speed: 20 000 units in a run's first frame, at most twice as
+// many in each next one, and the sphere has about 130 000, so a run takes at least three frames.
+TEST(PipelineSteps, TheViewerRunsALargeSceneAcrossFramesThenShowsWhatTheSynchronousOneShows) {
+  GlContext& context = *test::egl().context;
+  const Scene scene = test::sphereScene(256);
+  HeadlessViewer sync(context, scene, 1280, 720), stepped(context, scene, 1280, 720);
+  stepped.viewer().runPipelineInSteps(1e-9);
+  sync.frames(3);
+  for (int i = 0; i < 100 && stepped.viewer().runPending(); ++i) stepped.frame();
+  ASSERT_FALSE(stepped.viewer().runPending());
+  EXPECT_EQ(dumpJson(stepped.state().run()), dumpJson(sync.state().run()));
+
+  const PipelineRun* before = &stepped.state().run();
+  for (HeadlessViewer* v : {&sync, &stepped}) v->state().doc.scene().camera.prp.x += 0.5;
+  stepped.frame();
+  ASSERT_TRUE(stepped.viewer().runPending());
+  const double first = stepped.viewer().runProgress().value_or(-1);
+  EXPECT_GT(first, 0.0);
+  EXPECT_LT(first, 1.0);
+  EXPECT_EQ(&stepped.state().run(), before) << "a half-done run is never shown";
+  EXPECT_FALSE(stepped.viewer().viewsNotReady().empty());
+  stepped.frame();
+  EXPECT_GT(stepped.viewer().runProgress().value_or(-1), first);
+  // Changed again half way: the newest camera wins.
+  for (HeadlessViewer* v : {&sync, &stepped}) v->state().doc.scene().camera.prp.x += 0.75;
+  int frames = 0;
+  for (; frames < 100 && stepped.viewer().runPending(); ++frames) {
+    EXPECT_EQ(&stepped.state().run(), before);
+    stepped.frame();
+  }
+  EXPECT_GT(frames, 2) << "the run went across frames";
+  ASSERT_FALSE(stepped.viewer().runPending());
+  EXPECT_FALSE(stepped.viewer().runProgress());
+  sync.frames(3);
+  stepped.frames(3);
+  EXPECT_EQ(stepped.state().run().camera.prp, sync.state().run().camera.prp);
+  EXPECT_EQ(dumpJson(stepped.state().run()), dumpJson(sync.state().run()));
+  const Image a = stepped.image(), b = sync.image();
+  const size_t differ = test::differingPixels(a, b);
+  if (differ) {
+    writePng(a, (test::outputDir() / "pipeline_steps.png").string());
+    writePng(b, (test::outputDir() / "pipeline_steps_sync.png").string());
+  }
+  EXPECT_EQ(differ, 0u) << "the run in steps draws what the synchronous one draws";
 }
 
 }  // namespace
