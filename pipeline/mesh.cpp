@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <string>
-#include <unordered_set>
 
 namespace vplab {
 
@@ -51,19 +50,63 @@ Bounds bounds(const Mesh& mesh) {
   return b;
 }
 
+// Without hashing (a hash set of a million edges took a quarter of a second): each face side goes
+// into the bucket of its smaller vertex (a counting sort), a side is new when no earlier side in its
+// bucket has the same other end, and the new ones are listed in the order the faces give them. A
+// bucket is searched by hand while small (a vertex has few neighbours) and sorted when large (a fan
+// of many faces around one vertex, which a hostile file may hold): linear in the corners.
 std::vector<Edge> uniqueEdges(const Mesh& mesh) {
-  std::vector<Edge> edges;
-  std::unordered_set<uint64_t> seen;
-  seen.reserve(mesh.indices.size());
-  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+  const size_t corners = mesh.indices.size();
+  const size_t vertices = mesh.positions.size();
+  // Side j of the mesh: from corner j to the next corner of its face (a, b with a < b).
+  auto side = [&](size_t f, size_t k, uint32_t& a, uint32_t& b) {
     const auto face = mesh.face(f);
-    for (size_t i = 0; i < face.size(); ++i) {
-      uint32_t a = face[i], b = face[(i + 1) % face.size()];
-      if (a == b) continue;
-      if (a > b) std::swap(a, b);
-      if (seen.insert(uint64_t(a) << 32 | b).second) edges.push_back({a, b});
+    a = face[k];
+    b = face[(k + 1) % face.size()];
+    if (a > b) std::swap(a, b);
+    return a != b && a < vertices;
+  };
+  std::vector<uint32_t> start(vertices + 1, 0);
+  for (size_t f = 0; f < mesh.faceCount(); ++f)
+    for (size_t k = 0; k < mesh.faceStart[f + 1] - mesh.faceStart[f]; ++k) {
+      uint32_t a, b;
+      if (side(f, k, a, b)) ++start[a + 1];
+    }
+  for (size_t v = 0; v < vertices; ++v) start[v + 1] += start[v];
+  struct Entry {
+    uint32_t b, side;
+  };
+  std::vector<Entry> bucket(start[vertices]);
+  {
+    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+    for (size_t f = 0; f < mesh.faceCount(); ++f)
+      for (size_t k = 0; k < mesh.faceStart[f + 1] - mesh.faceStart[f]; ++k) {
+        uint32_t a, b;
+        if (side(f, k, a, b)) bucket[fill[a]++] = {b, uint32_t(mesh.faceStart[f] + k)};
+      }
+  }
+  std::vector<uint8_t> first(corners, 0);
+  constexpr uint32_t kSmallBucket = 16;
+  for (size_t v = 0; v < vertices; ++v) {
+    Entry* begin = bucket.data() + start[v];
+    Entry* end = bucket.data() + start[v + 1];
+    if (end - begin <= kSmallBucket) {
+      for (Entry* e = begin; e != end; ++e) {  // in side order: the counting sort kept it
+        bool seen = false;
+        for (Entry* d = begin; d != e && !seen; ++d) seen = d->b == e->b;
+        first[e->side] = !seen;
+      }
+    } else {
+      std::sort(begin, end, [](const Entry& x, const Entry& y) { return x.b != y.b ? x.b < y.b : x.side < y.side; });
+      for (Entry* e = begin; e != end; ++e) first[e->side] = e == begin || e[-1].b != e->b;
     }
   }
+  std::vector<Edge> edges;
+  for (size_t f = 0; f < mesh.faceCount(); ++f)
+    for (size_t k = 0; k < mesh.faceStart[f + 1] - mesh.faceStart[f]; ++k) {
+      uint32_t a, b;
+      if (first[mesh.faceStart[f] + k] && side(f, k, a, b)) edges.push_back({a, b});
+    }
   return edges;
 }
 

@@ -8,7 +8,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
+#include <set>
+#include <utility>
+#include <vector>
 
 namespace vplab {
 namespace {
@@ -202,6 +206,51 @@ TEST(Mesh, TriangulatedKeepsOrientationAndArea) {
     expectOutwardFaces(t);
     expectClosedAndConsistent(t);
   }
+}
+
+// uniqueEdges against the plain definition (a set of the sides seen, in the order the faces give
+// them) on random faces over few vertices (many repeated sides, degenerate sides a–a), and on a fan
+// of 300 triangles around one vertex (a bucket too large to search by hand: the sorted path).
+TEST(Mesh, UniqueEdgesEqualTheSetOfSidesInOrder) {
+  auto reference = [](const Mesh& m) {
+    std::set<std::pair<uint32_t, uint32_t>> seen;
+    std::vector<std::pair<uint32_t, uint32_t>> out;
+    for (size_t f = 0; f < m.faceCount(); ++f) {
+      const auto face = m.face(f);
+      for (size_t i = 0; i < face.size(); ++i) {
+        const uint32_t a = std::min(face[i], face[(i + 1) % face.size()]), b = std::max(face[i], face[(i + 1) % face.size()]);
+        if (a != b && seen.insert({a, b}).second) out.push_back({a, b});
+      }
+    }
+    return out;
+  };
+  auto edgesOf = [](const Mesh& m) {
+    std::vector<std::pair<uint32_t, uint32_t>> out;
+    for (const Edge& e : uniqueEdges(m)) out.push_back({e.a, e.b});
+    return out;
+  };
+  test::Rng rng(21);
+  for (int trial = 0; trial < 50; ++trial) {
+    Mesh m;
+    const int vertices = rng.integer(1, 40);
+    for (int v = 0; v < vertices; ++v) m.positions.push_back(Vec3(v, 0, 0));
+    for (int f = rng.integer(0, 200); f > 0; --f) {
+      std::vector<uint32_t> face(size_t(rng.integer(3, 6)));
+      for (uint32_t& v : face) v = uint32_t(rng.integer(0, vertices - 1));
+      m.addFace(face);
+    }
+    SCOPED_TRACE(trial);
+    EXPECT_EQ(edgesOf(m), reference(m));
+  }
+  Mesh fan;
+  fan.positions.push_back(Vec3(0));
+  for (uint32_t k = 0; k < 300; ++k) {
+    fan.positions.push_back(Vec3(std::cos(k * 0.02), std::sin(k * 0.02), 0));
+    if (k > 0) fan.addFace({0, k, k + 1});
+  }
+  fan.addFace({0, 300, 1});  // closes the fan: its side 0–1 repeats the first face's
+  EXPECT_EQ(edgesOf(fan), reference(fan));
+  EXPECT_EQ(uniqueEdges(fan).size(), 2u * 300);
 }
 
 TEST(Mesh, UniqueEdgesAndBounds) {
