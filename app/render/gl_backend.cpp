@@ -239,7 +239,14 @@ bool GlBackend::drawMeshes(const draw::Fill& fill, const ViewCamera& camera, int
     }
     const draw::MeshInstance& m = fill.meshes[i];
     if (!m.mesh) continue;
-    const GpuMesh& g = meshes_.get(m.mesh);
+    // A mesh not on the GPU yet goes there first, as much of it as the slice's triangles allow (a
+    // million triangles took a second of one frame in the page).
+    const GpuMesh* uploaded = meshes_.upload(m.mesh, triangles);
+    if (!uploaded) {
+      done = false;
+      break;
+    }
+    const GpuMesh& g = *uploaded;
     const gl::Program* current = &program;
     auto setObject = [&] {
       current->set("wcFromMc", m.spaceFromMc);
@@ -503,7 +510,7 @@ void GlBackend::drawMeshEdges(const draw::Lines& lines, const View& view) {
     gl_.DepthFunc(depthFunc);
     for (const draw::MeshInstance& m : lines.meshEdges) {
       if (!m.mesh) continue;
-      const GpuMesh& g = meshes_.get(m.mesh);
+      const GpuMesh& g = meshes_.withEdges(m.mesh);
       overlay_.drawMeshEdges(g.edges.id(), g.edgeCount, camera, m.spaceFromMc, view.width, view.height,
                              glm::vec4(glm::vec3(m.color), m.color.a * alphaScale), lines.widthPx, lines.dashPx);
     }

@@ -72,6 +72,32 @@ TEST(ViewSlices, AViewDrawnInSlicesIsTheViewDrawnWholeWithOtherViewsBetween) {
   }
 }
 
+// A mesh the renderer has not seen goes to the GPU in slices too (the page: a million triangles'
+// upload held one frame for a second): in the world view the first slices upload the sphere's
+// 14 160 triangles (at least 14 slices of 1000), the next draw them (as many again), and the picture is the one drawn whole from another copy
+// of the same mesh. (The camera view draws the CPU's clipped polygons, not the mesh.)
+TEST(ViewSlices, ANewMeshIsUploadedInSlices) {
+  ViewRenderer& renderer = *test::egl().renderer;
+  const Scene fresh = test::cutSphereScene(), copy = test::cutSphereScene();
+  ASSERT_NE(fresh.objects.back().mesh, copy.objects.back().mesh);
+  const PipelineRun freshRun = runPipeline(fresh), copyRun = runPipeline(copy);
+  const DisplaySettings settings = displaySettingsFor(fresh, Style::shaded, 400.0 / 300.0);
+  const Image whole = drawWhole(renderer, ViewKind::world, copy, copyRun, settings, 1);
+  ASSERT_GE(test::distinctColours(whole), 4u);
+  gl::RenderTarget target(renderer.context().gl());
+  target.resize(400, 300, 1);
+  ViewRenderer::Slices slices;
+  renderer.startSlices(ViewKind::world, fresh, freshRun, settings, {}, target, slices);
+  int count = 0;
+  for (bool done = false; !done; ++count) {
+    size_t triangles = 1000;
+    done = renderer.drawSlice(slices, target, triangles);
+    ASSERT_LT(count, 10000) << "the slices never end";
+  }
+  EXPECT_GE(count, 2 * 14) << "uploaded and drawn in " << count << " slices";
+  EXPECT_EQ(test::differingPixels(whole, target.read()), 0u) << count << " slices";
+}
+
 // The frames of a page: each draws what is left of its slice budget, the view is asked for again.
 TEST(ViewSlices, ViewImagesShowTheLastCompleteImageBusyUntilTheNewOneIsDone) {
   test::GlFixture& gl = test::egl();
@@ -105,7 +131,9 @@ TEST(ViewSlices, ViewImagesShowTheLastCompleteImageBusyUntilTheNewOneIsDone) {
   EXPECT_EQ(test::differingPixels(firstImage, drawWhole(*gl.renderer, ViewKind::world, *scene, *run, request.settings, 1)), 0u);
   EXPECT_EQ(frame(request, 1), first) << "the same request draws nothing again";
 
-  // The observer turns: the old image stays shown, unchanged, until the new one is complete.
+  // The observer turns: the old image stays shown, unchanged, until the new one is complete. (From
+  // 1000 triangles again: the first image's many fast frames grew the slices.)
+  images.drawInSlices(1000);
   ViewRequest turned = request;
   orbitBy(turned.settings.world.orbit, 40, 10);
   GLuint shown = frame(turned, 1);
