@@ -5,6 +5,7 @@
 #include "pipeline/primitives.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace vplab {
@@ -40,6 +41,25 @@ MeshSize primitiveSize(const SceneObject& o, const Limits& limits) {
 }
 
 }  // namespace
+
+void checkWellFormed(const Mesh& mesh) {
+  if (mesh.faceStart.empty() || mesh.faceStart.front() != 0 || mesh.faceStart.back() != mesh.indices.size())
+    throw Error("its face list does not cover its " + std::to_string(mesh.indices.size()) + " indices");
+  for (size_t f = 0; f + 1 < mesh.faceStart.size(); ++f)
+    if (mesh.faceStart[f + 1] < mesh.faceStart[f]) throw Error("face " + std::to_string(f) + " ends before it starts");
+  for (size_t i = 0; i < mesh.indices.size(); ++i)
+    if (mesh.indices[i] >= mesh.positions.size())
+      throw Error("index " + std::to_string(i) + " names vertex " + std::to_string(mesh.indices[i]) + " of " +
+                  std::to_string(mesh.positions.size()));
+  if (!mesh.cornerNormals.empty() && mesh.cornerNormals.size() != mesh.indices.size())
+    throw Error(std::to_string(mesh.cornerNormals.size()) + " corner normals for " + std::to_string(mesh.indices.size()) +
+                " corners");
+  auto finite = [](const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+  for (size_t v = 0; v < mesh.positions.size(); ++v)
+    if (!finite(mesh.positions[v])) throw Error("vertex " + std::to_string(v) + " is not finite");
+  for (size_t c = 0; c < mesh.cornerNormals.size(); ++c)
+    if (!finite(mesh.cornerNormals[c])) throw Error("corner normal " + std::to_string(c) + " is not finite");
+}
 
 void buildMesh(SceneObject& o, const std::filesystem::path& baseDir, const Limits& limits, const MeshSize& used) {
   if (o.shape != Shape::mesh) {

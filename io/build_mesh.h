@@ -14,6 +14,11 @@ namespace vplab {
 /// left of the scene's budget (`used` of `limits` already taken by earlier objects).
 void checkMeshSize(const MeshSize& size, const MeshSize& used, const Limits& limits);
 
+/// Throws vplab::Error saying what is wrong when `mesh` is not well formed: a face start out of
+/// order or past the indices, an index past the vertices, corner normals not one per index, a
+/// coordinate not finite. For meshes that come from elsewhere (the page's loader worker).
+void checkWellFormed(const Mesh& mesh);
+
 /// Builds the object's MC mesh from its shape (OBJ files relative to baseDir). Throws vplab::Error,
 /// before allocating, when the mesh would exceed what `used` (earlier objects) leaves of `limits`.
 void buildMesh(SceneObject& object, const std::filesystem::path& baseDir, const Limits& limits = kDefaultLimits,

@@ -157,7 +157,8 @@ ModelTransform readTransform(const Reader& r, const Json& j, const std::string& 
 }
 
 SceneObject readObject(const Reader& r, const Json& j, const std::string& path, size_t index,
-                       const std::filesystem::path& baseDir, const Limits& limits, const MeshSize& used) {
+                       const std::filesystem::path& baseDir, const Limits& limits, const MeshSize& used,
+                       const BuiltMeshes* built) {
   r.object(j, path, {"name", "shape", "segments", "vertices", "file", "obj", "color", "visible", "translate", "rotate", "scale"});
   SceneObject o;
   const std::string s = r.string(r.required(j, path, "shape"), path + "/shape");
@@ -197,7 +198,15 @@ SceneObject readObject(const Reader& r, const Json& j, const std::string& path, 
   if (auto it = j.find("visible"); it != j.end()) o.visible = r.boolean(*it, path + "/visible");
   o.transform = readTransform(r, j, path);
   try {
-    buildMesh(o, baseDir, limits, used);
+    if (built) {
+      if (index >= built->size() || !(*built)[index]) throw Error("no mesh was built for it");
+      const Mesh& m = *(*built)[index];
+      checkMeshSize({m.faceCount(), m.vertexCount(), m.indices.size()}, used, limits);
+      checkWellFormed(m);
+      o.mesh = (*built)[index];
+    } else {
+      buildMesh(o, baseDir, limits, used);
+    }
   } catch (const Error& e) {
     r.fail(path, e.what());
   }
@@ -240,7 +249,7 @@ Json toJson(const SceneObject& o) {
 }  // namespace
 
 Scene parseScene(std::string_view text, std::string_view source, const std::filesystem::path& baseDir,
-                 const Limits& limits) {
+                 const Limits& limits, const BuiltMeshes* built) {
   const Reader r{std::string(source)};
   const Json j = parseCheckedJson(text, source, limits.jsonDepth);
   r.object(j, "", {"title", "caption", "camera", "device", "background", "lights", "clip_planes", "objects"});
@@ -283,7 +292,7 @@ Scene parseScene(std::string_view text, std::string_view source, const std::file
   const Json& objects = r.array(r.required(j, "", "objects"), "/objects");
   MeshSize used;  // the scene's faces, vertices and corners so far, against limits
   for (size_t i = 0; i < objects.size(); ++i) {
-    scene.objects.push_back(readObject(r, objects[i], "/objects/" + std::to_string(i), i, baseDir, limits, used));
+    scene.objects.push_back(readObject(r, objects[i], "/objects/" + std::to_string(i), i, baseDir, limits, used, built));
     const Mesh& m = *scene.objects.back().mesh;
     used.faces += m.faceCount();
     used.vertices += m.vertexCount();

@@ -27,8 +27,10 @@
 #include "pipeline/scene.h"
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace vplab {
 
@@ -38,9 +40,16 @@ namespace vplab {
 /// (io/limits.h), checked before the memory for them is allocated.
 Scene loadScene(const std::filesystem::path& file, const Limits& limits = kDefaultLimits);
 
-/// The same for JSON text; `source` names it in messages, `baseDir` resolves mesh files.
+/// Meshes built elsewhere from the same scene text, one per object in order: the page builds a
+/// large scene's meshes in a Web Worker (README "Large scenes in the page") and reads the text again
+/// on its own thread with them.
+using BuiltMeshes = std::vector<std::shared_ptr<const Mesh>>;
+
+/// The same for JSON text; `source` names it in messages, `baseDir` resolves mesh files. With
+/// `built`, each object takes its mesh from there (checked against the limits and for being well
+/// formed, as if built here) instead of building it.
 Scene parseScene(std::string_view json, std::string_view source, const std::filesystem::path& baseDir,
-                 const Limits& limits = kDefaultLimits);
+                 const Limits& limits = kDefaultLimits, const BuiltMeshes* built = nullptr);
 
 /// The scene as JSON text in the format above (2-space indentation).
 std::string sceneToJson(const Scene& scene);

@@ -14,6 +14,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <fstream>
 
 namespace vplab {
@@ -404,6 +405,40 @@ TEST(SceneIo, UserClipPlanesAreReadAndWritten) {
   std::string seven = "[";
   for (int i = 0; i < 7; ++i) seven += std::string(i ? "," : "") + R"({"normal": [1,0,0], "point": [0,0,0]})";
   EXPECT_THAT(error(seven + "]"), HasSubstr("at most 6 user clip planes"));
+}
+
+// The page's way (app/core/loader.h): a worker parses the scene and builds its meshes; the page
+// parses the same text again with them. The scene is the same, its meshes the very ones handed in;
+// a wrong number of meshes, a malformed mesh or one over the limits is an error naming the object.
+TEST(SceneIo, ParsesWithMeshesBuiltElsewhere) {
+  const std::string text = readFile(kData + "/scene_mesh.json");
+  const Scene built = parseScene(text, "scene_mesh.json", kData);
+  ASSERT_GE(built.objects.size(), 2u);
+  BuiltMeshes meshes;
+  for (const SceneObject& o : built.objects) meshes.push_back(o.mesh);
+  const Scene again = parseScene(text, "scene_mesh.json", kData, kDefaultLimits, &meshes);
+  ASSERT_EQ(again.objects.size(), built.objects.size());
+  for (size_t i = 0; i < again.objects.size(); ++i) EXPECT_EQ(again.objects[i].mesh, meshes[i]);
+  EXPECT_EQ(sceneToJson(again), sceneToJson(built));
+
+  BuiltMeshes fewer(meshes.begin(), meshes.end() - 1);
+  EXPECT_THAT(errorOf([&] { parseScene(text, "scene_mesh.json", kData, kDefaultLimits, &fewer); }),
+              HasSubstr("/objects/" + std::to_string(meshes.size() - 1) + ": no mesh was built for it"));
+  auto broken = std::make_shared<Mesh>(*meshes[0]);
+  broken->indices[1] = uint32_t(broken->positions.size());
+  BuiltMeshes bad = meshes;
+  bad[0] = broken;
+  EXPECT_THAT(errorOf([&] { parseScene(text, "scene_mesh.json", kData, kDefaultLimits, &bad); }),
+              HasSubstr("/objects/0: index 1 names vertex " + std::to_string(broken->positions.size()) + " of " +
+                        std::to_string(broken->positions.size())));
+  auto nan = std::make_shared<Mesh>(*meshes[0]);
+  nan->positions[0].y = std::numeric_limits<double>::quiet_NaN();
+  bad[0] = nan;
+  EXPECT_THAT(errorOf([&] { parseScene(text, "scene_mesh.json", kData, kDefaultLimits, &bad); }),
+              HasSubstr("/objects/0: vertex 0 is not finite"));
+  Limits small;
+  small.vertices = meshes[0]->vertexCount() - 1;
+  EXPECT_THAT(errorOf([&] { parseScene(text, "scene_mesh.json", kData, small, &meshes); }), HasSubstr("/objects/0: "));
 }
 
 }  // namespace
