@@ -1,12 +1,29 @@
 #include "app/core/loader.h"
 
 #include "pipeline/error.h"
-#include "io/scene_io.h"
 #include "io/build_mesh.h"
+#include "io/read_file.h"
+#include "io/scene_io.h"
 
 #include <system_error>
 
 namespace vplab {
+
+namespace {
+
+/// With the worker: what a scene may hold to be read at once rather than sent (a bundled lecture
+/// scene, a small OBJ): the worker's start and the meshes' way back cost more than such a scene's
+/// reading. Anything over it (or any error, which the worker then reports with the full limits)
+/// goes to the worker.
+Limits atOnceLimits() {
+  Limits l = kDefaultLimits;
+  l.faces = l.vertices = 50'000;
+  l.corners = 200'000;
+  l.objFileBytes = std::uintmax_t(2) << 20;
+  return l;
+}
+
+}  // namespace
 
 SceneLoader::SceneLoader() : reader_([](const std::filesystem::path& f) { return loadScene(f); }) {}
 
@@ -17,15 +34,91 @@ SceneLoader::~SceneLoader() {
 }
 
 void SceneLoader::start(std::filesystem::path file) {
+  if (remote_) {
+    auto job = std::make_unique<Job>();
+    job->file = file;
+    job->source = file.string();
+    job->baseDir = file.parent_path();
+    try {
+      job->text = readRegularFile(file, kDefaultLimits.sceneFileBytes, "scene file");
+    } catch (const Error& e) {
+      job->result.error = e.what();
+    }
+    try {
+      if (job->result.error.empty()) {
+        Scene scene = parseScene(job->text, job->source, job->baseDir, atOnceLimits());
+        scene.path = file;
+        job->result.scene = std::move(scene);
+      }
+    } catch (const Error&) {
+      // Over the small budget (or wrong): the worker reads it with the full limits.
+    }
+    send(std::move(job));
+    return;
+  }
   run(file, [reader = reader_, file](Loaded& out) { out.scene = reader(file); });
 }
 
 void SceneLoader::startObject(SceneObject object, std::filesystem::path baseDir) {
   const std::filesystem::path file = object.file;
+  if (remote_) {
+    // The object as the only one of a scene: the worker reads what a scene file would give it.
+    Scene one = defaultScene();
+    one.objects = {object};
+    one.objects[0].mesh.reset();
+    auto job = std::make_unique<Job>();
+    job->file = file;
+    job->source = file.string();
+    job->baseDir = std::move(baseDir);
+    job->text = sceneToJson(one);
+    try {
+      SceneObject built = object;
+      buildMesh(built, job->baseDir, atOnceLimits());
+      job->result.object = std::move(built);
+    } catch (const Error&) {
+      job->object = std::move(object);  // over the small budget: the worker builds it
+    }
+    send(std::move(job));
+    return;
+  }
   run(file, [object = std::move(object), baseDir = std::move(baseDir)](Loaded& out) mutable {
     buildMesh(object, baseDir);
     out.object = std::move(object);
   });
+}
+
+void SceneLoader::send(std::unique_ptr<Job> job) {
+  cancel();
+  job->started = std::chrono::steady_clock::now();
+  job->id = ++lastId_;
+  // Read at once (or not readable at all): nothing to send.
+  if (!job->result.error.empty() || job->result.scene || job->result.object) job->done.store(true);
+  else remote_(job->id, job->text, job->source, job->baseDir);
+  job_ = std::move(job);
+}
+
+void SceneLoader::deliver(uint64_t id, BuiltMeshes meshes, std::string error) {
+  if (!job_ || job_->id != id || job_->done.load()) return;  // cancelled or replaced: dropped
+  Job& j = *job_;
+  if (!error.empty()) {
+    j.result.error = error;
+  } else {
+    try {
+      Scene scene = parseScene(j.text, j.source, j.baseDir, kDefaultLimits, &meshes);
+      if (j.object) {
+        if (scene.objects.size() != 1) throw Error(j.source + ": the worker read " + std::to_string(scene.objects.size()) + " objects");
+        j.object->mesh = scene.objects[0].mesh;
+        j.result.object = std::move(j.object);
+      } else {
+        scene.path = j.file;
+        j.result.scene = std::move(scene);
+      }
+    } catch (const Error& e) {
+      j.result.error = e.what();
+    }
+  }
+  j.text.clear();
+  j.done.store(true);
 }
 
 void SceneLoader::run(std::filesystem::path file, std::function<void(Loaded&)> work) {
@@ -51,7 +144,10 @@ void SceneLoader::run(std::filesystem::path file, std::function<void(Loaded&)> w
 }
 
 void SceneLoader::cancel() {
-  if (job_) abandoned_.push_back(std::move(job_));
+  // A thread still running is joined once it is done; a worker's request is simply forgotten (its
+  // answer will be dropped).
+  if (job_ && job_->worker.joinable()) abandoned_.push_back(std::move(job_));
+  job_.reset();
   reap();
 }
 
