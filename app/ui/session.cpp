@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <utility>
 #include <cstdio>
 
 namespace vplab {
@@ -51,10 +52,18 @@ bool Session::beginFrame() {
   }
   std::optional<SceneLoader::Loaded> loaded = loader_.poll();
   if (!loaded) return false;
+  std::optional<PendingLink> link = std::exchange(pendingLink_, std::nullopt);
   if (loaded->scene) {
     const std::string file = loaded->scene->path.string();
+    try {
+      if (link) loaded->scene->camera = link->link.camera.over(loaded->scene->camera);
+    } catch (const Error& e) {
+      setStatus(e.what(), true);  // as the link read at once would: nothing opened
+      return true;
+    }
     startDocument(std::move(*loaded->scene));
     setStatus("opened " + file, false);
+    if (link) link->showViews();
   } else if (loaded->object) {  // one undo step, recorded at the end of this frame
     Scene& scene = state_.doc.scene();
     setStatus("added " + loaded->object->file, false);
@@ -157,6 +166,7 @@ void Session::discardDialog() {
 
 void Session::startDocument(Scene scene, bool dirty) {
   loader_.cancel();  // an OBJ still loading for the previous document must not land in this one
+  pendingLink_.reset();
   state_.doc.replace(std::move(scene), dirty);
   state_.probe.reset();
   state_.selectedObject = 0;
@@ -178,6 +188,7 @@ void Session::startDocument(Scene scene, bool dirty) {
 
 void Session::openScene(const std::filesystem::path& file) {
   loader_.start(file);
+  pendingLink_.reset();
   setStatus("opening " + file.string() + " …", false);
   changed_();
 }
@@ -186,6 +197,7 @@ void Session::cancelLoading() {
   if (!loader_.busy()) return;
   setStatus("opening " + loader_.file().string() + " cancelled; the open scene stays", false);
   loader_.cancel();
+  pendingLink_.reset();
   changed_();
 }
 
@@ -313,6 +325,16 @@ void Session::showUrlState(const UrlState& link, bool atStart) {
       const auto preset = std::find_if(state_.presets.begin(), state_.presets.end(),
                                        [&](const SceneFileInfo& p) { return p.file.stem() == link.scene; });
       if (preset == state_.presets.end()) throw Error("the link's scene \"" + link.scene + "\" is not one of vplab's bundled scenes");
+      if (loader_.remote()) {
+        // The page: its worker reads the scene while the page goes on (a million triangles took most
+        // of a second); the link's camera and views apply when it is there (beginFrame).
+        unlessUnsaved([this, file = preset->file, link, showViews] {
+          loader_.start(file);
+          pendingLink_ = PendingLink{link, showViews};
+          changed_();
+        });
+        return;
+      }
       scene = loadScene(preset->file);
     }
     scene.camera = link.camera.over(scene.camera);

@@ -116,6 +116,13 @@ class Session {
   std::function<void()> pendingReplace_;  // waiting for "discard the unsaved changes?"
   bool askDiscard_ = false;
   SceneLoader loader_;
+  // A link naming another bundled scene, while the page's worker reads it (showUrlState): its camera
+  // and views apply once the scene is there.
+  struct PendingLink {
+    UrlState link;
+    std::function<void()> showViews;
+  };
+  std::optional<PendingLink> pendingLink_;
   std::unique_ptr<Autosave> autosave_;
   std::string autosaveError_;  // the last one shown
   std::vector<Recovery> recoveries_;
