@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The web bundle for course pages (README "In the browser"): build-web/vplab-web-VERSION.zip.
 
-It holds the page's four files in a folder vplab-web-VERSION/, each with a gzip copy (.gz) and,
+It holds the page's eight files in a folder vplab-web-VERSION/, each with a gzip copy (.gz) and,
 where Debian's `brotli` is installed, a Brotli copy (.br), for servers that send precompressed files,
 and README.md, which says what to put where and which headers to set. The archive is the same for the
 same files: entries sorted, times fixed, gzip without a name or time.
@@ -16,7 +16,8 @@ import sys
 import zipfile
 from pathlib import Path
 
-PAGE_FILES = ["index.html", "vplab.js", "vplab.wasm", "vplab.data"]
+PAGE_FILES = ["index.html", "vplab.js", "vplab.wasm", "vplab.data",
+              "loader-worker.js", "vplab-loader.js", "vplab-loader.wasm", "vplab-loader.data"]
 FIXED_TIME = (1980, 1, 1, 0, 0, 0)  # the earliest a zip can hold: the archive does not change with the clock
 
 
@@ -64,13 +65,14 @@ with WebGL2. Put the files of this folder into one folder of your web server and
 
 - `vplab.wasm` as `Content-Type: application/wasm` lets the browser compile it while it downloads
   (other types work, more slowly).
-- No cross-origin isolation headers are needed (the page uses no threads), and no cookies are set.
+- No cross-origin isolation headers are needed (the page uses no threads; a large scene's meshes are
+  built in a Web Worker, `loader-worker.js` with `vplab-loader.*`, which needs none), and no cookies are set.
 - The `.gz`{br_copies} copies are for servers that send precompressed files: send
   `vplab.wasm.gz` for `vplab.wasm` with `Content-Encoding: gzip` (nginx: `gzip_static on;`{br_nginx};
   Apache: `mod_rewrite` rules for `Accept-Encoding`). Servers that compress on the fly, or do not
-  compress, need only the four plain files.
-- `vplab.data` (the bundled scenes and meshes) and `vplab.wasm` change only with a new version: they may
-  be cached for long.
+  compress, need only the eight plain files.
+- `vplab.data`, `vplab-loader.data` (the bundled scenes and meshes) and the `.wasm` files change only with
+  a new version: they may be cached for long.
 
 ## Linking what you show
 

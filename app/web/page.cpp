@@ -15,6 +15,7 @@
 #include "app/ui/window_input.h"
 #include "app/web/page_services.h"
 #include "io/dump.h"
+#include "io/limits.h"
 #include "pipeline/error.h"
 #include "io/scene_io.h"
 
@@ -27,11 +28,13 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace vplab {
 
@@ -76,6 +79,10 @@ struct Page {
   std::string storedAutosave;  // what this tab's localStorage key holds (empty: nothing)
   std::vector<std::pair<std::filesystem::path, std::string>> kept;  // offered kept scenes: file, key
   std::string reply;  // the last string handed to JavaScript (valid until the next call)
+  // The loader worker's answer as it arrives, mesh by mesh (vplab_loader_mesh), for request arrivingId.
+  uint64_t arrivingId = 0;
+  BuiltMeshes arriving;
+  std::array<uint32_t, 4> arrivingAt{};  // where JavaScript copies the current mesh's four arrays
 
   Page() {
     auto chooser = std::make_unique<page::BrowserFiles>();
@@ -87,6 +94,9 @@ struct Page {
     viewer.drawViewsInSlices(kFirstSliceTriangles);
     // Its pipeline run (0.5 s for the million-triangle sphere) in steps of a few ms a frame.
     viewer.runPipelineInSteps(kPipelineSecondsPerFrame);
+    // ... and its meshes built in the loader worker (loader-worker.js): the page answers meanwhile,
+    // with the desktop's progress window and Cancel.
+    viewer.session().loader().useRemote(page::buildInWorker);
     showLink(page::locationHash(), /*atStart=*/true);
     startAutosave();
   }
@@ -144,6 +154,10 @@ struct Page {
   /// A link's state (app/core/url_state.h); a fragment that is not understood is said in the status line.
   void showLink(const std::string& fragment, bool atStart) {
     if (fragment.empty() || fragment == shownHash) return;
+    // The address is the link until the page writes what it shows (afterFrame): a scene still
+    // loading, or a load cancelled or failed, puts the shown state's link back, so the same link
+    // followed again is a change the page hears of.
+    shownHash = fragment;
     try {
       viewer.session().showUrlState(decodeUrlState(fragment), atStart);
     } catch (const Error& e) {
@@ -261,6 +275,7 @@ struct Page {
                         : s.compactPanel == ViewerState::inspectPanel ? "inspect" : "";
     j["loading"] = viewer.session().loader().busy();
     if (const std::optional<double> p = viewer.runProgress()) j["runProgress"] = *p;
+    j["run"] = {{"polygons", s.run().stats.polygons}, {"vertices", s.run().stats.vertices}};
     j["graphicsLost"] = graphicsLost;
     j["recoveryOffered"] = viewer.session().recoveryOffered();
     j["recoveriesOffered"] = viewer.session().recoveriesOffered();
@@ -340,6 +355,48 @@ EMSCRIPTEN_KEEPALIVE void vplab_wheel(Page* p, double x, double y, double steps)
 }
 
 /// The address's fragment changed (a link pasted, the back button): shown unless it is the page's own.
+/// The loader worker's answer to request `id` (index.html), one mesh at a time and in order: makes
+/// object i's mesh with arrays of these sizes in bytes (positions, indices, face starts, corner
+/// normals) and returns where JavaScript copies them (four addresses), or null when the sizes cannot
+/// be a mesh's within the limits (checked before allocating; the answer is then an error).
+EMSCRIPTEN_KEEPALIVE uint32_t* vplab_loader_mesh(Page* p, double id, int i, double positions, double indices,
+                                                 double faceStarts, double normals) {
+  if (uint64_t(id) != p->arrivingId) {
+    p->arrivingId = uint64_t(id);
+    p->arriving.clear();
+  }
+  const vplab::Limits& l = vplab::kDefaultLimits;
+  auto count = [](double bytes, double each, size_t most) -> std::optional<size_t> {
+    if (!(bytes >= 0) || std::fmod(bytes, each) != 0 || bytes / each > double(most)) return std::nullopt;
+    return size_t(bytes / each);
+  };
+  const auto v = count(positions, sizeof(vplab::Vec3), l.vertices), c = count(indices, 4, l.corners),
+             f = count(faceStarts, 4, l.faces + 1), n = count(normals, sizeof(vplab::Vec3), l.corners);
+  if (i != int(p->arriving.size()) || i >= 100000 || !v || !c || !f || !n) return nullptr;
+  auto mesh = std::make_shared<vplab::Mesh>();
+  mesh->positions.resize(*v);
+  mesh->indices.resize(*c);
+  mesh->faceStart.resize(*f);
+  mesh->cornerNormals.resize(*n);
+  p->arrivingAt = {uint32_t(uintptr_t(mesh->positions.data())), uint32_t(uintptr_t(mesh->indices.data())),
+                   uint32_t(uintptr_t(mesh->faceStart.data())), uint32_t(uintptr_t(mesh->cornerNormals.data()))};
+  p->arriving.push_back(std::move(mesh));
+  return p->arrivingAt.data();
+}
+
+/// The loader worker's answer is complete: its meshes (vplab_loader_mesh) or its error go to the
+/// loader, which drops them when the load was cancelled meanwhile.
+EMSCRIPTEN_KEEPALIVE void vplab_loader_done(Page* p, double id, const char* error, int meshes) {
+  vplab::BuiltMeshes built;
+  if (uint64_t(id) == p->arrivingId) built = std::move(p->arriving);
+  p->arriving.clear();
+  std::string e = error;
+  if (e.empty() && int(built.size()) != meshes) e = "the page's loader sent " + std::to_string(meshes) + " meshes; " +
+                                                    std::to_string(built.size()) + " of them fit the limits";
+  p->viewer.session().loader().deliver(uint64_t(id), std::move(built), std::move(e));
+  p->input.changed = true;
+}
+
 EMSCRIPTEN_KEEPALIVE void vplab_hash_changed(Page* p, const char* fragment) { p->showLink(fragment, false); }
 
 /// webglcontextlost (index.html prevented its default, so the browser may give the context back).

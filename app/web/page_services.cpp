@@ -29,6 +29,9 @@ EM_JS(int, jsStoreRecovery, (const char* text), { return vplabPage.storeRecovery
 EM_JS(void, jsReplaceLocationHash, (const char* fragment), { vplabPage.replaceHash(UTF8ToString(fragment)); });
 EM_JS(void, jsSetUnsaved, (int unsaved), { vplabPage.unsaved = !!unsaved; });
 EM_JS(void, jsFirstFrame, (), { vplabPage.firstFrame(); });
+EM_JS(void, jsBuildInWorker, (double id, const char* text, size_t length, const char* source, const char* baseDir), {
+  vplabPage.buildInWorker(id, text, length, UTF8ToString(source), UTF8ToString(baseDir));
+});
 EM_JS(void, jsSetTitle, (const char* title), { document.title = UTF8ToString(title); });
 EM_JS(int, jsContextLost, (), {
   var gl = Module.canvas && Module.canvas.getContext("webgl2");
@@ -107,6 +110,10 @@ bool storeRecovery(const std::string& text) { return jsStoreRecovery(text.c_str(
 
 void replaceLocationHash(const std::string& fragment) { jsReplaceLocationHash(fragment.c_str()); }
 void setUnsavedChanges(bool unsaved) { jsSetUnsaved(unsaved ? 1 : 0); }
+void buildInWorker(uint64_t id, const std::string& text, const std::string& source, const std::filesystem::path& baseDir) {
+  jsBuildInWorker(double(id), text.data(), text.size(), source.c_str(), baseDir.string().c_str());
+}
+
 void firstFrameDrawn() { jsFirstFrame(); }
 void setPageTitle(const std::string& title) { jsSetTitle(title.c_str()); }
 void showFatalError(const std::string& message) { jsFatal(message.c_str()); }

@@ -7,6 +7,7 @@
 
 #include "app/ui/file_dialog.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -40,6 +41,9 @@ std::string locationHash();
 void replaceLocationHash(const std::string& fragment);
 /// The page asks before it is left (closed, reloaded, navigated away) while `unsaved`.
 void setUnsavedChanges(bool unsaved);
+/// Hands a scene's text to the page's loader worker (loader-worker.js), which builds its meshes off
+/// this thread and answers through vplab_loader_mesh and vplab_loader_done (SceneLoader::useRemote).
+void buildInWorker(uint64_t id, const std::string& text, const std::string& source, const std::filesystem::path& baseDir);
 /// The first frame is on the canvas: resolves window.vplab.ready and notes the time.
 void firstFrameDrawn();
 /// The page's document.title.

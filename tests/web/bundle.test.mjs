@@ -15,7 +15,8 @@ import { launchBrowser, openPage, startServer, tempDir, vplabState, webDir } fro
 
 const execFileAsync = promisify(execFile);
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
-const pageFiles = ['index.html', 'vplab.js', 'vplab.wasm', 'vplab.data'];
+const pageFiles = ['index.html', 'vplab.js', 'vplab.wasm', 'vplab.data', 'loader-worker.js', 'vplab-loader.js',
+  'vplab-loader.wasm', 'vplab-loader.data'];
 
 function projectVersion() {
   const cmake = readFileSync(path.join(repoRoot, 'CMakeLists.txt'), 'utf8');

@@ -80,12 +80,14 @@ const mimeTypes = {
  * Serves `dir` on 127.0.0.1 at a port the system picks. Resolves to {url, port, requests, close()};
  * `requests` lists the paths asked for with their status (a 404 the page did not expect shows there).
  * Nothing is cached (`Cache-Control: no-store`): each page load fetches what a first visit fetches.
+ * `hold(urlPath)` may return a promise: the answer waits for it (a slow network, made exact).
  */
-export async function startServer(dir) {
+export async function startServer(dir, { hold = () => null } = {}) {
   const root = path.resolve(dir);
   const requests = [];
-  const server = createServer((request, response) => {
+  const server = createServer(async (request, response) => {
     const urlPath = decodeURIComponent(new URL(request.url, 'http://127.0.0.1').pathname);
+    await hold(urlPath);
     let file = path.join(root, path.normalize(urlPath));
     const inside = file === root || file.startsWith(root + path.sep);
     if (inside && existsSync(file) && statSync(file).isDirectory()) file = path.join(file, 'index.html');

@@ -1,0 +1,88 @@
+// A large scene in a student's page (issue 24 item 3; README "Large scenes in the page"). The bundled
+// large-mesh scene (a sphere of 524 288 polygons, about a million triangles) is read and tessellated
+// in the page's loader worker (loader-worker.js): the page goes on drawing frames meanwhile, shows the
+// desktop's Loading window with its progress bar, and Cancel keeps the open scene. The test holds the
+// worker's module at the server until the test lets it go, so the load is under way for as long as
+// the test needs, on any machine. Then the scene is opened for real, and the longest frame while it
+// loads is measured and reported (the frames' intervals, requestAnimationFrame).
+import assert from 'node:assert/strict';
+import { test } from 'node:test';
+
+import {
+  click, cssRect, launchBrowser, openPage, rectPoint, startServer, unlessPageFails, vplabState, waitFrames, webDir,
+} from './support.mjs';
+
+/** Polls the page's state until `predicate` holds (every 50 ms, up to `timeout` ms). */
+async function waitForState(page, predicate, what, timeout = 30_000) {
+  const begin = Date.now();
+  for (;;) {
+    const state = await vplabState(page);
+    if (predicate(state)) return state;
+    if (Date.now() - begin > timeout) throw new Error(`${what}: not within ${timeout} ms (status "${state.status}")`);
+    await new Promise((resolve) => setTimeout(resolve, 50));
+  }
+}
+
+test('a large scene loads in the worker while the page answers; Cancel keeps the open scene', { timeout: 300_000 }, async (t) => {
+  let release;
+  const held = new Promise((resolve) => { release = resolve; });
+  const server = await startServer(webDir, { hold: (p) => (p.endsWith('/vplab-loader.wasm') ? held : null) });
+  const browser = await launchBrowser();
+  try {
+    const { page, console: messages } = await openPage(browser, `${server.url}index.html`);
+    await waitFrames(page);
+    const before = await vplabState(page);
+    assert.match(before.scene, /default\.json$|^$/, 'the page did not open the default scene');
+
+    // The link asks for the large scene: the worker cannot answer while its module is held.
+    await page.evaluate(() => window.vplab.setHash('#scene=large-mesh'));
+    const loading = await unlessPageFails(waitForState(page, (s) => s.loading, 'the page never said it was loading'), messages,
+                                          'opening the large scene');
+    const framesThen = loading.frames;
+    await new Promise((resolve) => setTimeout(resolve, 1000));
+    const later = await vplabState(page);
+    assert.ok(later.loading, 'the load ended while the worker could not answer');
+    assert.ok(later.frames >= framesThen + 5, `the page drew ${later.frames - framesThen} frames in a second of loading: it does not answer`);
+    assert.ok(later.rects['load.cancel'], 'no Loading window with Cancel');
+
+    // Cancel: the open scene stays, and the worker's answer, when it comes, is dropped.
+    await click(page, rectPoint(await cssRect(page, later, 'load.cancel')));
+    const cancelled = await waitForState(page, (s) => !s.loading, 'Cancel did not end the load');
+    assert.equal(cancelled.scene, before.scene, 'Cancel did not keep the open scene');
+    assert.match(cancelled.status, /cancelled/);
+    release();
+    await new Promise((resolve) => setTimeout(resolve, 3000));
+    assert.equal((await vplabState(page)).scene, before.scene, 'the cancelled load landed after all');
+
+    // Now for real, every frame's interval recorded from the link to the scene shown.
+    await page.evaluate(() => {
+      window.__frames = [];
+      let last = performance.now();
+      const tick = (now) => {
+        window.__frames.push(now - last);
+        last = now;
+        if (!window.__stopFrames) requestAnimationFrame(tick);
+      };
+      requestAnimationFrame(tick);
+      window.vplab.setHash('#scene=large-mesh');
+    });
+    const opened = await unlessPageFails(
+      waitForState(page, (s) => /large-mesh\.json$/.test(s.scene) && !s.loading, 'the large scene never opened', 120_000),
+      messages, 'opening the large scene');
+    const frames = await page.evaluate(() => { window.__stopFrames = true; return window.__frames; });
+    assert.ok(!opened.statusIsError, `the page said: ${opened.status}`);
+    assert.ok(frames.length >= 5, `${frames.length} frames while the scene loaded: the page did not answer`);
+    const longest = Math.max(...frames);
+    t.diagnostic(`opening large-mesh: ${frames.length} frames, the longest ${longest.toFixed(0)} ms, ` +
+                 `${frames.filter((d) => d > 100).length} over 100 ms`);
+    console.log(`opening large-mesh: ${frames.length} frames, the longest ${longest.toFixed(0)} ms`);
+
+    // The mesh the worker built is the sphere with n = 1024: the pipeline's run of it, once complete.
+    const ran = await waitForState(page, (s) => s.run.polygons === 524288, 'the pipeline never ran the sphere', 60_000);
+    assert.equal(ran.run.vertices, 523266);
+  } finally {
+    release();
+    await browser.close();
+    await server.close();
+  }
+});
