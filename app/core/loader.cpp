@@ -62,21 +62,22 @@ void SceneLoader::start(std::filesystem::path file) {
 void SceneLoader::startObject(SceneObject object, std::filesystem::path baseDir) {
   const std::filesystem::path file = object.file;
   if (remote_) {
-    // The object as the only one of a scene: the worker reads what a scene file would give it.
-    Scene one = defaultScene();
-    one.objects = {object};
-    one.objects[0].mesh.reset();
     auto job = std::make_unique<Job>();
     job->file = file;
     job->source = file.string();
     job->baseDir = std::move(baseDir);
-    job->text = sceneToJson(one);
     try {
       SceneObject built = object;
       buildMesh(built, job->baseDir, atOnceLimits());
       job->result.object = std::move(built);
     } catch (const Error&) {
-      job->object = std::move(object);  // over the small budget: the worker builds it
+      // Over the small budget: the worker builds it, given the object as the only one of a scene
+      // (what a scene file would give it).
+      Scene one = defaultScene();
+      one.objects = {object};
+      one.objects[0].mesh.reset();
+      job->text = sceneToJson(one);
+      job->object = std::move(object);
     }
     send(std::move(job));
     return;

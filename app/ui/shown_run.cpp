@@ -56,7 +56,12 @@ void ShownRun::update() {
       }
     }
   }
-  if (job_) stepJob();
+  // Once a frame: update() runs again in the frame after a change (the session's callback), and
+  // the frame's share of time is to be spent once.
+  if (job_ && steppedFrame_ != frameNumber_) {
+    steppedFrame_ = frameNumber_;
+    stepJob();
+  }
   if (!pending_) return;
   // Only the frame that asked for the run waits for it, when it is expected in time (a small scene's
   // arrives in it); later frames only look whether it is finished.

@@ -76,6 +76,7 @@ class ShownRun {
   };
   std::unique_ptr<Job> job_;
   uint64_t unitsPerCheck_ = 0;  // units of work between two looks at the clock
+  uint64_t steppedFrame_ = 0;   // the frame that spent its share on the run in steps
 };
 
 }  // namespace vplab
