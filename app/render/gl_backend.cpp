@@ -20,7 +20,8 @@ GlBackend::GlBackend(GlContext& context, float textScale)
       es_(gl::dialectOf(context.gl()) == gl::GlslDialect::es300),
       meshes_(gl_),
       overlay_(gl_),
-      text_(std::make_unique<TextRenderer>(gl_, textScale)) {
+      text_(std::make_unique<TextRenderer>(gl_, textScale)),
+      partitions_(gl_) {
   ctx_.checkErrors("creating the GL backend");
 }
 
@@ -218,18 +219,6 @@ bool GlBackend::drawMeshes(const draw::Fill& fill, const ViewCamera& camera, int
   if (early) setFillProgram(*early, fill, camera, planes);
   setFillProgram(program, fill, camera, planes);
   setClipDistances(planes);
-  // Draws the elements [c.index, count) of the bound element list, as many triangles as are left.
-  auto drawRange = [&](GLsizei count) {
-    const size_t left = size_t(std::max<GLsizei>(count - c.index, 0)) / 3;
-    const size_t now = std::min(left, triangles);
-    if (now > 0) {
-      gl_.DrawElements(GL_TRIANGLES, GLsizei(3 * now), GL_UNSIGNED_INT,
-                       reinterpret_cast<const void*>(size_t(c.index) * sizeof(uint32_t)));
-      c.index += GLsizei(3 * now);
-      triangles -= now;
-    }
-    return now == left;
-  };
   bool done = true;
   for (size_t i = c.mesh; i < fill.meshes.size() && done; ++i) {
     if (i != c.mesh) {
@@ -247,27 +236,56 @@ bool GlBackend::drawMeshes(const draw::Fill& fill, const ViewCamera& camera, int
       break;
     }
     const GpuMesh& g = *uploaded;
+    // Draws the elements [c.index, …) of a list kept per chunk (chunk k's `count(k)` elements, at 0
+    // in `elements(k)`, or in the chunk's own index buffer for 0), as many triangles as are left.
+    auto drawList = [&](auto count, auto elements) {
+      GLsizei start = 0;
+      for (size_t k = 0; k < g.chunks.size(); ++k) {
+        const GLsizei end = start + count(k), begin = std::max(c.index, start), local = begin - start;
+        start = end;
+        if (begin >= end) continue;
+        if (triangles == 0) return false;
+        const size_t now = std::min(size_t(end - begin) / 3, triangles);
+        const GLuint own = g.chunks[k].indices.id(), list = elements(k);
+        gl_.BindVertexArray(g.chunks[k].vao.id());
+        if (list) gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, list);  // the VAO's until restored
+        gl_.DrawElements(GL_TRIANGLES, GLsizei(3 * now), GL_UNSIGNED_INT,
+                         reinterpret_cast<const void*>(size_t(local) * sizeof(uint32_t)));
+        if (list) gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, own);
+        c.index = begin + GLsizei(3 * now);
+        triangles -= now;
+        if (c.index < end) return false;
+      }
+      return true;
+    };
     const gl::Program* current = &program;
     auto setObject = [&] {
       current->set("wcFromMc", m.spaceFromMc);
       current->set("wcNormalFromMc", normalMatrix(m.spaceFromMc));
       current->set("color", glm::vec3(m.color));
     };
-    gl_.BindVertexArray(g.faces.id());
-    const VolumePart* part = partitioned && m.run ? partition(i, m, fill.volume.npcFromSpace) : nullptr;
+    using Part = VolumePartitions::Part;
+    const Part* part = partitioned && m.run ? partitions_.get(serial_, i, m, fill.volume.npcFromSpace, g, triangles) : nullptr;
     if (!part) {
       setObject();
-      done = drawRange(g.faceIndexCount);
+      done = drawList([&](size_t k) { return g.indexStart[k + 1] - g.indexStart[k]; }, [](size_t) { return GLuint(0); });
       continue;
     }
-    // The VAO's element buffer is the part's until restored below.
+    if (!part->ready()) {  // the slice's budget went into the partition
+      done = false;
+      break;
+    }
+    auto listOf = [&](VolumePartitions::List l) {
+      return std::pair([part, l](size_t k) { return part->chunks[k].count[l]; },
+                       [part, l](size_t k) { return part->chunks[k].indices[l].id(); });
+    };
     if (c.pass == 0) {
-      if (early && part->count[kInsideFaces] > 0) {
+      if (early && part->count(VolumePartitions::kInsideFaces) > 0) {
         current = early;
         current->use();
         setObject();
-        gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, part->indices[kInsideFaces].id());
-        done = drawRange(part->count[kInsideFaces]);
+        const auto [count, elements] = listOf(VolumePartitions::kInsideFaces);
+        done = drawList(count, elements);
         current = &program;
         current->use();
       }
@@ -276,116 +294,16 @@ bool GlBackend::drawMeshes(const draw::Fill& fill, const ViewCamera& camera, int
         c.index = 0;
       }
     }
-    const size_t list = fill.volume.keep == draw::VolumeTest::Keep::inside ? kInsidePass : kOutsidePass;
-    if (done && part->count[list] > 0) {
+    const auto list = fill.volume.keep == draw::VolumeTest::Keep::inside ? VolumePartitions::kInsidePass : VolumePartitions::kOutsidePass;
+    if (done && part->count(list) > 0) {
       setObject();
-      gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, part->indices[list].id());
-      done = drawRange(part->count[list]);
+      const auto [count, elements] = listOf(list);
+      done = drawList(count, elements);
     }
-    gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.faceIndices.id());
   }
   gl_.BindVertexArray(0);
   setClipDistances(0);
   return done;
-}
-
-std::array<size_t, 2> GlBackend::partitionedTriangles(size_t i) const {
-  if (i >= parts_.size() || parts_[i].serial != serial_) return {0, 0};
-  const VolumePart& p = parts_[i];
-  return {size_t(p.count[kInsideFaces] + p.count[kInsidePass]) / 3, size_t(p.count[kOutsidePass]) / 3};
-}
-
-// A face whose vertices all lie outside one plane of the volume has no fragment inside it; one
-// whose vertices all lie inside every plane has none outside. Both by a margin far above the GPU's
-// float rounding, so the fragment shader's own test would discard every fragment of a face left
-// out: the picture is the same, and each pass draws about half the faces instead of all. From the
-// run's homogeneous NPC (the same npcFromWc the shader tests with). Once per draw call per instance:
-// the inside and the outside fill share it.
-const GlBackend::VolumePart* GlBackend::partition(size_t instance, const draw::MeshInstance& m, const Mat4& npcFromWc) {
-  if (parts_.size() <= instance) parts_.resize(instance + 1);
-  VolumePart& part = parts_[instance];
-  if (part.serial == serial_ && part.run == m.run) return &part;
-  const ObjectRun& o = *m.run;
-  if (!o.mesh || o.mesh != m.mesh || o.npcH.size() != o.mesh->vertexCount() || o.fate.size() != o.mesh->faceCount() ||
-      m.spaceFromMc != o.wcFromMc)
-    return nullptr;  // not this mesh's run: drawn whole
-  // Bits 0–5: the vertex lies outside plane i by the margin; bit 6: inside every plane by it.
-  constexpr uint8_t kInside = 1u << 6;
-  // The GPU's value of a boundary coordinate (float matrices, float MC positions, interpolated)
-  // differs from the CPU's double by far less than these margins: 1e-3 of the vertex's own
-  // coordinates, and 1e-5 of the largest value the float products can reach for this object.
-  constexpr double kRelativeMargin = 1e-3, kProductMargin = 1e-5;
-  const Mesh& mesh = *o.mesh;
-  double wcMax = 0;
-  for (const Vec3& c : bounds(mesh).corners()) {
-    const Vec3 wc = transformAffine(o.wcFromMc, c);
-    wcMax = std::max({wcMax, std::abs(wc.x), std::abs(wc.y), std::abs(wc.z)});
-  }
-  double rowMax = 0;
-  for (int r = 0; r < 4; ++r) {
-    double sum = 0;
-    for (int c = 0; c < 4; ++c) sum += std::abs(npcFromWc[c][r]);
-    rowMax = std::max(rowMax, sum);
-  }
-  const double productMargin = kProductMargin * rowMax * (wcMax + 1);
-  vertexSides_.resize(o.npcH.size());
-  for (size_t v = 0; v < o.npcH.size(); ++v) {
-    const Vec4& p = o.npcH[v];
-    const double margin =
-        std::max(kRelativeMargin * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) + std::abs(p.w)), productMargin);
-    const Boundary bc = boundaryCoordinates(p);
-    uint8_t sides = kInside;
-    for (int b = 0; b < kPlaneCount; ++b) {
-      if (bc[size_t(b)] < -margin) sides |= uint8_t(1u << b);
-      if (!(bc[size_t(b)] > margin)) sides &= uint8_t(~kInside);  // NaN: not inside either
-    }
-    vertexSides_[v] = sides;
-  }
-  // Face f's corners are the GPU vertices faceStart[f] … (GpuMesh), fanned from the first.
-  size_t capacity = 0;
-  for (size_t f = 0; f < mesh.faceCount(); ++f) capacity += 3 * (std::max<uint32_t>(mesh.face(f).size(), 2) - 2);
-  std::array<uint32_t*, kPartLists> out{};
-  for (size_t list = 0; list < kPartLists; ++list) {
-    partIndices_[list].resize(capacity);  // scratch: only what the loop writes is read
-    out[list] = partIndices_[list].data();
-  }
-  const uint8_t* sides = vertexSides_.data();
-  for (size_t f = 0; f < mesh.faceCount(); ++f) {
-    const auto face = mesh.face(f);
-    uint8_t all = 0xff;
-    for (uint32_t v : face) all &= sides[v];
-    const bool outsideOnePlane = all & 0x3f, insideAll = all & kInside;
-    const uint32_t first = mesh.faceStart[f], n = uint32_t(face.size());
-    auto add = [&](size_t list) {
-      for (uint32_t c = 1; c + 1 < n; ++c) {
-        out[list][0] = first;
-        out[list][1] = first + c;
-        out[list][2] = first + c + 1;
-        out[list] += 3;
-      }
-    };
-    if (insideAll) add(kInsideFaces);  // the inside pass without its fragment test
-    else if (!outsideOnePlane) add(kInsidePass);
-    if (!insideAll) add(kOutsidePass);
-  }
-  for (size_t l = 0; l < kPartLists; ++l) {
-    const std::vector<uint32_t>& list = partIndices_[l];  // its first count[l] entries
-    part.count[l] = GLsizei(out[l] - list.data());
-    if (part.count[l] == 0) continue;
-    if (!part.indices[l]) part.indices[l] = gl::makeBuffer(gl_);
-    // Bound as an array buffer: the element binding belongs to whichever VAO is bound.
-    gl_.BindBuffer(GL_ARRAY_BUFFER, part.indices[l].id());
-    const GLsizeiptr bytes = GLsizeiptr(part.count[l]) * GLsizeiptr(sizeof(uint32_t));
-    if (bytes > part.capacity[l] || bytes < part.capacity[l] / 4) {
-      part.capacity[l] = bytes + bytes / 4;
-      gl_.BufferData(GL_ARRAY_BUFFER, part.capacity[l], nullptr, GL_STREAM_DRAW);
-    }
-    gl_.BufferSubData(GL_ARRAY_BUFFER, 0, bytes, list.data());
-  }
-  gl_.BindBuffer(GL_ARRAY_BUFFER, 0);
-  part.run = m.run;
-  part.serial = serial_;
-  return &part;
 }
 
 void GlBackend::uploadPolygons(const draw::Fill& fill, GLsizei vertices, PolygonBuffers& polygons) {

@@ -12,6 +12,7 @@
 #include "app/render/gpu_mesh.h"
 #include "app/render/overlay.h"
 #include "app/render/text.h"
+#include "app/render/volume_partition.h"
 #include "app/views/display_list.h"
 #include "app/views/image.h"
 
@@ -69,12 +70,15 @@ class GlBackend {
   const TextRenderer& text() const { return *text_; }
   void setTextScale(float scale) { text_ = std::make_unique<TextRenderer>(gl_, scale); }
   /// Whether fills with MeshInstance::run draw only the faces that can show in their volume pass
-  /// (single-sampled targets only; see partition). On by default; off: every face, as tests compare.
+  /// (single-sampled targets only; see VolumePartitions). On by default; off: every face, as tests compare.
   void setPartitioned(bool on) { partitioned_ = on; }
   bool partitioned() const { return partitioned_; }
   /// The triangles the last partitioned fill drew of mesh instance `i` in its inside and outside
   /// pass ({0, 0} when it was not partitioned).
-  std::array<size_t, 2> partitionedTriangles(size_t i) const;
+  std::array<size_t, 2> partitionedTriangles(size_t i) const { return partitions_.triangles(serial_, i); }
+  /// The corners of a mesh's GPU chunks at most (GpuMeshCache::setChunkCorners), for tests.
+  void setMeshChunkCorners(uint32_t corners) { meshes_.setChunkCorners(corners); }
+  uint32_t meshChunkCorners() const { return meshes_.chunkCorners(); }
   /// Where the last draw call put its labels (x0, y0, x1, y1, pixels), for the tests.
   const std::vector<glm::vec4>& labelsPlaced() const { return labelsPlaced_; }
 
@@ -104,18 +108,6 @@ class GlBackend {
   /// scene.vert/.frag in the variant a fill needs (compiled on first use).
   const gl::Program& sceneProgram(bool volumeTest, int lights, bool userPlanes);
 
-  // The world view's volume passes (Hill 7.4 boundary coordinates): which faces of each mesh can
-  // have a fragment in the inside and in the outside pass, from the CPU run's homogeneous NPC.
-  enum PartList { kInsideFaces = 0, kInsidePass, kOutsidePass, kPartLists };
-  struct VolumePart {
-    const ObjectRun* run = nullptr;
-    uint64_t serial = 0;  // the draw call it was made in
-    std::array<gl::Buffer, kPartLists> indices;
-    std::array<GLsizeiptr, kPartLists> capacity{};
-    std::array<GLsizei, kPartLists> count{};
-  };
-  const VolumePart* partition(size_t instance, const draw::MeshInstance& m, const Mat4& npcFromSpace);
-
   GlContext& ctx_;
   const GladGLContext& gl_;
   bool es_;  // OpenGL ES: no gl_ClipDistance enables
@@ -126,13 +118,11 @@ class GlBackend {
   PolygonBuffers polygonBuffers_;  // a list drawn whole (draw)
   size_t polygonSlot_ = 0;
   std::vector<glm::vec3> polygonStaging_;  // OpenGL ES (WebGL2): the polygons' vertices before glBufferSubData
-  std::vector<VolumePart> parts_;
+  VolumePartitions partitions_;
   std::vector<glm::vec4> labelsPlaced_;
   bool partitioned_ = true;
   uint64_t serial_ = 0;      // the draw under way (its slices keep it)
   uint64_t lastSerial_ = 0;  // the last one given out: each draw's is new
-  std::array<std::vector<uint32_t>, kPartLists> partIndices_;  // scratch
-  std::vector<uint8_t> vertexSides_;                          // scratch
 };
 
 }  // namespace vplab

@@ -15,33 +15,15 @@ size_t trianglesOf(const Mesh& mesh, size_t f) {
   return n >= 3 ? n - 2 : 0;
 }
 
-// The buffers at their full size, empty, with the attributes: uploadFaces fills them.
-GpuMesh makeBuffers(const GladGLContext& gl, const Mesh& mesh) {
-  size_t triangles = 0;
-  for (size_t f = 0; f < mesh.faceCount(); ++f) triangles += trianglesOf(mesh, f);
-  GpuMesh g;
-  g.faces = gl::makeVertexArray(gl);
-  g.faceVertices = gl::makeBuffer(gl);
-  g.faceIndices = gl::makeBuffer(gl);
-  gl.BindVertexArray(g.faces.id());
-  gl.BindBuffer(GL_ARRAY_BUFFER, g.faceVertices.id());
-  gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * 2 * sizeof(glm::vec3)), nullptr, GL_STATIC_DRAW);
-  gl.EnableVertexAttribArray(0);
-  gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), nullptr);
-  gl.EnableVertexAttribArray(1);
-  gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), reinterpret_cast<void*>(sizeof(glm::vec3)));
-  gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.faceIndices.id());
-  gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(3 * triangles * sizeof(uint32_t)), nullptr, GL_STATIC_DRAW);
-  g.faceIndexCount = GLsizei(3 * triangles);
-  gl.BindVertexArray(0);
-  return g;
-}
-
-// Faces [first, end) into the buffers: one GPU vertex per face corner (a corner's normal depends on
-// its face for flat polyhedra), fan triangles. `triangle` is the first face's first triangle.
-void uploadFaces(const GladGLContext& gl, const Mesh& mesh, const GpuMesh& g, size_t first, size_t end, size_t triangle) {
+// Faces [first, end) as a chunk of their own: one GPU vertex per face corner (a corner's normal
+// depends on its face for flat polyhedra), fan triangles.
+GpuMeshChunk makeChunk(const GladGLContext& gl, const Mesh& mesh, size_t first, size_t end) {
+  GpuMeshChunk chunk;
+  chunk.firstFace = first;
+  chunk.endFace = end;
+  chunk.firstCorner = mesh.faceStart[first];
   std::vector<glm::vec3> corners;  // position, normal, position, normal, …
-  corners.reserve(size_t(mesh.faceStart[end] - mesh.faceStart[first]) * 2);
+  corners.reserve(size_t(mesh.faceStart[end] - chunk.firstCorner) * 2);
   std::vector<uint32_t> triangles;
   for (size_t f = first; f < end; ++f) {
     const auto face = mesh.face(f);
@@ -51,15 +33,24 @@ void uploadFaces(const GladGLContext& gl, const Mesh& mesh, const GpuMesh& g, si
       corners.emplace_back(mesh.positions[face[k]]);
       corners.push_back(mesh.cornerNormals.empty() ? flat : glm::vec3(mesh.cornerNormals[corner0 + k]));
     }
-    for (uint32_t k = 1; k + 1 < face.size(); ++k) triangles.insert(triangles.end(), {corner0, corner0 + k, corner0 + k + 1});
+    const uint32_t local = corner0 - chunk.firstCorner;
+    for (uint32_t k = 1; k + 1 < face.size(); ++k) triangles.insert(triangles.end(), {local, local + k, local + k + 1});
   }
-  gl.BindVertexArray(g.faces.id());  // WebGL binds an index buffer to no other target than its VAO's
-  gl.BindBuffer(GL_ARRAY_BUFFER, g.faceVertices.id());
-  gl.BufferSubData(GL_ARRAY_BUFFER, GLintptr(size_t(mesh.faceStart[first]) * 2 * sizeof(glm::vec3)),
-                   GLsizeiptr(corners.size() * sizeof(glm::vec3)), corners.data());
-  gl.BufferSubData(GL_ELEMENT_ARRAY_BUFFER, GLintptr(3 * triangle * sizeof(uint32_t)),
-                   GLsizeiptr(triangles.size() * sizeof(uint32_t)), triangles.data());
+  chunk.vao = gl::makeVertexArray(gl);
+  chunk.vertices = gl::makeBuffer(gl);
+  chunk.indices = gl::makeBuffer(gl);
+  gl.BindVertexArray(chunk.vao.id());
+  gl.BindBuffer(GL_ARRAY_BUFFER, chunk.vertices.id());
+  gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(corners.size() * sizeof(glm::vec3)), corners.data(), GL_STATIC_DRAW);
+  gl.EnableVertexAttribArray(0);
+  gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), nullptr);
+  gl.EnableVertexAttribArray(1);
+  gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), reinterpret_cast<void*>(sizeof(glm::vec3)));
+  gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, chunk.indices.id());
+  gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(triangles.size() * sizeof(uint32_t)), triangles.data(), GL_STATIC_DRAW);
   gl.BindVertexArray(0);
+  gl.BindBuffer(GL_ARRAY_BUFFER, 0);
+  return chunk;
 }
 
 void uploadEdges(const GladGLContext& gl, const Mesh& mesh, GpuMesh& g) {
@@ -88,24 +79,26 @@ GpuMeshCache::Entry& GpuMeshCache::entry(const std::shared_ptr<const Mesh>& mesh
   Entry& e = entries_[mesh.get()];
   e = Entry{};
   e.mesh = mesh;
-  e.gpu = makeBuffers(*gl_, *mesh);
   return e;
 }
 
 const GpuMesh* GpuMeshCache::upload(const std::shared_ptr<const Mesh>& mesh, size_t& triangles) {
-  Entry& e = entry(mesh);
+  GpuMesh& g = entry(mesh).gpu;
   const size_t faces = mesh->faceCount();
-  if (e.faces < faces) {
-    // At least one face, so that every call makes progress; then as many as the budget holds.
-    size_t end = e.faces, now = 0;
+  size_t next = g.chunks.empty() ? 0 : g.chunks.back().endFace;
+  for (bool first = true; next < faces; first = false) {
+    // The chunk's faces: at least one, then while the corners fit.
+    size_t end = next, now = 0;
+    const uint32_t corner0 = mesh->faceStart[next];
     do now += trianglesOf(*mesh, end++);
-    while (end < faces && now + trianglesOf(*mesh, end) <= triangles);
-    uploadFaces(*gl_, *mesh, e.gpu, e.faces, end, e.triangles);
-    e.faces = end;
-    e.triangles += now;
+    while (end < faces && mesh->faceStart[end + 1] - corner0 <= chunkCorners_);
+    if (!first && now > triangles) break;
+    g.chunks.push_back(makeChunk(*gl_, *mesh, next, end));
+    g.indexStart.push_back(g.indexStart.back() + GLsizei(3 * now));
     triangles -= std::min(triangles, now);
+    next = end;
   }
-  return e.faces == faces ? &e.gpu : nullptr;
+  return next == faces ? &g : nullptr;
 }
 
 const GpuMesh& GpuMeshCache::get(const std::shared_ptr<const Mesh>& mesh) {

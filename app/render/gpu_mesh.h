@@ -3,20 +3,36 @@
 // and the unique edges, one pair of end points each (an instance of shaders/line.vert). The edges
 // are uploaded only when a view first draws them (a shaded view never does): listing a million
 // edges takes a tenth of the first upload of a large mesh.
+//
+// The faces go to the GPU in chunks of consecutive faces, each with buffers of its own of at most
+// about chunkCorners() corners: a chunk is made at once with its data, so no frame makes (and
+// WebGL clears) the 60 MB of a million triangles at once, and a page uploads a mesh a chunk at a time.
 #pragma once
 
 #include "app/gl/objects.h"
 #include "pipeline/mesh.h"
 
+#include <algorithm>
 #include <memory>
 #include <unordered_map>
+#include <vector>
 
 namespace vplab {
 
+/// Faces [firstFace, endFace) of a mesh: GPU vertex i is the mesh's face corner firstCorner + i.
+struct GpuMeshChunk {
+  gl::VertexArray vao;  // location 0: MC position, 1: MC normal; its element buffer is `indices`
+  gl::Buffer vertices, indices;
+  size_t firstFace = 0, endFace = 0;
+  uint32_t firstCorner = 0;
+};
+
 struct GpuMesh {
-  gl::VertexArray faces;     // location 0: MC position, 1: MC normal
-  gl::Buffer faceVertices, faceIndices;
-  GLsizei faceIndexCount = 0;
+  std::vector<GpuMeshChunk> chunks;
+  /// Chunk k's triangles are elements [indexStart[k], indexStart[k + 1]) of the mesh's triangle
+  /// list (3 per triangle), at 0 in its own index buffer. One more entry than chunks.
+  std::vector<GLsizei> indexStart{0};
+  GLsizei faceIndexCount() const { return indexStart.back(); }
   gl::VertexArray edges;     // per instance: location 0, 2: the MC end points (1, 3, the colours, are set constant)
   gl::Buffer edgeEnds;
   GLsizei edgeCount = 0;
@@ -24,28 +40,33 @@ struct GpuMesh {
 
 class GpuMeshCache {
  public:
+  /// Chunks of about 65 536 corners: 1.5 MB of vertices, a few milliseconds to make in the page.
+  static constexpr uint32_t kChunkCorners = 1u << 16;
   explicit GpuMeshCache(const GladGLContext& gl) : gl_(&gl) {}
   /// The GPU copy of `mesh`'s faces, uploaded on first use (the rest of it, when begun by upload).
   const GpuMesh& get(const std::shared_ptr<const Mesh>& mesh);
-  /// Uploads about `triangles` more of `mesh`'s triangles (at least one face), taking them off
-  /// `triangles`: a view drawn in slices (the page) uploads a large mesh across frames. The mesh
-  /// once it is complete, else null.
+  /// Uploads chunks of `mesh` while their triangles fit in `triangles` (at least one), taking them
+  /// off: a view drawn in slices (the page) uploads a large mesh across frames. The mesh once it is
+  /// complete, else null.
   const GpuMesh* upload(const std::shared_ptr<const Mesh>& mesh, size_t& triangles);
   /// The same with its edges uploaded too.
   const GpuMesh& withEdges(const std::shared_ptr<const Mesh>& mesh);
   /// Drops the GPU copies of meshes nobody else holds any more.
   void collect();
+  /// The corners a chunk holds at most (unless one face has more); for tests of chunk boundaries.
+  /// Meshes uploaded before keep their chunks.
+  void setChunkCorners(uint32_t corners) { chunkCorners_ = std::max<uint32_t>(corners, 3); }
+  uint32_t chunkCorners() const { return chunkCorners_; }
 
  private:
   struct Entry {
     std::weak_ptr<const Mesh> mesh;
     GpuMesh gpu;
     bool edges = false;  // gpu.edges uploaded
-    size_t faces = 0;      // the faces uploaded so far, in order
-    size_t triangles = 0;  // ... and their triangles
   };
   Entry& entry(const std::shared_ptr<const Mesh>& mesh);
   const GladGLContext* gl_;
+  uint32_t chunkCorners_ = kChunkCorners;
   std::unordered_map<const Mesh*, Entry> entries_;
 };
 

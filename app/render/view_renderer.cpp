@@ -11,10 +11,12 @@ ViewRenderer::ViewRenderer(GlContext& context, float textScale) : ctx_(context) 
 void ViewRenderer::recreateGlObjects() {
   const float scale = backend_->text().scale();
   const bool partitioned = backend_->partitioned();
+  const uint32_t chunkCorners = backend_->meshChunkCorners();
   backend_.reset();  // deletes names a lost context took with it: errors that say nothing of the new ones
   ctx_.discardErrors();
   backend_.emplace(ctx_, scale);
   backend_->setPartitioned(partitioned);
+  backend_->setMeshChunkCorners(chunkCorners);
 }
 
 void ViewRenderer::drawView(Builder build, draw::DisplayList& list, const Scene& scene, const PipelineRun& run,

@@ -58,7 +58,7 @@ class ViewRenderer {
 
   GlContext& context() { return ctx_; }
   /// The context lost every object (a WebGL context lost and restored): the backend's shaders,
-  /// buffers and text atlas are made again; its settings (text scale, partitioning) stay.
+  /// buffers and text atlas are made again; its settings (text scale, partitioning, chunks) stay.
   void recreateGlObjects();
   /// Whether the world view draws each of its two passes from the faces that can show in it
   /// (GlBackend::setPartitioned; on by default, used only without multisampling).
@@ -66,6 +66,9 @@ class ViewRenderer {
   /// The triangles the last partitioned world view drew of its i-th visible scene object in its
   /// inside and its outside pass ({0, 0} when it was not partitioned).
   std::array<size_t, 2> partitionedTriangles(size_t i) const { return backend_->partitionedTriangles(i); }
+  /// The corners of a mesh's GPU chunks at most (GpuMeshCache::setChunkCorners): tests of chunk
+  /// boundaries make them small. Meshes uploaded before keep theirs.
+  void setMeshChunkCorners(uint32_t corners) { backend_->setMeshChunkCorners(corners); }
   /// Where the last view drawn put its labels (x0, y0, x1, y1, pixels), for the tests.
   const std::vector<glm::vec4>& labelsPlaced() const { return backend_->labelsPlaced(); }
   /// Larger text, lines and points for a projector (lecture mode).

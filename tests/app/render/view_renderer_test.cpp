@@ -74,6 +74,27 @@ Scene cutSphere() { return test::cutSphereScene(); }
 
 TEST(WorldViewPartition, SamePixelsOnACutSphere) { expectSamePictures(cutSphere(), "cut sphere"); }
 
+// A mesh goes to the GPU in chunks of consecutive faces (GpuMeshCache), and the partition's lists are
+// made per chunk: with chunks of 256 corners (the sphere's 14 160 triangles in about 110 chunks) the
+// pictures, partitioned or not, are the ones drawn from meshes in one chunk.
+TEST(WorldViewPartition, SamePixelsAcrossChunkBoundaries) {
+  ViewRenderer& renderer = *test::egl().renderer;
+  DisplaySettings settings = displaySettingsFor(cutSphere(), Style::shaded, 400.0 / 300.0);
+  orbitBy(settings.world.orbit, 70, -15);
+  const Image oneChunk = drawWorld(renderer, cutSphere(), settings, true);
+  ASSERT_GE(test::distinctColours(oneChunk), 4u);
+  renderer.setMeshChunkCorners(256);
+  const Scene chunked = cutSphere();  // a new mesh: uploaded in the small chunks
+  const Image parts = drawWorld(renderer, chunked, settings, true);
+  const auto [inside, outside] = renderer.partitionedTriangles(0);
+  const Image all = drawWorld(renderer, chunked, settings, false);
+  renderer.setMeshChunkCorners(GpuMeshCache::kChunkCorners);
+  EXPECT_EQ(test::differingPixels(oneChunk, parts), 0u);
+  EXPECT_EQ(test::differingPixels(oneChunk, all), 0u);
+  EXPECT_GT(inside, 0u);
+  EXPECT_GT(outside, 0u);
+}
+
 TEST(WorldViewPartition, EachPassDrawsAboutTheFacesOnItsSide) {
   const Scene scene = cutSphere();
   ViewRenderer& renderer = *test::egl().renderer;

@@ -73,10 +73,12 @@ TEST(ViewSlices, AViewDrawnInSlicesIsTheViewDrawnWholeWithOtherViewsBetween) {
 }
 
 // A mesh the renderer has not seen goes to the GPU in slices too (the page: a million triangles'
-// upload held one frame for a second): in the world view the first slices upload the sphere's
-// 14 160 triangles (at least 14 slices of 1000), the next draw them (as many again), and the picture is the one drawn whole from another copy
+// upload held one frame for a second), a chunk of consecutive faces at a time (GpuMeshCache), and the
+// world view's volume partition is made in slices as well. With chunks of 2048 corners the world
+// view's first slices upload the sphere's 14 160 triangles (at least 14 slices of 1000), the next
+// partition and draw them (as many again), and the picture is the one drawn whole from another copy
 // of the same mesh. (The camera view draws the CPU's clipped polygons, not the mesh.)
-TEST(ViewSlices, ANewMeshIsUploadedInSlices) {
+TEST(ViewSlices, ANewMeshIsUploadedAndPartitionedInSlices) {
   ViewRenderer& renderer = *test::egl().renderer;
   const Scene fresh = test::cutSphereScene(), copy = test::cutSphereScene();
   ASSERT_NE(fresh.objects.back().mesh, copy.objects.back().mesh);
@@ -86,6 +88,7 @@ TEST(ViewSlices, ANewMeshIsUploadedInSlices) {
   ASSERT_GE(test::distinctColours(whole), 4u);
   gl::RenderTarget target(renderer.context().gl());
   target.resize(400, 300, 1);
+  renderer.setMeshChunkCorners(2048);
   ViewRenderer::Slices slices;
   renderer.startSlices(ViewKind::world, fresh, freshRun, settings, {}, target, slices);
   int count = 0;
@@ -94,8 +97,39 @@ TEST(ViewSlices, ANewMeshIsUploadedInSlices) {
     done = renderer.drawSlice(slices, target, triangles);
     ASSERT_LT(count, 10000) << "the slices never end";
   }
+  renderer.setMeshChunkCorners(GpuMeshCache::kChunkCorners);
   EXPECT_GE(count, 2 * 14) << "uploaded and drawn in " << count << " slices";
+  const auto [inside, outside] = renderer.partitionedTriangles(fresh.objects.size() - 1);
+  EXPECT_GT(inside + outside, 0u) << "the sphere was drawn whole, not partitioned";
   EXPECT_EQ(test::differingPixels(whole, target.read()), 0u) << count << " slices";
+}
+
+// The three views of a page draw their slices in turn: two world views (two observers) whose slices
+// interleave each find their own partition again and finish, each the picture drawn whole.
+TEST(ViewSlices, InterleavedWorldViewsEachKeepTheirPartition) {
+  ViewRenderer& renderer = *test::egl().renderer;
+  const Scene scene = cutSphereScene();
+  const PipelineRun run = runPipeline(scene, {ClipStrategy::npc, false, true});
+  std::array<DisplaySettings, 2> settings{displaySettingsFor(scene, Style::shaded, 400.0 / 300.0),
+                                          displaySettingsFor(scene, Style::flat, 400.0 / 300.0)};
+  orbitBy(settings[1].world.orbit, 160, 40);
+  std::array<Image, 2> whole;
+  std::array<gl::RenderTarget, 2> targets{gl::RenderTarget(renderer.context().gl()), gl::RenderTarget(renderer.context().gl())};
+  std::array<ViewRenderer::Slices, 2> slices;
+  for (size_t v = 0; v < 2; ++v) {
+    whole[v] = drawWhole(renderer, ViewKind::world, scene, run, settings[v], 1);
+    targets[v].resize(400, 300, 1);
+    renderer.startSlices(ViewKind::world, scene, run, settings[v], {}, targets[v], slices[v]);
+  }
+  std::array<bool, 2> done{false, false};
+  for (int count = 0; !(done[0] && done[1]); ++count) {
+    for (size_t v = 0; v < 2; ++v) {
+      size_t triangles = 700;
+      if (!done[v]) done[v] = renderer.drawSlice(slices[v], targets[v], triangles);
+    }
+    ASSERT_LT(count, 10000) << "the slices never end";
+  }
+  for (size_t v = 0; v < 2; ++v) EXPECT_EQ(test::differingPixels(whole[v], targets[v].read()), 0u) << "view " << v;
 }
 
 // The frames of a page: each draws what is left of its slice budget, the view is asked for again.
