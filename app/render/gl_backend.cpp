@@ -306,8 +306,9 @@ bool GlBackend::drawMeshes(const draw::Fill& fill, const ViewCamera& camera, int
   return done;
 }
 
-void GlBackend::uploadPolygons(const draw::Fill& fill, GLsizei vertices, PolygonBuffers& polygons) {
-  if (polygonSlot_ >= polygons.size()) {
+void GlBackend::uploadPolygons(const draw::Fill& fill, const std::vector<PolygonSegment>& segments, GLsizei vertices,
+                               bool newSlot, PolygonBuffers& polygons) {
+  if (newSlot && polygonSlot_ >= polygons.size()) {
     PolygonBuffer b{gl::makeVertexArray(gl_), gl::makeBuffer(gl_)};
     gl_.BindVertexArray(b.vao.id());
     gl_.BindBuffer(GL_ARRAY_BUFFER, b.vbo.id());
@@ -317,8 +318,10 @@ void GlBackend::uploadPolygons(const draw::Fill& fill, GLsizei vertices, Polygon
     gl_.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), reinterpret_cast<void*>(sizeof(glm::vec3)));
     polygons.push_back(std::move(b));
   }
-  PolygonBuffer& buffer = polygons[polygonSlot_++];
+  if (newSlot) ++polygonSlot_;
+  PolygonBuffer& buffer = polygons[polygonSlot_ - 1];
   gl_.BindVertexArray(buffer.vao.id());
+  if (vertices == 0) return;  // a slice with no triangles left: only the slot taken
   gl_.BindBuffer(GL_ARRAY_BUFFER, buffer.vbo.id());
   const GLsizeiptr bytes = GLsizeiptr(vertices) * GLsizeiptr(2 * sizeof(glm::vec3));
   // Storage grows by a quarter more than asked and shrinks when a quarter of it would do.
@@ -336,8 +339,9 @@ void GlBackend::uploadPolygons(const draw::Fill& fill, GLsizei vertices, Polygon
     out = static_cast<glm::vec3*>(gl_.MapBufferRange(GL_ARRAY_BUFFER, 0, bytes, GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_RANGE_BIT));
   }
   if (!out) throw Error("could not map the polygon buffer (" + std::to_string(bytes) + " bytes)");
-  for (const draw::PolygonSet& set : fill.polygons) {
-    for (size_t k = 0; k < set.polygonCount(); ++k) {
+  for (const PolygonSegment& segment : segments) {
+    const draw::PolygonSet& set = fill.polygons[segment.set];
+    for (size_t k = segment.begin; k < segment.end; ++k) {
       const std::span<const Vec3> poly = set.polygon(k);
       if (poly.size() < 3) continue;
       Vec3 n{0};  // Newell's normal
@@ -361,31 +365,43 @@ void GlBackend::uploadPolygons(const draw::Fill& fill, GLsizei vertices, Polygon
   }
   if (es_) gl_.BufferSubData(GL_ARRAY_BUFFER, 0, bytes, polygonStaging_.data());
   else gl_.UnmapBuffer(GL_ARRAY_BUFFER);
-
 }
 
 bool GlBackend::drawPolygons(const draw::Fill& fill, const ViewCamera& camera, Cursor& c, size_t& triangles,
                              PolygonBuffers& polygons) {
-  // Fan triangulation: a polygon of n corners gives n − 2 triangles, three GPU vertices each.
-  std::vector<std::pair<GLint, GLsizei>> ranges;  // per set: first vertex, vertex count
+  // The polygons of this slice: whole polygons from the cursor's (set c.mesh, polygon c.index) on
+  // while the triangles last, at least one. They are fan-triangulated (a polygon of n corners gives
+  // n − 2 triangles, three GPU vertices each) into the fill's buffer and drawn: a slice writes only
+  // its own (the clipped polygons of a million triangles are 70 MB of GPU vertices).
+  const bool resumed = c.pass == 2;
+  size_t set = resumed ? c.mesh : 0, k = resumed ? size_t(c.index) : 0;
+  std::vector<PolygonSegment> segments;
   GLsizei vertices = 0;
-  for (const draw::PolygonSet& set : fill.polygons) {
-    const GLint first = vertices;
-    for (size_t k = 0; k < set.ends.size(); ++k) {
-      const uint32_t n = set.ends[k] - (k ? set.ends[k - 1] : 0);
-      if (n >= 3) vertices += GLsizei(3 * (n - 2));
+  bool more = false;  // polygons left for the next slice
+  for (; set < fill.polygons.size() && !more; ++set, k = 0) {
+    const draw::PolygonSet& s = fill.polygons[set];
+    PolygonSegment segment{set, k, k, vertices, 0};
+    for (; k < s.polygonCount(); ++k) {
+      const size_t n = s.polygon(k).size(), t = n >= 3 ? n - 2 : 0;
+      if (t > triangles && (vertices > 0 || triangles == 0)) {
+        more = true;
+        break;
+      }
+      triangles -= std::min(triangles, t);
+      vertices += GLsizei(3 * t);
     }
-    ranges.push_back({first, vertices - first});
+    segment.end = k;
+    segment.count = vertices - segment.first;
+    if (segment.count > 0) segments.push_back(segment);
+    if (more) break;
   }
-  if (vertices == 0) return true;
-  if (c.pass == 2) {  // a slice going on: the polygons are in the buffer their first slice wrote
-    gl_.BindVertexArray(polygons[polygonSlot_ - 1].vao.id());
-  } else {
-    uploadPolygons(fill, vertices, polygons);
+  if (more) {
     c.pass = 2;
-    c.mesh = 0;
-    c.index = 0;
+    c.mesh = set;
+    c.index = GLsizei(k);
   }
+  if (vertices == 0 && !more) return true;
+  uploadPolygons(fill, segments, vertices, !resumed, polygons);
   const int lights = fill.lit ? int(std::clamp<size_t>(fill.lights.size(), 1, 4)) : 0;
   const gl::Program& p = sceneProgram(false, lights, false);
   draw::Fill state;  // the fill's uniforms without volume test and user planes (CPU polygons are clipped)
@@ -396,24 +412,12 @@ bool GlBackend::drawPolygons(const draw::Fill& fill, const ViewCamera& camera, C
   setFillProgram(p, state, camera, 0);
   p.set("wcFromMc", Mat4(1.0));
   p.set("wcNormalFromMc", Mat3(1.0));
-  bool done = true;
-  for (size_t i = c.mesh; i < fill.polygons.size() && done; ++i) {
-    if (i != c.mesh) {
-      c.mesh = i;
-      c.index = 0;
-    }
-    const size_t left = size_t(std::max<GLsizei>(ranges[i].second - c.index, 0)) / 3;
-    const size_t now = std::min(left, triangles);
-    if (now > 0) {
-      p.set("color", fill.polygons[i].color);
-      gl_.DrawArrays(GL_TRIANGLES, ranges[i].first + c.index, GLsizei(3 * now));
-      c.index += GLsizei(3 * now);
-      triangles -= now;
-    }
-    done = now == left;
+  for (const PolygonSegment& segment : segments) {
+    p.set("color", fill.polygons[segment.set].color);
+    gl_.DrawArrays(GL_TRIANGLES, segment.first, segment.count);
   }
   gl_.BindVertexArray(0);
-  return done;
+  return !more;
 }
 
 // ---------------------------------------------------------------- 4 lines, points, triangles

@@ -49,8 +49,8 @@ class GlBackend {
     size_t batch = 0;
     size_t mesh = 0;     // the mesh instance, or in pass 2 the polygon set
     int pass = 0;        // 0: the whole mesh, or the inside faces drawn early; 1: the volume pass;
-                         // 2: the fill's polygons (in their buffer since the pass began)
-    GLsizei index = 0;   // the next element of the pass's index list, or vertex of the set (3 per triangle)
+                         // 2: the fill's polygons (begun: their buffer is the fill's slot)
+    GLsizei index = 0;   // the next element of the pass's index list, or polygon of the set
     uint64_t serial = 0;     // the draw it is (the volume partition made for it)
     size_t polygonSlot = 0;  // the polygon buffers its fills took so far
   };
@@ -96,8 +96,16 @@ class GlBackend {
   bool drawMeshes(const draw::Fill& fill, const ViewCamera& camera, int samples, Cursor& cursor, size_t& triangles);
   bool drawPolygons(const draw::Fill& fill, const ViewCamera& camera, Cursor& cursor, size_t& triangles,
                     PolygonBuffers& polygons);
-  /// Fan-triangulates the fill's polygons (`vertices` GPU vertices) into the next of `polygons`.
-  void uploadPolygons(const draw::Fill& fill, GLsizei vertices, PolygonBuffers& polygons);
+  /// Polygons [begin, end) of the fill's set `set`, as GPU vertices [first, first + count).
+  struct PolygonSegment {
+    size_t set = 0, begin = 0, end = 0;
+    GLint first = 0;
+    GLsizei count = 0;
+  };
+  /// Fan-triangulates the segments' polygons (`vertices` GPU vertices) into the fill's buffer of
+  /// `polygons`: the next one when `newSlot` (the fill's first slice), else the one it took.
+  void uploadPolygons(const draw::Fill& fill, const std::vector<PolygonSegment>& segments, GLsizei vertices,
+                      bool newSlot, PolygonBuffers& polygons);
   void drawMeshEdges(const draw::Lines& lines, const View& view);
   /// One OverlayBatch's worth of lines, points and triangles (a run of consecutive x-ray batches
   /// is drawn as one: all hidden parts first, then all visible ones, as the views expect).

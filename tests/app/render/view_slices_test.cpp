@@ -55,8 +55,10 @@ TEST(ViewSlices, AViewDrawnInSlicesIsTheViewDrawnWholeWithOtherViewsBetween) {
         for (bool done = false; !done; ++count) {
           size_t triangles = 1000;
           done = renderer.drawSlice(slices, target, triangles);
+          // A slice ends when its triangles run out, or before a clipped polygon whose fan does
+          // not fit any more (polygons go whole: a quad cut by six planes has at most 10 corners, 8 triangles).
           if (!done) {
-            EXPECT_EQ(triangles, 0u) << "a slice stopped before its triangles ran out";
+            EXPECT_LT(triangles, 8u) << "a slice stopped before its triangles ran out";
           }
           drawWhole(renderer, kind == ViewKind::world ? ViewKind::npc : ViewKind::world, scene, run, settings, 1);
           ASSERT_LT(count, 10000) << "the slices never end";
