@@ -1,8 +1,6 @@
 // Index: 1 construction (ImGui context, fonts, style)  2 the frame  3 layout and windows
 //        4 export (the menus and keys: app/ui/menus.cpp)
 #include "app/ui/viewer.h"
-#include <chrono>
-#include <cstdio>
 
 #include "app/fonts/font_file.h"
 #include "app/gl/shader.h"
@@ -161,17 +159,13 @@ double Viewer::wakeIn() const {
 }
 
 void Viewer::frame(GLuint framebuffer, int width, int height) {
-  auto T0 = std::chrono::steady_clock::now(); std::string TL; auto TM = [&](const char* n) { auto t = std::chrono::steady_clock::now(); TL += std::string(n) + "=" + std::to_string(int(std::chrono::duration<double, std::milli>(t - T0).count())) + " "; T0 = t; };
-  auto TSTART = T0;
   ImGui::SetCurrentContext(imgui_);
   // The font atlas is locked during a frame: the scale (and with it the style) changes before one.
   if (s_.uiScale != uiScale_ || s_.display.theme != styledTheme_) applyUiScale(s_.uiScale);
   if (settleFrames_ > 0) --settleFrames_;
   images_.beginFrame();
   run_.beginFrame();
-  TM("begin");
   if (session_.beginFrame()) requestFrames(2);
-  TM("session");
   const Scene atFrameStart = s_.doc.scene();
   const unsigned generation = s_.doc.generation();
   ImGui_ImplOpenGL3_NewFrame();
@@ -194,13 +188,9 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   } else {
     menus_.menuBar();
     controlsWindow();
-    TM("controls");
     s_.doc.endFrame(true);  // validate what the panels changed; recorded at the end of the frame
-    TM("docend");
     updateRun();
-    TM("run");
     panes_.viewWindows();
-    TM("views");
     inspectWindow();
     compactSwitcher();
     panes_.morphWindow();
@@ -228,11 +218,8 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   gl.Viewport(0, 0, width, height);
   gl.ClearColor(0.06f, 0.065f, 0.08f, 1.f);
   gl.Clear(GL_COLOR_BUFFER_BIT);
-  TM("rest");
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   ctx_.checkErrors("drawing the viewer's frame");
-  TM("imgui");
-  if (std::chrono::duration<double, std::milli>(T0 - TSTART).count() > 70) fprintf(stderr, "LONG %s\n", TL.c_str());
 }
 
 // ---------------------------------------------------------------- 3 layout and windows
