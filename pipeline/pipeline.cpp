@@ -410,9 +410,14 @@ void startObject(ObjectRun& o, const PipelineRun& run, PipelineStats& stats) {
   stats.verticesTransformed += mesh.vertexCount();
   stats.polygons += mesh.faceCount();
 
-  o.npcH.resize(mesh.vertexCount());
-  o.outcodes.resize(mesh.vertexCount());
-  o.dc.resize(mesh.vertexCount());
+  // The per-vertex arrays grow with the vertex pass (passVertices): sizing a million vertices' at
+  // once held the page's frame for a tenth of a second. The memory is taken here, untouched.
+  o.npcH.clear();
+  o.outcodes.clear();
+  o.dc.clear();
+  o.npcH.reserve(mesh.vertexCount());
+  o.outcodes.reserve(mesh.vertexCount());
+  o.dc.reserve(mesh.vertexCount());
   o.fate.resize(mesh.faceCount());
   o.clippedFaces.clear();
   o.clippedStart.assign(1, 0);
@@ -441,6 +446,9 @@ void startObject(ObjectRun& o, const PipelineRun& run, PipelineStats& stats) {
 
 // Vertices [begin, end) of an object started by startObject.
 void passVertices(ObjectRun& o, const PipelineRun& run, PipelineStats& stats, size_t begin, size_t end) {
+  o.npcH.resize(end);
+  o.outcodes.resize(end);
+  o.dc.resize(end);
   if (o.classified()) {
     classifyVertices(o, run.dcFromNpc, stats, begin, end);
   } else {
@@ -549,10 +557,10 @@ bool PipelineJob::step(uint64_t budget) {
         nextPhase(Phase::vertices);
         break;
       case Phase::vertices: {
-        const size_t end = take(o.vertexCount());
+        const size_t end = take(o.mesh->vertexCount());  // o.vertexCount() grows with the pass
         passVertices(o, run, run.stats, next_, end);
         next_ = end;
-        if (next_ == o.vertexCount()) nextPhase(o.classified() ? Phase::faces : Phase::finish);
+        if (next_ == o.mesh->vertexCount()) nextPhase(o.classified() ? Phase::faces : Phase::finish);
         break;
       }
       case Phase::faces: {
