@@ -56,58 +56,104 @@ Bounds bounds(const Mesh& mesh) {
 // bucket is searched by hand while small (a vertex has few neighbours) and sorted when large (a fan
 // of many faces around one vertex, which a hostile file may hold): linear in the corners.
 std::vector<Edge> uniqueEdges(const Mesh& mesh) {
-  const size_t corners = mesh.indices.size();
-  const size_t vertices = mesh.positions.size();
-  // Side j of the mesh: from corner j to the next corner of its face (a, b with a < b).
-  auto side = [&](size_t f, size_t k, uint32_t& a, uint32_t& b) {
-    const auto face = mesh.face(f);
-    a = face[k];
-    b = face[(k + 1) % face.size()];
-    if (a > b) std::swap(a, b);
-    return a != b && a < vertices;
+  UniqueEdgesJob job(mesh);
+  job.step(UINT64_MAX);
+  return job.take();
+}
+
+// Side k of face f: from its corner k to the next corner (a, b with a < b); false for a degenerate one.
+bool UniqueEdgesJob::side(size_t f, size_t k, uint32_t& a, uint32_t& b) const {
+  const auto face = mesh_->face(f);
+  a = face[k];
+  b = face[(k + 1) % face.size()];
+  if (a > b) std::swap(a, b);
+  return a != b && a < mesh_->positions.size();
+}
+
+bool UniqueEdgesJob::step(uint64_t budget) {
+  const Mesh& mesh = *mesh_;
+  const size_t vertices = mesh.positions.size(), faces = mesh.faceCount();
+  // Runs `body` over each side of the pass's faces from next_ while the budget lasts; true when the
+  // pass is through.
+  auto overFaces = [&](auto body) {
+    for (; next_ < faces && budget > 0; ++next_) {
+      const size_t n = mesh.faceStart[next_ + 1] - mesh.faceStart[next_];
+      for (size_t k = 0; k < n; ++k) body(next_, k);
+      budget -= std::min<uint64_t>(budget, std::max<size_t>(n, 1));
+    }
+    return next_ == faces;
   };
-  std::vector<uint32_t> start(vertices + 1, 0);
-  for (size_t f = 0; f < mesh.faceCount(); ++f)
-    for (size_t k = 0; k < mesh.faceStart[f + 1] - mesh.faceStart[f]; ++k) {
-      uint32_t a, b;
-      if (side(f, k, a, b)) ++start[a + 1];
-    }
-  for (size_t v = 0; v < vertices; ++v) start[v + 1] += start[v];
-  struct Entry {
-    uint32_t b, side;
-  };
-  std::vector<Entry> bucket(start[vertices]);
-  {
-    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-    for (size_t f = 0; f < mesh.faceCount(); ++f)
-      for (size_t k = 0; k < mesh.faceStart[f + 1] - mesh.faceStart[f]; ++k) {
-        uint32_t a, b;
-        if (side(f, k, a, b)) bucket[fill[a]++] = {b, uint32_t(mesh.faceStart[f] + k)};
+  for (;;) {
+    auto nextPass = [&] {
+      ++pass_;
+      next_ = 0;
+    };
+    switch (pass_) {
+      case 0:  // count the sides of each bucket
+        if (start_.empty()) start_.assign(vertices + 1, 0);
+        if (!overFaces([&](size_t f, size_t k) {
+              uint32_t a, b;
+              if (side(f, k, a, b)) ++start_[a + 1];
+            }))
+          return false;
+        nextPass();
+        break;
+      case 1: {  // the buckets' starts
+        const size_t end = next_ + size_t(std::min<uint64_t>(budget, vertices - next_));
+        budget -= end - next_;
+        for (; next_ < end; ++next_) start_[next_ + 1] += start_[next_];
+        if (next_ < vertices) return false;
+        bucket_.resize(start_[vertices]);
+        fill_.assign(start_.begin(), start_.end() - 1);
+        nextPass();
+        break;
       }
-  }
-  std::vector<uint8_t> first(corners, 0);
-  constexpr uint32_t kSmallBucket = 16;
-  for (size_t v = 0; v < vertices; ++v) {
-    Entry* begin = bucket.data() + start[v];
-    Entry* end = bucket.data() + start[v + 1];
-    if (end - begin <= kSmallBucket) {
-      for (Entry* e = begin; e != end; ++e) {  // in side order: the counting sort kept it
-        bool seen = false;
-        for (Entry* d = begin; d != e && !seen; ++d) seen = d->b == e->b;
-        first[e->side] = !seen;
+      case 2:  // each side into its bucket, in side order
+        if (!overFaces([&](size_t f, size_t k) {
+              uint32_t a, b;
+              if (side(f, k, a, b)) bucket_[fill_[a]++] = {b, uint32_t(mesh.faceStart[f] + k)};
+            }))
+          return false;
+        std::vector<uint32_t>().swap(fill_);
+        first_.assign(mesh.indices.size(), 0);
+        nextPass();
+        break;
+      case 3: {  // in each bucket, the first side of each edge
+        constexpr uint32_t kSmallBucket = 16;
+        const size_t end = next_ + size_t(std::min<uint64_t>(budget, vertices - next_));
+        budget -= end - next_;
+        for (; next_ < end; ++next_) {
+          Entry* begin = bucket_.data() + start_[next_];
+          Entry* last = bucket_.data() + start_[next_ + 1];
+          if (last - begin <= kSmallBucket) {
+            for (Entry* e = begin; e != last; ++e) {  // in side order: the counting sort kept it
+              bool seen = false;
+              for (Entry* d = begin; d != e && !seen; ++d) seen = d->b == e->b;
+              first_[e->side] = !seen;
+            }
+          } else {
+            std::sort(begin, last, [](const Entry& x, const Entry& y) { return x.b != y.b ? x.b < y.b : x.side < y.side; });
+            for (Entry* e = begin; e != last; ++e) first_[e->side] = e == begin || e[-1].b != e->b;
+          }
+        }
+        if (next_ < vertices) return false;
+        std::vector<Entry>().swap(bucket_);
+        std::vector<uint32_t>().swap(start_);
+        nextPass();
+        break;
       }
-    } else {
-      std::sort(begin, end, [](const Entry& x, const Entry& y) { return x.b != y.b ? x.b < y.b : x.side < y.side; });
-      for (Entry* e = begin; e != end; ++e) first[e->side] = e == begin || e[-1].b != e->b;
+      case 4:  // the marked sides in face order
+        if (!overFaces([&](size_t f, size_t k) {
+              uint32_t a, b;
+              if (first_[mesh.faceStart[f] + k] && side(f, k, a, b)) edges_.push_back({a, b});
+            }))
+          return false;
+        std::vector<uint8_t>().swap(first_);
+        nextPass();
+        break;
+      default: return true;
     }
   }
-  std::vector<Edge> edges;
-  for (size_t f = 0; f < mesh.faceCount(); ++f)
-    for (size_t k = 0; k < mesh.faceStart[f + 1] - mesh.faceStart[f]; ++k) {
-      uint32_t a, b;
-      if (first[mesh.faceStart[f] + k] && side(f, k, a, b)) edges.push_back({a, b});
-    }
-  return edges;
 }
 
 Mesh triangulated(const Mesh& mesh) {

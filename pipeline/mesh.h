@@ -52,6 +52,33 @@ struct Edge {
 /// Every edge of the mesh once, in the order of first appearance in the faces.
 std::vector<Edge> uniqueEdges(const Mesh& mesh);
 
+/// uniqueEdges in steps: a page lists a million edges (60 ms) across frames. The sides of the faces
+/// are bucketed by their smaller vertex (a counting sort), each bucket marks the first side of each
+/// edge, and the marked sides in face order are the list. `mesh` must outlive the job.
+class UniqueEdgesJob {
+ public:
+  explicit UniqueEdgesJob(const Mesh& mesh) : mesh_(&mesh) {}
+  /// Does about `budget` units (a face's sides or a vertex each); true once the list is complete.
+  bool step(uint64_t budget);
+  /// The list, once step returned true (moved out).
+  std::vector<Edge> take() { return std::move(edges_); }
+  /// The units of the whole job: two passes over the vertices, three over the faces' sides.
+  static uint64_t units(const Mesh& mesh) { return 2 * mesh.positions.size() + 3 * mesh.indices.size(); }
+
+ private:
+  struct Entry {
+    uint32_t b, side;  // the side's other vertex, and its first corner
+  };
+  bool side(size_t f, size_t k, uint32_t& a, uint32_t& b) const;
+  const Mesh* mesh_;
+  int pass_ = 0;     // count, sum, fill, mark, collect, done
+  size_t next_ = 0;  // the pass's next face or vertex
+  std::vector<uint32_t> start_, fill_;
+  std::vector<Entry> bucket_;
+  std::vector<uint8_t> first_;
+  std::vector<Edge> edges_;
+};
+
 /// The same mesh with each face split into a fan of triangles (for the GPU and benchmarks).
 Mesh triangulated(const Mesh& mesh);
 

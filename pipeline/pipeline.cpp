@@ -429,10 +429,7 @@ void startObject(ObjectRun& o, const PipelineRun& run, PipelineStats& stats) {
     std::fill(o.valueSlots.begin(), o.valueSlots.end(), 0);
     o.generation = 1;
   }
-  if (run.options.clipEdges && o.edges.empty()) o.edges = uniqueEdges(mesh);
-  if (!run.options.clipEdges) o.edges.clear();
-  o.edgeRanges.resize(o.edges.size());
-  stats.edges += o.edges.size();
+  if (!run.options.clipEdges) o.edges.clear();  // else listed once per mesh (PipelineJob: startEdges)
 
   o.box = BoxVerdict::notTested;
   if (run.options.boundingBoxTest) {
@@ -442,6 +439,12 @@ void startObject(ObjectRun& o, const PipelineRun& run, PipelineStats& stats) {
     ++stats.objectsBoxTested;
   }
   if (o.classified()) stats.verticesClassified += mesh.vertexCount();
+}
+
+// The object's edges known (listed, or none clipped): their ranges sized and counted.
+void startEdges(ObjectRun& o, PipelineStats& stats) {
+  o.edgeRanges.resize(o.edges.size());
+  stats.edges += o.edges.size();
 }
 
 // Vertices [begin, end) of an object started by startObject.
@@ -468,7 +471,8 @@ uint32_t uniformFaceSize(const Mesh& mesh) {
 }  // namespace
 
 // The run's phases for each object, in order; the units of work are its vertices, faces, edges.
-enum class PipelineJob::Phase : uint8_t { start, vertices, faces, edges, finish };
+// listEdges only for a mesh whose edges this run buffer has not listed yet (the viewer clips edges).
+enum class PipelineJob::Phase : uint8_t { start, listEdges, vertices, faces, edges, finish };
 
 PipelineJob::PipelineJob(const Scene& scene, const PipelineOptions& options, PipelineRun& run)
     : run_(run) {
@@ -530,6 +534,7 @@ PipelineJob::PipelineJob(const Scene& scene, const PipelineOptions& options, Pip
     o.mesh = so.mesh;
     o.wcFromMc = wcFromMcs[k];
     total_ += so.mesh->vertexCount() + so.mesh->faceCount() + (options.clipEdges ? so.mesh->indices.size() / 2 : 0);  // edges: about half the corners
+    if (options.clipEdges && o.edges.empty()) total_ += UniqueEdgesJob::units(*so.mesh);  // about: listing
   }
   // The clipper's buffers grow to the largest face clipped (no pass over every face to size them).
   scratch_.a.reserve(16);
@@ -554,8 +559,27 @@ bool PipelineJob::step(uint64_t budget) {
     switch (phase_) {
       case Phase::start:
         startObject(o, run, run.stats);
-        nextPhase(Phase::vertices);
+        if (run.options.clipEdges && o.edges.empty() && o.mesh->faceCount() > 0) {
+          edgeJob_.emplace(*o.mesh);
+          nextPhase(Phase::listEdges);
+        } else {
+          startEdges(o, run.stats);
+          nextPhase(Phase::vertices);
+        }
         break;
+      case Phase::listEdges: {
+        const uint64_t units = std::min<uint64_t>(budget, UniqueEdgesJob::units(*o.mesh));
+        const bool listed = edgeJob_->step(units);
+        budget -= units;
+        done_ += units;
+        if (listed) {
+          o.edges = edgeJob_->take();
+          edgeJob_.reset();
+          startEdges(o, run.stats);
+          nextPhase(Phase::vertices);
+        }
+        break;
+      }
       case Phase::vertices: {
         const size_t end = take(o.mesh->vertexCount());  // o.vertexCount() grows with the pass
         passVertices(o, run, run.stats, next_, end);

@@ -182,6 +182,7 @@ class PipelineJob {
   enum class Phase : uint8_t;
   PipelineRun& run_;
   ClipScratch scratch_;
+  std::optional<UniqueEdgesJob> edgeJob_;  // Phase::listEdges
   size_t object_ = 0;
   Phase phase_{};
   size_t next_ = 0;  // the phase's next vertex, face or edge

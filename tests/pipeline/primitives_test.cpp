@@ -208,8 +208,8 @@ TEST(Mesh, TriangulatedKeepsOrientationAndArea) {
   }
 }
 
-// uniqueEdges against the plain definition (a set of the sides seen, in the order the faces give
-// them) on random faces over few vertices (many repeated sides, degenerate sides a–a), and on a fan
+// uniqueEdges, whole and in steps, against the plain definition (a set of the sides seen, in the order
+// the faces give them) on random faces over few vertices (many repeated sides, degenerate sides a–a), and on a fan
 // of 300 triangles around one vertex (a bucket too large to search by hand: the sorted path).
 TEST(Mesh, UniqueEdgesEqualTheSetOfSidesInOrder) {
   auto reference = [](const Mesh& m) {
@@ -241,6 +241,16 @@ TEST(Mesh, UniqueEdgesEqualTheSetOfSidesInOrder) {
     }
     SCOPED_TRACE(trial);
     EXPECT_EQ(edgesOf(m), reference(m));
+    // In steps (UniqueEdgesJob, the page's run across frames) of 1 to 30 units: the same list, and
+    // a step never does much more than its budget (the whole job takes units(m) / budget steps at least).
+    const uint64_t budget = uint64_t(rng.integer(1, 30));
+    UniqueEdgesJob job(m);
+    uint64_t steps = 1;
+    for (; !job.step(budget); ++steps) ASSERT_LT(steps, 100000u) << "the steps never end";
+    std::vector<std::pair<uint32_t, uint32_t>> stepped;
+    for (const Edge& e : job.take()) stepped.push_back({e.a, e.b});
+    EXPECT_EQ(stepped, reference(m)) << "steps of " << budget;
+    EXPECT_GE(steps * (budget + 6), UniqueEdgesJob::units(m)) << "steps of " << budget << " did more than asked";
   }
   Mesh fan;
   fan.positions.push_back(Vec3(0));
