@@ -216,7 +216,9 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   const GladGLContext& gl = ctx_.gl();
   gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   gl.Viewport(0, 0, width, height);
-  gl.ClearColor(0.06f, 0.065f, 0.08f, 1.f);
+  // The windows' background colour, opaque: the view windows have none of their own (view_panes.cpp).
+  const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+  gl.ClearColor(bg.x, bg.y, bg.z, 1.f);
   gl.Clear(GL_COLOR_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   ctx_.checkErrors("drawing the viewer's frame");
