@@ -85,7 +85,7 @@ void ViewImages::useWorker(std::unique_ptr<GlContext> context, std::function<voi
 
 void ViewImages::drawInSlices(size_t trianglesPerFrame) {
   if (worker_) throw Error("the views are drawn on a render thread: not in slices");
-  trianglesPerFrame_ = trianglesPerFrame;
+  pacing_ = {trianglesPerFrame, 0};
   for (Slot& s : slots_) {  // an image under way is drawn again, as asked for next
     if (!s.slicing) continue;
     s.slicing.reset();
@@ -93,18 +93,24 @@ void ViewImages::drawInSlices(size_t trianglesPerFrame) {
   }
 }
 
+SlicePacing SlicePacing::after(double frameSeconds) const {
+  // AIMD, as TCP paces what it sends: a frame over kMostSeconds halves the slices; two frames in a
+  // row under kAimSeconds let them grow by an eighth. Two, because SwiftShader runs a frame's draw
+  // calls after the frame has ended: the frame after waits for them, so a slice's cost shows one
+  // frame late, and growing on one fast frame would grow twice before the cost is seen.
+  SlicePacing next{triangles, frameSeconds};
+  if (frameSeconds > kMostSeconds)  // down to kMinTriangles (a smaller start stays)
+    next.triangles = std::max(std::min(kMinTriangles, triangles), triangles / 2);
+  else if (frameSeconds < kAimSeconds && lastFrameSeconds < kAimSeconds)
+    next.triangles = std::min(kMaxTriangles, triangles + triangles / 8);
+  return next;
+}
+
 void ViewImages::beginFrame() {
-  // Slices adapt to what they cost: a frame after slices that took far longer than aimed at halves
-  // them, one under it lets them grow by a quarter (AIMD, as TCP paces what it sends).
   const auto now = std::chrono::steady_clock::now();
-  trianglesLeft_ = trianglesPerFrame_;
-  if (trianglesPerFrame_ > 0 && slicedLastFrame_) {
-    const double seconds = std::chrono::duration<double>(now - frameStart_).count();
-    if (seconds > 2 * kSliceFrameSeconds)  // halved, down to kMinSliceTriangles (a smaller start stays)
-      trianglesPerFrame_ = std::max(std::min(kMinSliceTriangles, trianglesPerFrame_), trianglesPerFrame_ / 2);
-    else if (seconds < kSliceFrameSeconds) trianglesPerFrame_ = std::min(kMaxSliceTriangles, trianglesPerFrame_ + trianglesPerFrame_ / 4);
-    trianglesLeft_ = trianglesPerFrame_;
-  }
+  if (pacing_.triangles > 0 && slicedLastFrame_)
+    pacing_ = pacing_.after(std::chrono::duration<double>(now - frameStart_).count());
+  trianglesLeft_ = pacing_.triangles;
   frameStart_ = now;
   slicedLastFrame_ = false;
   slicedThisFrame_ = false;
@@ -132,7 +138,7 @@ GLuint ViewImages::image(ViewRequest r, unsigned runRevision) {
   Stamp stamp{runRevision, r.settings, r.highlights, r.width, r.height, r.samples, r.uiScale};
   if (slot.texture != 0 && slot.stamp == stamp) return slot.texture;
   if (worker_) return onWorker(slot, std::move(r), std::move(stamp));
-  if (trianglesPerFrame_ > 0) return inSlices(slot, std::move(r), std::move(stamp));
+  if (pacing_.triangles > 0) return inSlices(slot, std::move(r), std::move(stamp));
   try {
     slot.texture = drawViewInto(ctx_, renderer_, targets_, r);
   } catch (const std::exception& e) {

@@ -49,6 +49,24 @@ GLuint drawViewInto(GlContext& context, ViewRenderer& renderer, ViewTargets& tar
 /// difference overlay the image of where it differs from the CPU's clipped polygons.
 GLuint showCameraView(GlContext& context, ViewTargets& targets, const ViewRequest& r);
 
+/// How many triangles the views drawn in slices (the page) may draw in a frame, adapted to the frame
+/// times (AIMD: halved after a frame over kMostSeconds, an eighth more after two frames in a row
+/// under kAimSeconds, never under kMinTriangles unless it started lower).
+struct SlicePacing {
+  /// The frame time slices aim at. The page's frame without slices takes 35-50 ms on SwiftShader
+  /// (two cores), so a slice gets about 20 ms of drawing and no frame should pass 100 ms.
+  static constexpr double kAimSeconds = 0.055, kMostSeconds = 0.085;
+  /// SwiftShader draws about 400 000 triangles a second (three views of a million in 7 s): 5 000
+  /// take it some 12 ms, so even a slow machine's frames keep a view filling in.
+  static constexpr size_t kMinTriangles = 5000, kMaxTriangles = size_t(1) << 24;
+
+  size_t triangles = 0;           // in the next frame; 0: views drawn whole
+  double lastFrameSeconds = 0;    // the time of the last frame that drew a slice
+
+  /// The pacing after a frame that drew a slice and took `frameSeconds`.
+  SlicePacing after(double frameSeconds) const;
+};
+
 class ViewWorker;
 
 class ViewImages {
@@ -65,19 +83,12 @@ class ViewImages {
   void useWorker(std::unique_ptr<GlContext> context, std::function<void()> wake);
   bool hasWorker() const { return worker_ != nullptr; }
   /// Without a render thread (the page): draws each view in slices across frames, about
-  /// `trianglesPerFrame` triangles of all views in a frame to begin with, then adapted to the frame
-  /// times (halved after a frame over 2 × kSliceFrameSeconds, a quarter more after one under it,
-  /// never under kMinSliceTriangles); a view shows its last image, busy, until its new one is
-  /// complete. 0: each view whole in the frame that asks for it (the default).
+  /// `trianglesPerFrame` triangles of all views in a frame to begin with, then paced by the frame
+  /// times (SlicePacing); a view shows its last image, busy, until its new one is complete.
+  /// 0: each view whole in the frame that asks for it (the default).
   void drawInSlices(size_t trianglesPerFrame);
   /// Triangles the views may draw in the next frame (drawInSlices), as adapted to the frame times.
-  size_t sliceTriangles() const { return trianglesPerFrame_; }
-  /// The frame time slices aim at: SwiftShader runs the draw calls after the frame that made them,
-  /// and the frame after waits for them, so a slice's cost shows in the next frame's time.
-  static constexpr double kSliceFrameSeconds = 0.05;
-  /// SwiftShader draws about 400 000 triangles a second (three views of a million in 7 s): 10 000
-  /// take it some 25 ms, so even a slow machine's frames keep a view filling in.
-  static constexpr size_t kMinSliceTriangles = 10000, kMaxSliceTriangles = size_t(1) << 24;
+  size_t sliceTriangles() const { return pacing_.triangles; }
 
   /// A new frame: no view asked for yet; the frame may wait a little for the render thread.
   void beginFrame();
@@ -152,7 +163,7 @@ class ViewImages {
   ViewRenderer& renderer_;
   ViewTargets targets_;           // the images drawn in the window's thread
   ViewTargets back_;              // drawn in slices: the images not complete yet (swapped in when they are)
-  size_t trianglesPerFrame_ = 0;  // drawInSlices; 0: whole
+  SlicePacing pacing_;            // drawInSlices
   size_t trianglesLeft_ = 0;      // in this frame
   bool slicedLastFrame_ = false;  // the last frame drew a slice: its time tells what one costs
   bool slicedThisFrame_ = false;
