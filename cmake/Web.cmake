@@ -10,8 +10,11 @@
 # app/ build unchanged.
 
 # vplab reports bad input by exceptions (vplab::Error) everywhere: emscripten catches none unless asked.
-add_compile_options(-fexceptions)
-add_link_options(-fexceptions)
+# WebAssembly's own exceptions (Chrome 95, Firefox 100, Safari 15.2 and later), not emscripten's
+# JavaScript ones: those route every call that may throw through a JavaScript wrapper (invoke_*), and
+# the page spent half of building the NPC view of a million triangles in them.
+add_compile_options(-fwasm-exceptions)
+add_link_options(-fwasm-exceptions)
 
 set(VPLAB_IMGUI_SOURCE "" CACHE PATH "Dear ImGui 1.86's unpacked source (Debian's source package imgui)")
 if(NOT EXISTS "${VPLAB_IMGUI_SOURCE}/imgui.cpp")

@@ -37,7 +37,7 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title, bool deb
   if (!window_) {
     glfwTerminate();
     throw Error("this browser gives the page no WebGL2 context (vplab needs WebGL2: a current Chrome, Edge, "
-                "Firefox or Safari 15 and later, with hardware acceleration or its software fallback on)");
+                "Firefox or Safari 15.2 and later, with hardware acceleration or its software fallback on)");
   }
   glfwMakeContextCurrent(window_);
   try {

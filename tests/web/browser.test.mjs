@@ -6,8 +6,8 @@
 // desktop program. The tests run in order in one browser and share what they changed: (b) drags the
 // camera, (c) reopens that camera from its URL, (d) fails to open a file over it, (e) saves it; (f)
 // leaves unsaved changes and comes back, (g) drops a scene file, (h) changes the window's size and
-// pixel ratio. Each fresh page opens in a browser context of its own (another visitor: its own
-// localStorage).
+// pixel ratio; (o), last, opens the page in a browser without WebAssembly's exceptions. Each fresh
+// page opens in a browser context of its own (another visitor: its own localStorage).
 // A failed picture comparison writes actual, expected and difference PNGs into VPLAB_WEB_ARTIFACTS
 // (default $TMPDIR/vplab-web-artifacts) and names them.
 
@@ -812,5 +812,22 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     const screenshot = await page.screenshot({ type: 'png' });
     assert.ok(distinctColours(screenshot) >= 32, 'the resized page is blank');
     assertCleanConsole(pageConsole, 'at ratio 2 and after the resize');
+  });
+
+  test('(o) a browser whose WebAssembly has no exceptions is told which browsers have them, and the lab does not start', { timeout: 60_000 }, async () => {
+    await page?.close();
+    await context?.close();
+    context = await browser.createBrowserContext();
+    page = await context.newPage();
+    // The page's feature test is WebAssembly.validate of a module with a `try` block (index.html).
+    await page.evaluateOnNewDocument(() => { WebAssembly.validate = () => false; });
+    const before = server.requests.length;
+    await page.goto(server.url, { waitUntil: 'load' });
+    await page.waitForFunction(() => document.getElementById('vplab-message').className === 'error', { timeout: 20_000 });
+    const said = await page.$eval('#vplab-message', (m) => m.textContent);
+    assert.match(said, /no exceptions.*Chrome or Edge 95, Firefox 100 and Safari 15\.2/);
+    await new Promise((r) => setTimeout(r, 1000));
+    const asked = server.requests.slice(before).map((r) => r.path);
+    assert.ok(!asked.some((u) => u.includes('vplab.js')), `the lab was started anyway: ${asked.join(', ')}`);
   });
 });
