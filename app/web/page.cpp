@@ -248,6 +248,7 @@ struct Page {
     nlohmann::json j;
     j["frames"] = frames;
     j["viewsDrawn"] = viewer.viewsDrawn();
+    j["viewsBusy"] = viewer.viewsNotReady().size();  // still being drawn (or the run they show)
     j["title"] = viewer.title();
     j["scene"] = s.doc.path().string();
     j["dirty"] = s.doc.dirty();

@@ -3,8 +3,9 @@
 // in the page's loader worker (loader-worker.js): the page goes on drawing frames meanwhile, shows the
 // desktop's Loading window with its progress bar, and Cancel keeps the open scene. The test holds the
 // worker's module at the server until the test lets it go, so the load is under way for as long as
-// the test needs, on any machine. Then the scene is opened for real, and the longest frame while it
-// loads is measured and reported (the frames' intervals, requestAnimationFrame).
+// the test needs, on any machine. Then the scene is opened for real, and the longest frame until its
+// views are complete is measured and reported (the frames' intervals, requestAnimationFrame), beside
+// the longest frame of the default scene's views drawn whole in the same browser.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 
@@ -21,6 +22,25 @@ async function waitForState(page, predicate, what, timeout = 30_000) {
     if (Date.now() - begin > timeout) throw new Error(`${what}: not within ${timeout} ms (status "${state.status}")`);
     await new Promise((resolve) => setTimeout(resolve, 50));
   }
+}
+
+/** Runs `action` and returns the page's frame intervals meanwhile (requestAnimationFrame, ms). */
+async function framesWhile(page, action) {
+  await page.evaluate(() => {
+    window.__frames = [];
+    window.__stopFrames = false;
+    let last = performance.now();
+    const tick = (now) => {
+      window.__frames.push(now - last);
+      last = now;
+      if (!window.__stopFrames) requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+  });
+  const begin = Date.now();
+  await action();
+  const intervals = await page.evaluate(() => { window.__stopFrames = true; return window.__frames; });
+  return { intervals, seconds: (Date.now() - begin) / 1000 };
 }
 
 test('a large scene loads in the worker while the page answers; Cancel keeps the open scene', { timeout: 300_000 }, async (t) => {
@@ -54,34 +74,44 @@ test('a large scene loads in the worker while the page answers; Cancel keeps the
     await new Promise((resolve) => setTimeout(resolve, 3000));
     assert.equal((await vplabState(page)).scene, before.scene, 'the cancelled load landed after all');
 
-    // Now for real, every frame's interval recorded from the link to the scene shown.
-    await page.evaluate(() => {
-      window.__frames = [];
-      let last = performance.now();
-      const tick = (now) => {
-        window.__frames.push(now - last);
-        last = now;
-        if (!window.__stopFrames) requestAnimationFrame(tick);
-      };
-      requestAnimationFrame(tick);
-      window.vplab.setHash('#scene=large-mesh');
+    // For comparison, in the same browser: the frames of the default scene while P switches its
+    // projection ten times (each frame draws the three views whole). On SwiftShader (the CPU draws
+    // what a GPU would) these pass 100 ms as well.
+    // (A page of its own: P changes the scene, and the test's page would then ask about it.)
+    const { page: other } = await openPage(browser, `${server.url}index.html`);
+    await waitFrames(other);
+    const baseline = await framesWhile(other, async () => {
+      for (let i = 0; i < 10; ++i) {
+        await other.keyboard.press('p');
+        await new Promise((resolve) => setTimeout(resolve, 200));
+      }
     });
-    const opened = await unlessPageFails(
-      waitForState(page, (s) => /large-mesh\.json$/.test(s.scene) && !s.loading, 'the large scene never opened', 120_000),
-      messages, 'opening the large scene');
-    const frames = await page.evaluate(() => { window.__stopFrames = true; return window.__frames; });
+    await other.close();
+    // Now for real, every frame's interval recorded from the link until the run and the three
+    // views of the sphere are complete.
+    let opened;
+    const frames = await framesWhile(page, async () => {
+      await page.evaluate(() => window.vplab.setHash('#scene=large-mesh'));
+      opened = await unlessPageFails(
+        waitForState(page, (s) => /large-mesh\.json$/.test(s.scene) && !s.loading, 'the large scene never opened', 120_000),
+        messages, 'opening the large scene');
+      await unlessPageFails(waitForState(page, (s) => s.run.polygons === 524288 && s.viewsBusy === 0,
+                                         'the views of the sphere were never complete', 180_000), messages, 'drawing the large scene');
+    });
     assert.ok(!opened.statusIsError, `the page said: ${opened.status}`);
-    // How many frames the real load takes depends on the machine (one second idle); that the page
-    // answers while it loads was asserted above, with the worker held. Here it is measured.
-    assert.ok(frames.length >= 1, 'no frame was drawn while the scene loaded');
-    const longest = Math.max(...frames);
-    t.diagnostic(`opening large-mesh: ${frames.length} frames, the longest ${longest.toFixed(0)} ms, ` +
-                 `${frames.filter((d) => d > 100).length} over 100 ms`);
-    console.log(`opening large-mesh: ${frames.length} frames, the longest ${longest.toFixed(0)} ms`);
-
-    // The mesh the worker built is the sphere with n = 1024: the pipeline's run of it, once complete.
-    const ran = await waitForState(page, (s) => s.run.polygons === 524288, 'the pipeline never ran the sphere', 60_000);
-    assert.equal(ran.run.vertices, 523266);
+    // How long the frames are depends on the machine; that the page answers while it loads was
+    // asserted above, with the worker held. Here it is measured and reported, and a frame that held
+    // the page for half a second (the whole scene read or drawn at once) fails.
+    const longest = Math.max(...frames.intervals);
+    const report = `opening large-mesh until its views are complete: ${frames.intervals.length} frames in ` +
+                   `${(frames.seconds).toFixed(1)} s, the longest ${longest.toFixed(0)} ms, ` +
+                   `${frames.intervals.filter((d) => d > 100).length} over 100 ms; ` +
+                   `pressing P in the default scene: the longest ${Math.max(...baseline.intervals).toFixed(0)} ms`;
+    t.diagnostic(report);
+    console.log(report);
+    assert.ok(longest < 500, report);
+    // The mesh the worker built is the sphere with n = 1024: the pipeline's run of it.
+    assert.equal((await vplabState(page)).run.vertices, 523266);
   } finally {
     release();
     await browser.close();
