@@ -85,7 +85,7 @@ void ViewImages::useWorker(std::unique_ptr<GlContext> context, std::function<voi
 
 void ViewImages::drawInSlices(size_t trianglesPerFrame) {
   if (worker_) throw Error("the views are drawn on a render thread: not in slices");
-  pacing_ = {trianglesPerFrame, 0};
+  pacing_ = {trianglesPerFrame};
   for (Slot& s : slots_) {  // an image under way is drawn again, as asked for next
     if (!s.slicing) continue;
     s.slicing.reset();
@@ -94,16 +94,12 @@ void ViewImages::drawInSlices(size_t trianglesPerFrame) {
 }
 
 SlicePacing SlicePacing::after(double frameSeconds) const {
-  // AIMD, as TCP paces what it sends: a frame over kMostSeconds halves the slices; two frames in a
-  // row under kAimSeconds let them grow by an eighth. Two, because SwiftShader runs a frame's draw
-  // calls after the frame has ended: the frame after waits for them, so a slice's cost shows one
-  // frame late, and growing on one fast frame would grow twice before the cost is seen.
-  SlicePacing next{triangles, frameSeconds};
+  // AIMD, as TCP paces what it sends: cut hard when a frame took far longer than aimed at, grow
+  // gently when under it.
   if (frameSeconds > kMostSeconds)  // down to kMinTriangles (a smaller start stays)
-    next.triangles = std::max(std::min(kMinTriangles, triangles), triangles / 2);
-  else if (frameSeconds < kAimSeconds && lastFrameSeconds < kAimSeconds)
-    next.triangles = std::min(kMaxTriangles, triangles + triangles / 8);
-  return next;
+    return {std::max(std::min(kMinTriangles, triangles), triangles / 2)};
+  if (frameSeconds < kAimSeconds) return {std::min(kMaxTriangles, triangles + triangles / 4)};
+  return *this;
 }
 
 void ViewImages::beginFrame() {

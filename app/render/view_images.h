@@ -50,18 +50,19 @@ GLuint drawViewInto(GlContext& context, ViewRenderer& renderer, ViewTargets& tar
 GLuint showCameraView(GlContext& context, ViewTargets& targets, const ViewRequest& r);
 
 /// How many triangles the views drawn in slices (the page) may draw in a frame, adapted to the frame
-/// times (AIMD: halved after a frame over kMostSeconds, an eighth more after two frames in a row
-/// under kAimSeconds, never under kMinTriangles unless it started lower).
+/// times (AIMD: halved after a frame over kMostSeconds, a quarter more after one under kAimSeconds,
+/// never under kMinTriangles unless it started lower).
 struct SlicePacing {
-  /// The frame time slices aim at. The page's frame without slices takes 35-50 ms on SwiftShader
-  /// (two cores), so a slice gets about 20 ms of drawing and no frame should pass 100 ms.
-  static constexpr double kAimSeconds = 0.055, kMostSeconds = 0.085;
-  /// SwiftShader draws about 400 000 triangles a second (three views of a million in 7 s): 5 000
-  /// take it some 12 ms, so even a slow machine's frames keep a view filling in.
-  static constexpr size_t kMinTriangles = 5000, kMaxTriangles = size_t(1) << 24;
+  /// The frame time slices aim at. SwiftShader runs the draw calls after the frame that made them,
+  /// and the frame after waits for them, so a slice's cost shows in the next frame's time. (Aiming at
+  /// 55-85 ms and growing only after two fast frames in a row gave as long a longest frame on
+  /// large-mesh, and views complete in 25-30 s instead of 12-24: README "Large scenes in the page".)
+  static constexpr double kAimSeconds = 0.05, kMostSeconds = 0.1;
+  /// SwiftShader draws about 400 000 triangles a second (three views of a million in 7 s): 10 000
+  /// take it some 25 ms, so even a slow machine's frames keep a view filling in.
+  static constexpr size_t kMinTriangles = 10000, kMaxTriangles = size_t(1) << 24;
 
-  size_t triangles = 0;           // in the next frame; 0: views drawn whole
-  double lastFrameSeconds = 0;    // the time of the last frame that drew a slice
+  size_t triangles = 0;  // in the next frame; 0: views drawn whole
 
   /// The pacing after a frame that drew a slice and took `frameSeconds`.
   SlicePacing after(double frameSeconds) const;
