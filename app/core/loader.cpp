@@ -102,24 +102,30 @@ void SceneLoader::deliver(uint64_t id, BuiltMeshes meshes, std::string error) {
   if (!job_ || job_->id != id || job_->done.load()) return;  // cancelled or replaced: dropped
   Job& j = *job_;
   if (!error.empty()) {
-    j.result.error = error;
+    j.result.error = std::move(error);
+    j.text.clear();
   } else {
-    try {
-      Scene scene = parseScene(j.text, j.source, j.baseDir, kDefaultLimits, &meshes);
-      if (j.object) {
-        if (scene.objects.size() != 1) throw Error(j.source + ": the worker read " + std::to_string(scene.objects.size()) + " objects");
-        j.object->mesh = scene.objects[0].mesh;
-        j.result.object = std::move(j.object);
-      } else {
-        scene.path = j.file;
-        j.result.scene = std::move(scene);
-      }
-    } catch (const Error& e) {
-      j.result.error = e.what();
-    }
+    j.arrived = std::move(meshes);
   }
-  j.text.clear();
   j.done.store(true);
+}
+
+void SceneLoader::readWithArrivedMeshes(Job& j) {
+  try {
+    Scene scene = parseScene(j.text, j.source, j.baseDir, kDefaultLimits, &*j.arrived);
+    if (j.object) {
+      if (scene.objects.size() != 1) throw Error(j.source + ": the worker read " + std::to_string(scene.objects.size()) + " objects");
+      j.object->mesh = scene.objects[0].mesh;
+      j.result.object = std::move(j.object);
+    } else {
+      scene.path = j.file;
+      j.result.scene = std::move(scene);
+    }
+  } catch (const Error& e) {
+    j.result.error = e.what();
+  }
+  j.arrived.reset();
+  j.text.clear();
 }
 
 void SceneLoader::run(std::filesystem::path file, std::function<void(Loaded&)> work) {
@@ -178,6 +184,7 @@ std::optional<SceneLoader::Loaded> SceneLoader::poll() {
   if (!job_ || !job_->done.load(std::memory_order_acquire)) return std::nullopt;
   if (job_->worker.joinable()) job_->worker.join();
   std::unique_ptr<Job> job = std::move(job_);
+  if (job->arrived) readWithArrivedMeshes(*job);
   return std::move(job->result);
 }
 

@@ -48,6 +48,8 @@ class SceneLoader {
   bool remote() const { return bool(remote_); }
   /// The worker's answer to request `id`: the meshes of its text's objects in order, or the error
   /// that stopped it. An answer to a request no longer under way (cancelled, replaced) is dropped.
+  /// It is only kept here: the text is read again with the meshes in the next poll, so the answer's
+  /// arrival (the worker's message) and that reading are two tasks, not one long one.
   void deliver(uint64_t id, BuiltMeshes meshes, std::string error);
 
   /// Starts reading `file` (a load already running is cancelled).
@@ -78,6 +80,7 @@ class SceneLoader {
     std::string text, source;
     std::filesystem::path baseDir;
     std::optional<SceneObject> object;  // startObject's (its mesh comes back as the text's only one)
+    std::optional<BuiltMeshes> arrived;  // the worker's meshes (deliver), read with the text in poll
     std::chrono::steady_clock::time_point started;
     std::atomic<bool> done{false};
     Loaded result;  // written by the worker before `done`
@@ -91,6 +94,7 @@ class SceneLoader {
   void reap();
   void run(std::filesystem::path file, std::function<void(Loaded&)> work);
   void send(std::unique_ptr<Job> job);
+  static void readWithArrivedMeshes(Job& j);
 };
 
 }  // namespace vplab

@@ -79,10 +79,11 @@ struct Page {
   std::string storedAutosave;  // what this tab's localStorage key holds (empty: nothing)
   std::vector<std::pair<std::filesystem::path, std::string>> kept;  // offered kept scenes: file, key
   std::string reply;  // the last string handed to JavaScript (valid until the next call)
-  // The loader worker's answer as it arrives, mesh by mesh (vplab_loader_mesh), for request arrivingId.
+  // The loader worker's answer as it arrives, mesh by mesh (vplab_loader_mesh) and each mesh's arrays
+  // a part at a time (vplab_loader_part), for request arrivingId.
   uint64_t arrivingId = 0;
-  BuiltMeshes arriving;
-  std::array<uint32_t, 4> arrivingAt{};  // where JavaScript copies the current mesh's four arrays
+  std::vector<std::shared_ptr<Mesh>> arriving;
+  std::vector<std::array<size_t, 4>> arrivingCounts;  // each mesh's arrays' announced sizes (elements)
 
   Page() {
     auto chooser = std::make_unique<page::BrowserFiles>();
@@ -357,14 +358,15 @@ EMSCRIPTEN_KEEPALIVE void vplab_wheel(Page* p, double x, double y, double steps)
 
 /// The address's fragment changed (a link pasted, the back button): shown unless it is the page's own.
 /// The loader worker's answer to request `id` (index.html), one mesh at a time and in order: makes
-/// object i's mesh with arrays of these sizes in bytes (positions, indices, face starts, corner
-/// normals) and returns where JavaScript copies them (four addresses), or null when the sizes cannot
-/// be a mesh's within the limits (checked before allocating; the answer is then an error).
-EMSCRIPTEN_KEEPALIVE uint32_t* vplab_loader_mesh(Page* p, double id, int i, double positions, double indices,
-                                                 double faceStarts, double normals) {
+/// object i's mesh for arrays of these sizes in bytes (positions, indices, face starts, corner
+/// normals), reserved but empty (vplab_loader_part fills them). 0 when the sizes cannot be a mesh's
+/// within the limits (checked before allocating; the answer is then an error).
+EMSCRIPTEN_KEEPALIVE int vplab_loader_mesh(Page* p, double id, int i, double positions, double indices,
+                                           double faceStarts, double normals) {
   if (uint64_t(id) != p->arrivingId) {
     p->arrivingId = uint64_t(id);
     p->arriving.clear();
+    p->arrivingCounts.clear();
   }
   const vplab::Limits& l = vplab::kDefaultLimits;
   auto count = [](double bytes, double each, size_t most) -> std::optional<size_t> {
@@ -373,27 +375,63 @@ EMSCRIPTEN_KEEPALIVE uint32_t* vplab_loader_mesh(Page* p, double id, int i, doub
   };
   const auto v = count(positions, sizeof(vplab::Vec3), l.vertices), c = count(indices, 4, l.corners),
              f = count(faceStarts, 4, l.faces + 1), n = count(normals, sizeof(vplab::Vec3), l.corners);
-  if (i != int(p->arriving.size()) || i >= 100000 || !v || !c || !f || !n) return nullptr;
+  if (i != int(p->arriving.size()) || i >= 100000 || !v || !c || !f || !n) return 0;
   auto mesh = std::make_shared<vplab::Mesh>();
-  mesh->positions.resize(*v);
-  mesh->indices.resize(*c);
-  mesh->faceStart.resize(*f);
-  mesh->cornerNormals.resize(*n);
-  p->arrivingAt = {uint32_t(uintptr_t(mesh->positions.data())), uint32_t(uintptr_t(mesh->indices.data())),
-                   uint32_t(uintptr_t(mesh->faceStart.data())), uint32_t(uintptr_t(mesh->cornerNormals.data()))};
+  mesh->positions.reserve(*v);
+  mesh->indices.reserve(*c);
+  mesh->faceStart.clear();  // a new Mesh's list holds face 0's start: it comes with the others
+  mesh->faceStart.reserve(*f);
+  mesh->cornerNormals.reserve(*n);
+  p->arrivingCounts.push_back({*v, *c, *f, *n});
   p->arriving.push_back(std::move(mesh));
-  return p->arrivingAt.data();
+  return 1;
+}
+
+/// The next `bytes` of array k (0 positions, 1 indices, 2 face starts, 3 corner normals) of the mesh
+/// vplab_loader_mesh made last for request `id`: grows the array by them and returns where
+/// JavaScript copies them. A large mesh arrives in parts of a few MB, each in a task of its own, so
+/// that no frame waits for 100 MB to be copied. 0 for another request, a part that is no whole
+/// number of elements or one past the announced size.
+EMSCRIPTEN_KEEPALIVE uint32_t vplab_loader_part(Page* p, double id, int k, double bytes) {
+  if (uint64_t(id) != p->arrivingId || p->arriving.empty() || k < 0 || k > 3) return 0;
+  vplab::Mesh& mesh = *p->arriving.back();
+  const size_t announced = p->arrivingCounts.back()[size_t(k)];
+  auto grow = [&](auto& array) -> uint32_t {
+    using T = typename std::decay_t<decltype(array)>::value_type;
+    if (!(bytes > 0) || std::fmod(bytes, double(sizeof(T))) != 0) return 0;
+    const size_t more = size_t(bytes / sizeof(T));
+    if (more > announced - array.size()) return 0;
+    const size_t at = array.size();
+    array.resize(at + more);  // within the reserved capacity: no copy of what came before
+    return uint32_t(uintptr_t(array.data() + at));
+  };
+  switch (k) {
+    case 0: return grow(mesh.positions);
+    case 1: return grow(mesh.indices);
+    case 2: return grow(mesh.faceStart);
+    default: return grow(mesh.cornerNormals);
+  }
 }
 
 /// The loader worker's answer is complete: its meshes (vplab_loader_mesh) or its error go to the
 /// loader, which drops them when the load was cancelled meanwhile.
 EMSCRIPTEN_KEEPALIVE void vplab_loader_done(Page* p, double id, const char* error, int meshes) {
   vplab::BuiltMeshes built;
-  if (uint64_t(id) == p->arrivingId) built = std::move(p->arriving);
+  bool whole = true;  // every array as long as announced (JavaScript stops a copy it cannot finish)
+  if (uint64_t(id) == p->arrivingId)
+    for (size_t m = 0; m < p->arriving.size(); ++m) {
+      const vplab::Mesh& mesh = *p->arriving[m];
+      const std::array<size_t, 4> got{mesh.positions.size(), mesh.indices.size(), mesh.faceStart.size(),
+                                      mesh.cornerNormals.size()};
+      whole = whole && got == p->arrivingCounts[m];
+      built.push_back(std::move(p->arriving[m]));
+    }
   p->arriving.clear();
+  p->arrivingCounts.clear();
   std::string e = error;
   if (e.empty() && int(built.size()) != meshes) e = "the page's loader sent " + std::to_string(meshes) + " meshes; " +
                                                     std::to_string(built.size()) + " of them fit the limits";
+  if (e.empty() && !whole) e = "the page's loader sent a mesh in part";
   p->viewer.session().loader().deliver(uint64_t(id), std::move(built), std::move(e));
   p->input.changed = true;
 }

@@ -101,7 +101,9 @@ test('a large scene loads in the worker while the page answers; Cancel keeps the
     assert.ok(!opened.statusIsError, `the page said: ${opened.status}`);
     // How long the frames are depends on the machine; that the page answers while it loads was
     // asserted above, with the worker held. Here it is measured and reported, and a frame that held
-    // the page for half a second (the whole scene read or drawn at once) fails.
+    // the page for half a second (the whole scene read or drawn at once: 1.75 s before the slices)
+    // fails, or on a machine so busy that the default scene's frames pass 250 ms, one over twice
+    // their longest.
     const longest = Math.max(...frames.intervals);
     const report = `opening large-mesh until its views are complete: ${frames.intervals.length} frames in ` +
                    `${(frames.seconds).toFixed(1)} s, the longest ${longest.toFixed(0)} ms, ` +
@@ -109,7 +111,7 @@ test('a large scene loads in the worker while the page answers; Cancel keeps the
                    `pressing P in the default scene: the longest ${Math.max(...baseline.intervals).toFixed(0)} ms`;
     t.diagnostic(report);
     console.log(report);
-    assert.ok(longest < 500, report);
+    assert.ok(longest < Math.max(500, 2 * Math.max(...baseline.intervals)), report);
     // The mesh the worker built is the sphere with n = 1024: the pipeline's run of it.
     assert.equal((await vplabState(page)).run.vertices, 523266);
   } finally {
