@@ -339,10 +339,11 @@ void GlBackend::uploadPolygons(const draw::Fill& fill, const std::vector<Polygon
     out = static_cast<glm::vec3*>(gl_.MapBufferRange(GL_ARRAY_BUFFER, 0, bytes, GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_RANGE_BIT));
   }
   if (!out) throw Error("could not map the polygon buffer (" + std::to_string(bytes) + " bytes)");
+  std::vector<Vec3> scratch;  // a polygon worked out from the run (PolygonSet::clippedNpcOf)
   for (const PolygonSegment& segment : segments) {
     const draw::PolygonSet& set = fill.polygons[segment.set];
     for (size_t k = segment.begin; k < segment.end; ++k) {
-      const std::span<const Vec3> poly = set.polygon(k);
+      const std::span<const Vec3> poly = set.polygon(k, scratch);
       if (poly.size() < 3) continue;
       Vec3 n{0};  // Newell's normal
       for (size_t i = 0; i < poly.size(); ++i) {
@@ -382,7 +383,7 @@ bool GlBackend::drawPolygons(const draw::Fill& fill, const ViewCamera& camera, C
     const draw::PolygonSet& s = fill.polygons[set];
     PolygonSegment segment{set, k, k, vertices, 0};
     for (; k < s.polygonCount(); ++k) {
-      const size_t n = s.polygon(k).size(), t = n >= 3 ? n - 2 : 0;
+      const size_t n = s.polygonSize(k), t = n >= 3 ? n - 2 : 0;
       if (t > triangles && (vertices > 0 || triangles == 0)) {
         more = true;
         break;

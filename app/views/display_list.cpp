@@ -1,5 +1,7 @@
 #include "app/views/display_list.h"
 
+#include "pipeline/pipeline.h"
+
 namespace vplab::draw {
 
 std::string_view toString(Space s) {
@@ -11,6 +13,21 @@ std::string_view toString(Space s) {
     case Space::pixels: return "pixels";
   }
   return "?";
+}
+
+size_t PolygonSet::polygonSize(size_t i) const {
+  if (clippedNpcOf) return clippedNpcOf->clippedFace(faces[i]).size();
+  return ends[i] - (i ? ends[i - 1] : 0);
+}
+
+std::span<const Vec3> PolygonSet::polygon(size_t i, std::vector<Vec3>& scratch) const {
+  if (!clippedNpcOf) {
+    const uint32_t begin = i ? ends[i - 1] : 0;
+    return {points.data() + begin, ends[i] - begin};
+  }
+  scratch.clear();
+  for (uint32_t ref : clippedNpcOf->clippedFace(faces[i])) scratch.push_back(clippedNpcOf->clippedNpc(ref));
+  return scratch;
 }
 
 void Lines::polyline(std::span<const Vec3> points, bool closed, const glm::vec4& color) {

@@ -69,24 +69,31 @@ struct MeshInstance {
   const ObjectRun* run = nullptr;
 };
 
-/// Polygons made on the CPU (the clipper's output), in flat arrays: polygon i is
-/// points[ends[i − 1] .. ends[i]), all of one colour.
+/// Polygons made on the CPU (the clipper's output), all of one colour: in flat arrays (polygon i is
+/// points[ends[i − 1] .. ends[i])), or by reference to a run's clipped faces in NPC, read when drawn
+/// (the NPC view of a million triangles copies 4 MB of face numbers instead of 72 MB of points).
 struct PolygonSet {
   glm::vec3 color{1, 1, 1};
   std::vector<Vec3> points;
   std::vector<uint32_t> ends;
+  /// Set: polygon i is clipped face faces[i] of this run, divided by w (NPC). Points into the run
+  /// the list was built from, which must outlive the list.
+  const ObjectRun* clippedNpcOf = nullptr;
+  std::vector<uint32_t> faces;
+
   void add(std::span<const Vec3> polygon) {
     points.insert(points.end(), polygon.begin(), polygon.end());
     ends.push_back(uint32_t(points.size()));
   }
-  size_t polygonCount() const { return ends.size(); }
-  std::span<const Vec3> polygon(size_t i) const {
-    const uint32_t begin = i ? ends[i - 1] : 0;
-    return {points.data() + begin, ends[i] - begin};
-  }
+  size_t polygonCount() const { return clippedNpcOf ? faces.size() : ends.size(); }
+  size_t polygonSize(size_t i) const;
+  /// Polygon i's points: in `points`, or (clippedNpcOf) worked out into `scratch`.
+  std::span<const Vec3> polygon(size_t i, std::vector<Vec3>& scratch) const;
   void clear() {
     points.clear();
     ends.clear();
+    clippedNpcOf = nullptr;
+    faces.clear();
   }
 };
 

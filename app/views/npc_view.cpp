@@ -80,26 +80,23 @@ void npcView(const ViewInput& in, DisplayList& list) {
   std::vector<Vec3> poly;  // reused: no allocation per polygon
   for (size_t k = 0; k < run.objects.size(); ++k) {
     const ObjectRun& o = run.objects[k];
-    if (keepInside) {  // sized at once: grown by doubling, a million triangles' polygons took 3 times as long
-      size_t points = 0, polygons = 0;
-      for (size_t f = 0; f < o.faceCount(); ++f) {
-        const size_t n = o.clippedFace(f).size();
-        points += n;
-        polygons += n > 0;
-      }
-      inside[k].points.reserve(points);
-      inside[k].ends.reserve(polygons);
+    if (keepInside) {  // the clipped faces by number: their points are read from the run when drawn
+      inside[k].clippedNpcOf = &o;
+      inside[k].faces.reserve(o.faceCount());
+      inside[k].color = glm::vec3(o.color);
     }
-    if (keepInside) inside[k].color = glm::vec3(o.color);
     if (keepFaded) faded[k].color = glm::vec3(o.color);
     const glm::vec4 c = theme::ink(pal, glm::vec4(glm::vec3(o.color), 1.f));
     for (size_t f = 0; f < o.faceCount(); ++f) {
       const auto face = o.clippedFace(f);
       if (!face.empty()) {
-        poly.clear();
-        for (uint32_t ref : face) poly.push_back(o.clippedNpc(ref));
+        if (keepInside) inside[k].faces.push_back(uint32_t(f));
         // Only clipped faces have new edges; only the wireframe styles draw the others.
         const bool clipped = ov.newEdges && o.fate[f] == Fate::clipped;
+        if (clipped || outlined) {
+          poly.clear();
+          for (uint32_t ref : face) poly.push_back(o.clippedNpc(ref));
+        }
         for (size_t i = 0; (clipped || outlined) && i < face.size(); ++i) {
           const Vec3 &a = poly[i], &b = poly[(i + 1) % poly.size()];
           if (clipped && o.isNewEdge(f, i)) {
@@ -112,7 +109,6 @@ void npcView(const ViewInput& in, DisplayList& list) {
           if (style == Style::hiddenLine)
             dashedOutlines.line(a, b, glm::vec4(glm::vec3(c), 0.8f), pal.edgeWidthPx, theme::kDashPx);
         }
-        if (keepInside) inside[k].add(poly);
       }
       if (ov.fadeOutside && o.fate[f] != Fate::accepted) {
         geometry::fadedNpcPolygon(o, f, scratch, poly);

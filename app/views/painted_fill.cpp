@@ -148,9 +148,10 @@ std::vector<PaintedPolygon> paintedPolygons(const Fill& fill, const DisplayList&
       painter.face(space, npcH, normal, m.color);
     }
   }
+  std::vector<Vec3> scratch;  // a polygon worked out from the run (PolygonSet::clippedNpcOf)
   for (const PolygonSet& s : fill.polygons)
     for (size_t i = 0; i < s.polygonCount(); ++i) {
-      const std::span<const Vec3> p = s.polygon(i);
+      const std::span<const Vec3> p = s.polygon(i, scratch);
       npcH.clear();
       for (const Vec3& q : p) npcH.push_back(proj.npcH(q));
       painter.face(p, npcH, newellNormal(p), glm::vec4(s.color, 1.f));

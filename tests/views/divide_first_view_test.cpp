@@ -53,7 +53,8 @@ TEST(DivideFirstView, PolygonsAreTheDivideFirstRunsInDc) {
       const auto refs = o.clippedFace(face);
       if (refs.size() < 3) continue;
       ASSERT_LT(i, set.polygonCount()) << o.name;
-      const auto polygon = set.polygon(i++);
+      std::vector<Vec3> scratch;
+      const auto polygon = set.polygon(i++, scratch);
       ASSERT_EQ(polygon.size(), refs.size()) << o.name << " face " << face;
       for (size_t v = 0; v < refs.size(); ++v) {
         const Vec3 dc = o.clippedDc(refs[v]);
@@ -101,7 +102,8 @@ TEST(DivideFirstView, APointBehindTheEyeLandsFlipped) {
   const PolygonSet& set = std::get<Fill>(list.batches[0]).polygons.at(0);
   ASSERT_EQ(set.polygonCount(), 1u);
   double lo = 1e9, hi = -1e9;
-  for (const Vec3& p : set.polygon(0)) {
+  std::vector<Vec3> scratch;
+  for (const Vec3& p : set.polygon(0, scratch)) {
     lo = std::min(lo, p.x);
     hi = std::max(hi, p.x);
     EXPECT_GE(p.x, 0);  // clipped to the window after the division, wrongly but inside

@@ -29,6 +29,19 @@ TEST(NpcView, FilledPolygonsAreTheClippersThenTheFadedRest) {
     EXPECT_EQ(inside.polygons[k].polygonCount(), visible) << o.name;
     EXPECT_LE(faded.polygons[k].polygonCount(), cut) << o.name;
     EXPECT_EQ(inside.polygons[k].color, glm::vec3(o.color));
+    // The clipper's polygons are the run's, by reference: polygon i is the i-th face left, in NPC.
+    EXPECT_EQ(inside.polygons[k].clippedNpcOf, &o) << o.name;
+    EXPECT_TRUE(inside.polygons[k].points.empty()) << o.name;
+    std::vector<Vec3> scratch;
+    size_t i = 0;
+    for (size_t face = 0; face < o.faceCount(); ++face) {
+      if (o.clippedFace(face).empty()) continue;
+      std::vector<Vec3> expected;
+      for (uint32_t ref : o.clippedFace(face)) expected.push_back(divideByW(o.clippedNpcH(ref)));
+      ASSERT_EQ(inside.polygons[k].polygonSize(i), expected.size()) << o.name << " face " << face;
+      const std::span<const Vec3> got = inside.polygons[k].polygon(i++, scratch);
+      EXPECT_EQ(std::vector<Vec3>(got.begin(), got.end()), expected) << o.name << " face " << face;
+    }
   }
   EXPECT_TRUE(inside.lit);
   ASSERT_EQ(inside.lights.size(), 1u);  // one white light by the observer's eye
@@ -57,6 +70,11 @@ TEST(NpcView, HiddenLineOutlinesEachEdgeOnceOverAnOccluder) {
   EXPECT_GT(visible.segments.size(), 0u);
 }
 
+// Where a polygon set keeps its polygons: the run's face numbers, or its own points.
+const void* storageOf(const PolygonSet& s) {
+  return s.clippedNpcOf ? static_cast<const void*>(s.faces.data()) : static_cast<const void*>(s.points.data());
+}
+
 // A frame of a large scene must not allocate its polygon arrays anew (as the old renderer kept them).
 TEST(NpcView, BuildingIntoThePreviousListKeepsThePolygonArrays) {
   Scene scene = defaultScene();
@@ -64,21 +82,21 @@ TEST(NpcView, BuildingIntoThePreviousListKeepsThePolygonArrays) {
   test::ViewFixture f(scene, Style::shaded);
   DisplayList list;
   npcView(f.input(), list);
-  std::vector<const Vec3*> before;
+  std::vector<const void*> before;
   for (const Fill* fill : test::batchesOf<Fill>(list))
-    for (const PolygonSet& s : fill->polygons) before.push_back(s.points.data());
+    for (const PolygonSet& s : fill->polygons) before.push_back(storageOf(s));
   ASSERT_EQ(before.size(), 2 * f.run.objects.size());
   npcView(f.input(), list);
-  std::vector<const Vec3*> after;
+  std::vector<const void*> after;
   for (const Fill* fill : test::batchesOf<Fill>(list))
-    for (const PolygonSet& s : fill->polygons) after.push_back(s.points.data());
+    for (const PolygonSet& s : fill->polygons) after.push_back(storageOf(s));
   EXPECT_EQ(after, before);
   // and the picture's NPC panel likewise
   Picture picture;
   buildPicture(ViewKind::all, f.input(), picture);
-  const Vec3* panel = std::get<Fill>(picture.panels[3].list.batches[0]).polygons[3].points.data();
+  const void* panel = storageOf(std::get<Fill>(picture.panels[3].list.batches[0]).polygons[3]);
   buildPicture(ViewKind::all, f.input(), picture);
-  EXPECT_EQ(std::get<Fill>(picture.panels[3].list.batches[0]).polygons[3].points.data(), panel);
+  EXPECT_EQ(storageOf(std::get<Fill>(picture.panels[3].list.batches[0]).polygons[3]), panel);
 }
 
 }  // namespace
