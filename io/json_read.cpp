@@ -2,6 +2,7 @@
 
 #include "pipeline/error.h"
 
+#include <cmath>
 #include <set>
 #include <string>
 #include <vector>
@@ -116,6 +117,70 @@ Json parseCheckedJson(std::string_view text, std::string_view source, int maxDep
     const auto [line, col] = lineAndColumn(text, builder.errorByte);
     throw Error(std::string(source) + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " + builder.error);
   }
+  return j;
+}
+
+// ---------------------------------------------------------------- JsonReader
+
+void JsonReader::fail(const std::string& path, const std::string& message) const {
+  throw Error(source + ": " + (path.empty() ? "/" : path) + ": " + message);
+}
+
+void JsonReader::object(const Json& j, const std::string& path, std::initializer_list<std::string_view> allowed) const {
+  if (!j.is_object()) fail(path, std::string("must be an object, not ") + j.type_name());
+  for (const auto& [key, value] : j.items()) {
+    bool ok = false;
+    for (std::string_view a : allowed) ok = ok || key == a;
+    if (ok) continue;
+    std::string list;
+    for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+    fail(path + "/" + key, "unknown key; allowed here: " + list);
+  }
+}
+
+const JsonReader::Json& JsonReader::required(const Json& j, const std::string& path, const char* key) const {
+  auto it = j.find(key);
+  if (it == j.end()) fail(path, std::string("missing required key \"") + key + "\"");
+  return *it;
+}
+
+double JsonReader::number(const Json& j, const std::string& path, double lo, double hi) const {
+  if (!j.is_number()) fail(path, std::string("must be a number, not ") + j.type_name());
+  const double v = j.get<double>();
+  if (!std::isfinite(v)) fail(path, "must be finite");
+  if (v < lo || v > hi) fail(path, format(v) + " is out of range [" + format(lo) + ", " + format(hi) + "]");
+  return v;
+}
+
+int JsonReader::integer(const Json& j, const std::string& path, int lo, int hi) const {
+  auto range = [&] { return " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]"; };
+  if (!j.is_number_integer()) fail(path, std::string("must be an integer, not ") + j.type_name());
+  if (j.is_number_unsigned() && j.get<uint64_t>() > uint64_t(std::numeric_limits<long long>::max()))
+    fail(path, std::to_string(j.get<uint64_t>()) + range());  // would wrap around as a signed number
+  const auto v = j.get<long long>();
+  if (v < lo || v > hi) fail(path, std::to_string(v) + range());
+  return int(v);
+}
+
+Vec3 JsonReader::vec3(const Json& j, const std::string& path, double lo, double hi) const {
+  if (!j.is_array() || j.size() != 3)
+    fail(path, std::string("must be an array of 3 numbers, not ") +
+                   (j.is_array() ? "an array of " + std::to_string(j.size()) : std::string(j.type_name())));
+  return {number(j[0], path + "/0", lo, hi), number(j[1], path + "/1", lo, hi), number(j[2], path + "/2", lo, hi)};
+}
+
+std::string JsonReader::string(const Json& j, const std::string& path) const {
+  if (!j.is_string()) fail(path, std::string("must be a string, not ") + j.type_name());
+  return j.get<std::string>();
+}
+
+bool JsonReader::boolean(const Json& j, const std::string& path) const {
+  if (!j.is_boolean()) fail(path, std::string("must be true or false, not ") + j.type_name());
+  return j.get<bool>();
+}
+
+const JsonReader::Json& JsonReader::array(const Json& j, const std::string& path) const {
+  if (!j.is_array()) fail(path, std::string("must be an array, not ") + j.type_name());
   return j;
 }
 

@@ -1,6 +1,6 @@
-// Index: 0 parsing (io/json_read.h)  1 reading helpers (types, ranges, unknown keys)
-//        2 reading the sections  3 writing
+// Index: 0 parsing (io/json_read.h: the tree and the reading helpers)  2 reading the sections  3 writing
 #include "io/scene_io.h"
+#include "io/scene_parts.h"
 #include "io/build_mesh.h"
 
 #include "pipeline/error.h"
@@ -22,81 +22,9 @@ namespace vplab {
 namespace {
 
 using Json = nlohmann::ordered_json;
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using Reader = JsonReader;
 
 // ---------------------------------------------------------------- 0 parsing
-
-// ---------------------------------------------------------------- 1 reading helpers
-
-/// Reads JSON values at a path, failing with "SOURCE: /path: message".
-struct Reader {
-  std::string source;
-
-  [[noreturn]] void fail(const std::string& path, const std::string& message) const {
-    throw Error(source + ": " + (path.empty() ? "/" : path) + ": " + message);
-  }
-
-  void object(const Json& j, const std::string& path, std::initializer_list<std::string_view> allowed) const {
-    if (!j.is_object()) fail(path, std::string("must be an object, not ") + j.type_name());
-    for (const auto& [key, value] : j.items()) {
-      bool ok = false;
-      for (std::string_view a : allowed) ok = ok || key == a;
-      if (ok) continue;
-      std::string list;
-      for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-      fail(path + "/" + key, "unknown key; allowed here: " + list);
-    }
-  }
-
-  const Json& required(const Json& j, const std::string& path, const char* key) const {
-    auto it = j.find(key);
-    if (it == j.end()) fail(path, std::string("missing required key \"") + key + "\"");
-    return *it;
-  }
-
-  double number(const Json& j, const std::string& path, double lo = -kInf, double hi = kInf) const {
-    if (!j.is_number()) fail(path, std::string("must be a number, not ") + j.type_name());
-    const double v = j.get<double>();
-    if (!std::isfinite(v)) fail(path, "must be finite");
-    if (v < lo || v > hi) fail(path, format(v) + " is out of range [" + format(lo) + ", " + format(hi) + "]");
-    return v;
-  }
-
-  int integer(const Json& j, const std::string& path, int lo, int hi) const {
-    auto range = [&] { return " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]"; };
-    if (!j.is_number_integer()) fail(path, std::string("must be an integer, not ") + j.type_name());
-    if (j.is_number_unsigned() && j.get<uint64_t>() > uint64_t(std::numeric_limits<long long>::max()))
-      fail(path, std::to_string(j.get<uint64_t>()) + range());  // would wrap around as a signed number
-    const auto v = j.get<long long>();
-    if (v < lo || v > hi)
-      fail(path, std::to_string(v) + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-    return int(v);
-  }
-
-  Vec3 vec3(const Json& j, const std::string& path, double lo = -kInf, double hi = kInf) const {
-    if (!j.is_array() || j.size() != 3)
-      fail(path, std::string("must be an array of 3 numbers, not ") +
-                     (j.is_array() ? "an array of " + std::to_string(j.size()) : std::string(j.type_name())));
-    return {number(j[0], path + "/0", lo, hi), number(j[1], path + "/1", lo, hi), number(j[2], path + "/2", lo, hi)};
-  }
-
-  Vec3 color(const Json& j, const std::string& path) const { return vec3(j, path, 0.0, 1.0); }
-
-  std::string string(const Json& j, const std::string& path) const {
-    if (!j.is_string()) fail(path, std::string("must be a string, not ") + j.type_name());
-    return j.get<std::string>();
-  }
-
-  bool boolean(const Json& j, const std::string& path) const {
-    if (!j.is_boolean()) fail(path, std::string("must be true or false, not ") + j.type_name());
-    return j.get<bool>();
-  }
-
-  const Json& array(const Json& j, const std::string& path) const {
-    if (!j.is_array()) fail(path, std::string("must be an array, not ") + j.type_name());
-    return j;
-  }
-};
 
 // ---------------------------------------------------------------- 2 reading the sections
 
@@ -129,31 +57,6 @@ Camera readCamera(const Reader& r, const Json& j, const std::string& path) {
   }
   if (auto e = cameraError(c)) r.fail(path, "invalid camera: " + *e);
   return c;
-}
-
-ModelTransform readTransform(const Reader& r, const Json& j, const std::string& path) {
-  ModelTransform t;
-  if (auto it = j.find("translate"); it != j.end()) t.translate = r.vec3(*it, path + "/translate");
-  if (auto it = j.find("scale"); it != j.end()) {
-    const std::string sp = path + "/scale";
-    t.scale = it->is_array() ? r.vec3(*it, sp) : Vec3(r.number(*it, sp));
-    if (t.scale.x == 0 || t.scale.y == 0 || t.scale.z == 0) r.fail(sp, "a scale factor of 0 flattens the object");
-  }
-  if (auto it = j.find("rotate"); it != j.end()) {
-    const std::string rp = path + "/rotate";
-    for (size_t i = 0; i < r.array(*it, rp).size(); ++i) {
-      const std::string ip = rp + "/" + std::to_string(i);
-      const Json& rj = (*it)[i];
-      r.object(rj, ip, {"axis", "deg", "through"});
-      Rotation rot;
-      rot.axis = r.vec3(r.required(rj, ip, "axis"), ip + "/axis");
-      if (glm::length(rot.axis) < 1e-12) r.fail(ip + "/axis", "the rotation axis must not be the zero vector");
-      rot.deg = r.number(r.required(rj, ip, "deg"), ip + "/deg");
-      if (auto th = rj.find("through"); th != rj.end()) rot.through = r.vec3(*th, ip + "/through");
-      t.rotations.push_back(rot);
-    }
-  }
-  return t;
 }
 
 SceneObject readObject(const Reader& r, const Json& j, const std::string& path, size_t index,
@@ -248,6 +151,51 @@ Json toJson(const SceneObject& o) {
 
 }  // namespace
 
+// ---------------------------------------------------------------- 2 the parts other formats reuse (io/scene_parts.h)
+
+ModelTransform readTransform(const JsonReader& r, const nlohmann::ordered_json& j, const std::string& path) {
+  ModelTransform t;
+  if (auto it = j.find("translate"); it != j.end()) t.translate = r.vec3(*it, path + "/translate");
+  if (auto it = j.find("scale"); it != j.end()) {
+    const std::string sp = path + "/scale";
+    t.scale = it->is_array() ? r.vec3(*it, sp) : Vec3(r.number(*it, sp));
+    if (t.scale.x == 0 || t.scale.y == 0 || t.scale.z == 0) r.fail(sp, "a scale factor of 0 flattens the object");
+  }
+  if (auto it = j.find("rotate"); it != j.end()) {
+    const std::string rp = path + "/rotate";
+    for (size_t i = 0; i < r.array(*it, rp).size(); ++i) {
+      const std::string ip = rp + "/" + std::to_string(i);
+      const Json& rj = (*it)[i];
+      r.object(rj, ip, {"axis", "deg", "through"});
+      Rotation rot;
+      rot.axis = r.vec3(r.required(rj, ip, "axis"), ip + "/axis");
+      if (glm::length(rot.axis) < 1e-12) r.fail(ip + "/axis", "the rotation axis must not be the zero vector");
+      rot.deg = r.number(r.required(rj, ip, "deg"), ip + "/deg");
+      if (auto th = rj.find("through"); th != rj.end()) rot.through = r.vec3(*th, ip + "/through");
+      t.rotations.push_back(rot);
+    }
+  }
+  return t;
+}
+
+std::vector<UserClipPlane> readClipPlanes(const JsonReader& r, const nlohmann::ordered_json& j, const std::string& path) {
+  if (r.array(j, path).size() > kMaxUserPlanes)
+    r.fail(path, "at most " + std::to_string(kMaxUserPlanes) + " user clip planes, not " + std::to_string(j.size()));
+  std::vector<UserClipPlane> planes;
+  for (size_t i = 0; i < j.size(); ++i) {
+    const std::string cp = path + "/" + std::to_string(i);
+    const Json& pj = j[i];
+    r.object(pj, cp, {"normal", "point", "enabled"});
+    UserClipPlane plane;
+    plane.normal = r.vec3(r.required(pj, cp, "normal"), cp + "/normal");
+    if (glm::length(plane.normal) < 1e-12) r.fail(cp + "/normal", "the plane's normal must not be the zero vector");
+    plane.point = r.vec3(r.required(pj, cp, "point"), cp + "/point");
+    if (auto e = pj.find("enabled"); e != pj.end()) plane.enabled = r.boolean(*e, cp + "/enabled");
+    planes.push_back(plane);
+  }
+  return planes;
+}
+
 Scene parseScene(std::string_view text, std::string_view source, const std::filesystem::path& baseDir,
                  const Limits& limits, const BuiltMeshes* built) {
   const Reader r{std::string(source)};
@@ -273,22 +221,7 @@ Scene parseScene(std::string_view text, std::string_view source, const std::file
       scene.lights.push_back(light);
     }
   }
-  if (auto it = j.find("clip_planes"); it != j.end()) {
-    if (r.array(*it, "/clip_planes").size() > kMaxUserPlanes)
-      r.fail("/clip_planes", "at most " + std::to_string(kMaxUserPlanes) + " user clip planes, not " +
-                                 std::to_string(it->size()));
-    for (size_t i = 0; i < it->size(); ++i) {
-      const std::string cp = "/clip_planes/" + std::to_string(i);
-      const Json& pj = (*it)[i];
-      r.object(pj, cp, {"normal", "point", "enabled"});
-      UserClipPlane plane;
-      plane.normal = r.vec3(r.required(pj, cp, "normal"), cp + "/normal");
-      if (glm::length(plane.normal) < 1e-12) r.fail(cp + "/normal", "the plane's normal must not be the zero vector");
-      plane.point = r.vec3(r.required(pj, cp, "point"), cp + "/point");
-      if (auto e = pj.find("enabled"); e != pj.end()) plane.enabled = r.boolean(*e, cp + "/enabled");
-      scene.clipPlanes.push_back(plane);
-    }
-  }
+  if (auto it = j.find("clip_planes"); it != j.end()) scene.clipPlanes = readClipPlanes(r, *it, "/clip_planes");
   const Json& objects = r.array(r.required(j, "", "objects"), "/objects");
   MeshSize used;  // the scene's faces, vertices and corners so far, against limits
   for (size_t i = 0; i < objects.size(); ++i) {

@@ -69,13 +69,6 @@ std::string orbitText(const Orbit& o) {
   return join({o.target.x, o.target.y, o.target.z, o.yawDeg, o.pitchDeg, o.distance, o.fovDeg});
 }
 
-bool plainName(std::string_view s) {
-  if (s.empty() || s.size() > 100) return false;
-  for (char c : s)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_')) return false;
-  return true;
-}
-
 }  // namespace
 
 std::string shortestNumber(double v) {
@@ -115,6 +108,13 @@ std::string encodeUrlState(const UrlState& s) {
   return out;
 }
 
+bool isBundledSceneName(std::string_view s) {
+  if (s.empty() || s.size() > 100) return false;
+  for (char c : s)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_')) return false;
+  return true;
+}
+
 UrlState decodeUrlState(std::string_view fragment) {
   if (!fragment.empty() && fragment.front() == '#') fragment.remove_prefix(1);
   if (fragment.size() > kMaxUrlStateLength)
@@ -136,7 +136,7 @@ UrlState decodeUrlState(std::string_view fragment) {
       return Vec3(v[0], v[1], v[2]);
     };
     if (key == "scene") {
-      if (!plainName(value))
+      if (!isBundledSceneName(value))
         throw Error("the link's scene=" + quoteForError(value) + " is not the name of a bundled scene (letters, digits, - and _)");
       s.scene = std::string(value);
     } else if (key == "vrp") {

@@ -54,6 +54,10 @@ std::string encodeUrlState(const UrlState& state);
 /// camera (CameraLink::over).
 UrlState decodeUrlState(std::string_view fragment);
 
+/// Whether `s` can name a bundled scene (assets/scenes/NAME.json): 1–100 letters, digits, - and _,
+/// so that no link or lesson reaches a file elsewhere.
+bool isBundledSceneName(std::string_view s);
+
 /// A number as the fewest decimal digits that read back to exactly `v` (finite).
 std::string shortestNumber(double v);
 

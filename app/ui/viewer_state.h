@@ -4,6 +4,7 @@
 #include "app/core/assets.h"
 #include "app/core/document.h"
 #include "app/core/picking.h"
+#include "app/core/tabs.h"
 #include "app/views/views.h"
 #include "pipeline/pipeline.h"
 
@@ -35,10 +36,6 @@ struct StepThrough {
   int step = 0;    // 0: the original polygon; k: after the k-th plane (left, right, bottom, top, back, front)
 };
 
-/// The tabs by the names the command line gives them (`vplab render --view ui --tab NAME`): the
-/// controls' camera, scene, clipping, display, lecture and the inspector's probe, matrices, depth.
-inline constexpr std::string_view kTabNames[] = {"camera", "scene",  "clipping", "display",
-                                                 "lecture", "probe", "matrices", "depth"};
 
 struct ViewerState;
 /// Brings the tab `name` (one of kTabNames) forward; false for any other name.
