@@ -1,6 +1,9 @@
 #include "app/cli.h"
 
 #include "app/core/assets.h"
+#include "app/core/lesson.h"
+#include "app/export/progress_bar.h"
+#include "app/lessons/lesson_export.h"
 #include "bench/bench_command.h"
 #include "app/course/course_commands.h"
 #include "app/export/svg.h"
@@ -63,19 +66,30 @@ CLI::Validator finiteIn(double lo, double hi) {
 }
 
 /// Output files by extension: what vplab can write, and nothing it would write in another format.
+/// Why `file` is not one of the `extensions` vplab writes there (empty: it is).
+std::string extensionError(const std::string& file, const std::vector<std::string>& extensions) {
+  std::string list;
+  for (const auto& e : extensions) list += (list.empty() ? "" : " or ") + e;
+  std::string ext = std::filesystem::path(file).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  for (const auto& e : extensions)
+    if (ext == e) return {};
+  return "\"" + file + "\": vplab writes only " + list + " files" +
+         (ext.empty() ? std::string(", and this name has no extension") : ", not " + ext);
+}
+
 CLI::Validator extensionIn(std::vector<std::string> extensions) {
   std::string list;
   for (const auto& e : extensions) list += (list.empty() ? "" : " or ") + e;
-  return CLI::Validator(
-      [extensions, list](std::string& s) -> std::string {
-        std::string ext = std::filesystem::path(s).extension().string();
-        for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-        for (const auto& e : extensions)
-          if (ext == e) return {};
-        return "\"" + s + "\": vplab writes only " + list + " files" +
-               (ext.empty() ? std::string(", and this name has no extension") : ", not " + ext);
-      },
-      list);
+  return CLI::Validator([extensions](std::string& s) { return extensionError(s, extensions); }, list);
+}
+
+/// What `render --out` must be: a directory for a lesson's stills, a .gif for an animation, else a
+/// .png or .svg picture. A usage error (exit 2) names what is wrong, as the parser's checks do.
+std::string renderOutError(const std::string& out, bool lesson, bool animate) {
+  if (animate) return out.empty() ? "--animate needs --out FILE.gif" : extensionError(out, {".gif"});
+  if (lesson) return out.empty() ? "--lesson needs --out DIR: the directory for its pictures and index.md" : "";
+  return out.empty() ? "" : extensionError(out, {".png", ".svg"});
 }
 
 /// The picture `vplab render` makes must stay within the image limits (io/limits.h), checked
@@ -134,7 +148,20 @@ struct RenderOptions {
   bool glDebug = false;
   bool styleGiven = false;
   std::vector<std::string> tabs;  // --view ui: the panels' tabs to show
+  std::string lesson;             // every step of a lesson (README "Lessons"), into the directory --out
+  std::string format = "png";     // of a lesson's stills
+  bool animate = false;           // a lesson's moves or the stage morph as an animated GIF
+  int fps = 15;
+  double hold = 3;                // seconds each step's still (each stage of the morph) is shown
+  bool viewGiven = false;
 };
+
+/// ".png" of "Shot.PNG": what --out's name says it is.
+std::string lowerExtension(const std::string& file) {
+  std::string extension = std::filesystem::path(file).extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
 
 std::pair<int, int> parseSize(const std::string& s) {
   int w = 0, h = 0;
@@ -145,8 +172,81 @@ std::pair<int, int> parseSize(const std::string& s) {
   return {w, h};
 }
 
+/// A lesson given on the command line: a file, or a bundled lesson's name ("02-view-orientation",
+/// in English unless ".de" follows).
+std::filesystem::path lessonFileFrom(const std::string& given) {
+  std::error_code ec;
+  if (std::filesystem::exists(given, ec)) return given;
+  const std::filesystem::path bundled = bundledLessonFile(given, Language::en);
+  if (bundled.empty())
+    throw Error("--lesson " + given + ": no such file, and no bundled lesson of that name (`vplab lessons` lists them)");
+  return bundled;
+}
+
+/// `render --lesson`: every step as a still and the index, or with --animate the lesson as a GIF.
+int renderLesson(const RenderOptions& r) {
+  const std::filesystem::path file = lessonFileFrom(r.lesson);
+  LessonContext lessonContext;
+  lessonContext.scenesDirectory = assetsDirectory() / "scenes";
+  const Lesson lesson = loadLesson(file, lessonContext);
+  LessonPictureOptions o;
+  o.view = r.viewGiven ? *viewKindFromString(r.view) : ViewKind::all;
+  o.theme = *themeFromString(r.theme);
+  o.scale = r.uiScale;
+  if (!r.size.empty()) std::tie(o.width, o.height) = parseSize(r.size);
+
+  StopRequests stop;
+  ProgressBar bar("vplab render --lesson", r.animate ? "frames" : "pictures");
+  const LessonProgress progress = [&](size_t done, size_t total) {
+    bar(done, total);
+    return !stop.requested();
+  };
+  std::unique_ptr<GlContext> context;
+  std::optional<ViewRenderer> renderer;
+  if (r.animate || r.format == "png") {
+    context = createHeadlessContext(*backendFromString(r.backend), r.glDebug);
+    renderer.emplace(*context, o.scale);
+  }
+  if (r.animate) {
+    AnimationOptions a;
+    a.fps = r.fps;
+    a.holdSeconds = r.hold;
+    writeLessonAnimation(*renderer, lesson, o, a, r.out, progress);
+  } else {
+    writeLessonStills(renderer ? &*renderer : nullptr, lesson, o, r.format == "svg", r.out, progress);
+  }
+  if (stop.requested()) throw Error("stopped (Ctrl+C)" + std::string(r.animate ? ": no animation was written" : ": the pictures so far are kept"));
+  return 0;
+}
+
 int runRender(const RenderOptions& r) {
+  if (!r.lesson.empty()) return renderLesson(r);
   const Scene scene = sceneFrom(r.scene);
+  if (r.animate) {
+    if (r.view != "morph") throw Error("--animate is for --lesson or --view morph");
+    RenderRequest request;
+    request.view = ViewKind::morph;
+    request.style = *styleFromString(r.style);
+    request.theme = *themeFromString(r.theme);
+    if (!r.size.empty()) std::tie(request.width, request.height) = parseSize(r.size);
+    const PixelSize size = pixelSizeOf(request, scene);
+    checkImageSize(r.view, size.width, size.height);
+    auto context = createHeadlessContext(*backendFromString(r.backend), r.glDebug);
+    ViewRenderer renderer(*context, r.uiScale);
+    StopRequests stop;
+    ProgressBar bar("vplab render --animate", "frames");
+    AnimationOptions a;
+    a.fps = r.fps;
+    a.holdSeconds = r.hold;
+    writeMorphAnimation(renderer, scene, displaySettingsOf(request, scene), size.width, size.height, a, r.out,
+                        [&](size_t done, size_t total) {
+                          bar(done, total);
+                          return !stop.requested();
+                        });
+    if (stop.requested()) throw Error("stopped (Ctrl+C): no animation was written");
+    return 0;
+  }
+
   // The picture asked for, as the viewer's export and the tests describe one (app/views/render_request.h).
   RenderRequest request;
   if (r.view != "ui") request.view = *viewKindFromString(r.view);
@@ -167,8 +267,7 @@ int runRender(const RenderOptions& r) {
     checkImageSize(r.view, size.width, size.height);
   }
   const std::string out = r.out.empty() ? "vplab-" + r.view + ".png" : r.out;
-  std::string extension = std::filesystem::path(out).extension().string();
-  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  const std::string extension = lowerExtension(out);
   if (extension == ".svg") {
     // The same picture as the PNG of the same request, as vector graphics for slides and lecture
     // notes: drawn by the SVG backend on the CPU, no GL context needed.
@@ -205,6 +304,8 @@ int runRender(const RenderOptions& r) {
 
 struct ViewerOptions {
   std::string scene;
+  std::string lesson;
+  size_t step = 1;  // from 1, as the caption box counts
   int quitAfterFrames = 0;
   std::string screenshot;
   double waitForViews = 30;
@@ -240,6 +341,18 @@ int viewerFallback(const ViewerOptions& v, const std::string& why) {
 int runViewer(const ViewerOptions& v) {
   ViewerLaunch launch;
   launch.scene = sceneFrom(v.scene);
+  if (!v.lesson.empty()) {
+    // Read here first, so that a broken lesson ends with its error before a window opens.
+    LessonContext context;
+    context.scenesDirectory = assetsDirectory() / "scenes";
+    const std::filesystem::path file = lessonFileFrom(v.lesson);
+    const Lesson lesson = loadLesson(file, context);
+    if (v.step > lesson.steps.size())
+      throw Error("--step " + std::to_string(v.step) + ": the lesson " + v.lesson + " has " +
+                  std::to_string(lesson.steps.size()) + " steps");
+    launch.lesson = file.string();
+    launch.lessonStep = v.step - 1;
+  }
   launch.quitAfterFrames = v.quitAfterFrames;
   launch.screenshotOnQuit = v.screenshot;
   launch.waitForViews = v.waitForViews;
@@ -279,6 +392,21 @@ int runPresets() {
   return 0;
 }
 
+/// `vplab lessons`: name, title and file of each bundled lesson, English then German.
+int runLessons() {
+  bool any = false;
+  for (const Language language : {Language::en, Language::de})
+    for (const LessonFileInfo& l : listBundledLessons(language)) {
+      const std::string name = l.file.filename().string().substr(0, l.file.filename().string().size() - 5);  // without .json
+      std::cout << name << std::string(name.size() < 30 ? 30 - name.size() : 1, ' ') << l.title << "\n    " << l.file.string() << "\n";
+      any = true;
+    }
+  if (!any)
+    throw Error("no bundled lessons found: an installed vplab reads them from share/vplab/lessons beside its bin/ "
+                "directory (cmake --install), a built one from the source tree's assets/lessons");
+  return 0;
+}
+
 }  // namespace
 
 int runCommandLine(int argc, char** argv) {
@@ -292,9 +420,18 @@ int runCommandLine(int argc, char** argv) {
       app.add_option("--scene", viewer.scene, "Scene file (JSON) to open; default: the built-in lecture scene")
           ->check(CLI::ExistingFile);
   // A file manager and the desktop entry (packaging/vplab.desktop) open a scene by its name alone.
-  app.add_option("file", viewer.scene, "A scene file to open, as --scene FILE")
-      ->check(CLI::ExistingFile)
-      ->excludes(sceneOption);
+  CLI::Option* fileOption = app.add_option("file", viewer.scene, "A scene file to open, as --scene FILE")
+                                ->check(CLI::ExistingFile)
+                                ->excludes(sceneOption);
+  CLI::Option* lessonOption =
+      app.add_option("--lesson", viewer.lesson, "A lesson to present (README \"Lessons\"): a file, or a bundled one by its "
+                                                "name (`vplab lessons` lists them); its steps with captions, advanced with "
+                                                "→ / Space / Page Down")
+          ->excludes(sceneOption)
+          ->excludes(fileOption);
+  app.add_option("--step", viewer.step, "The lesson's step to open, from 1 (default 1)")
+      ->check(CLI::Range(1, 100000))
+      ->needs(lessonOption);
   app.add_option("--quit-after-frames", viewer.quitAfterFrames,
                  "Quit by itself after N frames (for smoke tests and scripted screenshots)")
       ->check(CLI::Range(1, 100000000));
@@ -353,8 +490,22 @@ int runCommandLine(int argc, char** argv) {
                         "pixel-aligned with DC)");
   renderCmd->add_option("--out", render.out,
                         "PNG file to write, or an SVG file (vector lines of the wireframe styles wire, hidden-line, "
-                        "hidden-removed; hidden-line unless --style says); default: vplab-VIEW.png")
-      ->check(extensionIn({".png", ".svg"}));
+                        "hidden-removed; hidden-line unless --style says); default: vplab-VIEW.png. With --lesson: "
+                        "the directory for its stills and index.md; with --animate: a .gif");
+  CLI::Option* renderLessonOption =
+      renderCmd->add_option("--lesson", render.lesson,
+                            "Every step of a lesson (a file or a bundled one's name) as a picture with its caption "
+                            "(--format png or svg, --view all unless given) and index.md, into the directory --out");
+  renderCmd->add_option("--format", render.format, "With --lesson: png (default) or svg stills")
+      ->check(CLI::IsMember({"png", "svg"}))
+      ->needs(renderLessonOption);
+  renderCmd->add_flag("--animate", render.animate,
+                      "With --lesson: the steps and the moves between them as an animated GIF (--out x.gif); with "
+                      "--view morph: the stage morph from MC to DC");
+  renderCmd->add_option("--fps", render.fps, "With --animate: frames a second of the moves (default 15)")
+      ->check(CLI::Range(1, 60));
+  renderCmd->add_option("--hold", render.hold, "With --animate: seconds each step (each stage) is held (default 3)")
+      ->check(finiteIn(0.02, 60));
   renderCmd->add_option("--backend", render.backend, "Headless OpenGL: auto (EGL, then OSMesa), egl or osmesa")
       ->check(namesOf(kAllBackends));
   renderCmd->add_option("--strategy", render.strategy, "Clipping strategy of the CPU overlays: npc, wc or divide-first")
@@ -382,6 +533,8 @@ int runCommandLine(int argc, char** argv) {
 
   CLI::App* presetsCmd = app.add_subcommand(
       "presets", "List the bundled scenes (the viewer's File > Presets): each one's name, title and file");
+  CLI::App* lessonsCmd = app.add_subcommand(
+      "lessons", "List the bundled lessons (the viewer's File > Lessons): each one's name, title and file");
 
   addCourseCommands(app);  // exercise, grade (app/course/)
 
@@ -396,8 +549,14 @@ int runCommandLine(int argc, char** argv) {
   try {
     if (dumpCmd->parsed()) return runDump(dump);
     if (presetsCmd->parsed()) return runPresets();
+    if (lessonsCmd->parsed()) return runLessons();
     if (renderCmd->parsed()) {
+      if (const std::string e = renderOutError(render.out, !render.lesson.empty(), render.animate); !e.empty()) {
+        std::cerr << "vplab: error: --out: " << e << "\n";
+        return 2;
+      }
       render.styleGiven = renderCmd->count("--style") > 0;
+      render.viewGiven = renderCmd->count("--view") > 0;
       return runRender(render);
     }
     if (benchCmd->parsed()) {

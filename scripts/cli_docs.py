@@ -89,6 +89,8 @@ def man_page(exe, found):
                 lines += [".TP", f".B {roff(name)}", roff(what)]
     lines += [".SH FILES", ".TP", ".I /usr/share/vplab/scenes",
               "The bundled scenes (\\fBvplab presets\\fR lists them) and, in \\fI/usr/share/vplab/meshes\\fR, their meshes.",
+              ".TP", ".I /usr/share/vplab/lessons",
+              "The bundled lessons in German and English (\\fBvplab lessons\\fR lists them; \\fBvplab --lesson\\fR \\fINAME\\fR presents one).",
               ".TP", ".I $XDG_STATE_HOME/vplab", "Autosaved unsaved changes, offered back after a crash.",
               ".SH EXIT STATUS", "0 on success, 1 on an error (named on standard error), 2 on a usage error.",
               ".SH SEE ALSO", "The README and CHANGELOG.md of vplab's sources."]

@@ -11,7 +11,7 @@ packages=(
   cmake g++ make pkg-config python3-glad
   libglfw3-dev libglm-dev libimgui-dev libstb-dev
   libegl-dev libgl-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
-  nlohmann-json3-dev libtinyobjloader-dev libcli11-dev
+  nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libgif-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth x11-utils xdotool fonts-dejavu-core strace desktop-file-utils
   dpkg-dev file lintian  # the .deb: cpack's dpkg-shlibdeps (dpkg-dev) and file; lintian checks it

@@ -37,6 +37,9 @@ class Document {
   void redo();
 
   bool dirty() const { return dirty_; }
+  /// The scene is one a file reproduces (a lesson's step, app/core/lesson.h): nothing would be lost,
+  /// so quitting need not ask. The history stays.
+  void markClean() { dirty_ = false; }
   const std::filesystem::path& path() const { return scene_.path; }
   /// Replaces the scene (open, preset, New, a recovered autosave): a new document with an empty
   /// history, clean unless `dirty` (a recovered scene still has its unsaved changes).

@@ -178,7 +178,8 @@ LessonStepThrough stepThroughOf(const JsonReader& r, const Json& j, const std::s
   LessonStepThrough s;
   s.object = object;
   s.face = r.integer(r.required(j, path, "face"), path + "/face", 0, int(std::min<size_t>(faces - 1, 1u << 30)));
-  if (auto it = j.find("plane"); it != j.end()) s.plane = r.integer(*it, path + "/plane", 0, 6);
+  const int userPlanes = int(std::count_if(scene.clipPlanes.begin(), scene.clipPlanes.end(), [](const UserClipPlane& p) { return p.enabled; }));
+  if (auto it = j.find("plane"); it != j.end()) s.plane = r.integer(*it, path + "/plane", 0, 6 + userPlanes);
   return s;
 }
 
@@ -242,7 +243,8 @@ struct SceneCache {
 LessonStep readStep(const JsonReader& r, const Json& j, const std::string& path, const LessonState* previous,
                     SceneCache& scenes) {
   r.object(j, path, {"caption", "section", "scene", "scene_file", "camera", "objects", "clip_planes", "views",
-                     "overlays", "strategy", "morph", "tab", "probe", "step_through", "highlight", "free"});
+                     "overlays", "strategy", "bounding_box", "morph", "select", "tab", "probe", "step_through",
+                     "highlight", "free"});
   const LessonContext& context = scenes.context;
   LessonStep step;
   step.caption = r.string(r.required(j, path, "caption"), path + "/caption");
@@ -273,6 +275,9 @@ LessonStep readStep(const JsonReader& r, const Json& j, const std::string& path,
     s.scene = previous->scene;
     s.display = previous->display;
     s.strategy = previous->strategy;
+    s.boundingBoxTest = previous->boundingBoxTest;
+    s.morphShown = previous->morphShown;
+    s.selected = previous->selected;
     s.tab = previous->tab;
   } else {
     r.fail(path, "the first step must name a \"scene\" (a bundled one) or a \"scene_file\"");
@@ -287,7 +292,13 @@ LessonStep readStep(const JsonReader& r, const Json& j, const std::string& path,
     constexpr std::array names = {"npc", "wc", "divide-first"};
     s.strategy = kAllClipStrategies[oneOf(r, *it, path + "/strategy", names)];
   }
-  if (auto it = j.find("morph"); it != j.end()) s.display.morphing.t = r.number(*it, path + "/morph", 0, 4);
+  if (auto it = j.find("bounding_box"); it != j.end()) s.boundingBoxTest = r.boolean(*it, path + "/bounding_box");
+  if (auto it = j.find("morph"); it != j.end()) {
+    s.display.morphing.t = r.number(*it, path + "/morph", 0, 4);
+    s.morphShown = true;
+  }
+  if (auto it = j.find("select"); it != j.end())
+    s.selected = objectNamed(r, s.scene, r.string(*it, path + "/select"), path + "/select");
   if (auto it = j.find("tab"); it != j.end()) s.tab = kTabNames[oneOf(r, *it, path + "/tab", kTabNames)];
   if (auto it = j.find("probe"); it != j.end()) s.probe = vertexOf(r, *it, path + "/probe", s.scene);
   if (auto it = j.find("step_through"); it != j.end()) s.stepThrough = stepThroughOf(r, *it, path + "/step_through", s.scene);
@@ -357,6 +368,18 @@ std::vector<LessonFileInfo> listBundledLessons(Language language) {
   std::sort(lessons.begin(), lessons.end(),
             [](const LessonFileInfo& a, const LessonFileInfo& b) { return a.file.filename() < b.file.filename(); });
   return lessons;
+}
+
+std::filesystem::path bundledLessonFile(std::string_view name, Language language) {
+  if (!isBundledLessonName(name)) return {};
+  const size_t dot = name.find('.');
+  const std::string_view stem = name.substr(0, dot);
+  const std::string_view lang = dot != std::string_view::npos ? name.substr(dot + 1) : language == Language::de ? "de" : "en";
+  const std::filesystem::path assets = assetsDirectory();
+  if (assets.empty()) return {};
+  const std::filesystem::path file = assets / "lessons" / (std::string(stem) + "." + std::string(lang) + ".json");
+  std::error_code ec;
+  return std::filesystem::is_regular_file(file, ec) ? file : std::filesystem::path();
 }
 
 }  // namespace vplab

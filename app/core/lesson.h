@@ -11,7 +11,9 @@
 //                  "clip_planes": [ … ],                                   (replace the scene's)
 //                  "views": { "camera"|"world"|"npc": {"style": "wire", "orbit": {…}} },
 //                  "overlays": { "frustum": true, "vertex_names": true, … },
-//                  "strategy": "npc" | "wc" | "divide-first",  "morph": 2.5,
+//                  "strategy": "npc" | "wc" | "divide-first",  "bounding_box": true,
+//                  "morph": 2.5,                        (and the stage morph's window opens)
+//                  "select": "NAME",                    (its vanishing points are drawn)
 //                  "tab": "matrices",
 //                  "probe": {"object": "NAME", "vertex": 3},
 //                  "step_through": {"object": "NAME", "face": 0, "plane": 4},
@@ -21,7 +23,7 @@
 //                  "free": true } ] }
 //
 // Each step shows the previous step's state as written (not as the class left it) with its own
-// changes: the scene and its changes, the views, overlays, strategy, morph and tab carry on; a
+// changes: the scene and its changes, the views, overlays, strategy, morph, selection and tab carry on; a
 // probe, a step-through and highlights belong to the step that names them. A new scene starts from
 // the views of a fresh document. So a step's state is the same however the lesson was reached, and
 // "free" (the class explores) costs nothing: the next step restores its own state.
@@ -79,7 +81,8 @@ struct LessonHighlight {
 struct LessonStepThrough {
   size_t object = 0;
   int face = 0;
-  int plane = 0;  // 0: the original polygon; k: after the k-th plane (left, right, bottom, top, back, front)
+  int plane = 0;  // 0: the original polygon; k: after the k-th plane (left, right, bottom, top, back,
+                  // front, then the enabled user clip planes)
   bool operator==(const LessonStepThrough&) const = default;
 };
 
@@ -88,6 +91,9 @@ struct LessonState {
   Scene scene;                // with the step's changes (camera, objects, clip planes)
   DisplaySettings display;    // styles, observers, overlays, the morph's t
   ClipStrategy strategy = ClipStrategy::npc;
+  bool boundingBoxTest = false;  // lecture notes 15.3.4: reject an object whose box lies outside
+  bool morphShown = false;    // the stage morph's window is open (a step giving "morph" opens it)
+  size_t selected = 0;        // the object selected (its vanishing points are drawn)
   std::string tab;            // one of kTabNames (app/core/tabs.h), or empty: as the viewer has it
   std::optional<Probe> probe;
   std::optional<LessonStepThrough> stepThrough;
@@ -132,5 +138,10 @@ struct LessonFileInfo {
   std::string title;
 };
 std::vector<LessonFileInfo> listBundledLessons(Language language);
+
+/// A bundled lesson by its name: "02-view-orientation" in `language`, or with the language given,
+/// "02-view-orientation.de". Empty when there is no such lesson or the name could reach a file
+/// elsewhere (only letters, digits, -, _ and one . before the language).
+std::filesystem::path bundledLessonFile(std::string_view name, Language language);
 
 }  // namespace vplab

@@ -2,6 +2,7 @@
 
 #include "pipeline/error.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -87,6 +88,13 @@ std::string shortestNumber(double v) {
 
 std::string encodeUrlState(const UrlState& s) {
   std::vector<std::string> parts;
+  if (!s.embed.empty()) {
+    std::string views;
+    for (ViewKind v : s.embed) views += (views.empty() ? "" : ",") + std::string(toString(v));
+    parts.push_back("embed=" + views);
+  }
+  if (!s.lesson.empty()) parts.push_back("lesson=" + s.lesson);
+  if (s.step > 0) parts.push_back("step=" + std::to_string(s.step));
   if (!s.scene.empty()) parts.push_back("scene=" + s.scene);
   const CameraLink& c = s.camera;
   if (c.vrp) parts.push_back("vrp=" + join({c.vrp->x, c.vrp->y, c.vrp->z}));
@@ -115,6 +123,13 @@ bool isBundledSceneName(std::string_view s) {
   return true;
 }
 
+bool isBundledLessonName(std::string_view s) {
+  const size_t dot = s.find('.');
+  if (dot == std::string_view::npos) return isBundledSceneName(s);
+  const std::string_view language = s.substr(dot + 1);
+  return isBundledSceneName(s.substr(0, dot)) && (language == "de" || language == "en");
+}
+
 UrlState decodeUrlState(std::string_view fragment) {
   if (!fragment.empty() && fragment.front() == '#') fragment.remove_prefix(1);
   if (fragment.size() > kMaxUrlStateLength)
@@ -135,7 +150,31 @@ UrlState decodeUrlState(std::string_view fragment) {
       const auto v = numbers(key, value, 3);
       return Vec3(v[0], v[1], v[2]);
     };
-    if (key == "scene") {
+    if (key == "embed") {
+      size_t at = 0;
+      while (at <= value.size()) {
+        const size_t comma = std::min(value.find(',', at), value.size());
+        const std::string_view name = value.substr(at, comma - at);
+        const auto kind = viewKindFromString(name);
+        if (!kind || (*kind != ViewKind::camera && *kind != ViewKind::world && *kind != ViewKind::npc))
+          throw Error("the link's embed=" + quoteForError(value) + " names " + quoteForError(name) +
+                      ", not one of the views camera, world and npc");
+        if (std::find(s.embed.begin(), s.embed.end(), *kind) != s.embed.end())
+          throw Error("the link's embed=" + quoteForError(value) + " names " + quoteForError(name) + " twice");
+        s.embed.push_back(*kind);
+        at = comma + 1;
+      }
+    } else if (key == "lesson") {
+      if (!isBundledLessonName(value))
+        throw Error("the link's lesson=" + quoteForError(value) +
+                    " is not the name of a bundled lesson (letters, digits, - and _, then .de or .en or nothing)");
+      s.lesson = std::string(value);
+    } else if (key == "step") {
+      const double n = numbers(key, value, 1)[0];
+      if (n != std::floor(n) || n < 1 || n > 10000)
+        throw Error("the link's step=" + quoteForError(value) + " is not a step's number (1, 2, …)");
+      s.step = size_t(n);
+    } else if (key == "scene") {
       if (!isBundledSceneName(value))
         throw Error("the link's scene=" + quoteForError(value) + " is not the name of a bundled scene (letters, digits, - and _)");
       s.scene = std::string(value);
@@ -174,8 +213,8 @@ UrlState decodeUrlState(std::string_view fragment) {
       if (!st) throw Error("the link's strategy=" + quoteForError(value) + " is not npc, wc or divide-first");
       s.strategy = *st;
     } else {
-      throw Error("the link's " + quoteForError(key) + " is not a key vplab knows (scene, vrp, prp, vup, window, front, "
-                  "back, projection, oblique, camera-style, world-style, npc-style, world, npc, strategy)");
+      throw Error("the link's " + quoteForError(key) + " is not a key vplab knows (embed, lesson, step, scene, vrp, prp, "
+                  "vup, window, front, back, projection, oblique, camera-style, world-style, npc-style, world, npc, strategy)");
     }
   }
   return s;

@@ -1,5 +1,7 @@
 // What the lecturer shows, as the fragment of a link (`#scene=default&vrp=0,0,0&…`): the bundled
-// scene, the synthetic camera, each view's style and observer, and the clipping strategy. The web
+// scene, the synthetic camera, each view's style and observer, and the clipping strategy; or a
+// bundled lesson's step (`#lesson=02-view-orientation&step=3`), and the embed form that shows only
+// some views and the caption (`#embed=camera,world&lesson=…`). The web
 // page keeps its address up to date with it, so that a link reproduces exactly the picture; the
 // desktop tests check the round trip and hostile fragments (tests/app/core/url_state_test.cpp).
 //
@@ -14,6 +16,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace vplab {
 
@@ -36,6 +39,14 @@ CameraLink cameraLinkOf(const Camera& camera);
 
 /// The parts of a view state a fragment can carry; each is optional (a link may give only a camera).
 struct UrlState {
+  /// The embed form (`#embed=camera,world&lesson=…`): only these views and a lesson's caption, for a
+  /// course page's figure. Empty: the whole lab.
+  std::vector<ViewKind> embed;
+  /// A bundled lesson (README "Lessons") by its name ("02-view-orientation", in the page's language,
+  /// or "02-view-orientation.de") and its step from 1 (0: not given, the first). A lesson's step
+  /// is the whole state: a link to one carries nothing else.
+  std::string lesson;
+  size_t step = 0;
   std::string scene;  // a bundled scene's file stem (assets/scenes/NAME.json); empty: not given
   CameraLink camera;
   std::optional<Style> cameraStyle, worldStyle, npcStyle;
@@ -53,6 +64,9 @@ std::string encodeUrlState(const UrlState& state);
 /// are not understood. Whether the camera parts make a camera is known only over the scene's
 /// camera (CameraLink::over).
 UrlState decodeUrlState(std::string_view fragment);
+
+/// Whether `s` can name a bundled lesson: a bundled scene's name, with ".de" or ".en" or without.
+bool isBundledLessonName(std::string_view s);
 
 /// Whether `s` can name a bundled scene (assets/scenes/NAME.json): 1–100 letters, digits, - and _,
 /// so that no link or lesson reaches a file elsewhere.

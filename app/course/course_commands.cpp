@@ -1,4 +1,5 @@
 #include "app/course/course_commands.h"
+#include "app/export/progress_bar.h"
 
 #include "app/course/exercise_writer.h"
 #include "app/course/grade_batch.h"
@@ -220,22 +221,10 @@ int gradeBatchCommand(const BatchArgs& a) {
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   o.jobs = a.jobs.empty() ? int(cores) : int(number("--jobs", a.jobs, 1, 256));
   if (!a.jobs.empty() && std::to_string(o.jobs) != a.jobs) throw UsageError("--jobs \"" + a.jobs + "\": a whole number from 1 to 256 expected");
-  // Progress on stderr: a bar redrawn in place on a terminal, a line every tenth otherwise (a log).
-  const bool terminal = isatty(STDERR_FILENO) != 0;
-  size_t lastTenth = 0;
-  auto progress = [&](size_t done, size_t total) {
-    if (terminal) {
-      const int width = 30, filled = int(width * done / std::max<size_t>(total, 1));
-      std::cerr << "\rvplab grade batch: [" << std::string(size_t(filled), '#') << std::string(size_t(width - filled), '.')
-                << "] " << done << "/" << total << (done == total ? "\n" : "") << std::flush;
-    } else if (size_t tenth = 10 * done / std::max<size_t>(total, 1); tenth > lastTenth || done == total) {
-      lastTenth = tenth;
-      std::cerr << "vplab grade batch: " << done << "/" << total << " graded\n";
-    }
-  };
+  ProgressBar progress("vplab grade batch", "graded");  // on stderr: a bar on a terminal, else a line every tenth
   BatchResult r;
   try {
-    r = gradeBatch(o, progress);
+    r = gradeBatch(o, std::ref(progress));
   } catch (const Error& e) {
     throw UsageError(e.what());
   }

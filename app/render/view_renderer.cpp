@@ -75,4 +75,12 @@ Image ViewRenderer::render(ViewKind kind, const Scene& scene, const PipelineRun&
   return image;
 }
 
+const TextMetrics& ViewRenderer::textMetrics() const { return backend_->text().atlas(); }
+
+Image ViewRenderer::render(const draw::Picture& picture) {
+  Image image = backend_->render(picture);
+  ctx_.checkErrors("rendering a picture");
+  return image;
+}
+
 }  // namespace vplab

@@ -56,6 +56,12 @@ class ViewRenderer {
   Image render(ViewKind kind, const Scene& scene, const PipelineRun& run, const DisplaySettings& s, const Highlights& h,
                int width, int height);
 
+  /// The metrics its labels are measured with (the text renderer's atlas at its scale): a picture
+  /// built with them (a view with a caption under it, app/lessons/) is drawn by render(picture).
+  const TextMetrics& textMetrics() const;
+  /// Draws a picture built with textMetrics() into an image.
+  Image render(const draw::Picture& picture);
+
   GlContext& context() { return ctx_; }
   /// The context lost every object (a WebGL context lost and restored): the backend's shaders,
   /// buffers and text atlas are made again; its settings (text scale, partitioning, chunks) stay.

@@ -56,6 +56,12 @@ void HeadlessViewer::key(int code, bool ctrl, bool shift) {
   io.KeyCtrl = io.KeyShift = false;
 }
 
+void HeadlessViewer::type(const std::string& text) {
+  viewer_.makeCurrent();
+  ImGui::GetIO().AddInputCharactersUTF8(text.c_str());
+  frame();
+}
+
 void HeadlessViewer::drag(double fromX, double fromY, double toX, double toY, int button, int steps) {
   mouseMove(fromX, fromY);
   frame();

@@ -23,6 +23,8 @@ class HeadlessViewer {
   void wheel(float steps);
   /// Presses and releases a key (a code of ui/keys.h) over two frames.
   void key(int code, bool ctrl = false, bool shift = false);
+  /// Types `text` (characters, as a keyboard's text input delivers them) in one frame.
+  void type(const std::string& text);
   /// Press at `from`, move to `to` in `steps` frames, release: a drag as a user makes it.
   void drag(double fromX, double fromY, double toX, double toY, int button = 0, int steps = 8);
   /// A click without motion.

@@ -4,7 +4,16 @@
 
 namespace vplab::keys {
 
+inline constexpr int kSpace = 32;
 inline constexpr int kEscape = 256;
+inline constexpr int kEnter = 257;
+inline constexpr int kRight = 262;
+inline constexpr int kLeft = 263;
+inline constexpr int kPageUp = 266;
+inline constexpr int kPageDown = 267;
+inline constexpr int kHome = 268;
+inline constexpr int kEnd = 269;
+inline constexpr int kKeypadEnter = 335;
 inline constexpr int kF1 = 290;
 inline constexpr int kF11 = 300;
 inline constexpr int kF12 = 301;

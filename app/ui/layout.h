@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "app/ui/viewer_state.h"
 
@@ -22,6 +23,13 @@ struct Layout {
   Rect controls, world, camera, npc, inspect;
   bool compact = false;  // then the views share one rect, the panels another, and only the chosen are shown
   Rect switcher;         // compact: the bar that chooses the view and the panel
+  Rect caption;          // a lesson's caption box across the bottom (empty without a lesson)
+  std::vector<ViewKind> onlyViews;  // the embed form: only these views, side by side, and no panels
+  /// Whether the view `kind` has a window in this layout (compact: the one chosen, `compactView`).
+  bool shows(ViewKind kind, ViewKind compactView) const {
+    if (!onlyViews.empty()) return std::find(onlyViews.begin(), onlyViews.end(), kind) != onlyViews.end();
+    return !compact || compactView == kind;
+  }
 };
 
 /// Whether a display of `display` pixels at UI scale `scale` is too small for the desktop layout:
@@ -34,12 +42,14 @@ inline bool tooSmallForDesktop(ImVec2 display, float scale) {
 /// The compact layout: the view fills what the menu and the switcher leave; a panel, when one is
 /// open, takes the lower 58 % upright or the right half on its side (the view stays in sight while
 /// a field is dragged).
-inline Layout computeCompactLayout(ImVec2 display, float menuHeight, float switcherHeight, bool panelOpen) {
+inline Layout computeCompactLayout(ImVec2 display, float menuHeight, float switcherHeight, bool panelOpen,
+                                   float captionHeight = 0) {
   Layout l;
   l.compact = true;
   const float top = menuHeight;
-  const float h = std::max(1.f, display.y - top - switcherHeight);
-  l.switcher = {{0, top + h}, {display.x, switcherHeight}};
+  const float h = std::max(1.f, display.y - top - switcherHeight - captionHeight);
+  l.switcher = {{0, top + h + captionHeight}, {display.x, switcherHeight}};
+  l.caption = {{0, top + h}, {display.x, captionHeight}};
   Rect view{{0, top}, {display.x, h}}, panel = view;
   if (panelOpen && display.x >= display.y) {  // on its side: the panel beside the view
     const float w = std::floor(display.x * 0.5f);
@@ -55,10 +65,13 @@ inline Layout computeCompactLayout(ImVec2 display, float menuHeight, float switc
   return l;
 }
 
-inline Layout computeLayout(ImVec2 display, float menuHeight, float scale) {
+/// The desktop layout; a lesson's caption box, `captionHeight` high, takes the bottom across the
+/// whole width, and the windows share what is left above it.
+inline Layout computeLayout(ImVec2 display, float menuHeight, float scale, float captionHeight = 0) {
   Layout l;
   const float top = menuHeight;
-  const float h = display.y - top;
+  const float h = std::max(1.f, display.y - top - captionHeight);
+  l.caption = {{0, top + h}, {display.x, captionHeight}};
   const float left = std::clamp(display.x * 0.26f, 300.f * scale, 430.f * scale);
   const float rw = display.x - left;
   const float upper = std::floor(h * 0.56f);
@@ -71,17 +84,34 @@ inline Layout computeLayout(ImVec2 display, float menuHeight, float scale) {
   return l;
 }
 
+/// The embed form (a figure in a course page, `#embed=camera,world`): the named views side by side in
+/// their order, filling the display above the caption box; no menu, no panels.
+inline Layout computeEmbedLayout(ImVec2 display, float captionHeight, const std::vector<ViewKind>& views) {
+  Layout l;
+  l.onlyViews = views;
+  const float h = std::max(1.f, display.y - captionHeight);
+  l.caption = {{0, h}, {display.x, captionHeight}};
+  const float w = std::floor(display.x / float(std::max<size_t>(1, views.size())));
+  for (size_t i = 0; i < views.size(); ++i) {
+    const Rect r{{w * float(i), 0}, {i + 1 == views.size() ? display.x - w * float(i) : w, h}};
+    if (views[i] == ViewKind::world) l.world = r;
+    if (views[i] == ViewKind::camera) l.camera = r;
+    if (views[i] == ViewKind::npc) l.npc = r;
+  }
+  return l;
+}
+
 /// Positions the next window: always on a relayout frame or in the compact layout (whose windows
 /// do not move), else only the first time.
 inline void placeNext(const Layout& l, const Rect& r, bool relayout) {
-  const ImGuiCond cond = relayout || l.compact ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+  const ImGuiCond cond = relayout || l.compact || !l.onlyViews.empty() ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
   ImGui::SetNextWindowPos(r.pos, cond);
   ImGui::SetNextWindowSize(r.size, cond);
 }
 
 /// The windows' flags in layout `l` besides `flags`: fixed in place in the compact layout.
 inline ImGuiWindowFlags layoutFlags(const Layout& l, ImGuiWindowFlags flags) {
-  return l.compact ? flags | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse : flags;
+  return l.compact || !l.onlyViews.empty() ? flags | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse : flags;
 }
 
 /// The switcher's height at UI scale `scale` (a row of buttons large enough for a finger).
@@ -93,9 +123,11 @@ inline float switcherHeight() {
 /// The layout of this frame: compact where it is allowed and the display is too small.
 inline Layout currentLayout(const ViewerState& s, float scale) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
+  if (!s.embedViews.empty()) return computeEmbedLayout(display, s.captionHeight, s.embedViews);
   if (s.compactAllowed && tooSmallForDesktop(display, scale))
-    return computeCompactLayout(display, ImGui::GetFrameHeight(), switcherHeight(), s.compactPanel != ViewerState::noPanel);
-  return computeLayout(display, ImGui::GetFrameHeight(), scale);
+    return computeCompactLayout(display, ImGui::GetFrameHeight(), switcherHeight(), s.compactPanel != ViewerState::noPanel,
+                                s.captionHeight);
+  return computeLayout(display, ImGui::GetFrameHeight(), scale, s.captionHeight);
 }
 
 }  // namespace vplab::ui

@@ -61,6 +61,7 @@ void Menus::menuBar() {
         }
       ImGui::EndMenu();
     }
+    lessonsMenu();
     ImGui::Separator();
     const bool exportOpen = ImGui::BeginMenu("Export a view");
     ui::recordRect(s_, "menu.export");
@@ -92,6 +93,36 @@ void Menus::menuBar() {
   ImGui::EndMainMenuBar();
 }
 
+void Menus::lessonsMenu() {
+  // The lessons in the labels' language first, then the others (a German course may show an English one).
+  const Language first = s_.display.language;
+  const Language second = first == Language::de ? Language::en : Language::de;
+  const std::vector<LessonFileInfo> mine = listBundledLessons(first), others = listBundledLessons(second);
+  const bool open = ImGui::BeginMenu("Lessons", !mine.empty() || !others.empty());
+  ui::recordRect(s_, "menu.lessons");
+  if (!open) return;
+  auto items = [this](const std::vector<LessonFileInfo>& lessons, const char* prefix) {
+    for (const LessonFileInfo& l : lessons) {
+      const std::string label = prefix + l.title + "##" + l.file.filename().string();
+      if (ImGui::MenuItem(label.c_str())) session_.openLesson(l.file);
+      ui::recordRect(s_, ("menu.lesson." + l.file.stem().string()).c_str());
+    }
+  };
+  items(mine, "");
+  if (!others.empty()) {
+    ImGui::Separator();
+    items(others, second == Language::de ? "(Deutsch) " : "(English) ");
+  }
+  if (s_.lesson) {
+    ImGui::Separator();
+    if (ImGui::MenuItem("Close the lesson", "Esc")) {
+      s_.lesson.reset();
+      s_.lessonMarks.clear();
+    }
+  }
+  ImGui::EndMenu();
+}
+
 void Menus::shortcuts() {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.WantTextInput) return;
@@ -117,8 +148,8 @@ void Menus::shortcuts() {
   }
   if (pressed(keys::kF1)) s_.showHelp = !s_.showHelp;
   if (pressed(keys::kF12) && !session_.browser()) s_.screenshotRequested = true;
-  if (pressed(keys::kEscape)) s_.probe.reset();
-  for (size_t i = 0; i < kAllStyles.size(); ++i)  // 1 to 5
+  if (pressed(keys::kEscape) && !s_.lesson) s_.probe.reset();  // in a lesson: the lesson's (app/ui/lesson_presenter.h)
+  for (size_t i = 0; i < kAllStyles.size() && !s_.lesson; ++i)  // 1 to 5; in a lesson they type a step's number
     if (pressed(keys::kDigit1 + int(i)))
       s_.display.camera.style = s_.display.world.style = s_.display.npc.style = kAllStyles[i];
   if (pressed(keys::kP)) {

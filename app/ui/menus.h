@@ -32,6 +32,8 @@ class Menus {
 
  private:
   void exportMenu();
+  /// File > Lessons: the bundled lessons (app/core/lesson.h).
+  void lessonsMenu();
 
   GlContext& ctx_;
   ViewerState& s_;

@@ -34,11 +34,28 @@ void matrixTable(ViewerState& s, const char* name, const char* id, const Mat4& m
   const float needed = 4 * (widest + ImGui::GetStyle().CellPadding.x * 2 + 2);
   const float fontScale = std::clamp(ImGui::GetContentRegionAvail().x / needed, 0.5f, 1.f);
   ImGui::SetWindowFontScale(fontScale);
+  // A lesson's step may point at the matrix, a row, a column or an entry of it (in the column-vector
+  // form; the row-vector form shows it transposed).
+  auto marked = [&](int r, int c) {
+    if (s.seedForm) std::swap(r, c);
+    for (const LessonHighlight& h : s.lessonMarks)
+      if (h.kind == LessonHighlight::Kind::matrix && h.matrix == id && (h.row < 0 || h.row == r) && (h.column < 0 || h.column == c))
+        return true;
+    return false;
+  };
+  bool anyMarked = false;
+  for (int k = 0; k < 16; ++k) anyMarked = anyMarked || marked(k / 4, k % 4);
+  if (anyMarked && s.lessonScroll) {
+    ImGui::SetScrollHereY(0.2f);  // the step's matrix comes into sight, once
+    s.lessonScroll = false;
+  }
+  const ImU32 markColor = ImGui::ColorConvertFloat4ToU32(ImVec4(accentColor().x, accentColor().y, accentColor().z, 0.35f));
   if (ImGui::BeginTable("m", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchSame)) {
     for (int r = 0; r < 4; ++r) {
       ImGui::TableNextRow();
       for (int c = 0; c < 4; ++c) {
         ImGui::TableNextColumn();
+        if (marked(r, c)) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, markColor);
         ImGui::TextUnformatted(cells[r][c].c_str());
       }
     }

@@ -160,6 +160,7 @@ int runViewerWindow(ViewerLaunch launch) {
     viewer.session().offerRecoveries(std::move(recoveries));
     viewer.session().enableAutosave(stateDir, kAutosaveDelay);
   }
+  if (!launch.lesson.empty()) viewer.session().openLesson(launch.lesson, launch.lessonStep);
   try {
     const int status = loop(window, viewer, input, signals, launch);
     // The views' render thread finishes the image it is drawing before the viewer ends (a GL draw

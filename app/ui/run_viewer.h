@@ -9,6 +9,8 @@ namespace vplab {
 
 struct ViewerLaunch {
   Scene scene;
+  std::string lesson;               // a lesson file to present (README "Lessons"), or empty
+  size_t lessonStep = 0;            // its step to open, from 0
   int width = 1280, height = 720;   // the window, in screen units
   float uiScale = 1.f;              // larger fonts and handles for projectors
   int quitAfterFrames = 0;          // > 0: quit by itself after that many frames (smoke tests)

@@ -2,6 +2,7 @@
 #include "app/ui/session.h"
 
 #include "app/core/assets.h"
+#include "app/ui/lesson_presenter.h"
 #include "app/ui/panels.h"
 #include "app/ui/widgets.h"
 #include "pipeline/error.h"
@@ -173,17 +174,50 @@ void Session::startDocument(Scene scene, bool dirty) {
   state_.stepThrough = {};
   state_.drag = {};
   state_.morphPlaying = false;
-  // The view settings of a fresh start (see the constructor); the user's UI scale, aspect lock and
-  // antialiasing, the theme and the labels' language are preferences, not choices for a scene, and stay.
-  const Theme theme = state_.display.theme;
-  const Language language = state_.display.language;
-  state_.display = DisplaySettings{};
-  state_.display.theme = theme;
-  state_.display.language = language;
-  state_.display.camera.style = Style::shaded;
-  state_.pipeline = ViewerState(Scene{}).pipeline;
+  state_.display = freshDisplay();
+  state_.pipeline = kFreshPipeline;
   state_.display.world.orbit = defaultWorldOrbit(state_.doc.shown(), state_.worldAspect);
+  state_.lesson.reset();  // a lesson opens its own document after this (openLesson)
+  state_.lessonMarks.clear();
   changed_();
+}
+
+DisplaySettings Session::freshDisplay() const {
+  // The user's UI scale, aspect lock and antialiasing, the theme and the labels' language are
+  // preferences, not choices for a scene, and stay.
+  DisplaySettings d;
+  d.theme = state_.display.theme;
+  d.language = state_.display.language;
+  d.camera.style = Style::shaded;
+  return d;
+}
+
+LessonContext Session::lessonContext() const {
+  LessonContext c;
+  const std::filesystem::path assets = assetsDirectory();
+  c.scenesDirectory = assets.empty() ? std::filesystem::path() : assets / "scenes";
+  c.fresh = freshDisplay();
+  c.worldAspect = state_.worldAspect;
+  return c;
+}
+
+void Session::openLesson(const std::filesystem::path& file, size_t step) {
+  // Read (and checked) before anything is asked or replaced: a broken lesson changes nothing.
+  std::optional<Lesson> lesson;
+  try {
+    lesson = loadLesson(file, lessonContext());
+  } catch (const Error& e) {
+    setStatus(e.what(), true);
+    return;
+  }
+  auto shared = std::make_shared<Lesson>(std::move(*lesson));
+  unlessUnsaved([this, shared, step] {
+    const size_t first = std::min(step, shared->steps.size() - 1);
+    startDocument(shared->steps[first].state.scene);
+    setStatus("lesson: " + shared->title, false);
+    state_.lesson.emplace(std::move(*shared), first);
+    changed_();
+  });
 }
 
 void Session::openScene(const std::filesystem::path& file) {
@@ -295,6 +329,19 @@ void Session::useFileChooser(std::unique_ptr<FileChooser> chooser, bool browser)
 
 UrlState Session::urlState() const {
   UrlState u;
+  u.embed = state_.embedViews;
+  // A bundled lesson's step is the whole state: the link names the lesson and the step.
+  if (state_.lesson) {
+    const std::filesystem::path& file = state_.lesson->lesson().file;
+    const std::string name = file.stem().string();  // "02-view-orientation.en"
+    std::error_code ec;
+    const std::filesystem::path bundled = bundledLessonFile(name, state_.display.language);
+    if (!bundled.empty() && std::filesystem::equivalent(bundled, file, ec)) {
+      u.lesson = name;
+      u.step = state_.lesson->step() + 1;
+      return u;
+    }
+  }
   // The built-in scene is the bundled default.json (the same dump): a link names it as "default".
   if (state_.doc.path().empty()) u.scene = "default";
   else if (isBundled(state_.doc.path())) u.scene = state_.doc.path().stem().string();
@@ -309,6 +356,26 @@ UrlState Session::urlState() const {
 }
 
 void Session::showUrlState(const UrlState& link, bool atStart) {
+  if (link.embed != state_.embedViews) {
+    state_.embedViews = link.embed;
+    changed_();
+  }
+  if (!link.lesson.empty()) {
+    const std::filesystem::path file = bundledLessonFile(link.lesson, state_.display.language);
+    if (file.empty()) throw Error("the link's lesson \"" + link.lesson + "\" is not one of vplab's bundled lessons");
+    const size_t step = link.step > 0 ? link.step - 1 : 0;
+    std::error_code ec;
+    if (state_.lesson && std::filesystem::equivalent(state_.lesson->lesson().file, file, ec)) {
+      if (step >= state_.lesson->stepCount())
+        throw Error("the link's step " + std::to_string(link.step) + " is not one of the lesson's " +
+                    std::to_string(state_.lesson->stepCount()) + " steps");
+      ui::goToStep(state_, step, ImGui::GetTime());  // the address followed a step: move there
+      changed_();
+      return;
+    }
+    openLesson(file, step);
+    return;
+  }
   auto showViews = [this, link] {
     if (link.cameraStyle) state_.display.camera.style = *link.cameraStyle;
     if (link.worldStyle) state_.display.world.style = *link.worldStyle;

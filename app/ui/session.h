@@ -48,6 +48,13 @@ class Session {
   /// far too slow for the new one; README "The viewer").
   void startDocument(Scene scene, bool dirty = false);
 
+  /// Opens a lesson (README "Lessons") at `step` (from 0), asking first when changes would be lost:
+  /// its first step's scene becomes a new document and the caption box shows the step. A lesson
+  /// that cannot be read leaves everything as it was and says why in the status line.
+  void openLesson(const std::filesystem::path& file, size_t step = 0);
+  /// What a lesson's steps are resolved against: the bundled scenes and a fresh document's views.
+  LessonContext lessonContext() const;
+
   // ------------------------------------------------------------ each frame
   /// At the frame's start: an OBJ the scene panel asked for starts loading; a finished load arrives.
   /// Returns whether something arrived (the frame then settles again).
@@ -101,6 +108,9 @@ class Session {
   void setStatus(std::string message, bool error);
 
  private:
+  /// The views of a fresh start (see the constructor); the user's preferences (theme, labels'
+  /// language) kept.
+  DisplaySettings freshDisplay() const;
   void saveScene(const std::filesystem::path& file);
   void writeScene(const std::filesystem::path& file);
   void loadingWindow(float scale);

@@ -3,10 +3,11 @@
 // Index: 1 helpers  2 drawing a view  3 the windows  4 interaction
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include "app/ui/layout.h"
+#include "app/core/lesson_marks.h"
 #include "app/core/picking.h"
 #include "app/ui/view_panes.h"
+#include "app/ui/lesson_presenter.h"
 #include "app/ui/widgets.h"
-#include "pipeline/clip_steps.h"
 
 #include <imgui.h>
 #include <imgui_internal.h>
@@ -132,26 +133,7 @@ std::optional<Vec3> ViewPanes::probePositionOf(ViewKind view) const {
 // The clipping step-through's current polygon and plane, for the NPC and world views.
 void ViewPanes::stepHighlight() {
   const StepThrough& st = s_.stepThrough;
-  if (!st.active) return;
-  for (size_t i = 0; i < s_.run().sceneIndex.size(); ++i) {
-    if (int(s_.run().sceneIndex[i]) != st.object) continue;
-    const ObjectRun& o = s_.run().objects[i];
-    if (st.face < 0 || size_t(st.face) >= o.faceCount()) return;
-    const std::vector<ClipStep> steps = clipSteps(s_.run(), o, size_t(st.face));
-    Highlights::Step h;
-    const bool start = st.step == 0;
-    const ClipStep& step = steps[size_t(start ? 0 : std::min<int>(st.step, int(steps.size())) - 1)];
-    const std::vector<ClipVertex>& polygon = start ? step.input : step.output;
-    h.plane = start ? -1 : step.plane;
-    for (size_t k = 0; k < polygon.size(); ++k) {
-      Vec4 p = polygon[k].p;
-      snapToPlanes(p, polygon[k].onPlanes);
-      if (p.w <= 0) continue;  // behind the eye: no point in NPC (only before the first passes)
-      h.polygonNpc.push_back(Vec3(p) / p.w);
-      h.created.push_back(!start && step.created[k]);
-    }
-    s_.highlights.step = std::move(h);
-  }
+  if (st.active) s_.highlights.step = stepThroughMark(s_.run(), st.object, st.face, st.step);
 }
 
 // ---------------------------------------------------------------- 3 the windows
@@ -161,7 +143,7 @@ void ViewPanes::viewWindows() {
   const ImVec2 fbScale = io.DisplayFramebufferScale;
   const ui::Layout layout = ui::currentLayout(s_, uiScale_);
   // The compact layout shows only the view chosen in its switcher.
-  auto shown = [&](ViewKind kind) { return !layout.compact || s_.compactView == kind; };
+  auto shown = [&](ViewKind kind) { return layout.shows(kind, s_.compactView); };
   const ImGuiWindowFlags flags = ui::layoutFlags(layout, kViewFlags);
 
   Highlights& hl = s_.highlights;
@@ -176,6 +158,7 @@ void ViewPanes::viewWindows() {
                           handle == s_.hovered || (s_.drag.kind == Drag::Kind::handle && s_.drag.handle == handle)});
   hl.vanishingObject = s_.selectedObject;
   stepHighlight();
+  ui::addLessonMarks(s_, hl);
 
   if (!ImGui::IsMouseDown(ImGuiMouseButton_Left) && !ImGui::IsMouseDown(ImGuiMouseButton_Right) &&
       !ImGui::IsMouseDown(ImGuiMouseButton_Middle))
@@ -323,6 +306,7 @@ void ViewPanes::lectureWindow() {
     hl = {};
     hl.vanishingObject = s_.selectedObject;
     stepHighlight();
+    ui::addLessonMarks(s_, hl);
     const ImVec2 size = io.DisplaySize;
     const ViewKind kind = s_.lectureView;
     if (kind == ViewKind::camera) {

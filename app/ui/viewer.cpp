@@ -5,6 +5,7 @@
 #include "app/fonts/font_file.h"
 #include "app/gl/shader.h"
 #include "app/ui/layout.h"
+#include "app/ui/lesson_presenter.h"
 #include "app/ui/panels.h"
 #include "app/ui/widgets.h"
 #include "pipeline/error.h"
@@ -141,6 +142,7 @@ void Viewer::makeCurrent() { ImGui::SetCurrentContext(imgui_); }
 
 double Viewer::wakeIn() const {
   if (settleFrames_ > 0 || s_.morphPlaying || s_.animateUntil > imgui_->Time) return 0;
+  if (s_.lesson && (s_.lesson->moving(imgui_->Time) || !s_.lesson->settled())) return 0;  // moving into a step
   double wake = 1e9;
   // A run of the pipeline or a view's image finished on its thread is shown at once; until then the
   // busy mark's spinner turns.
@@ -174,9 +176,15 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
     s_.display.morphing.t = std::min(4.0, s_.display.morphing.t + ImGui::GetIO().DeltaTime * s_.morphSpeed);
     if (s_.display.morphing.t >= 4) s_.morphPlaying = false;
   }
-  if (width != lastWidth_ || height != lastHeight_) relayout_ = true;
+  const double now = ImGui::GetTime();
+  ui::lessonKeys(s_, now);
+  ui::lessonFrame(s_, now);
+  // A lesson's caption box takes the bottom of the layout (not in lecture mode: there it lies over the view).
+  const float captionHeight = s_.lectureMode ? 0 : ui::lessonCaptionHeight(s_, ImGui::GetIO().DisplaySize.x);
+  if (width != lastWidth_ || height != lastHeight_ || captionHeight != s_.captionHeight) relayout_ = true;
   lastWidth_ = width;
   lastHeight_ = height;
+  s_.captionHeight = captionHeight;
   panes_.beginFrame(uiScale_, relayout_);
   menus_.beginFrame(uiScale_);
 
@@ -185,6 +193,17 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
     s_.doc.endFrame(true);
     updateRun();
     panes_.lectureWindow();
+    if (s_.lesson) {
+      const ImVec2 display = ImGui::GetIO().DisplaySize;
+      const float h = std::min(display.y * 0.4f, ui::lessonCaptionHeight(s_, display.x));
+      ui::lessonCaption(s_, {{0, display.y - h}, {display.x, h}}, now);
+    }
+  } else if (!s_.embedViews.empty()) {
+    // The embed form: the named views and the caption, nothing else (a figure in a course page).
+    s_.doc.endFrame(true);
+    updateRun();
+    panes_.viewWindows();
+    ui::lessonCaption(s_, ui::currentLayout(s_, uiScale_).caption, now);
   } else {
     menus_.menuBar();
     controlsWindow();
@@ -194,6 +213,7 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
     inspectWindow();
     compactSwitcher();
     panes_.morphWindow();
+    ui::lessonCaption(s_, ui::currentLayout(s_, uiScale_).caption, now);
   }
   menus_.helpWindow();
   session_.drawDialogs(uiScale_);
@@ -209,8 +229,10 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   const ImGuiID active = ImGui::GetActiveID();
   if (active != lastActive_ && lastActive_ != 0 && s_.doc.generation() == generation) s_.doc.recordStep(atFrameStart);
   lastActive_ = active;
-  const bool editing = active != 0 || s_.drag.kind == Drag::Kind::handle;
+  // A move into a lesson's step is one undo step, recorded when it is over.
+  const bool editing = active != 0 || s_.drag.kind == Drag::Kind::handle || ui::lessonMoving(s_, now);
   s_.doc.endFrame(editing);
+  ui::lessonEndFrame(s_, now);
   session_.endFrame(ImGui::GetTime());
 
   const GladGLContext& gl = ctx_.gl();

@@ -3,6 +3,7 @@
 
 #include "app/core/assets.h"
 #include "app/core/document.h"
+#include "app/core/lesson_player.h"
 #include "app/core/picking.h"
 #include "app/core/tabs.h"
 #include "app/views/views.h"
@@ -37,6 +38,9 @@ struct StepThrough {
 };
 
 
+/// The pipeline's options of a fresh document: clipping in NPC, no bounding-box test, the clipped edges.
+inline constexpr PipelineOptions kFreshPipeline{ClipStrategy::npc, false, true};
+
 struct ViewerState;
 /// Brings the tab `name` (one of kTabNames) forward; false for any other name.
 bool selectTab(ViewerState& s, std::string_view name);
@@ -47,7 +51,7 @@ struct ViewerState {
   Document doc;
   DisplaySettings display;     // how the views show the scene: styles, observers, overlays (kept, linked)
   Highlights highlights;       // this frame's marks: the probe, the handles, the step-through (never kept)
-  PipelineOptions pipeline{ClipStrategy::npc, false, true};
+  PipelineOptions pipeline = kFreshPipeline;
   /// The CPU pipeline's run of doc.shown(), published whole (app/ui/viewer.h, updateRun): the
   /// render thread draws from the same run, never a copy.
   std::shared_ptr<const PipelineRun> ran = std::make_shared<const PipelineRun>();
@@ -105,6 +109,15 @@ struct ViewerState {
   int controlsTab = cameraTab;
   int inspectTab = probeTab;
   bool showStepThrough = false; // bring the Lecture tab's step-through forward (Shift+click in the camera view)
+
+  // A lesson being presented (app/ui/lesson_presenter.h): its steps and the move into the step shown.
+  std::optional<LessonPlayer> lesson;
+  double lessonSeconds = 0.8;   // how long the move from one step into the next takes
+  std::string lessonTyped;      // the digits of a step number typed so far (Enter goes there)
+  std::vector<LessonHighlight> lessonMarks;  // the highlights of the step reached (none while moving)
+  bool lessonScroll = false;    // the step's highlighted matrix is still to be scrolled into sight
+  std::vector<ViewKind> embedViews;  // the embed form (a link's `embed=`): only these views and the caption
+  float captionHeight = 0;      // the lesson's caption box, across the bottom of the layout (0: none)
 
   std::string status;           // the last message (saved, loaded, an error)
   bool statusIsError = false;

@@ -151,6 +151,15 @@ void npcView(const ViewInput& in, DisplayList& list) {
   // are not pushed back).
   cube.emit(list, Space::npc, Depth::test, scale, /*pushedBack=*/true);
   if (in.highlights.probeNpc) newEdges.point(*in.highlights.probeNpc, pal.probe, 14.f);
+  // A lesson's highlighted planes of the view volume: faces of the cube, outlined.
+  for (int plane : in.highlights.planes) {
+    if (plane < 0 || plane >= kPlaneCount) continue;
+    const auto ring = geometry::cubeFaceRing(plane);
+    using geometry::cubeCorner;
+    const std::array<Vec3, 4> face{cubeCorner(ring[0]), cubeCorner(ring[1]), cubeCorner(ring[2]), cubeCorner(ring[3])};
+    newEdges.quad(face[0], face[1], face[2], face[3], pal.stepPlane);
+    newEdges.polyline(face, true, pal.handleHot, theme::kLineWidth + 1.5f);
+  }
   if (const auto& step = in.highlights.step) {
     // The clipping step-through: the plane being applied as a face of the cube, the polygon after
     // the step, its new vertices.

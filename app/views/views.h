@@ -90,6 +90,10 @@ struct Highlights {
     bool operator==(const Step&) const = default;
   };
   std::optional<Step> step;
+  /// A lesson step's highlights (app/core/lesson.h): planes (0–5 the view volume's, left, right,
+  /// bottom, top, back, front; 6 + k the scene's user clip plane k) and an axis of VRC (0 U, 1 V, 2 N).
+  std::vector<int> planes;
+  int axis = -1;
   int vanishingObject = -1;  // scene index of the object whose vanishing points are drawn
   bool operator==(const Highlights&) const = default;
 };

@@ -200,6 +200,27 @@ DisplayList worldView(const ViewInput& in) {
     if (m.hot) label(m.wc, m.name, pal.handleHot, {10, -12});
   }
   if (hl.probeWc) b.point(*hl.probeWc, pal.probe, 14.f);
+  // A lesson's highlighted planes: a face of the view volume as the step-through shows its plane,
+  // outlined; a user clip plane's square outlined thick. Its highlighted axis: drawn over, thicker.
+  for (int plane : hl.planes) {
+    if (plane >= 0 && plane < kPlaneCount) {
+      const auto c = geometry::viewVolumeCorners(wcFromNpc);
+      const auto ring = geometry::cubeFaceRing(plane);
+      const std::array<Vec3, 4> face{c[size_t(ring[0])], c[size_t(ring[1])], c[size_t(ring[2])], c[size_t(ring[3])]};
+      b.quad(face[0], face[1], face[2], face[3], pal.stepPlane);
+      b.polyline(face, true, pal.handleHot, theme::kLineWidth + 1.5f);
+    } else if (plane >= kPlaneCount && size_t(plane - kPlaneCount) < scene.clipPlanes.size()) {
+      const auto q = geometry::clipPlaneSquare(scene.clipPlanes[size_t(plane - kPlaneCount)], planeSize);
+      b.polyline(q, true, pal.handleHot, theme::kLineWidth + 1.5f);
+    }
+  }
+  if (hl.axis >= 0 && hl.axis < 3) {
+    const Camera& cam = run.camera;
+    const double len = 0.3 * std::max(cam.window.width(), cam.window.height());
+    const Vec3 axis = hl.axis == 0 ? run.vrc.u : hl.axis == 1 ? run.vrc.v : run.vrc.n;
+    b.line(cam.vrp, cam.vrp + len * axis, pal.handleHot, theme::kLineWidth + 3.f);
+    b.point(cam.vrp + len * axis, pal.handleHot, 13.f);
+  }
   if (const auto& step = hl.step) {
     // The clipping step-through in WC: the frustum's face of the plane being applied, the polygon.
     if (step->plane >= 0 && step->plane < kPlaneCount) {

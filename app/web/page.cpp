@@ -263,6 +263,14 @@ struct Page {
                    {"front", c.front},
                    {"back", c.back},
                    {"projection", toString(c.projection)}};
+    if (s.lesson)
+      j["lesson"] = {{"title", s.lesson->lesson().title},
+                     {"file", s.lesson->lesson().file.filename().string()},
+                     {"step", s.lesson->step() + 1},  // from 1, as the caption box and the link count
+                     {"steps", s.lesson->stepCount()},
+                     {"settled", s.lesson->settled()}};
+    j["embed"] = nlohmann::json::array();
+    for (ViewKind v : s.embedViews) j["embed"].push_back(std::string(toString(v)));
     nlohmann::json rects = nlohmann::json::object();
     for (const auto& [id, r] : s.rects) rects[id] = {r.x, r.y, r.z, r.w};
     j["rects"] = std::move(rects);

@@ -9,7 +9,7 @@
 #                     imgui (Dear ImGui and its backends); none: neither
 #   about_<dir>       what the layer is, for the README
 set(layers pipeline io course app/views app/core app/fonts app/export app/context app/gl app/render app/ui
-           app/course app bench app/web)
+           app/course app/lessons app bench app/web)
 
 set(uses_pipeline pipeline/)
 set(outside_pipeline none)
@@ -58,6 +58,10 @@ set(about_app/ui "the viewer: the frame, its session, menus, panels, the views' 
 set(uses_app/course pipeline/ io/ course/ app/views/ app/fonts/ app/export/ app/context/ app/gl/ app/render/ app/course/)
 set(outside_app/course none)
 set(about_app/course "the commands vplab exercise and vplab grade on course/: sheets, reports, pictures graded")
+
+set(uses_app/lessons pipeline/ io/ app/core/ app/views/ app/fonts/ app/export/ app/context/ app/gl/ app/render/ app/lessons/)
+set(outside_app/lessons none)
+set(about_app/lessons "vplab render --lesson: a lesson's steps as pictures with captions, its index, its animation")
 
 set(uses_app pipeline/ io/ course/ app/ bench/)
 set(outside_app none)

@@ -126,5 +126,29 @@ TEST(WorldView, StepThroughPolygonIsTakenBackFromNpc) {
   EXPECT_NEAR(h.y / h.w, 0.2, 1e-9);
 }
 
+TEST(WorldView, ALessonsHighlightedPlaneIsAFaceOfTheFrustumOutlinedAndItsAxisIsDrawnOver) {
+  test::ViewFixture f(defaultScene(), Style::shaded);
+  f.settings.overlays = {false, false, false, false, false, false, false};
+  f.highlights.planes = {5};  // front: z = 1 in NPC
+  f.highlights.axis = 2;      // N
+  const DisplayList list = worldView(f.input());
+  const auto triangles = test::batchesOf<Triangles>(list);
+  ASSERT_EQ(triangles.size(), 1u);
+  for (const Vertex& v : triangles[0]->vertices) EXPECT_EQ(cubeCornerOf(f.run, v.position) & 4, 4) << "a corner of z = 1";
+  size_t outline = 0, axis = 0;
+  const glm::vec3 hot(theme::kDark.handleHot);
+  for (const Lines* l : test::batchesOf<Lines>(list))
+    for (size_t i = 0; i < l->segments.size(); i += 2) {
+      if (glm::vec3(l->segments[i].color) != hot) continue;
+      const Vec3 a = l->segments[i].position, b = l->segments[i + 1].position;
+      if (cubeCornerOf(f.run, a) >= 0 && cubeCornerOf(f.run, b) >= 0) ++outline;
+      // The axis: from VRP along N.
+      const Vec3 along = glm::normalize(b - a);
+      if (glm::length(a - f.run.camera.vrp) < 1e-9 && glm::length(along - f.run.vrc.n) < 1e-9) ++axis;
+    }
+  EXPECT_EQ(outline, 4u) << "the face's four edges";
+  EXPECT_EQ(axis, 1u);
+}
+
 }  // namespace
 }  // namespace vplab

@@ -42,12 +42,15 @@ J threeSteps() {
               {"camera", {{"prp", {0, 0, 8}}}},
               {"views", {{"world", {{"style", "wire"}, {"orbit", {{"yaw_deg", 80}}}}}}},
               {"overlays", {{"vertex_names", true}}},
+              {"morph", 2.5},
               {"tab", "matrices"},
               {"highlight", {{{"handle", "prp"}}, {{"matrix", "vrcFromWc"}, {"row", 2}}, {{"axis", "n"}}}}},
              {{"caption", "A vertex of the cube."},
               {"objects", {{"sphere", {{"visible", false}}}, {"cube", {{"translate", {1, 0, 0}}}}}},
               {"probe", {{"object", "cube"}, {"vertex", 3}}},
               {"strategy", "wc"},
+              {"bounding_box", true},
+              {"select", "cylinder"},
               {"free", true}}}}};
 }
 
@@ -73,6 +76,9 @@ TEST(Lesson, EachStepIsThePreviousStepAsWrittenWithItsOwnChanges) {
   EXPECT_EQ(s1.display.world.orbit.pitchDeg, s0.display.world.orbit.pitchDeg);  // the orbit's other parts stay
   EXPECT_TRUE(s1.display.overlays.vertexNames);
   EXPECT_EQ(s1.tab, "matrices");
+  EXPECT_EQ(s1.display.morphing.t, 2.5);
+  EXPECT_TRUE(s1.morphShown);  // a step giving the morph's t opens its window
+  EXPECT_FALSE(s0.morphShown);
   ASSERT_EQ(s1.highlights.size(), 3u);
   EXPECT_EQ(s1.highlights[0].kind, LessonHighlight::Kind::handle);
   EXPECT_EQ(s1.highlights[0].handle, Handle::prp);
@@ -94,6 +100,10 @@ TEST(Lesson, EachStepIsThePreviousStepAsWrittenWithItsOwnChanges) {
   EXPECT_EQ(s2.probe->object, 0u);
   EXPECT_EQ(s2.probe->vertex, 3u);
   EXPECT_EQ(s2.strategy, ClipStrategy::wc);
+  EXPECT_TRUE(s2.boundingBoxTest);
+  EXPECT_EQ(s2.selected, 2u);
+  EXPECT_TRUE(s2.morphShown);  // carried on
+  EXPECT_EQ(s2.display.morphing.t, 2.5);
   EXPECT_TRUE(lesson.steps[2].free);
   EXPECT_FALSE(s1.probe);
 }
@@ -191,6 +201,8 @@ TEST(Lesson, EveryErrorNamesTheFileTheStepAndTheKey) {
        {"/steps/1/step_through/plane: 7 is out of range [0, 6]"}},
       {"a face beyond the mesh", [](J& j) { j["steps"][1]["step_through"] = {{"object", "cube"}, {"face", 6}}; },
        {"/steps/1/step_through/face: 6 is out of range [0, 5]"}},
+      {"a selection the scene lacks", [](J& j) { j["steps"][2]["select"] = "teapot"; },
+       {"/steps/2/select: the scene has no object named \"teapot\""}},
       {"free is not a boolean", [](J& j) { j["steps"][2]["free"] = "yes"; }, {"/steps/2/free: must be true or false, not string"}},
   };
   for (const BadLesson& c : cases) {
@@ -228,6 +240,7 @@ TEST(Lesson, LimitsAreCheckedBeforeAnythingIsBuiltForThem) {
   scenes["steps"][2]["scene"] = "parallel";
   scenes["steps"][2].erase("objects");
   scenes["steps"][2].erase("probe");
+  scenes["steps"][2].erase("select");
   EXPECT_THAT(message(scenes, [](LessonLimits& l) { l.scenes = 1; }),
               HasSubstr("/steps/2/scene: a lesson may show at most 1 different scenes"));
   EXPECT_EQ(message(scenes, [](LessonLimits&) {}), "no error");
@@ -262,6 +275,27 @@ TEST(Lesson, HostileFilesEndInClearErrors) {
   } catch (const Error& e) {
     EXPECT_THAT(e.what(), HasSubstr("missing.json"));
   }
+}
+
+}  // namespace
+}  // namespace vplab
+
+namespace vplab {
+namespace {
+
+TEST(Lesson, TheStepThroughGoesOnThroughTheEnabledUserPlanes) {
+  // clip-planes.json has two user planes, both enabled: the passes are the six, then those two.
+  auto step = [](int plane, bool secondEnabled) {
+    J j{{"title", "Planes"},
+        {"language", "en"},
+        {"steps", {{{"caption", "x"}, {"scene", "clip-planes"}, {"step_through", {{"object", "cube"}, {"face", 0}, {"plane", plane}}}}}}};
+    if (!secondEnabled) j["steps"][0]["clip_planes"] = {{{"normal", {1, 0, 0}}, {"point", {0, 0, 0}}}, {{"normal", {0, 1, 0}}, {"point", {0, 0, 0}}, {"enabled", false}}};
+    return parse(j).steps[0].state.stepThrough->plane;
+  };
+  EXPECT_EQ(step(8, true), 8);
+  EXPECT_THROW(step(9, true), Error);
+  EXPECT_EQ(step(7, false), 7);
+  EXPECT_THROW(step(8, false), Error);
 }
 
 }  // namespace

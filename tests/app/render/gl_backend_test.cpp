@@ -72,7 +72,7 @@ TEST(GlBackend, ABatchInASpaceTheViewDoesNotLookAtIsAnError) {
 TEST(GlBackend, ARunOfXrayBatchesDrawsTheHiddenPartsFaintly) {
   draw::DisplayList list = emptyList(40, 40, {0, 0, 0});
   draw::Fill square;
-  square.polygons.push_back({{1, 1, 1}, {{0, 0, 0.8}, {0.5, 0, 0.8}, {0.5, 1, 0.8}, {0, 1, 0.8}}, {4}});
+  square.polygons.push_back({{1, 1, 1}, {{0, 0, 0.8}, {0.5, 0, 0.8}, {0.5, 1, 0.8}, {0, 1, 0.8}}, {4}, nullptr, {}});
   list.add(square);
   draw::Lines red;
   red.widthPx = 4;

@@ -1,0 +1,25 @@
+#include "app/core/lesson_player.h"
+
+#include <algorithm>
+
+namespace vplab {
+
+LessonPlayer::LessonPlayer(Lesson lesson, size_t step) : lesson_(std::move(lesson)) {
+  step_ = std::min(step, lesson_.steps.empty() ? 0 : lesson_.steps.size() - 1);
+}
+
+void LessonPlayer::go(size_t step, const LessonState& shown, double now, double seconds) {
+  step_ = std::min(step, lesson_.steps.size() - 1);
+  from_ = shown;
+  start_ = now;
+  seconds_ = std::max(0.0, seconds);
+  settled_ = false;
+}
+
+LessonState LessonPlayer::stateAt(double now) const {
+  const LessonState& to = lesson_.steps[step_].state;
+  if (!moving(now)) return to;
+  return stateBetween(from_, to, easeInOut((now - start_) / seconds_));
+}
+
+}  // namespace vplab

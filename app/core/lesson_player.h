@@ -1,0 +1,46 @@
+// Presenting a lesson (README "Lessons"): which step is shown, and the move into it. The viewer
+// (app/ui/lesson_presenter.h) asks for the state to show each frame and applies it; this holds no
+// UI and no clock of its own (times are the caller's, in seconds).
+#pragma once
+
+#include "app/core/lesson.h"
+#include "app/core/lesson_transition.h"
+
+#include <optional>
+
+namespace vplab {
+
+class LessonPlayer {
+ public:
+  /// Starts at `step` (clamped to the lesson's), shown at once.
+  explicit LessonPlayer(Lesson lesson, size_t step = 0);
+
+  const Lesson& lesson() const { return lesson_; }
+  /// The step shown, or being moved into.
+  size_t step() const { return step_; }
+  size_t stepCount() const { return lesson_.steps.size(); }
+  const LessonStep& current() const { return lesson_.steps[step_]; }
+
+  /// Moves into `step` (clamped) from `shown`, what the lab shows now (a step's state, or what the
+  /// class made of it in a free step), over `seconds` from `now`; 0 seconds: at once. Going to the
+  /// step already shown restores its state too.
+  void go(size_t step, const LessonState& shown, double now, double seconds);
+
+  /// The state to show at `now`: between `shown` and the step's, eased in and out; the step's own
+  /// once the move is over.
+  LessonState stateAt(double now) const;
+  /// Whether the move is still under way at `now` (the viewer draws frames until it is over).
+  bool moving(double now) const { return now < start_ + seconds_; }
+  /// Whether the step's state has been applied once the move ended (the viewer records it once).
+  bool settled() const { return settled_; }
+  void markSettled() { settled_ = true; }
+
+ private:
+  Lesson lesson_;
+  size_t step_ = 0;
+  LessonState from_;
+  double start_ = 0, seconds_ = 0;
+  bool settled_ = false;
+};
+
+}  // namespace vplab

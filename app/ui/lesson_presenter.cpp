@@ -1,0 +1,256 @@
+// Index: 1 moving between steps  2 the keys  3 the caption box  4 the marks in the views
+#include "app/ui/lesson_presenter.h"
+
+#include "app/views/caption_text.h"
+#include "app/core/picking.h"
+#include "app/ui/keys.h"
+#include "app/ui/widgets.h"
+
+#define IMGUI_DEFINE_MATH_OPERATORS
+#include <imgui.h>
+#include <imgui_internal.h>
+
+#include <algorithm>
+#include <cctype>
+
+namespace vplab::ui {
+
+// ---------------------------------------------------------------- 1 moving between steps
+
+namespace {
+
+/// What the lab shows now, as a step's state: where a move into the next step starts.
+LessonState shownState(const ViewerState& s) {
+  LessonState shown;
+  shown.scene = s.doc.scene();
+  shown.display = s.display;
+  shown.strategy = s.pipeline.strategy;
+  shown.boundingBoxTest = s.pipeline.boundingBoxTest;
+  shown.morphShown = s.showMorph;
+  shown.selected = size_t(std::max(0, s.selectedObject));
+  return shown;
+}
+
+/// The state of this moment: the document's scene (recorded as one undo step once the move is over),
+/// the views' settings but the user's preferences (theme, language), the strategy.
+void applyState(ViewerState& s, const LessonState& state) {
+  s.doc.scene() = state.scene;
+  const Theme theme = s.display.theme;
+  const Language language = s.display.language;
+  s.display = state.display;
+  s.display.theme = theme;
+  s.display.language = language;
+  s.pipeline.strategy = state.strategy;
+  s.pipeline.boundingBoxTest = state.boundingBoxTest;
+  s.showMorph = state.morphShown;
+  s.selectedObject = int(state.selected);
+}
+
+/// Once the step is reached: its tab, probe, step-through and highlights.
+void applyMarks(ViewerState& s, const LessonState& state) {
+  if (!state.tab.empty()) selectTab(s, state.tab);
+  s.probe = state.probe;
+  s.probeShown = state.probe;  // the step chose the tab; a probe does not bring its own forward
+  if (state.stepThrough) {
+    s.stepThrough = {true, int(state.stepThrough->object), state.stepThrough->face, state.stepThrough->plane};
+    if (state.tab.empty()) s.showStepThrough = true;
+  } else {
+    s.stepThrough.active = false;
+  }
+  s.lessonMarks = state.highlights;
+  s.lessonScroll = !state.highlights.empty();
+  s.morphPlaying = false;
+}
+
+}  // namespace
+
+void goToStep(ViewerState& s, size_t step, double now) {
+  if (!s.lesson) return;
+  const bool sameScene = sameSceneObjects(s.doc.scene(), s.lesson->lesson().steps[std::min(step, s.lesson->stepCount() - 1)].state.scene);
+  s.lesson->go(step, shownState(s), now, sameScene ? s.lessonSeconds : 0);
+  s.lessonMarks.clear();
+  s.lessonTyped.clear();
+}
+
+bool lessonMoving(const ViewerState& s, double now) { return s.lesson && s.lesson->moving(now); }
+
+void lessonFrame(ViewerState& s, double now) {
+  if (!s.lesson || s.lesson->settled()) return;
+  applyState(s, s.lesson->stateAt(now));
+  if (s.lesson->moving(now)) return;
+  applyMarks(s, s.lesson->current().state);
+}
+
+void lessonEndFrame(ViewerState& s, double now) {
+  if (!s.lesson || s.lesson->settled() || s.lesson->moving(now)) return;
+  s.lesson->markSettled();
+  s.doc.markClean();
+}
+
+// ---------------------------------------------------------------- 2 the keys
+
+bool lessonKeys(ViewerState& s, double now) {
+  if (!s.lesson) return false;
+  if (ImGui::GetIO().WantTextInput || ImGui::GetIO().KeyCtrl) return true;
+  auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
+  const size_t step = s.lesson->step(), last = s.lesson->stepCount() - 1;
+  if (pressed(keys::kRight) || pressed(keys::kSpace) || pressed(keys::kPageDown)) goToStep(s, std::min(step + 1, last), now);
+  if (pressed(keys::kLeft) || pressed(keys::kPageUp)) goToStep(s, step == 0 ? 0 : step - 1, now);
+  if (ImGui::IsKeyPressed(keys::kHome, false)) goToStep(s, 0, now);
+  if (ImGui::IsKeyPressed(keys::kEnd, false)) goToStep(s, last, now);
+  for (ImWchar c : ImGui::GetIO().InputQueueCharacters)
+    if (c >= '0' && c <= '9' && s.lessonTyped.size() < 4) s.lessonTyped += char(c);
+  if ((ImGui::IsKeyPressed(keys::kEnter, false) || ImGui::IsKeyPressed(keys::kKeypadEnter, false)) && !s.lessonTyped.empty()) {
+    const size_t n = size_t(std::stoul(s.lessonTyped));  // numbered from 1, as the caption box shows them
+    goToStep(s, n == 0 ? 0 : n - 1, now);
+  }
+  if (ImGui::IsKeyPressed(keys::kEscape, false)) {
+    if (!s.lessonTyped.empty()) s.lessonTyped.clear();
+    else if (!s.lectureMode) {
+      s.lesson.reset();
+      s.lessonMarks.clear();
+    }
+  }
+  return true;
+}
+
+// ---------------------------------------------------------------- 3 the caption box
+
+namespace {
+
+/// One piece of a caption placed on a line, relative to the caption's top left corner.
+struct Placed {
+  std::string text;
+  ImVec2 at;
+  float size;
+  bool math;
+};
+
+/// Lays the caption out in lines `width` wide with the current font (layOutCaption): sub- and
+/// superscripts smaller and shifted.
+std::vector<Placed> layOut(const std::string& caption, float width, float* height) {
+  ImFont* font = ImGui::GetFont();
+  const float size = ImGui::GetFontSize(), small = size * 0.72f, line = ImGui::GetTextLineHeightWithSpacing();
+  auto sizeOf = [&](CaptionRun::Script script) { return script == CaptionRun::Script::normal ? size : small; };
+  const CaptionMeasure widthOf = [&](std::string_view text, CaptionRun::Script script) {
+    return double(font->CalcTextSizeA(sizeOf(script), FLT_MAX, 0, text.data(), text.data() + text.size()).x);
+  };
+  int lines = 0;
+  const std::vector<CaptionPiece> pieces = layOutCaption(caption, width, widthOf, widthOf(" ", CaptionRun::Script::normal), &lines);
+  std::vector<Placed> placed;
+  for (const CaptionPiece& p : pieces) {
+    const float dy = p.script == CaptionRun::Script::sub ? size * 0.42f : p.script == CaptionRun::Script::super ? -size * 0.08f : 0;
+    placed.push_back({p.text, ImVec2(float(p.x), p.line * line + dy), sizeOf(p.script), p.math});
+  }
+  if (height) *height = std::max(1, lines) * line;
+  return placed;
+}
+
+/// "lecture notes 15.2.2", "Hill 7.4": the step's source as the lesson's language names it.
+std::string sectionText(const Lesson& lesson, const std::string& section) {
+  if (section.empty()) return "";
+  const bool lectureNotes = std::isdigit(static_cast<unsigned char>(section[0]));
+  return lectureNotes ? std::string(inLanguage(lesson.language, "lecture notes ", "Skript ")) + section : section;
+}
+
+}  // namespace
+
+float lessonCaptionHeight(const ViewerState& s, float width) {
+  if (!s.lesson) return 0;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float inner = width - style.WindowPadding.x * 2;
+  float tallest = 0;
+  for (const LessonStep& step : s.lesson->lesson().steps) {
+    float h = 0;
+    layOut(step.caption, inner, &h);
+    tallest = std::max(tallest, h);
+  }
+  // The heading row and a row for the free step's note or the typed number.
+  return std::floor(tallest + ImGui::GetFrameHeightWithSpacing() + ImGui::GetTextLineHeightWithSpacing() + style.WindowPadding.y * 2 + 2);
+}
+
+void lessonCaption(ViewerState& s, const Rect& rect, double now) {
+  if (!s.lesson) return;
+  const LessonPlayer& player = *s.lesson;
+  const Lesson& lesson = player.lesson();
+  const LessonStep& step = player.current();
+  ImGui::SetNextWindowPos(rect.pos);
+  ImGui::SetNextWindowSize(rect.size);
+  ImGui::SetNextWindowBgAlpha(0.94f);
+  ImGui::Begin("##lesson", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+  recordRect(s, "lesson.caption");
+
+  // The heading: title, step k of n, the source; the buttons at the right.
+  const std::string heading = lesson.title + "  ·  " + std::string(inLanguage(lesson.language, "step ", "Schritt ")) +
+                              std::to_string(player.step() + 1) + " / " + std::to_string(player.stepCount());
+  const std::string source = sectionText(lesson, step.section);
+  ImGui::PushStyleColor(ImGuiCol_Text, accentColor());
+  ImGui::TextUnformatted(heading.c_str());
+  ImGui::PopStyleColor();
+  if (!source.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("(%s)", source.c_str());
+  }
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const char* back = "← Back";
+  const char* next = "Next →";
+  const char* close = "Close";
+  const float buttons = ImGui::CalcTextSize(back).x + ImGui::CalcTextSize(next).x + ImGui::CalcTextSize(close).x +
+                        style.FramePadding.x * 6 + style.ItemSpacing.x * 2;
+  ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowContentRegionMax().x - buttons));
+  ImGui::BeginDisabled(player.step() == 0);
+  if (ImGui::Button(back)) goToStep(s, player.step() - 1, now);
+  ImGui::EndDisabled();
+  recordRect(s, "lesson.back");
+  ImGui::SameLine();
+  ImGui::BeginDisabled(player.step() + 1 >= player.stepCount());
+  if (ImGui::Button(next)) goToStep(s, player.step() + 1, now);
+  ImGui::EndDisabled();
+  recordRect(s, "lesson.next");
+  ImGui::SameLine();
+  const bool closing = ImGui::Button(close);
+  recordRect(s, "lesson.close");
+
+  // The caption, its mathematics in the accent colour.
+  float height = 0;
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const std::vector<Placed> placed = layOut(step.caption, ImGui::GetContentRegionAvail().x, &height);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text), math = ImGui::ColorConvertFloat4ToU32(accentColor());
+  for (const Placed& p : placed) draw->AddText(ImGui::GetFont(), p.size, origin + p.at, p.math ? math : text, p.text.c_str());
+  ImGui::Dummy(ImVec2(1, height));
+  if (!s.lessonTyped.empty())
+    ImGui::TextDisabled("%s %s (Enter)", std::string(inLanguage(lesson.language, "go to step", "zu Schritt")).c_str(), s.lessonTyped.c_str());
+  else if (step.free)
+    ImGui::TextDisabled("%s", std::string(inLanguage(lesson.language, "Explore freely: the next step restores its own state.",
+                                                     "Freies Erkunden: der nächste Schritt stellt seinen Zustand wieder her."))
+                                  .c_str());
+  ImGui::End();
+  if (closing) {
+    s.lesson.reset();
+    s.lessonMarks.clear();
+  }
+}
+
+// ---------------------------------------------------------------- 4 the marks in the views
+
+void addLessonMarks(const ViewerState& s, Highlights& hl) {
+  for (const LessonHighlight& h : s.lessonMarks) {
+    if (h.kind == LessonHighlight::Kind::handle) {
+      const char* name = handleName(h.handle);
+      auto it = std::find_if(hl.handles.begin(), hl.handles.end(), [&](const Highlights::HandleMark& m) { return m.name == name; });
+      if (it != hl.handles.end()) it->hot = true;
+      else hl.handles.push_back({handlePosition(s.run(), h.handle), name, true});
+    } else if (h.kind == LessonHighlight::Kind::plane) {
+      hl.planes.push_back(h.plane);
+    } else if (h.kind == LessonHighlight::Kind::axis) {
+      hl.axis = h.axis;
+    } else if (h.kind == LessonHighlight::Kind::vertex && !s.probe) {
+      hl.probeWc = probePosition(s.run(), h.vertex, ViewKind::world);
+      hl.probeNpc = probePosition(s.run(), h.vertex, ViewKind::npc);
+      hl.probeDc = probePosition(s.run(), h.vertex, ViewKind::camera);
+    }
+  }
+}
+
+}  // namespace vplab::ui

@@ -1,0 +1,108 @@
+// Lessons in the page (README "Lessons"): a link opens a bundled lesson at a step, the keys a
+// clicker sends advance it and the address follows the step; the embed form shows only the named
+// views and the caption, as a figure beside a course page's own text.
+import assert from 'node:assert/strict';
+import { existsSync, writeFileSync } from 'node:fs';
+import path from 'node:path';
+import { after, before, describe, test } from 'node:test';
+
+import {
+  afterInput, distinctColours, launchBrowser, openPage, startServer, tempDir, vplabState, waitFrames, webDir,
+} from './support.mjs';
+
+/** Waits until `predicate(state())` holds in the page; fails with the state and the console otherwise. */
+async function waitForState(page, predicate, what, messages, timeout = 30_000) {
+  try {
+    await page.waitForFunction(`(${String(predicate)})(window.vplab.state())`, { timeout, polling: 100 });
+  } catch (error) {
+    const state = JSON.stringify({ ...(await vplabState(page)), rects: undefined });
+    assert.fail(`waited for ${what} in vain (${error.message}); state(): ${state}; the console said:\n` +
+      (messages.map((m) => `  ${m.type}: ${m.text}`).join('\n') || '  (nothing)'));
+  }
+}
+
+const errorsOf = (messages) => messages.filter((m) => m.type === 'error' || m.type === 'warning');
+
+describe('lessons in the browser', { concurrency: 1 }, () => {
+  let server;
+  let browser;
+  let work;
+
+  before(async () => {
+    assert.ok(existsSync(path.join(webDir, 'index.html')), `${webDir}/index.html is missing: build the page with scripts/web.sh`);
+    work = tempDir('web-lesson');
+    server = await startServer(webDir);
+    browser = await launchBrowser();
+  });
+
+  after(async () => {
+    await browser?.close();
+    await server?.close();
+    work?.remove();
+  });
+
+  test('(p) a lesson link opens its step, the clicker\'s keys advance it, and the address follows', { timeout: 180_000 }, async () => {
+    const context = await browser.createBrowserContext();
+    const { page, console: messages } = await openPage(context, `${server.url}#lesson=02-view-orientation&step=3`);
+    await waitForState(page, (s) => s.lesson && s.lesson.step === 3 && s.lesson.settled, 'the lesson at step 3', messages);
+    let state = await vplabState(page);
+    assert.equal(state.lesson.file, '02-view-orientation.en.json', 'a name without a language is the page\'s (English)');
+    assert.match(state.hash, /lesson=02-view-orientation\.en&step=3/, 'the address names the lesson and the step');
+    assert.ok(state.rects['lesson.caption'], 'the caption box is drawn');
+    const cameraAt3 = state.camera;
+
+    // → and Page Down (what clickers send) advance; the camera moves to the step's.
+    await afterInput(page, () => page.keyboard.press('ArrowRight'));
+    await waitForState(page, (s) => s.lesson.step === 4 && s.lesson.settled && /step=4/.test(s.hash), 'step 4 in the address', messages);
+    await afterInput(page, () => page.keyboard.press('PageDown'));
+    await waitForState(page, (s) => s.lesson.step === 5 && s.lesson.settled, 'step 5', messages);
+    // ← goes back; the step's state is restored exactly.
+    await afterInput(page, () => page.keyboard.press('ArrowLeft'));
+    await afterInput(page, () => page.keyboard.press('ArrowLeft'));
+    await waitForState(page, (s) => s.lesson.step === 3 && s.lesson.settled && /step=3/.test(s.hash), 'step 3 again', messages);
+    state = await vplabState(page);
+    assert.deepEqual(state.camera, cameraAt3, 'going back restores the step\'s camera as written');
+    assert.equal(state.dirty, false, 'a lesson\'s step leaves nothing unsaved');
+
+    // The address given while the page is open (a link in the course page) moves there.
+    await afterInput(page, () => page.evaluate(() => window.vplab.setHash('#lesson=02-view-orientation.en&step=7')));
+    await waitForState(page, (s) => s.lesson.step === 7 && s.lesson.settled, 'step 7 from the address', messages);
+
+    // A German lesson by its name.
+    await afterInput(page, () => page.evaluate(() => window.vplab.setHash('#lesson=05-clipping.de&step=1')));
+    await waitForState(page, (s) => s.lesson && s.lesson.file === '05-clipping.de.json', 'the German clipping lesson', messages);
+    state = await vplabState(page);
+    assert.equal(state.lesson.title, 'Clipping in homogenen Koordinaten');
+    writeFileSync(path.join(work.dir, 'lesson.png'), await page.screenshot({ type: 'png' }));
+    assert.deepEqual(errorsOf(messages), [], 'the page logged errors or warnings');
+    await context.close();
+  });
+
+  test('(q) the embed form shows only the named views and the caption', { timeout: 120_000 }, async () => {
+    const context = await browser.createBrowserContext();
+    const { page, console: messages } = await openPage(context, `${server.url}#embed=camera,world&lesson=01-synthetic-camera&step=2`,
+      { viewport: { width: 900, height: 420, deviceScaleFactor: 1 } });
+    await waitForState(page, (s) => s.lesson && s.lesson.step === 2 && s.lesson.settled, 'the embedded lesson at step 2', messages);
+    await waitFrames(page, 3);
+    const state = await vplabState(page);
+    assert.deepEqual(state.embed, ['camera', 'world']);
+    assert.match(state.hash, /^embed=camera,world&lesson=01-synthetic-camera\.en&step=2$/, 'the address keeps the embed form');
+    for (const id of ['view.world', 'view.camera', 'lesson.caption']) assert.ok(state.rects[id], `"${id}" is drawn`);
+    for (const id of ['menu.file', 'camera.vrp', 'tab.controls.Camera'])
+      assert.ok(!state.rects[id], `the embed form draws no "${id}" (no menu, no panels)`);
+    // The views sit side by side in their order, above the caption.
+    const camera = state.rects['view.camera'];
+    const world = state.rects['view.world'];
+    const caption = state.rects['lesson.caption'];
+    assert.ok(camera[0] < world[0], 'camera left of world, as the link orders them');
+    assert.ok(camera[1] + camera[3] <= caption[1] + 1 && world[1] + world[3] <= caption[1] + 1, 'the views above the caption');
+    const shot = await page.screenshot({ type: 'png' });
+    writeFileSync(path.join(work.dir, 'embed.png'), shot);
+    assert.ok(distinctColours(shot) >= 32, 'the embedded figure is drawn');
+    // The keys still advance it.
+    await afterInput(page, () => page.keyboard.press('Space'));
+    await waitForState(page, (s) => s.lesson.step === 3 && /^embed=camera,world&lesson=/.test(s.hash), 'step 3, still embedded', messages);
+    assert.deepEqual(errorsOf(messages), [], 'the page logged errors or warnings');
+    await context.close();
+  });
+});
