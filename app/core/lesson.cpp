@@ -147,7 +147,9 @@ void changeOverlays(const JsonReader& r, const Json& j, const std::string& path,
       {"cube", &o.cube},             {"cpu_polygons", &o.cpuPolygons},   {"difference", &o.difference},
       {"vanishing_points", &o.vanishingPoints}, {"vertex_names", &o.vertexNames}};
   if (!j.is_object()) r.fail(path, std::string("must be an object, not ") + j.type_name());
-  for (const auto& [key, value] : j.items()) {
+  for (const auto& item : j.items()) {
+    const std::string& key = item.key();
+    const Json& value = item.value();
     auto it = std::find_if(std::begin(overlays), std::end(overlays), [&](const auto& p) { return key == p.first; });
     if (it == std::end(overlays)) {
       std::vector<std::string> names;
