@@ -15,18 +15,19 @@ shift || true
 build="$root/build-fuzz"
 
 cmake --preset fuzz -S "$root" >/dev/null
-cmake --build "$build" -j "$(nproc)" --target fuzz_scene fuzz_obj
+cmake --build "$build" -j "$(nproc)" --target fuzz_scene fuzz_obj fuzz_lesson
 
 declare -A seeds=(
   [fuzz_scene]="$root/assets/scenes $root/tests/data"
   [fuzz_obj]="$root/assets/meshes $root/tests/data"
+  [fuzz_lesson]="$root/assets/lessons"
 )
-declare -A dicts=([fuzz_scene]=scene.dict [fuzz_obj]=obj.dict)
+declare -A dicts=([fuzz_scene]=scene.dict [fuzz_obj]=obj.dict [fuzz_lesson]=lesson.dict)
 
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 status=0
-for target in ${FUZZ_TARGETS:-fuzz_scene fuzz_obj}; do
+for target in ${FUZZ_TARGETS:-fuzz_scene fuzz_obj fuzz_lesson}; do
   corpus="$build/corpus/$target" findings="$build/findings/$target"
   mkdir -p "$corpus" "$findings"
   echo "fuzz.sh: $target for ${seconds}s" >&2

@@ -84,6 +84,13 @@ void Menus::menuBar() {
     bool light = s_.display.theme == Theme::light;
     if (ImGui::MenuItem("Light theme (bright hall, print)", nullptr, &light))
       s_.display.theme = light ? Theme::light : Theme::dark;
+    // How long a lesson's move from one step into the next takes (0: at once).
+    float seconds = float(s_.lessonSeconds);
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize("0.00 s").x * 3);
+    if (ImGui::SliderFloat("lesson moves", &seconds, 0.f, 3.f, "%.1f s")) s_.lessonSeconds = seconds;
+    ui::recordRect(s_, "menu.lessonSeconds");
+    ui::tooltip("How long the camera and every number take to move from one step of a lesson into the next.",
+                "Wie lange Kamera und Zahlen von einem Schritt der Lektion zum nächsten brauchen.");
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {
