@@ -28,37 +28,6 @@ using Reader = JsonReader;
 
 // ---------------------------------------------------------------- 2 reading the sections
 
-Camera readCamera(const Reader& r, const Json& j, const std::string& path) {
-  r.object(j, path, {"vrp", "prp", "vup", "window", "front", "back", "projection", "oblique"});
-  Camera c;
-  c.vrp = r.vec3(r.required(j, path, "vrp"), path + "/vrp");
-  c.prp = r.vec3(r.required(j, path, "prp"), path + "/prp");
-  c.vup = r.vec3(r.required(j, path, "vup"), path + "/vup");
-  const std::string wp = path + "/window";
-  const Json& w = r.required(j, path, "window");
-  r.object(w, wp, {"xmin", "xmax", "ymin", "ymax"});
-  c.window.xmin = r.number(r.required(w, wp, "xmin"), wp + "/xmin");
-  c.window.xmax = r.number(r.required(w, wp, "xmax"), wp + "/xmax");
-  c.window.ymin = r.number(r.required(w, wp, "ymin"), wp + "/ymin");
-  c.window.ymax = r.number(r.required(w, wp, "ymax"), wp + "/ymax");
-  c.front = r.number(r.required(j, path, "front"), path + "/front");
-  c.back = r.number(r.required(j, path, "back"), path + "/back");
-  if (auto it = j.find("projection"); it != j.end()) {
-    const std::string s = r.string(*it, path + "/projection");
-    const auto p = projectionFromString(s);
-    if (!p) r.fail(path + "/projection", "\"" + s + "\" is not one of perspective, parallel, oblique");
-    c.projection = *p;
-  }
-  if (auto it = j.find("oblique"); it != j.end()) {
-    const std::string op = path + "/oblique";
-    r.object(*it, op, {"d", "phi_deg"});
-    c.oblique.d = r.number(r.required(*it, op, "d"), op + "/d", 0.0, 1e6);
-    c.oblique.phiDeg = r.number(r.required(*it, op, "phi_deg"), op + "/phi_deg", -360.0, 360.0);
-  }
-  if (auto e = cameraError(c)) r.fail(path, "invalid camera: " + *e);
-  return c;
-}
-
 SceneObject readObject(const Reader& r, const Json& j, const std::string& path, size_t index,
                        const std::filesystem::path& baseDir, const Limits& limits, const MeshSize& used,
                        const BuiltMeshes* built) {
@@ -152,6 +121,44 @@ Json toJson(const SceneObject& o) {
 }  // namespace
 
 // ---------------------------------------------------------------- 2 the parts other formats reuse (io/scene_parts.h)
+
+Camera readCamera(const JsonReader& r, const nlohmann::ordered_json& j, const std::string& path, const Camera* base) {
+  r.object(j, path, {"vrp", "prp", "vup", "window", "front", "back", "projection", "oblique"});
+  Camera c = base ? *base : Camera{};
+  // A key given replaces the base's; without a base the scene format's keys are required.
+  auto part = [&](const char* key) -> const Json* {
+    if (auto it = j.find(key); it != j.end()) return &*it;
+    if (!base) r.required(j, path, key);  // fails naming the key
+    return nullptr;
+  };
+  if (const Json* v = part("vrp")) c.vrp = r.vec3(*v, path + "/vrp");
+  if (const Json* v = part("prp")) c.prp = r.vec3(*v, path + "/prp");
+  if (const Json* v = part("vup")) c.vup = r.vec3(*v, path + "/vup");
+  if (const Json* w = part("window")) {
+    const std::string wp = path + "/window";
+    r.object(*w, wp, {"xmin", "xmax", "ymin", "ymax"});
+    c.window.xmin = r.number(r.required(*w, wp, "xmin"), wp + "/xmin");
+    c.window.xmax = r.number(r.required(*w, wp, "xmax"), wp + "/xmax");
+    c.window.ymin = r.number(r.required(*w, wp, "ymin"), wp + "/ymin");
+    c.window.ymax = r.number(r.required(*w, wp, "ymax"), wp + "/ymax");
+  }
+  if (const Json* v = part("front")) c.front = r.number(*v, path + "/front");
+  if (const Json* v = part("back")) c.back = r.number(*v, path + "/back");
+  if (auto it = j.find("projection"); it != j.end()) {
+    const std::string s = r.string(*it, path + "/projection");
+    const auto p = projectionFromString(s);
+    if (!p) r.fail(path + "/projection", "\"" + s + "\" is not one of perspective, parallel, oblique");
+    c.projection = *p;
+  }
+  if (auto it = j.find("oblique"); it != j.end()) {
+    const std::string op = path + "/oblique";
+    r.object(*it, op, {"d", "phi_deg"});
+    c.oblique.d = r.number(r.required(*it, op, "d"), op + "/d", 0.0, 1e6);
+    c.oblique.phiDeg = r.number(r.required(*it, op, "phi_deg"), op + "/phi_deg", -360.0, 360.0);
+  }
+  if (auto e = cameraError(c)) r.fail(path, "invalid camera: " + *e);
+  return c;
+}
 
 ModelTransform readTransform(const JsonReader& r, const nlohmann::ordered_json& j, const std::string& path) {
   ModelTransform t;

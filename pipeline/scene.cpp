@@ -54,12 +54,13 @@ std::optional<std::string> sceneError(const Scene& scene) {
 
 Scene defaultScene() {
   // The lecture scene: the lecture notes' cube and tetrahedron with a cylinder and a sphere (lecture notes, chapter 16), seen
-  // in perspective; the tetrahedron crosses the window's right and bottom edges and the sphere the
-  // back plane, so every view shows clipping.
+  // in perspective; the tetrahedron crosses the window's right and bottom edges and the sphere its
+  // right and top edges (its farthest point, VRC z = -3.14, stays in front of B = -3.2), so every
+  // view shows clipping.
   Scene s;
   s.title = "Default lecture scene";
   s.caption = "Cube, tetrahedron, cylinder and sphere (lecture notes, chapter 16) in perspective: the tetrahedron crosses the "
-              "window's edges and the sphere the back plane, so every view shows clipping.";
+              "window's right and bottom edges and the sphere its right and top edges, so every view shows clipping.";
   s.camera.vrp = {0, 0, 0};
   s.camera.prp = {3.0, 2.4, 7.5};
   s.camera.vup = {0, 1, 0};

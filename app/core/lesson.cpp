@@ -49,36 +49,6 @@ size_t oneOf(const JsonReader& r, const Json& j, const std::string& path, const 
 
 // ---------------------------------------------------------------- 1 the parts of a step
 
-/// The camera's keys of the scene format, each optional: the step changes only what it names.
-Camera changedCamera(const JsonReader& r, const Json& j, const std::string& path, Camera c) {
-  r.object(j, path, {"vrp", "prp", "vup", "window", "front", "back", "projection", "oblique"});
-  if (auto it = j.find("vrp"); it != j.end()) c.vrp = r.vec3(*it, path + "/vrp");
-  if (auto it = j.find("prp"); it != j.end()) c.prp = r.vec3(*it, path + "/prp");
-  if (auto it = j.find("vup"); it != j.end()) c.vup = r.vec3(*it, path + "/vup");
-  if (auto it = j.find("window"); it != j.end()) {
-    const std::string wp = path + "/window";
-    r.object(*it, wp, {"xmin", "xmax", "ymin", "ymax"});
-    c.window.xmin = r.number(r.required(*it, wp, "xmin"), wp + "/xmin");
-    c.window.xmax = r.number(r.required(*it, wp, "xmax"), wp + "/xmax");
-    c.window.ymin = r.number(r.required(*it, wp, "ymin"), wp + "/ymin");
-    c.window.ymax = r.number(r.required(*it, wp, "ymax"), wp + "/ymax");
-  }
-  if (auto it = j.find("front"); it != j.end()) c.front = r.number(*it, path + "/front");
-  if (auto it = j.find("back"); it != j.end()) c.back = r.number(*it, path + "/back");
-  if (auto it = j.find("projection"); it != j.end()) {
-    constexpr std::array names = {"perspective", "parallel", "oblique"};
-    c.projection = *projectionFromString(names[oneOf(r, *it, path + "/projection", names)]);
-  }
-  if (auto it = j.find("oblique"); it != j.end()) {
-    const std::string op = path + "/oblique";
-    r.object(*it, op, {"d", "phi_deg"});
-    c.oblique.d = r.number(r.required(*it, op, "d"), op + "/d", 0.0, 1e6);
-    c.oblique.phiDeg = r.number(r.required(*it, op, "phi_deg"), op + "/phi_deg", -360.0, 360.0);
-  }
-  if (auto e = cameraError(c)) r.fail(path, "invalid camera: " + *e);
-  return c;
-}
-
 /// The scene's object named `name`: exactly one must be.
 size_t objectNamed(const JsonReader& r, const Scene& scene, const std::string& name, const std::string& path) {
   std::optional<size_t> found;
@@ -285,7 +255,7 @@ LessonStep readStep(const JsonReader& r, const Json& j, const std::string& path,
     r.fail(path, "the first step must name a \"scene\" (a bundled one) or a \"scene_file\"");
   }
 
-  if (auto it = j.find("camera"); it != j.end()) s.scene.camera = changedCamera(r, *it, path + "/camera", s.scene.camera);
+  if (auto it = j.find("camera"); it != j.end()) s.scene.camera = readCamera(r, *it, path + "/camera", &s.scene.camera);
   if (auto it = j.find("objects"); it != j.end()) changeObjects(r, *it, path + "/objects", s.scene);
   if (auto it = j.find("clip_planes"); it != j.end()) s.scene.clipPlanes = readClipPlanes(r, *it, path + "/clip_planes");
   if (auto it = j.find("views"); it != j.end()) changeViews(r, *it, path + "/views", s.display);
