@@ -3,7 +3,10 @@
 #include "pipeline/error.h"
 
 #include <gif_lib.h>
+#include <fcntl.h>
+#include <unistd.h>
 
+#include <cerrno>
 #include <cstring>
 #include <string>
 #include <utility>
@@ -27,9 +30,18 @@ GifWriter::GifWriter(const std::filesystem::path& file, int width, int height)
     : file_(std::make_unique<File>()), target_(file), temporary_(file.string() + ".part"), width_(width), height_(height) {
   if (width < 1 || height < 1 || width > 65535 || height > 65535)
     throw Error(file.string() + ": a GIF is 1 to 65535 pixels a side, not " + std::to_string(width) + " × " + std::to_string(height));
+  // Opened here, not by EGifOpenFileName, which makes the file readable by its owner only (0600):
+  // a picture for a course page is read by others (0666 less the umask, as any file vplab writes).
+  const int fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) throw Error(file.string() + ": cannot write the GIF: " + std::strerror(errno));
   int error = 0;
-  file_->gif = EGifOpenFileName(temporary_.c_str(), false, &error);
-  if (!file_->gif) throw Error(file.string() + ": cannot write the GIF: " + gifError(error));
+  file_->gif = EGifOpenFileHandle(fd, &error);  // owns fd from here, closed by EGifCloseFile
+  if (!file_->gif) {
+    ::close(fd);
+    std::error_code ignored;
+    std::filesystem::remove(temporary_, ignored);
+    throw Error(file.string() + ": cannot write the GIF: " + gifError(error));
+  }
   EGifSetGifVersion(file_->gif, true);  // GIF89a: delays and the loop
   if (EGifPutScreenDesc(file_->gif, width, height, 8, 0, nullptr) == GIF_ERROR)
     throw Error(file.string() + ": cannot write the GIF: " + gifError(file_->gif->Error));

@@ -108,6 +108,9 @@ TEST(LessonExport, TheAnimationStartsAndEndsWithTheStillsAndHasAFrameForEachMome
     return true;
   });
   const GifFrames gif = readGif(dir.path / "lesson.gif");
+  // Readable by others, as any file vplab writes (giflib's own open would make it the owner's only).
+  const auto perms = std::filesystem::status(dir.path / "lesson.gif").permissions();
+  EXPECT_NE(perms & std::filesystem::perms::others_read, std::filesystem::perms::none);
   const size_t expected = lessonAnimationFrames(lesson, a);
   EXPECT_EQ(expected, lesson.steps.size() + (lesson.steps.size() - 1) * 3) << "one scene: every move has its frames";
   ASSERT_EQ(gif.frames.size(), expected);
