@@ -274,7 +274,12 @@ void Menus::helpWindow() {
                              {"F1", "this help"},
                              {"F11", "lecture mode: one view fills the window (Esc returns)"},
                              {"Shift+click", "in the camera view: step through the clipping of that polygon"},
-                             {"F12", "screenshot of the whole window (PNG in the working directory)"}};
+                             {"F12", "screenshot of the whole window (PNG in the working directory)"},
+                             {"→ Space Page Down", "in a lesson (File > Lessons): the next step"},
+                             {"← Page Up", "in a lesson: the step before"},
+                             {"Home / End", "in a lesson: the first / the last step"},
+                             {"a number, Enter", "in a lesson: that step (the digits then choose no style)"},
+                             {"Esc", "in a lesson: forget the typed number, else close the lesson"}};
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
       for (const auto& k : keys) {
         ImGui::TableNextRow();
