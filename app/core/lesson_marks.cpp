@@ -38,7 +38,7 @@ Highlights lessonMarks(const PipelineRun& run, const LessonState& state) {
     if (h.kind == LessonHighlight::Kind::handle) hl.handles.push_back({handlePosition(run, h.handle), handleName(h.handle), true});
     if (h.kind == LessonHighlight::Kind::vertex && !probe) probe = h.vertex;
     if (h.kind == LessonHighlight::Kind::plane) hl.planes.push_back(h.plane);
-    if (h.kind == LessonHighlight::Kind::axis) hl.axis = h.axis;
+    if (h.kind == LessonHighlight::Kind::axis) hl.axes.push_back(h.axis);
   }
   if (probe) {
     hl.probeWc = probePosition(run, *probe, ViewKind::world);

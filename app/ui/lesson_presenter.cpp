@@ -244,7 +244,7 @@ void addLessonMarks(const ViewerState& s, Highlights& hl) {
     } else if (h.kind == LessonHighlight::Kind::plane) {
       hl.planes.push_back(h.plane);
     } else if (h.kind == LessonHighlight::Kind::axis) {
-      hl.axis = h.axis;
+      hl.axes.push_back(h.axis);
     } else if (h.kind == LessonHighlight::Kind::vertex && !s.probe) {
       hl.probeWc = probePosition(s.run(), h.vertex, ViewKind::world);
       hl.probeNpc = probePosition(s.run(), h.vertex, ViewKind::npc);

@@ -91,9 +91,9 @@ struct Highlights {
   };
   std::optional<Step> step;
   /// A lesson step's highlights (app/core/lesson.h): planes (0–5 the view volume's, left, right,
-  /// bottom, top, back, front; 6 + k the scene's user clip plane k) and an axis of VRC (0 U, 1 V, 2 N).
+  /// bottom, top, back, front; 6 + k the scene's user clip plane k) and axes of VRC (0 U, 1 V, 2 N).
   std::vector<int> planes;
-  int axis = -1;
+  std::vector<int> axes;
   int vanishingObject = -1;  // scene index of the object whose vanishing points are drawn
   bool operator==(const Highlights&) const = default;
 };

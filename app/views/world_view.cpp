@@ -214,10 +214,11 @@ DisplayList worldView(const ViewInput& in) {
       b.polyline(q, true, pal.handleHot, theme::kLineWidth + 1.5f);
     }
   }
-  if (hl.axis >= 0 && hl.axis < 3) {
+  for (int a : hl.axes) {
+    if (a < 0 || a > 2) continue;
     const Camera& cam = run.camera;
     const double len = 0.3 * std::max(cam.window.width(), cam.window.height());
-    const Vec3 axis = hl.axis == 0 ? run.vrc.u : hl.axis == 1 ? run.vrc.v : run.vrc.n;
+    const Vec3 axis = a == 0 ? run.vrc.u : a == 1 ? run.vrc.v : run.vrc.n;
     b.line(cam.vrp, cam.vrp + len * axis, pal.handleHot, theme::kLineWidth + 3.f);
     b.point(cam.vrp + len * axis, pal.handleHot, 13.f);
   }

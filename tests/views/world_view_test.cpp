@@ -126,11 +126,11 @@ TEST(WorldView, StepThroughPolygonIsTakenBackFromNpc) {
   EXPECT_NEAR(h.y / h.w, 0.2, 1e-9);
 }
 
-TEST(WorldView, ALessonsHighlightedPlaneIsAFaceOfTheFrustumOutlinedAndItsAxisIsDrawnOver) {
+TEST(WorldView, ALessonsHighlightedPlaneIsAFaceOfTheFrustumOutlinedAndItsAxesAreDrawnOver) {
   test::ViewFixture f(defaultScene(), Style::shaded);
   f.settings.overlays = {false, false, false, false, false, false, false};
   f.highlights.planes = {5};  // front: z = 1 in NPC
-  f.highlights.axis = 2;      // N
+  f.highlights.axes = {2, 0};  // N and U
   const DisplayList list = worldView(f.input());
   const auto triangles = test::batchesOf<Triangles>(list);
   ASSERT_EQ(triangles.size(), 1u);
@@ -142,12 +142,14 @@ TEST(WorldView, ALessonsHighlightedPlaneIsAFaceOfTheFrustumOutlinedAndItsAxisIsD
       if (glm::vec3(l->segments[i].color) != hot) continue;
       const Vec3 a = l->segments[i].position, b = l->segments[i + 1].position;
       if (cubeCornerOf(f.run, a) >= 0 && cubeCornerOf(f.run, b) >= 0) ++outline;
-      // The axis: from VRP along N.
+      // The axes: from VRP along N and U.
       const Vec3 along = glm::normalize(b - a);
-      if (glm::length(a - f.run.camera.vrp) < 1e-9 && glm::length(along - f.run.vrc.n) < 1e-9) ++axis;
+      if (glm::length(a - f.run.camera.vrp) < 1e-9 &&
+          (glm::length(along - f.run.vrc.n) < 1e-9 || glm::length(along - f.run.vrc.u) < 1e-9))
+        ++axis;
     }
   EXPECT_EQ(outline, 4u) << "the face's four edges";
-  EXPECT_EQ(axis, 1u);
+  EXPECT_EQ(axis, 2u) << "N and U, each drawn over";
 }
 
 }  // namespace
