@@ -254,7 +254,9 @@ void Viewer::controlsWindow() {
   ui::placeNext(l, l.controls, relayout_);
   ImGui::Begin("Controls", nullptr, ui::layoutFlags(l, ImGuiWindowFlags_NoCollapse));
   const Scene& scene = s_.doc.scene();
-  if (!scene.title.empty() || !scene.caption.empty()) {
+  // In a lesson the caption box says what to look at: the scene's own caption would leave the panel
+  // no room at a projector's scale.
+  if (!s_.lesson && (!scene.title.empty() || !scene.caption.empty())) {
     ImGui::PushStyleColor(ImGuiCol_Text, ui::accentColor());
     ImGui::TextWrapped("%s", scene.title.empty() ? "Scene" : scene.title.c_str());
     ImGui::PopStyleColor();
