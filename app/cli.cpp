@@ -144,6 +144,7 @@ struct RenderOptions {
   std::string strategy = "npc";
   std::string theme = "dark";
   float uiScale = 1.f;
+  std::string lang = "en";        // the labels' (and with --view ui the panels') language
   double morphT = 0;
   bool glDebug = false;
   bool styleGiven = false;
@@ -255,6 +256,7 @@ int runRender(const RenderOptions& r) {
   request.morphT = r.morphT;
   request.theme = *themeFromString(r.theme);
   request.scale = r.uiScale;
+  request.language = r.lang == "de" ? Language::de : Language::en;
   if (!r.size.empty()) std::tie(request.width, request.height) = parseSize(r.size);
   // Non-finite results are an error here as in the dump (coordinates so large that a product
   // overflows), said before the views derive their observers from them.
@@ -292,6 +294,7 @@ int runRender(const RenderOptions& r) {
       d.camera.style = d.world.style = d.npc.style = request.style;
     }
     viewer.state().display.theme = request.theme;
+    viewer.state().display.language = request.language;
     for (const std::string& tab : r.tabs) selectTab(viewer.state(), tab);
     viewer.frames(3);
     writePng(viewer.image(), out);
@@ -310,6 +313,7 @@ struct ViewerOptions {
   std::string screenshot;
   double waitForViews = 30;
   float uiScale = 1.f;
+  std::string lang;  // --lang en|de; empty: the remembered choice, else the locale's
   bool glDebug = false;
   bool reportFrames = false;
 };
@@ -357,6 +361,7 @@ int runViewer(const ViewerOptions& v) {
   launch.screenshotOnQuit = v.screenshot;
   launch.waitForViews = v.waitForViews;
   launch.uiScale = v.uiScale;
+  if (!v.lang.empty()) launch.language = v.lang == "de" ? Language::de : Language::en;
   launch.reportFrames = v.reportFrames;
 #ifndef NDEBUG
   launch.glDebug = true;
@@ -444,6 +449,10 @@ int runCommandLine(int argc, char** argv) {
       ->check(finiteIn(0, 3600));
   app.add_option("--ui-scale", viewer.uiScale, "Scale fonts and handles (1.5 or 2 for a projector)")
       ->check(finiteIn(0.5, 4));
+  app.add_option("--lang", viewer.lang,
+                 "The language of the menus, panels and views' labels: en or de (default: the one last chosen "
+                 "in View > Language, else the locale's)")
+      ->check(CLI::IsMember({"en", "de"}));
   app.add_flag("--gl-debug", viewer.glDebug, "Turn on KHR_debug and fail on any OpenGL error");
   app.add_flag("--report-frames", viewer.reportFrames, "Print how many frames the window drew when it ends (tests)");
 
@@ -515,6 +524,9 @@ int runCommandLine(int argc, char** argv) {
                         "Scale the views' text, lines and markers as the viewer's UI scale does (a projector); "
                         "with --view ui also the panels' fonts and handles")
       ->check(finiteIn(0.5, 4));
+  renderCmd->add_option("--lang", render.lang,
+                        "The language of the views' labels (with --view ui also the panels'): en (default) or de")
+      ->check(CLI::IsMember({"en", "de"}));
   renderCmd->add_option("--tab", render.tabs, "With --view ui: show this tab (repeatable): camera, scene, clipping, "
                                               "display, lecture (controls) or probe, matrices, depth (inspector)")
       ->check(CLI::IsMember(std::vector<std::string>(std::begin(kTabNames), std::end(kTabNames))));

@@ -7,6 +7,7 @@
 
 #include "app/context/context_glfw.h"
 #include "app/core/assets.h"
+#include "app/core/preferences.h"
 #include "app/gl/render_target.h"
 #include "app/ui/window_input.h"
 #include "app/ui/viewer.h"
@@ -140,6 +141,19 @@ int runViewerWindow(ViewerLaunch launch) {
     }
   }
   Viewer viewer(window, std::move(launch.scene), launch.uiScale);
+  // The language: --lang, else View > Language's last choice, else the locale's; a choice in the
+  // menu is remembered for the next start.
+  const std::filesystem::path preferencesFile = defaultPreferencesFile();
+  std::string preferencesProblem;
+  const Preferences preferences = readPreferences(preferencesFile, &preferencesProblem);
+  if (!preferencesProblem.empty()) std::cerr << "vplab: " << preferencesProblem << "\n";
+  viewer.state().display.language = startLanguage(launch.language, preferences);
+  if (!preferencesFile.empty())
+    viewer.session().rememberLanguageWith([preferencesFile, preferences](Language lang) {
+      Preferences p = preferences;
+      p.language = lang;
+      writePreferences(preferencesFile, p);
+    });
   GlfwBackend backend(window.handle());
   // glfwPostEmptyEvent is thread-safe: a finished run or view image wakes the event wait.
   viewer.usePipelineWorker([] { glfwPostEmptyEvent(); });

@@ -107,6 +107,14 @@ class Session {
   /// The status line's message.
   void setStatus(std::string message, bool error);
 
+  // ------------------------------------------------------------ preferences
+  /// View > Language: the menus', panels' and views' language from the next frame on, remembered
+  /// through `remember` (the window: the preferences file; the page: localStorage). A choice that
+  /// cannot be remembered still applies, and the status line says why it is not kept.
+  void chooseLanguage(Language lang);
+  /// How a chosen language is kept for the next start; throws vplab::Error when it cannot be.
+  void rememberLanguageWith(std::function<void(Language)> remember) { rememberLanguage_ = std::move(remember); }
+
  private:
   /// The views of a fresh start (see the constructor); the user's preferences (theme, labels'
   /// language) kept.
@@ -121,6 +129,7 @@ class Session {
 
   ViewerState& state_;
   std::function<void()> changed_;
+  std::function<void(Language)> rememberLanguage_;
   std::unique_ptr<FileChooser> dialog_ = std::make_unique<FileDialog>();
   bool browser_ = false;
   std::function<void()> pendingReplace_;  // waiting for "discard the unsaved changes?"

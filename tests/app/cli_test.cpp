@@ -55,8 +55,8 @@ class Cli : public test::ProcessTest {
   /// stage the window runs with AddressSanitizer but without the leak check: Mesa's GLX driver leaks
   /// 240 bytes and is unloaded before the check, so no suppression can name it
   /// (tests/sanitizers/lsan.supp).
-  ProcessResult windowVplab(const std::string& args) {
-    const std::string inner = "XDG_STATE_HOME=state ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\" " +
+  ProcessResult windowVplab(const std::string& args, const std::string& env = "") {
+    const std::string inner = env + (env.empty() ? "" : " ") + "XDG_STATE_HOME=state ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\" " +
                               shellQuoted(VPLAB_EXE) + " " + args + "; echo $? > vplab-status";
     ProcessResult r = sh("xvfb-run -a -s '-screen 0 1280x800x24' sh -c " + shellQuoted(inner));
     std::ifstream status(dir_ / "vplab-status");
@@ -409,6 +409,32 @@ TEST_F(Cli, AScriptedScreenshotWhoseViewsAreNotReadyInTimeFailsNamingThem) {
   EXPECT_THAT(r.err, HasSubstr("npc view"));
   EXPECT_THAT(r.err, HasSubstr("no screenshot written"));
   EXPECT_FALSE(fs::exists(dir_ / "window.png")) << "no picture of views that were not drawn";
+}
+
+// The window speaks the language chosen last in View > Language (the preferences file in
+// $XDG_CONFIG_HOME/vplab), and --lang overrides it for one run: each screenshot equals the headless
+// viewer's picture in that language (render --view ui --lang) within the smoke check's tolerance.
+TEST_F(Cli, TheWindowSpeaksTheRememberedLanguageAndLangOverridesIt) {
+  fs::create_directories(dir_ / "config/vplab");
+  writeFile(dir_ / "config/vplab/preferences.json", "{\"language\": \"de\"}\n");
+  const std::string config = "XDG_CONFIG_HOME=" + test::shellQuoted((dir_ / "config").string());
+  ASSERT_EQ(windowVplab("--quit-after-frames 3 --screenshot remembered.png", config).exitCode, 0);
+  ASSERT_EQ(windowVplab("--lang en --quit-after-frames 3 --screenshot flag.png", config).exitCode, 0);
+  for (const char* lang : {"de", "en"}) {
+    const ProcessResult r = vplab(std::string("render --view ui --lang ") + lang + " --out headless-" + lang + ".png");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+  }
+  const Image german = readPng(dir_ / "headless-de.png"), english = readPng(dir_ / "headless-en.png");
+  const ImageComparison remembered = compareImages(readPng(dir_ / "remembered.png"), german, 2);
+  EXPECT_LE(remembered.differingShare, 0.001) << "the remembered German: " << describe(remembered);
+  const ImageComparison flag = compareImages(readPng(dir_ / "flag.png"), english, 2);
+  EXPECT_LE(flag.differingShare, 0.001) << "--lang en: " << describe(flag);
+  EXPECT_GT(compareImages(german, english, 2).differingShare, 0.005) << "German and English look alike";
+  // The run with --lang leaves the remembered choice as it was.
+  EXPECT_EQ(readFile(dir_ / "config/vplab/preferences.json"), "{\"language\": \"de\"}\n");
+  const ProcessResult bad = vplab("--lang fr");
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_THAT(bad.err, HasSubstr("--lang"));
 }
 
 // ---------------------------------------------------------------- the Xvfb smoke test's check
