@@ -1,5 +1,6 @@
 #include "app/core/matrix_text.h"
 
+#include "app/text/catalogue.h"
 #include "app/views/number_text.h"
 
 #include <algorithm>
@@ -16,9 +17,10 @@ double largestEntry(const Mat4& m) {
   return largest;
 }
 
-std::string matrixText(const Mat4& m, std::string_view name, MatrixFormat format, bool seedForm) {
+std::string matrixText(const Mat4& m, std::string_view name, MatrixFormat format, bool seedForm, Language lang) {
   const Mat4 shown = seedForm ? glm::transpose(m) : m;
-  const std::string title = std::string(name) + (seedForm ? " (lecture notes' row-vector form, p' = p · M)" : " (p' = M · p)");
+  const std::string title = seedForm ? text::fill(lang, "{1} (lecture notes' row-vector form, p' = p · M)", {name})
+                                     : std::string(name) + " (p' = M · p)";
   const auto rows = rowsOf(shown);
   const NumberFormat plain{6, largestEntry(m)};
   NumberFormat latex = plain;
@@ -42,7 +44,7 @@ std::string matrixText(const Mat4& m, std::string_view name, MatrixFormat format
       return out;
     case MatrixFormat::latex:
       // Display math, ready to paste into a document that loads amsmath (bmatrix).
-      out = "% " + title + " (needs \\usepackage{amsmath})\n\\[\n\\begin{bmatrix}\n";
+      out = "% " + text::fill(lang, "{1} (needs \\usepackage{amsmath})", {title}) + "\n\\[\n\\begin{bmatrix}\n";
       for (size_t i = 0; i < rows.size(); ++i) {
         const auto& r = rows[i];
         out += "  " + number(r[0]) + " & " + number(r[1]) + " & " + number(r[2]) + " & " + number(r[3]) +

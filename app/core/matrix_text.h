@@ -2,6 +2,7 @@
 // column-vector form the project computes with or the lecture notes' row-vector form (the transpose).
 #pragma once
 
+#include "pipeline/language.h"
 #include "pipeline/math.h"
 
 #include <string>
@@ -15,6 +16,8 @@ enum class MatrixFormat { plain, markdown, latex };
 double largestEntry(const Mat4& m);
 
 /// The LaTeX form is display math (`\[ \begin{bmatrix} … \end{bmatrix} \]`, amsmath), ready to paste.
-std::string matrixText(const Mat4& m, std::string_view name, MatrixFormat format, bool seedForm);
+/// The title's words are in `lang`.
+std::string matrixText(const Mat4& m, std::string_view name, MatrixFormat format, bool seedForm,
+                       Language lang = Language::en);
 
 }  // namespace vplab

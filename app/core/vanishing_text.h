@@ -4,6 +4,7 @@
 // every set of parallel edges parallel, whatever their direction).
 #pragma once
 
+#include "pipeline/language.h"
 #include "pipeline/pipeline.h"
 
 #include <array>
@@ -21,6 +22,7 @@ struct VanishingText {
 /// length (1e-9, far below anything a lecture shows, far above rounding of unit vectors).
 bool parallelToViewPlane(const VrcAxes& frame, const Vec3& directionWc);
 
-VanishingText vanishingText(const PipelineRun& run, const ObjectRun& object);
+/// The sentences in `lang`.
+VanishingText vanishingText(const PipelineRun& run, const ObjectRun& object, Language lang = Language::en);
 
 }  // namespace vplab

@@ -7,6 +7,7 @@
 #include "app/export/gif.h"
 #include "app/export/svg.h"
 #include "app/fonts/font_atlas.h"
+#include "app/text/catalogue.h"
 #include "app/views/caption_strip.h"
 #include "app/views/caption_text.h"
 #include "app/views/render_request.h"
@@ -29,7 +30,7 @@ namespace {
 std::string sourceText(const Lesson& lesson, const std::string& section) {
   if (section.empty()) return "";
   const bool lectureNotes = std::isdigit(static_cast<unsigned char>(section[0]));
-  return lectureNotes ? std::string(inLanguage(lesson.language, "lecture notes ", "Skript ")) + section : section;
+  return lectureNotes ? text::fill(lesson.language, "lecture notes {1}", {section}) : section;
 }
 
 /// Builds the picture of `state` with step `step`'s caption under it and hands it to `draw` (the
@@ -65,8 +66,9 @@ void withPicture(const Lesson& lesson, size_t step, const LessonState& state, co
 }  // namespace
 
 std::string lessonHeading(const Lesson& lesson, size_t step) {
-  std::string heading = lesson.title + "  ·  " + std::string(inLanguage(lesson.language, "step ", "Schritt ")) +
-                        std::to_string(step + 1) + " / " + std::to_string(lesson.steps.size());
+  std::string heading = lesson.title + "  ·  " +
+                        text::fill(lesson.language, "step {1} / {2}",
+                                   {std::to_string(step + 1), std::to_string(lesson.steps.size())});
   const std::string source = sourceText(lesson, lesson.steps[step].section);
   return source.empty() ? heading : heading + "  ·  " + source;
 }
@@ -100,9 +102,9 @@ std::vector<std::filesystem::path> writeLessonStills(ViewRenderer* renderer, con
   const size_t n = lesson.steps.size();
   std::vector<std::filesystem::path> written;
   std::string index = "# " + lesson.title + "\n\n";
-  index += std::string(inLanguage(lesson.language, "A lesson of vplab in ", "Eine Lektion von vplab in ")) + std::to_string(n) +
-           std::string(inLanguage(lesson.language, " steps; present it with `vplab --lesson ", " Schritten; vorgeführt mit `vplab --lesson ")) +
-           lesson.file.filename().string() + "`.\n";
+  index += text::fill(lesson.language, "A lesson of vplab in {1} steps; present it with `vplab --lesson {2}`.",
+                      {std::to_string(n), lesson.file.filename().string()}) +
+           "\n";
   for (size_t i = 0; i < n; ++i) {
     char name[32];
     std::snprintf(name, sizeof name, "step-%02zu.%s", i + 1, svg ? "svg" : "png");
@@ -113,11 +115,12 @@ std::vector<std::filesystem::path> writeLessonStills(ViewRenderer* renderer, con
     const LessonStep& step = lesson.steps[i];
     const std::string source = sourceText(lesson, step.section);
     index += "\n## " + std::to_string(i + 1) + (source.empty() ? "" : ". " + source) + "\n\n";
-    index += "![" + std::string(inLanguage(lesson.language, "Step ", "Schritt ")) + std::to_string(i + 1) + "](" + name + ")\n\n";
+    index += "![" + text::fill(lesson.language, "Step {1}", {std::to_string(i + 1)}) + "](" + name + ")\n\n";
     index += captionMarkdown(step.caption) + "\n";
-    if (step.free)
-      index += std::string(inLanguage(lesson.language, "\n*Explore freely: the next step restores its own state.*\n",
-                                      "\n*Freies Erkunden: der nächste Schritt stellt seinen Zustand wieder her.*\n"));
+    if (step.free) {
+      const text::Text explore = "*Explore freely: the next step restores its own state.*";
+      index += std::string("\n") + explore.in(lesson.language) + "\n";
+    }
     if (progress && !progress(i + 1, n + 1)) return written;
   }
   const std::filesystem::path indexFile = dir / "index.md";

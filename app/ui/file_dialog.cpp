@@ -1,5 +1,7 @@
 #include "app/ui/file_dialog.h"
 
+#include "app/text/catalogue.h"
+
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include <imgui.h>
 #include <imgui_internal.h>
@@ -47,7 +49,7 @@ void FileDialog::list() {
   });
 }
 
-void FileDialog::draw() {
+void FileDialog::draw(Language lang) {
   if (pending_) {
     ImGui::OpenPopup(title_.c_str());
     pending_ = false;
@@ -57,7 +59,7 @@ void FileDialog::draw() {
   ImGui::SetNextWindowSize(ImVec2(560, 420) * ImGui::GetIO().FontGlobalScale, ImGuiCond_Appearing);
   if (!ImGui::BeginPopupModal(title_.c_str(), &open_)) return;
   ImGui::TextUnformatted(directory_.string().c_str());
-  if (ImGui::Button("Up") && directory_.has_parent_path()) {
+  if (ImGui::Button(text::Text("Up").in(lang)) && directory_.has_parent_path()) {
     directory_ = directory_.parent_path();
     list();
   }
@@ -67,7 +69,7 @@ void FileDialog::draw() {
   for (const auto& e : entries_) {
     std::error_code ec;
     const bool dir = e.is_directory(ec);
-    const std::string label = (dir ? "[dir] " : "") + e.path().filename().string();
+    const std::string label = dir ? text::fill(lang, "[dir] {1}", {e.path().filename().string()}) : e.path().filename().string();
     if (ImGui::Selectable(label.c_str(), !dir && e.path().filename().string() == name_,
                           ImGuiSelectableFlags_AllowDoubleClick)) {
       if (dir) {
@@ -84,9 +86,9 @@ void FileDialog::draw() {
   if (ImGui::InputText("##name", &name_, ImGuiInputTextFlags_EnterReturnsTrue) && !name_.empty())
     chosen = directory_ / name_;
   if (!error_.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", error_.c_str());
-  if (ImGui::Button(mode_ == Mode::open ? "Open" : "Save") && !name_.empty()) chosen = directory_ / name_;
+  if (ImGui::Button((mode_ == Mode::open ? text::Text("Open") : text::Text("Save")).in(lang)) && !name_.empty()) chosen = directory_ / name_;
   ImGui::SameLine();
-  if (ImGui::Button("Cancel")) {
+  if (ImGui::Button(text::Text("Cancel").in(lang))) {
     open_ = false;
     ImGui::CloseCurrentPopup();
   }

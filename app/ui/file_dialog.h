@@ -4,6 +4,8 @@
 // (app/web/page_services.h). Used to open and save scenes, to export views and to load OBJ meshes.
 #pragma once
 
+#include "pipeline/language.h"
+
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -19,8 +21,9 @@ class FileChooser {
   /// save mode `start` suggests the name (and, on the desktop, the folder).
   virtual void open(std::string title, Mode mode, std::vector<std::string> extensions, std::filesystem::path start,
                     std::function<void(const std::filesystem::path&)> onChosen) = 0;
-  /// Draws the chooser while it is open (call every frame; the browser's draws nothing).
-  virtual void draw() {}
+  /// Draws the chooser while it is open, its buttons in `lang` (call every frame; the browser's draws
+  /// nothing).
+  virtual void draw(Language /*lang*/) {}
   virtual bool isOpen() const = 0;
   /// Whether a saved file goes to the user as a download (the browser), never over a file: Save
   /// then always names a new one, and there is no "save a copy" of a bundled scene to ask for.
@@ -31,7 +34,7 @@ class FileDialog final : public FileChooser {
  public:
   void open(std::string title, Mode mode, std::vector<std::string> extensions, std::filesystem::path start,
             std::function<void(const std::filesystem::path&)> onChosen) override;
-  void draw() override;
+  void draw(Language lang) override;
   bool isOpen() const override { return open_ || pending_; }
 
  private:

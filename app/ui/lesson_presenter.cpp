@@ -150,7 +150,7 @@ std::vector<Placed> layOut(const std::string& caption, float width, float* heigh
 std::string sectionText(const Lesson& lesson, const std::string& section) {
   if (section.empty()) return "";
   const bool lectureNotes = std::isdigit(static_cast<unsigned char>(section[0]));
-  return lectureNotes ? std::string(inLanguage(lesson.language, "lecture notes ", "Skript ")) + section : section;
+  return lectureNotes ? text::fill(lesson.language, "lecture notes {1}", {section}) : section;
 }
 
 }  // namespace
@@ -180,9 +180,10 @@ void lessonCaption(ViewerState& s, const Rect& rect, double now) {
   ImGui::Begin("##lesson", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
   recordRect(s, "lesson.caption");
 
-  // The heading: title, step k of n, the source; the buttons at the right.
-  const std::string heading = lesson.title + "  ·  " + std::string(inLanguage(lesson.language, "step ", "Schritt ")) +
-                              std::to_string(player.step() + 1) + " / " + std::to_string(player.stepCount());
+  // The heading: title, step k of n, the source; the buttons at the right. The box speaks the
+  // lesson's language, whatever the viewer's.
+  const std::string heading = text::fill(lesson.language, "{1}  ·  step {2} / {3}",
+                                         {lesson.title, std::to_string(player.step() + 1), std::to_string(player.stepCount())});
   const std::string source = sectionText(lesson, step.section);
   ImGui::PushStyleColor(ImGuiCol_Text, accentColor());
   ImGui::TextUnformatted(heading.c_str());
@@ -192,9 +193,9 @@ void lessonCaption(ViewerState& s, const Rect& rect, double now) {
     ImGui::TextDisabled("(%s)", source.c_str());
   }
   const ImGuiStyle& style = ImGui::GetStyle();
-  const char* back = "← Back";
-  const char* next = "Next →";
-  const char* close = "Close";
+  const char* back = text::Text("← Back").in(lesson.language);
+  const char* next = text::Text("Next →").in(lesson.language);
+  const char* close = text::Text("Close").in(lesson.language);
   const float buttons = ImGui::CalcTextSize(back).x + ImGui::CalcTextSize(next).x + ImGui::CalcTextSize(close).x +
                         style.FramePadding.x * 6 + style.ItemSpacing.x * 2;
   ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowContentRegionMax().x - buttons));
@@ -220,11 +221,9 @@ void lessonCaption(ViewerState& s, const Rect& rect, double now) {
   for (const Placed& p : placed) draw->AddText(ImGui::GetFont(), p.size, origin + p.at, p.math ? math : text, p.text.c_str());
   ImGui::Dummy(ImVec2(1, height));
   if (!s.lessonTyped.empty())
-    ImGui::TextDisabled("%s %s (Enter)", std::string(inLanguage(lesson.language, "go to step", "zu Schritt")).c_str(), s.lessonTyped.c_str());
+    ImGui::TextDisabled("%s", text::fill(lesson.language, "go to step {1} (Enter)", {s.lessonTyped}).c_str());
   else if (step.free)
-    ImGui::TextDisabled("%s", std::string(inLanguage(lesson.language, "Explore freely: the next step restores its own state.",
-                                                     "Freies Erkunden: der nächste Schritt stellt seinen Zustand wieder her."))
-                                  .c_str());
+    ImGui::TextDisabled("%s", text::Text("Explore freely: the next step restores its own state.").in(lesson.language));
   ImGui::End();
   if (closing) {
     s.lesson.reset();

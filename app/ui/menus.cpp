@@ -17,6 +17,7 @@
 #include <imgui_internal.h>
 
 #include <array>
+#include <tuple>
 
 namespace vplab {
 
@@ -36,24 +37,24 @@ Enum nextOf(const std::array<Enum, N>& all, Enum value) {
 
 void Menus::menuBar() {
   if (!ImGui::BeginMainMenuBar()) return;
-  const bool fileMenu = ImGui::BeginMenu("File");
+  const bool fileMenu = ImGui::BeginMenu(ui::tr(s_, "File"));
   ui::recordRect(s_, "menu.file");
   if (fileMenu) {
     // The browser owns Ctrl+N, Ctrl+O, Ctrl+S, Ctrl+W and F11, F12: the page offers these here only.
-    auto key = [this](const char* shortcut) { return session_.browser() ? nullptr : shortcut; };
-    if (ImGui::MenuItem("New (default lecture scene)", key("Ctrl+N"))) session_.newDocument();
+    auto key = [this](text::Text shortcut) { return session_.browser() ? nullptr : ui::tr(s_, shortcut); };
+    if (ImGui::MenuItem(ui::tr(s_, "New (default lecture scene)"), key("Ctrl+N"))) session_.newDocument();
     ui::recordRect(s_, "menu.new");
     if (session_.browser()) {
-      if (ImGui::MenuItem("Open a scene or an OBJ mesh…")) session_.chooseFileToOpen();
+      if (ImGui::MenuItem(ui::tr(s_, "Open a scene or an OBJ mesh…"))) session_.chooseFileToOpen();
       ui::recordRect(s_, "menu.open");
-      if (ImGui::MenuItem("Save (download)")) session_.save();
+      if (ImGui::MenuItem(ui::tr(s_, "Save (download)"))) session_.save();
       ui::recordRect(s_, "menu.save");
     } else {
-      if (ImGui::MenuItem("Open scene…", "Ctrl+O")) session_.chooseFileToOpen();
-      if (ImGui::MenuItem("Save", "Ctrl+S")) session_.save();
-      if (ImGui::MenuItem("Save as…", "Ctrl+Shift+S")) session_.saveAs();
+      if (ImGui::MenuItem(ui::tr(s_, "Open scene…"), ui::tr(s_, "Ctrl+O"))) session_.chooseFileToOpen();
+      if (ImGui::MenuItem(ui::tr(s_, "Save"), ui::tr(s_, "Ctrl+S"))) session_.save();
+      if (ImGui::MenuItem(ui::tr(s_, "Save as…"), ui::tr(s_, "Ctrl+Shift+S"))) session_.saveAs();
     }
-    if (ImGui::BeginMenu("Presets", !s_.presets.empty())) {
+    if (ImGui::BeginMenu(ui::tr(s_, "Presets"), !s_.presets.empty())) {
       for (const SceneFileInfo& p : s_.presets)
         if (ImGui::MenuItem(p.title.c_str())) {
           const std::filesystem::path file = p.file;
@@ -63,41 +64,58 @@ void Menus::menuBar() {
     }
     lessonsMenu();
     ImGui::Separator();
-    const bool exportOpen = ImGui::BeginMenu("Export a view");
+    const bool exportOpen = ImGui::BeginMenu(ui::tr(s_, "Export a view"));
     ui::recordRect(s_, "menu.export");
     if (exportOpen) {
       exportMenu();
       ImGui::EndMenu();
     }
-    if (ImGui::MenuItem("Screenshot", key("F12"))) s_.screenshotRequested = true;
-    if (!session_.browser() && ImGui::MenuItem("Quit", "Ctrl+Q")) s_.quitRequested = true;  // a page is closed by its tab
+    if (ImGui::MenuItem(ui::tr(s_, "Screenshot"), key("F12"))) s_.screenshotRequested = true;
+    if (!session_.browser() && ImGui::MenuItem(ui::tr(s_, "Quit"), ui::tr(s_, "Ctrl+Q"))) s_.quitRequested = true;  // a page is closed by its tab
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("Edit")) {
-    if (ImGui::MenuItem("Undo", "Ctrl+Z", false, s_.doc.canUndo())) s_.doc.undo();
-    if (ImGui::MenuItem("Redo", "Ctrl+Y", false, s_.doc.canRedo())) s_.doc.redo();
+  if (ImGui::BeginMenu(ui::tr(s_, "Edit"))) {
+    if (ImGui::MenuItem(ui::tr(s_, "Undo"), ui::tr(s_, "Ctrl+Z"), false, s_.doc.canUndo())) s_.doc.undo();
+    if (ImGui::MenuItem(ui::tr(s_, "Redo"), ui::tr(s_, "Ctrl+Y"), false, s_.doc.canRedo())) s_.doc.redo();
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("View")) {
+  const bool viewMenu = ImGui::BeginMenu(ui::tr(s_, "View"));
+  ui::recordRect(s_, "menu.view");
+  if (viewMenu) {
     // A preference, kept when another scene is opened: white views for a bright lecture hall and
     // for exported pictures that will be printed.
     bool light = s_.display.theme == Theme::light;
-    if (ImGui::MenuItem("Light theme (bright hall, print)", nullptr, &light))
+    if (ImGui::MenuItem(ui::tr(s_, "Light theme (bright hall, print)"), nullptr, &light))
       s_.display.theme = light ? Theme::light : Theme::dark;
     // How long a lesson's move from one step into the next takes (0: at once).
     float seconds = float(s_.lessonSeconds);
     ImGui::SetNextItemWidth(ImGui::CalcTextSize("0.00 s").x * 3);
-    if (ImGui::SliderFloat("lesson moves", &seconds, 0.f, 3.f, "%.1f s")) s_.lessonSeconds = seconds;
+    if (ImGui::SliderFloat(ui::tr(s_, "lesson moves"), &seconds, 0.f, 3.f, "%.1f s")) s_.lessonSeconds = seconds;
     ui::recordRect(s_, "menu.lessonSeconds");
-    ui::tooltip("How long the camera and every number take to move from one step of a lesson into the next.",
-                "Wie lange Kamera und Zahlen von einem Schritt der Lektion zum nächsten brauchen.");
+    ui::tooltip(s_, "How long the camera and every number take to move from one step of a lesson into the next.");
+    languageMenu();
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("Help")) {
-    if (ImGui::MenuItem("Mouse and keys", "F1")) s_.showHelp = true;
+  if (ImGui::BeginMenu(ui::tr(s_, "Help"))) {
+    if (ImGui::MenuItem(ui::tr(s_, "Mouse and keys"), "F1")) s_.showHelp = true;
     ImGui::EndMenu();
   }
   ImGui::EndMainMenuBar();
+}
+
+// View ▸ Language: the menus', panels' and views' language, remembered for the next start (the
+// session writes the choice; --lang overrides it for one run).
+void Menus::languageMenu() {
+  const bool open = ImGui::BeginMenu(ui::tr(s_, "Language"));
+  ui::recordRect(s_, "menu.language");
+  if (!open) return;
+  for (const auto& [lang, name, id] : {std::tuple{Language::en, text::Text("English"), "menu.language.en"},
+                                       std::tuple{Language::de, text::Text("German (Deutsch)"), "menu.language.de"}}) {
+    if (ImGui::MenuItem(ui::tr(s_, name), nullptr, s_.display.language == lang)) session_.chooseLanguage(lang);
+    ui::recordRect(s_, id);
+  }
+  ui::tooltip(s_, "The language of the menus, panels and the views' labels; vplab remembers it (--lang chooses it for one run).");
+  ImGui::EndMenu();
 }
 
 void Menus::lessonsMenu() {
@@ -105,7 +123,7 @@ void Menus::lessonsMenu() {
   const Language first = s_.display.language;
   const Language second = first == Language::de ? Language::en : Language::de;
   const std::vector<LessonFileInfo> mine = listBundledLessons(first), others = listBundledLessons(second);
-  const bool open = ImGui::BeginMenu("Lessons", !mine.empty() || !others.empty());
+  const bool open = ImGui::BeginMenu(ui::tr(s_, "Lessons"), !mine.empty() || !others.empty());
   ui::recordRect(s_, "menu.lessons");
   if (!open) return;
   auto items = [this](const std::vector<LessonFileInfo>& lessons, const char* prefix) {
@@ -118,11 +136,11 @@ void Menus::lessonsMenu() {
   items(mine, "");
   if (!others.empty()) {
     ImGui::Separator();
-    items(others, second == Language::de ? "(Deutsch) " : "(English) ");
+    items(others, second == Language::de ? ui::tr(s_, "(Deutsch) ") : ui::tr(s_, "(English) "));
   }
   if (s_.lesson) {
     ImGui::Separator();
-    if (ImGui::MenuItem("Close the lesson", "Esc")) {
+    if (ImGui::MenuItem(ui::tr(s_, "Close the lesson"), "Esc")) {
       s_.lesson.reset();
       s_.lessonMarks.clear();
     }
@@ -196,19 +214,21 @@ RenderRequest shownViewRequest(const ViewerState& s, ViewKind kind, int width, i
 void Menus::exportMenu() {
   struct Entry {
     ViewKind kind;
-    const char* name;
+    text::Text png, svg, title;
   };
-  const Entry entries[] = {{ViewKind::camera, "camera"}, {ViewKind::world, "world"}, {ViewKind::npc, "NPC"}};
+  const Entry entries[] = {
+      {ViewKind::camera, "camera view as PNG…", "camera view as SVG…", "Export the camera view"},
+      {ViewKind::world, "world view as PNG…", "world view as SVG…", "Export the world view"},
+      {ViewKind::npc, "NPC view as PNG…", "NPC view as SVG…", "Export the NPC view"}};
   for (const Entry& e : entries) {
     // The image shown (drawn in this thread or on the views' render thread: textures are shared).
     const GLuint texture = images_.texture(e.kind);
     const ViewKind kind = e.kind;
     const int w = images_.width(kind), h = images_.height(kind);
-    const std::string png = std::string(e.name) + " view as PNG…";
-    const bool pngChosen = ImGui::MenuItem(png.c_str(), nullptr, false, texture != 0);
+    const bool pngChosen = ImGui::MenuItem(ui::tr(s_, e.png), nullptr, false, texture != 0);
     ui::recordRect(s_, ("export." + std::string(toString(e.kind)) + ".png").c_str());
     if (pngChosen) {
-      session_.fileDialog().open("Export the " + std::string(e.name) + " view", FileChooser::Mode::save, {".png"},
+      session_.fileDialog().open(ui::tr(s_, e.title), FileChooser::Mode::save, {".png"},
                    "vplab-" + std::string(toString(e.kind)) + ".png", [this, texture, kind, w, h](const std::filesystem::path& f) {
                      try {
                        // OpenGL ES (the browser's WebGL2) cannot read a texture back, and the page has
@@ -216,22 +236,21 @@ void Menus::exportMenu() {
                        const bool es = gl::dialectOf(ctx_.gl()) == gl::GlslDialect::es300;
                        const bool camera = kind == ViewKind::camera;  // shown at the device's W × H
                        writePng(es ? exportImage(kind, camera ? 0 : w, camera ? 0 : h) : readTexture(ctx_.gl(), texture), f);
-                       session_.setStatus("exported " + f.string(), false);
+                       session_.setStatus(ui::tr(s_, "exported {1}", {f.string()}), false);
                      } catch (const Error& err) {
                        session_.setStatus(err.what(), true);
                      }
                    });
     }
     const std::optional<std::string> why = svgExportError(e.kind, s_.doc.shown(), s_.display);
-    const std::string svg = std::string(e.name) + " view as SVG…";
-    const bool svgChosen = ImGui::MenuItem(svg.c_str(), nullptr, false, !why && texture != 0);
+    const bool svgChosen = ImGui::MenuItem(ui::tr(s_, e.svg), nullptr, false, !why && texture != 0);
     ui::recordRect(s_, ("export." + std::string(toString(e.kind)) + ".svg").c_str());
     if (svgChosen) {
-      session_.fileDialog().open("Export the " + std::string(e.name) + " view", FileChooser::Mode::save, {".svg"},
+      session_.fileDialog().open(ui::tr(s_, e.title), FileChooser::Mode::save, {".svg"},
                    "vplab-" + std::string(toString(kind)) + ".svg", [this, kind, w, h](const std::filesystem::path& f) {
                      try {
                        writeSvg(svgOfRequest(s_.doc.shown(), shownViewRequest(s_, kind, w, h, uiScale_)), f);
-                       session_.setStatus("exported " + f.string(), false);
+                       session_.setStatus(ui::tr(s_, "exported {1}", {f.string()}), false);
                      } catch (const Error& err) {
                        session_.setStatus(err.what(), true);
                      }
@@ -249,44 +268,44 @@ void Menus::helpWindow() {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowSize(ImMin(ImVec2(560, 520) * uiScale_, display * 0.9f), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowPos(ImGui::GetIO().DisplaySize * 0.5f, ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
-  if (ImGui::Begin("Help (F1)", &s_.showHelp)) {
-    ImGui::TextUnformatted("Mouse");
-    for (const char* line : {"world and NPC views: left-drag orbits, right- or middle-drag pans, the wheel zooms",
-                             "world view: drag the handles (VRP, PRP, the window's edges, front and back planes)",
-                             "any view: click a vertex to probe it through the pipeline"}) {
+  if (ImGui::Begin(ui::tr(s_, "Help (F1)###help"), &s_.showHelp)) {
+    ImGui::TextUnformatted(ui::tr(s_, "Mouse"));
+    for (const text::Text line : {text::Text("world and NPC views: left-drag orbits, right- or middle-drag pans, the wheel zooms"),
+                                  text::Text("world view: drag the handles (VRP, PRP, the window's edges, front and back planes)"),
+                                  text::Text("any view: click a vertex to probe it through the pipeline")}) {
       ImGui::Bullet();
-      ImGui::TextWrapped("%s", line);
+      ImGui::TextWrapped("%s", ui::tr(s_, line));
     }
     ImGui::Spacing();
-    ImGui::TextUnformatted("Keys");
-    const char* keys[][2] = {{"Ctrl+Z", "undo"},
-                             {"Ctrl+Y, Ctrl+Shift+Z", "redo"},
-                             {"Ctrl+N", "new: the default lecture scene"},
-                             {"Ctrl+O", "open a scene"},
-                             {"Ctrl+S / Ctrl+Shift+S", "save (a bundled scene: as a copy) / save as"},
-                             {"Ctrl+Q", "quit (asks when the scene has unsaved changes)"},
-                             {"1 to 5", "style of every view: flat, shaded, wire, hidden-line, hidden removed"},
-                             {"P", "next projection: perspective, parallel, oblique"},
-                             {"C", "next clipping strategy: NPC, WC, divide first (wrong)"},
-                             {"B", "bounding-box test on or off"},
-                             {"R", "reset the observers of the world and NPC views"},
-                             {"Esc", "clear the vertex probe"},
-                             {"F1", "this help"},
-                             {"F11", "lecture mode: one view fills the window (Esc returns)"},
-                             {"Shift+click", "in the camera view: step through the clipping of that polygon"},
-                             {"F12", "screenshot of the whole window (PNG in the working directory)"},
-                             {"→ Space Page Down", "in a lesson (File > Lessons): the next step"},
-                             {"← Page Up", "in a lesson: the step before"},
-                             {"Home / End", "in a lesson: the first / the last step"},
-                             {"a number, Enter", "in a lesson: that step (the digits then choose no style)"},
-                             {"Esc", "in a lesson: forget the typed number, else close the lesson"}};
+    ImGui::TextUnformatted(ui::tr(s_, "Keys"));
+    const text::Text keys[][2] = {{"Ctrl+Z", "undo"},
+                                  {"Ctrl+Y, Ctrl+Shift+Z", "redo"},
+                                  {"Ctrl+N", "new: the default lecture scene"},
+                                  {"Ctrl+O", "open a scene"},
+                                  {"Ctrl+S / Ctrl+Shift+S", "save (a bundled scene: as a copy) / save as"},
+                                  {"Ctrl+Q", "quit (asks when the scene has unsaved changes)"},
+                                  {"1 to 5", "style of every view: flat, shaded, wire, hidden-line, hidden removed"},
+                                  {"P", "next projection: perspective, parallel, oblique"},
+                                  {"C", "next clipping strategy: NPC, WC, divide first (wrong)"},
+                                  {"B", "bounding-box test on or off"},
+                                  {"R", "reset the observers of the world and NPC views"},
+                                  {"Esc", "clear the vertex probe"},
+                                  {"F1", "this help"},
+                                  {"F11", "lecture mode: one view fills the window (Esc returns)"},
+                                  {"Shift+click", "in the camera view: step through the clipping of that polygon"},
+                                  {"F12", "screenshot of the whole window (PNG in the working directory)"},
+                                  {"→ Space Page Down", "in a lesson (File > Lessons): the next step"},
+                                  {"← Page Up", "in a lesson: the step before"},
+                                  {"Home / End", "in a lesson: the first / the last step"},
+                                  {"a number, Enter", "in a lesson: that step (the digits then choose no style)"},
+                                  {"Esc", "in a lesson: forget the typed number, else close the lesson"}};
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
       for (const auto& k : keys) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(k[0]);
+        ImGui::TextUnformatted(ui::tr(s_, k[0]));
         ImGui::TableNextColumn();
-        ImGui::TextWrapped("%s", k[1]);
+        ImGui::TextWrapped("%s", ui::tr(s_, k[1]));
       }
       ImGui::EndTable();
     }

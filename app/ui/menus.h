@@ -34,6 +34,8 @@ class Menus {
   void exportMenu();
   /// File > Lessons: the bundled lessons (app/core/lesson.h).
   void lessonsMenu();
+  /// View > Language: English or German, remembered (Session::chooseLanguage).
+  void languageMenu();
 
   GlContext& ctx_;
   ViewerState& s_;

@@ -9,10 +9,22 @@
 #include "pipeline/clipping.h"
 
 #include <algorithm>
+#include <string>
+#include <string_view>
 
 namespace vplab::ui {
 
 namespace {
+
+/// A cube plane's name (planeName, English) in the viewer's language; a user plane's as the pipeline
+/// names it.
+std::string planeLabel(const ViewerState& s, int plane) {
+  static constexpr text::Text kNames[] = {"left", "right", "bottom", "top", "back", "front"};
+  const std::string_view en = planeName(plane);
+  for (const text::Text& name : kNames)
+    if (name.english() == en) return tr(s, name);
+  return std::string(en);
+}
 
 void matrixTable(ViewerState& s, const char* name, const char* id, const Mat4& m, const char* explanation) {
   ImGui::PushID(id);
@@ -65,7 +77,7 @@ void matrixTable(ViewerState& s, const char* name, const char* id, const Mat4& m
   // The buttons wrap onto the next line when the inspector is narrow (a large UI scale).
   const std::string base = std::string("copy.") + id;
   const std::string ids[] = {base + ".text", base + ".markdown", base + ".latex"};
-  const char* labels[] = {"copy text", "copy Markdown", "copy LaTeX"};
+  const char* labels[] = {tr(s, "copy text"), tr(s, "copy Markdown"), tr(s, "copy LaTeX")};
   const MatrixFormat formats[] = {MatrixFormat::plain, MatrixFormat::markdown, MatrixFormat::latex};
   const ImGuiStyle& style = ImGui::GetStyle();
   float x = 0;
@@ -77,7 +89,7 @@ void matrixTable(ViewerState& s, const char* name, const char* id, const Mat4& m
     } else {
       x = 0;
     }
-    copyButton(s, labels[i], ids[i].c_str(), matrixText(m, name, formats[i], s.seedForm));
+    copyButton(s, labels[i], ids[i].c_str(), matrixText(m, name, formats[i], s.seedForm, s.display.language));
     x += w;
   }
   for (const std::string& i : ids) copiedNotice(s, i.c_str());
@@ -88,13 +100,12 @@ void matrixTable(ViewerState& s, const char* name, const char* id, const Mat4& m
 }  // namespace
 
 void matricesPanel(ViewerState& s) {
-  checkbox("the lecture notes' row-vector form (p' = p · M, transposed)", &s.seedForm);
-  tooltip("The project computes with column vectors (p' = M · p, as GLM). The lecture notes write points as "
-          "row vectors; their matrices are the transposes.",
-          "Die Vorlesung schreibt Punkte als Zeilenvektoren; ihre Matrizen sind die transponierten.");
+  checkbox(tr(s, "the lecture notes' row-vector form (p' = p · M, transposed)"), &s.seedForm);
+  tooltip(s, "The project computes with column vectors (p' = M · p, as GLM). The lecture notes write points "
+             "as row vectors; their matrices are the transposes.");
   const PipelineRun& run = s.run();
   Mat4 wcFromMc(1.0);
-  std::string objectName = "(no object)";
+  std::string objectName = tr(s, "(no object)");
   if (!run.objects.empty()) {
     int k = 0;
     for (size_t i = 0; i < run.sceneIndex.size(); ++i)
@@ -102,17 +113,18 @@ void matricesPanel(ViewerState& s) {
     wcFromMc = run.objects[size_t(k)].wcFromMc;
     objectName = run.objects[size_t(k)].name;
   }
-  matrixTable(s, ("wcFromMc — " + objectName).c_str(), "wcFromMc", wcFromMc, "stage 1, modeling");
-  matrixTable(s, "vrcFromWc", "vrcFromWc", run.vrcFromWc, "stage 2, view orientation");
-  matrixTable(s, "npcFromVrc", "npcFromVrc", run.npcFromVrc, "stage 3, view mapping (then clip, then ÷ w)");
-  matrixTable(s, "dcFromNpc", "dcFromNpc", run.dcFromNpc, "stage 5, device mapping");
+  matrixTable(s, ("wcFromMc — " + objectName).c_str(), "wcFromMc", wcFromMc, tr(s, "stage 1, modeling"));
+  matrixTable(s, "vrcFromWc", "vrcFromWc", run.vrcFromWc, tr(s, "stage 2, view orientation"));
+  matrixTable(s, "npcFromVrc", "npcFromVrc", run.npcFromVrc,
+              tr(s, "stage 3, view mapping (then clip, then ÷ w)"));
+  matrixTable(s, "dcFromNpc", "dcFromNpc", run.dcFromNpc, tr(s, "stage 5, device mapping"));
   matrixTable(s, "dcFromMc", "dcFromMc", run.dcFromNpc * run.npcFromVrc * run.vrcFromWc * wcFromMc,
-              "the composite, right to left");
+              tr(s, "the composite, right to left"));
 }
 
 void probePanel(ViewerState& s) {
   if (!s.probe) {
-    ImGui::TextWrapped("Click a vertex in any view to follow it through the pipeline.");
+    ImGui::TextWrapped("%s", tr(s, "Click a vertex in any view to follow it through the pipeline."));
     return;
   }
   const PipelineRun& run = s.run();
@@ -120,14 +132,14 @@ void probePanel(ViewerState& s) {
   for (size_t i = 0; i < run.sceneIndex.size(); ++i)
     if (run.sceneIndex[i] == s.probe->object) o = &run.objects[i];
   if (!o || s.probe->vertex >= o->vertexCount()) {
-    ImGui::TextWrapped("The probed vertex is not in the scene any more.");
+    ImGui::TextWrapped("%s", tr(s, "The probed vertex is not in the scene any more."));
     return;
   }
   const uint32_t v = s.probe->vertex;
   const Vec4 h = o->npcH[v];
-  ImGui::Text("%s, vertex %u", o->name.c_str(), v);
+  ImGui::TextUnformatted(tr(s, "{1}, vertex {2}", {o->name, std::to_string(v)}).c_str());
   ImGui::SameLine();
-  if (ImGui::SmallButton("clear")) s.probe.reset();
+  if (ImGui::SmallButton(tr(s, "clear"))) s.probe.reset();
   // Each space's name, then its coordinates beside it, wrapped at the window's edge.
   auto row = [](const char* space, const std::string& value) {
     ImGui::TextDisabled("%s", space);
@@ -137,19 +149,19 @@ void probePanel(ViewerState& s) {
   row("MC", vecText(o->mesh->positions[v]));
   row("WC", vecText(o->wc(v)));
   row("VRC", vecText(o->vrc(v)));
-  row("NPC (homogeneous)", vecText(h));
+  row(tr(s, "NPC (homogeneous)"), vecText(h));
   if (h.w > 0) {
     const Vec3 npc = Vec3(h) / h.w;
     row("NPC (÷ w)", vecText(npc));
     row("DC", vecText(Vec3(run.dcFromNpc * Vec4(npc, 1.0))));
   } else {
-    row("NPC (÷ w)", "w ≤ 0: behind the eye, no image point");
+    row("NPC (÷ w)", tr(s, "w ≤ 0: behind the eye, no image point"));
     row("DC", "—");
   }
   // Blinn's boundary coordinates of the homogeneous point, whatever the strategy (Hill 7.4).
   const Boundary bc = boundaryCoordinates(h);
   const Outcode code = outcodeOf(bc);
-  section("boundary coordinates (inside when ≥ 0)");
+  section(tr(s, "boundary coordinates (inside when ≥ 0)"));
   const double bcScale = magnitudeOf({bc[0], bc[1], bc[2], bc[3], bc[4], bc[5], h.w});
   // One line per plane (wrapping in a narrow inspector): the form, its value, the plane.
   static constexpr const char* kForms[] = {"BC0 = x", "BC1 = w − x", "BC2 = y", "BC3 = w − y", "BC4 = z", "BC5 = w − z"};
@@ -158,7 +170,7 @@ void probePanel(ViewerState& s) {
     const std::string value = num(bc[i], bcScale, 5);
     sameLineIfFits(value.c_str(), false);
     ImGui::TextColored(bc[i] < 0 ? outsideColor() : insideColor(), "%s", value.c_str());
-    const std::string plane = std::string(planeName(i)) + " (" + std::string(planeInequality(i)) + ")";
+    const std::string plane = planeLabel(s, i) + " (" + std::string(planeInequality(i)) + ")";
     sameLineIfFits(plane.c_str(), false);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("%s", plane.c_str());
@@ -167,8 +179,10 @@ void probePanel(ViewerState& s) {
   std::string bits, names;
   for (int i = kPlaneCount - 1; i >= 0; --i) bits += (code >> i & 1) ? '1' : '0';
   for (int i = 0; i < kPlaneCount; ++i)
-    if (code >> i & 1) names += (names.empty() ? "" : ", ") + std::string(planeName(i));
-  ImGui::TextWrapped("outcode %s  %s", bits.c_str(), code ? ("outside: " + names).c_str() : "inside");
+    if (code >> i & 1) names += (names.empty() ? "" : ", ") + planeLabel(s, i);
+  const std::string outcode =
+      code ? tr(s, "outcode {1}  outside: {2}", {bits, names}) : tr(s, "outcode {1}  inside", {bits});
+  ImGui::TextWrapped("%s", outcode.c_str());
 }
 
 }  // namespace vplab::ui

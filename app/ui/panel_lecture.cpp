@@ -27,17 +27,34 @@ const ObjectRun* runOf(const ViewerState& s, int sceneIndex) {
   return nullptr;
 }
 
+/// "its fate: clipped" in the viewer's language (the English names the pipeline's Fate as toString does).
+text::Text fateText(Fate f) {
+  switch (f) {
+    case Fate::accepted: return "its fate: accepted";
+    case Fate::rejected: return "its fate: rejected";
+    case Fate::clipped: return "its fate: clipped";
+    case Fate::clippedAway: return "its fate: clipped_away";
+  }
+  return "its fate: clipped";
+}
+
+/// "left plane", …, "user plane 2": a clipping plane (pipeline's planeName) in the viewer's language.
+std::string planeText(const ViewerState& s, int plane) {
+  static constexpr text::Text kCube[] = {"left plane", "right plane", "bottom plane", "top plane", "back plane", "front plane"};
+  if (plane >= 0 && plane < kPlaneCount) return tr(s, kCube[plane]);
+  return tr(s, "user plane {1}", {std::to_string(plane - kPlaneCount + 1)});
+}
+
 void morphSection(ViewerState& s) {
-  checkbox("show the stage morph", &s.showMorph);
-  tooltip("One view moves the visible scene from MC through WC, VRC and homogeneous NPC to NPC and DC; "
-          "the division by w is its own step (2.5 → 3).",
-          "Die Szene wandert durch die Stufen der Viewing Pipeline; die Division durch w ist ein eigener Schritt.");
+  checkbox(tr(s, "show the stage morph"), &s.showMorph);
+  tooltip(s, "One view moves the visible scene from MC through WC, VRC and homogeneous NPC to NPC and DC; "
+             "the division by w is its own step (2.5 → 3).");
   if (!s.showMorph) return;
   float t = float(s.display.morphing.t);
   fitLabel("t");
   if (ImGui::SliderFloat("t", &t, 0.f, 4.f, "%.2f")) s.display.morphing.t = t;
   recordRect(s, "morph.t");
-  if (ImGui::Button(s.morphPlaying ? "pause" : "play")) {
+  if (ImGui::Button(s.morphPlaying ? tr(s, "pause") : tr(s, "play"))) {
     if (!s.morphPlaying && s.display.morphing.t >= 4) s.display.morphing.t = 0;
     s.morphPlaying = !s.morphPlaying;
   }
@@ -51,8 +68,9 @@ void morphSection(ViewerState& s) {
   }
   ImGui::NewLine();
   float speed = float(s.morphSpeed);
-  fitLabel("speed (stages/s)");
-  if (ImGui::SliderFloat("speed (stages/s)", &speed, 0.1f, 2.f, "%.2f")) s.morphSpeed = speed;
+  const char* speedLabel = tr(s, "speed (stages/s)");
+  fitLabel(speedLabel);
+  if (ImGui::SliderFloat(speedLabel, &speed, 0.1f, 2.f, "%.2f")) s.morphSpeed = speed;
 }
 
 void stepThroughSection(ViewerState& s) {
@@ -61,66 +79,67 @@ void stepThroughSection(ViewerState& s) {
     ImGui::SetScrollHereY(0.f);
     s.showStepThrough = false;
   }
-  checkbox("step through the clipping of a polygon", &st.active);
+  checkbox(tr(s, "step through the clipping of a polygon"), &st.active);
   recordRect(s, "step.active");
-  tooltip("Sutherland–Hodgman one plane at a time in homogeneous NPC: each vertex's boundary coordinate for "
-          "the plane, and the vertices each pass creates (Hill 7.4). Shift+click a polygon in the camera view "
-          "to choose it.",
-          "Sutherland–Hodgman Ebene für Ebene; Randkoordinaten der Ecken und neue Ecken.");
+  tooltip(s, "Sutherland–Hodgman one plane at a time in homogeneous NPC: each vertex's boundary coordinate for "
+             "the plane, and the vertices each pass creates (Hill 7.4). Shift+click a polygon in the camera view "
+             "to choose it.");
   if (!st.active) return;
   const Scene& scene = s.doc.shown();
   if (scene.objects.empty()) return;
   st.object = std::clamp(st.object, 0, int(scene.objects.size()) - 1);
-  fitLabel("object");
-  if (ImGui::BeginCombo("object", scene.objects[size_t(st.object)].name.c_str())) {
+  const char* objectLabel = tr(s, "object");
+  fitLabel(objectLabel);
+  if (ImGui::BeginCombo(objectLabel, scene.objects[size_t(st.object)].name.c_str())) {
     for (int i = 0; i < int(scene.objects.size()); ++i)
       if (ImGui::Selectable(scene.objects[size_t(i)].name.c_str(), i == st.object)) st.object = i;
     ImGui::EndCombo();
   }
   const ObjectRun* o = runOf(s, st.object);
   if (!o || o->faceCount() == 0) {
-    ImGui::TextDisabled("(the object is hidden)");
+    ImGui::TextDisabled("%s", tr(s, "(the object is hidden)"));
     return;
   }
   st.face = std::clamp(st.face, 0, int(o->faceCount()) - 1);
-  fitLabel("polygon");
-  ImGui::SliderInt("polygon", &st.face, 0, int(o->faceCount()) - 1);
-  ImGui::TextDisabled("its fate: %s", std::string(toString(o->fate[size_t(st.face)])).c_str());
+  const char* polygonLabel = tr(s, "polygon");
+  fitLabel(polygonLabel);
+  ImGui::SliderInt(polygonLabel, &st.face, 0, int(o->faceCount()) - 1);
+  ImGui::TextDisabled("%s", tr(s, fateText(o->fate[size_t(st.face)])));
   const std::vector<ClipStep> steps = clipSteps(s.run(), *o, size_t(st.face));
   const int last = int(steps.size());
   st.step = std::clamp(st.step, 0, last);
   ImGui::BeginDisabled(st.step == 0);  // nothing before the first plane
-  if (ImGui::Button("< back")) --st.step;
+  if (ImGui::Button(tr(s, "< back"))) --st.step;
   ImGui::EndDisabled();
   recordRect(s, "step.back");
   ImGui::SameLine();
   ImGui::BeginDisabled(st.step == last);  // nothing after the last
-  if (ImGui::Button("next >")) ++st.step;
+  if (ImGui::Button(tr(s, "next >"))) ++st.step;
   ImGui::EndDisabled();
   recordRect(s, "step.next");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(std::max(ImGui::GetFontSize() * 4, ImGui::GetContentRegionAvail().x));
-  ImGui::SliderInt("##step", &st.step, 0, last, "pass %d");
+  ImGui::SliderInt("##step", &st.step, 0, last, tr(s, "pass %d"));
   recordRect(s, "step.slider");
 
   if (st.step == 0) {
-    ImGui::TextWrapped("The polygon as it enters stage 4: %zu vertices in homogeneous NPC.", steps[0].input.size());
+    ImGui::TextWrapped(tr(s, "The polygon as it enters stage 4: %zu vertices in homogeneous NPC."), steps[0].input.size());
     return;
   }
   const ClipStep& step = steps[size_t(st.step - 1)];
-  ImGui::TextWrapped("pass %d of %d: %s plane, keep %s", st.step, last, std::string(planeName(step.plane)).c_str(),
+  ImGui::TextWrapped(tr(s, "pass %d of %d: %s, keep %s"), st.step, last, planeText(s, step.plane).c_str(),
                      std::string(planeInequality(step.plane)).c_str());
   if (step.skipped) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("no vertex outside this plane: the pass changes nothing");
+    ImGui::TextWrapped("%s", tr(s, "no vertex outside this plane: the pass changes nothing"));
     ImGui::PopStyleColor();
   }
   double scale = 0;
   for (double b : step.boundary) scale = std::max(scale, std::abs(b));
   if (ImGui::BeginTable("bc", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit)) {
-    ImGui::TableSetupColumn("vertex");
-    ImGui::TableSetupColumn("boundary coordinate");
-    ImGui::TableSetupColumn("side");
+    ImGui::TableSetupColumn(tr(s, "vertex"));
+    ImGui::TableSetupColumn(tr(s, "boundary coordinate"));
+    ImGui::TableSetupColumn(tr(s, "side"));
     ImGui::TableHeadersRow();
     for (size_t i = 0; i < step.input.size(); ++i) {
       ImGui::TableNextRow();
@@ -130,35 +149,34 @@ void stepThroughSection(ViewerState& s) {
       const double b = step.boundary[i];
       ImGui::TextColored(b < 0 ? outsideColor() : insideColor(), "%s", num(b, scale, 5).c_str());
       ImGui::TableNextColumn();
-      ImGui::TextDisabled("%s", b < 0 ? "outside" : "inside");
+      ImGui::TextDisabled("%s", b < 0 ? tr(s, "outside") : tr(s, "inside"));
     }
     ImGui::EndTable();
   }
   const long created = std::count(step.created.begin(), step.created.end(), true);
-  ImGui::TextWrapped("%zu vertices in, %zu out, %ld new (yellow in the views)", step.input.size(), step.output.size(),
+  ImGui::TextWrapped(tr(s, "%zu vertices in, %zu out, %ld new (yellow in the views)"), step.input.size(), step.output.size(),
                      created);
   // The new vertices where the polygon's edges cross the plane, snapped onto it as they are drawn.
   for (size_t k = 0; k < step.output.size(); ++k) {
     if (!step.created[k]) continue;
     Vec4 p = step.output[k].p;
     snapToPlanes(p, step.output[k].onPlanes);
-    ImGui::BulletText("new vertex %zu:", k);
+    ImGui::BulletText(tr(s, "new vertex %zu:"), k);
     ImGui::Indent();
-    ImGui::TextWrapped("%s (homogeneous NPC)", vecText(p).c_str());
+    ImGui::TextWrapped("%s", tr(s, "{1} (homogeneous NPC)", {vecText(p)}).c_str());
     ImGui::Unindent();
     recordRect(s, ("step.new." + std::to_string(k)).c_str());
   }
 }
 
 void vanishingSection(ViewerState& s) {
-  checkbox("vanishing points of the selected object", &s.display.overlays.vanishingPoints);
-  tooltip("In a perspective projection, edges parallel to an axis that is not parallel to the view plane meet "
-          "in one image point (lecture notes 14.2): one, two or three of them.",
-          "Fluchtpunkte: parallele Kanten treffen sich im Bild in einem Punkt (14.2).");
+  checkbox(tr(s, "vanishing points of the selected object"), &s.display.overlays.vanishingPoints);
+  tooltip(s, "In a perspective projection, edges parallel to an axis that is not parallel to the view plane meet "
+             "in one image point (lecture notes 14.2): one, two or three of them.");
   if (!s.display.overlays.vanishingPoints) return;
   const ObjectRun* o = runOf(s, s.selectedObject);
   if (!o) return;
-  const VanishingText t = vanishingText(s.run(), *o);
+  const VanishingText t = vanishingText(s.run(), *o, s.display.language);
   ImGui::TextWrapped("%s", t.headline.c_str());
   for (const std::string& axis : t.axes) {
     ImGui::Bullet();
@@ -168,30 +186,32 @@ void vanishingSection(ViewerState& s) {
 
 void lectureModeSection(ViewerState& s) {
   float scale = s.uiScale;
-  fitLabel("UI scale");
-  if (ImGui::SliderFloat("UI scale", &scale, 0.8f, 2.5f, "%.2f")) s.uiScale = scale;
-  tooltip("Larger fonts, labels and handles for a projector.", "Größere Schrift und Griffe für den Beamer.");
-  const char* names[] = {"world", "camera", "NPC", "stage morph"};
+  const char* scaleLabel = tr(s, "UI scale");
+  fitLabel(scaleLabel);
+  if (ImGui::SliderFloat(scaleLabel, &scale, 0.8f, 2.5f, "%.2f")) s.uiScale = scale;
+  tooltip(s, "Larger fonts, labels and handles for a projector.");
+  const char* names[] = {tr(s, "world"), tr(s, "camera"), "NPC", tr(s, "stage morph")};
   const ViewKind kinds[] = {ViewKind::world, ViewKind::camera, ViewKind::npc, ViewKind::morph};
   int current = 0;
   for (int i = 0; i < 4; ++i)
     if (kinds[i] == s.lectureView) current = i;
-  fitLabel("full-screen view");
-  if (ImGui::Combo("full-screen view", &current, names, 4)) s.lectureView = kinds[current];
-  if (ImGui::Button("lecture mode (F11)")) s.lectureMode = true;
-  tooltip("One view fills the window, without panels; F11 or Esc returns.", "Eine Ansicht füllt das Fenster; F11 oder Esc beendet.");
+  const char* viewLabel = tr(s, "full-screen view");
+  fitLabel(viewLabel);
+  if (ImGui::Combo(viewLabel, &current, names, 4)) s.lectureView = kinds[current];
+  if (ImGui::Button(tr(s, "lecture mode (F11)"))) s.lectureMode = true;
+  tooltip(s, "One view fills the window, without panels; F11 or Esc returns.");
 }
 
 }  // namespace
 
 void lecturePanel(ViewerState& s) {
-  section("stage morph");
+  section(tr(s, "stage morph"));
   morphSection(s);
-  section("clipping step-through");
+  section(tr(s, "clipping step-through"));
   stepThroughSection(s);
-  section("vanishing points");
+  section(tr(s, "vanishing points"));
   vanishingSection(s);
-  section("lecture mode");
+  section(tr(s, "lecture mode"));
   lectureModeSection(s);
 }
 
@@ -204,11 +224,12 @@ void depthPanel(ViewerState& s) {
   const float line = ImGui::GetTextLineHeight();
   // The legend above the plot, off the curves.
   ImGui::BeginGroup();
+  const char* glDepth = tr(s, "- - GL window depth = 1 − z");
   ImGui::TextColored(ImVec4(0.55f, 0.86f, 1.f, 1.f), "— NPC z");
-  if (ImGui::CalcTextSize("— NPC z    - - GL window depth = 1 − z").x <= ImGui::GetContentRegionAvail().x)
+  if (ImGui::CalcTextSize(("— NPC z    " + std::string(glDepth)).c_str()).x <= ImGui::GetContentRegionAvail().x)
     ImGui::SameLine(0, line);
   ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.78f, 0.35f, 1.f));
-  ImGui::TextWrapped("- - GL window depth = 1 − z");
+  ImGui::TextWrapped("%s", glDepth);
   ImGui::PopStyleColor();
   ImGui::EndGroup();
   recordRect(s, "depth.legend");
@@ -229,19 +250,19 @@ void depthPanel(ViewerState& s) {
     ImGui::Dummy(ImVec2(width, bar.row.max.y - bar.row.min.y));
     recordRect(s, ("depth.bar." + bar.name).c_str());
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("%s: VRC z from %s to %s", bar.name.c_str(), num(bar.lo).c_str(), num(bar.hi).c_str());
+      ImGui::SetTooltip(tr(s, "%s: VRC z from %s to %s"), bar.name.c_str(), num(bar.lo).c_str(), num(bar.hi).c_str());
   }
   ImGui::SetCursorScreenPos(origin + ImVec2(0, float(plot.list.height)));
   ImGui::PopStyleVar();
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-  ImGui::TextWrapped("VRC z: B at the left, F at the right; the eye is at z = VPD = %s, beyond F", num(f.vpd).c_str());
+  ImGui::TextWrapped(tr(s, "VRC z: B at the left, F at the right; the eye is at z = VPD = %s, beyond F"), num(f.vpd).c_str());
   ImGui::PopStyleColor();
   // The smallest VRC step a depth buffer resolves, as sentences (they wrap; a table would not fit
   // a narrow inspector at a large UI scale).
-  ImGui::TextWrapped("Smallest VRC step a depth buffer resolves:");
+  ImGui::TextWrapped("%s", tr(s, "Smallest VRC step a depth buffer resolves:"));
   for (int bits : {16, 24}) {
     ImGui::Bullet();
-    ImGui::TextWrapped("%d bit: %s at F, %s half way, %s at B", bits,
+    ImGui::TextWrapped(tr(s, "%d bit: %s at F, %s half way, %s at B"), bits,
                        num(depthResolution(c, f, c.front, bits), 0, 3).c_str(),
                        num(depthResolution(c, f, (c.front + c.back) / 2, bits), 0, 3).c_str(),
                        num(depthResolution(c, f, c.back, bits), 0, 3).c_str());

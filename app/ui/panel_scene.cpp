@@ -40,63 +40,65 @@ namespace {
 
 void transformEditor(ViewerState& s, SceneObject& o) {
   ModelTransform& t = o.transform;
-  dragVec3(s, "translate", "object.translate", t.translate);
-  tooltip("T(translate), applied last: wcFromMc = T · R_k ⋯ R_1 · S.", "Translation, zuletzt angewandt.");
+  dragVec3(s, tr(s, "translate"), "object.translate", t.translate);
+  tooltip(s, "T(translate), applied last: wcFromMc = T · R_k ⋯ R_1 · S.");
   bool uniform = t.scale.x == t.scale.y && t.scale.y == t.scale.z;
   if (uniform) {
     double k = t.scale.x;
-    if (dragDouble(s, "scale", "object.scale", k, 0.01f)) t.scale = Vec3(k == 0 ? 1e-3 : k);
+    if (dragDouble(s, tr(s, "scale"), "object.scale", k, 0.01f)) t.scale = Vec3(k == 0 ? 1e-3 : k);
   } else {
-    dragVec3(s, "scale", "object.scale", t.scale, 0.01f);
+    dragVec3(s, tr(s, "scale"), "object.scale", t.scale, 0.01f);
   }
-  tooltip("S(scale), applied first. 0 is refused: it would flatten the object.",
-          "Skalierung, zuerst angewandt; 0 ist nicht erlaubt.");
+  tooltip(s, "S(scale), applied first. 0 is refused: it would flatten the object.");
   for (size_t i = 0; i < t.rotations.size(); ++i) {
     ImGui::PushID(int(i));
     Rotation& r = t.rotations[i];
-    ImGui::Text("rotation %zu", i + 1);
+    ImGui::TextUnformatted(tr(s, "rotation {1}", {std::to_string(i + 1)}).c_str());
     ImGui::SameLine();
-    const bool remove = ImGui::SmallButton("remove");
-    dragVec3(s, "axis", "object.rotation.axis", r.axis, 0.01f);
-    dragDouble(s, "deg", "object.rotation.deg", r.deg, 0.5f, 0, 0, "%.1f");
+    const bool remove = ImGui::SmallButton(tr(s, "remove"));
+    dragVec3(s, tr(s, "axis"), "object.rotation.axis", r.axis, 0.01f);
+    dragDouble(s, tr(s, "deg"), "object.rotation.deg", r.deg, 0.5f, 0, 0, "%.1f");
     bool through = r.through.has_value();
-    if (checkbox("axis through a point", &through)) r.through = through ? std::optional<Vec3>(t.translate) : std::nullopt;
-    tooltip("Rotate about the line through this point (lecture notes 13.3: translate, rotate, translate back).",
-            "Drehung um eine Achse durch einen Punkt (13.3).");
-    if (r.through) dragVec3(s, "through", "object.rotation.through", *r.through);
+    if (checkbox(tr(s, "axis through a point"), &through))
+      r.through = through ? std::optional<Vec3>(t.translate) : std::nullopt;
+    tooltip(s, "Rotate about the line through this point (lecture notes 13.3: translate, rotate, translate back).");
+    if (r.through) dragVec3(s, tr(s, "through"), "object.rotation.through", *r.through);
     ImGui::PopID();
     if (remove) {
       t.rotations.erase(t.rotations.begin() + ptrdiff_t(i));
       break;
     }
   }
-  if (ImGui::SmallButton("add rotation")) t.rotations.push_back({{0, 1, 0}, 0, {}});
-  tooltip("Rotations act in the order listed: the first one first.", "Die erste Drehung wirkt zuerst.");
+  if (ImGui::SmallButton(tr(s, "add rotation"))) t.rotations.push_back({{0, 1, 0}, 0, {}});
+  tooltip(s, "Rotations act in the order listed: the first one first.");
 }
 
 void objectEditor(ViewerState& s, SceneObject& o) {
-  fitLabel("name");
-  ImGui::InputText("name", &o.name);
-  checkbox("visible", &o.visible);
+  fitLabel(tr(s, "name"));
+  ImGui::InputText(tr(s, "name"), &o.name);
+  checkbox(tr(s, "visible"), &o.visible);
   ImGui::SameLine();
   glm::vec3 color(o.color);  // ColorEdit3 edits floats; the scene's colours are doubles
-  fitLabel("colour");
-  if (ImGui::ColorEdit3("colour", &color.x, ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_Float))
+  fitLabel(tr(s, "colour"));
+  if (ImGui::ColorEdit3(tr(s, "colour"), &color.x, ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_Float))
     o.color = Vec3(color);
   if (o.shape == Shape::cylinder || o.shape == Shape::sphere) {
     int n = o.segments;
-    fitLabel("segments");
-    if (ImGui::SliderInt("segments", &n, o.shape == Shape::sphere ? 4 : 3, 128)) {
+    fitLabel(tr(s, "segments"));
+    if (ImGui::SliderInt(tr(s, "segments"), &n, o.shape == Shape::sphere ? 4 : 3, 128)) {
       if (o.shape == Shape::sphere) n += n % 2;
       SceneObject rebuilt = o;
       rebuilt.segments = n;
       rebuilt.mesh = primitiveMesh(rebuilt);
       o = std::move(rebuilt);
     }
-    tooltip("n: the number of facets around (lecture notes 16.2).", "n: Anzahl der Facetten (16.2).");
+    tooltip(s, "n: the number of facets around (lecture notes 16.2).");
   }
-  if (o.shape == Shape::mesh)
-    ImGui::TextDisabled("OBJ: %s (%zu faces)", o.obj ? "carried in the scene" : o.file.c_str(), o.mesh ? o.mesh->faceCount() : 0);
+  if (o.shape == Shape::mesh) {
+    const std::string file = o.obj ? tr(s, "carried in the scene") : o.file;
+    const std::string faces = std::to_string(o.mesh ? o.mesh->faceCount() : 0);
+    ImGui::TextDisabled("%s", tr(s, "OBJ: {1} ({2} faces)", {file, faces}).c_str());
+  }
   transformEditor(s, o);
 }
 
@@ -108,49 +110,49 @@ void clipPlanesEditor(ViewerState& s) {
     UserClipPlane& p = planes[i];
     checkbox("##on", &p.enabled);
     ImGui::SameLine();
-    ImGui::Text("plane %zu", i + 1);
+    ImGui::TextUnformatted(tr(s, "plane {1}", {std::to_string(i + 1)}).c_str());
     ImGui::SameLine();
-    const bool remove = ImGui::SmallButton("remove");
-    dragVec3(s, "normal", "clipplane.normal", p.normal, 0.01f);
+    const bool remove = ImGui::SmallButton(tr(s, "remove"));
+    dragVec3(s, tr(s, "normal"), "clipplane.normal", p.normal, 0.01f);
     if (glm::length(p.normal) < 1e-9) p.normal = {1, 0, 0};
-    dragVec3(s, "point", "clipplane.point", p.point);
+    dragVec3(s, tr(s, "point"), "clipplane.point", p.point);
     ImGui::PopID();
     if (remove) {
       planes.erase(planes.begin() + ptrdiff_t(i));
       break;
     }
   }
-  if (planes.size() < size_t(kMaxUserPlanes) && ImGui::SmallButton("add a clip plane"))
+  if (planes.size() < size_t(kMaxUserPlanes) && ImGui::SmallButton(tr(s, "add a clip plane")))
     planes.push_back({{-1, 0, 0}, s.doc.scene().camera.vrp, true});
-  tooltip("Up to six planes in WC; what lies on the side the normal points to is kept. The CPU clipper and the "
-          "GPU (gl_ClipDistance) apply them alike.",
-          "Bis zu sechs Clipping-Ebenen im WC (glClipPlane); erhalten bleibt die Seite, in die die Normale zeigt.");
+  tooltip(s, "Up to six planes in WC; what lies on the side the normal points to is kept. The CPU clipper and the "
+             "GPU (gl_ClipDistance) apply them alike.");
 }
 
 }  // namespace
 
 void scenePanel(ViewerState& s, FileChooser& dialog) {
   Scene& scene = s.doc.scene();
-  ImGui::TextDisabled("objects");
+  ImGui::TextDisabled("%s", tr(s, "objects"));
   if (ImGui::BeginListBox("##objects", ImVec2(-1, ImGui::GetTextLineHeightWithSpacing() * 5.5f))) {
     for (size_t i = 0; i < scene.objects.size(); ++i) {
       const SceneObject& o = scene.objects[i];
-      const std::string label = (o.visible ? "" : "(hidden) ") + o.name + "##" + std::to_string(i);
+      const std::string label = (o.visible ? o.name : tr(s, "(hidden) {1}", {o.name})) + "##" + std::to_string(i);
       if (ImGui::Selectable(label.c_str(), s.selectedObject == int(i))) s.selectedObject = int(i);
     }
     ImGui::EndListBox();
   }
-  if (ImGui::Button("+ cube")) addObject(s, Shape::cube);
-  sameLineIfFits("+ tetrahedron");
-  if (ImGui::Button("+ tetrahedron")) addObject(s, Shape::tetrahedron);
-  sameLineIfFits("+ cylinder");
-  if (ImGui::Button("+ cylinder")) addObject(s, Shape::cylinder);
-  if (ImGui::Button("+ sphere")) addObject(s, Shape::sphere);
-  sameLineIfFits("+ polygon");
-  if (ImGui::Button("+ polygon")) addObject(s, Shape::polygon);
-  sameLineIfFits("+ OBJ mesh file");
-  if (ImGui::Button("+ OBJ mesh file"))
-    dialog.open("Load an OBJ mesh", FileChooser::Mode::open, {".obj"}, scene.path.parent_path(),
+  if (ImGui::Button(tr(s, "+ cube"))) addObject(s, Shape::cube);
+  sameLineIfFits(tr(s, "+ tetrahedron"));
+  if (ImGui::Button(tr(s, "+ tetrahedron"))) addObject(s, Shape::tetrahedron);
+  sameLineIfFits(tr(s, "+ cylinder"));
+  if (ImGui::Button(tr(s, "+ cylinder"))) addObject(s, Shape::cylinder);
+  if (ImGui::Button(tr(s, "+ sphere"))) addObject(s, Shape::sphere);
+  sameLineIfFits(tr(s, "+ polygon"));
+  if (ImGui::Button(tr(s, "+ polygon"))) addObject(s, Shape::polygon);
+  sameLineIfFits(tr(s, "+ OBJ mesh file"));
+  if (ImGui::Button(tr(s, "+ OBJ mesh file")))
+    dialog.open(tr(s, "Load an OBJ mesh###Load an OBJ mesh"), FileChooser::Mode::open, {".obj"},
+                scene.path.parent_path(),
                 [&s](const std::filesystem::path& file) {
                   // Relative to the scene file where there is one, as the scene format expects.
                   const std::filesystem::path base = s.doc.scene().path.parent_path();
@@ -159,7 +161,7 @@ void scenePanel(ViewerState& s, FileChooser& dialog) {
                   addObject(s, Shape::mesh, (ec || rel.empty() ? file : rel).string());
                 });
   if (scene.objects.empty()) {
-    section("user clip planes (DGL wiki)");
+    section(tr(s, "user clip planes (DGL wiki)"));
     clipPlanesEditor(s);
     return;
   }
@@ -168,11 +170,11 @@ void scenePanel(ViewerState& s, FileChooser& dialog) {
   ImGui::PushID(s.selectedObject);
   objectEditor(s, scene.objects[size_t(s.selectedObject)]);
   ImGui::PopID();
-  if (ImGui::Button("remove this object")) {
+  if (ImGui::Button(tr(s, "remove this object"))) {
     scene.objects.erase(scene.objects.begin() + s.selectedObject);
     s.probe.reset();
   }
-  section("user clip planes (DGL wiki)");
+  section(tr(s, "user clip planes (DGL wiki)"));
   clipPlanesEditor(s);
 }
 

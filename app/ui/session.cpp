@@ -1,4 +1,4 @@
-// Index: 1 commands  2 each frame  3 dialogs  4 files and links  5 autosave and recovery
+// Index: 1 commands  2 each frame  3 dialogs  4 files and links  5 autosave and recovery  6 preferences
 #include "app/ui/session.h"
 
 #include "app/core/assets.h"
@@ -63,11 +63,11 @@ bool Session::beginFrame() {
       return true;
     }
     startDocument(std::move(*loaded->scene));
-    setStatus("opened " + file, false);
+    setStatus(ui::tr(state_, "opened {1}", {file}), false);
     if (link) link->showViews();
   } else if (loaded->object) {  // one undo step, recorded at the end of this frame
     Scene& scene = state_.doc.scene();
-    setStatus("added " + loaded->object->file, false);
+    setStatus(ui::tr(state_, "added {1}", {loaded->object->file}), false);
     scene.objects.push_back(std::move(*loaded->object));
     state_.selectedObject = int(scene.objects.size()) - 1;
   } else {
@@ -90,7 +90,7 @@ void Session::drawDialogs(float scale) {
   recoveryDialog();
   quitDialog();
   discardDialog();
-  dialog_->draw();
+  dialog_->draw(state_.display.language);
 }
 
 std::optional<double> Session::wakeIn(double now) const {
@@ -103,14 +103,15 @@ std::optional<double> Session::wakeIn(double now) const {
 
 void Session::quitDialog() {
   if (state_.quitRequested && !state_.doc.dirty()) state_.quitConfirmed = true;
-  if (state_.quitRequested && state_.doc.dirty() && !ImGui::IsPopupOpen("Unsaved changes")) ImGui::OpenPopup("Unsaved changes");
-  if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-  ImGui::Text("The scene has unsaved changes. Save them before quitting?");
-  if (ImGui::Button("Save")) {
+  const char* title = ui::tr(state_, "Unsaved changes###Unsaved changes");  // the popup's id in either language
+  if (state_.quitRequested && state_.doc.dirty() && !ImGui::IsPopupOpen(title)) ImGui::OpenPopup(title);
+  if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::TextUnformatted(ui::tr(state_, "The scene has unsaved changes. Save them before quitting?"));
+  if (ImGui::Button(ui::tr(state_, "Save"))) {
     ImGui::CloseCurrentPopup();
     if (state_.doc.path().empty() || isBundled(state_.doc.path())) {
       state_.quitRequested = false;
-      dialog_->open("Save a copy of the scene", FileChooser::Mode::save, {".json"}, copyName(state_.doc.path()), [this](const std::filesystem::path& f) {
+      dialog_->open(ui::tr(state_, "Save a copy of the scene###Save a copy of the scene"), FileChooser::Mode::save, {".json"}, copyName(state_.doc.path()), [this](const std::filesystem::path& f) {
         saveScene(f);
         if (!state_.doc.dirty()) state_.quitConfirmed = true;
       });
@@ -121,12 +122,12 @@ void Session::quitDialog() {
     }
   }
   ImGui::SameLine();
-  if (ImGui::Button("Discard them and quit")) {
+  if (ImGui::Button(ui::tr(state_, "Discard them and quit"))) {
     ImGui::CloseCurrentPopup();
     state_.quitConfirmed = true;
   }
   ImGui::SameLine();
-  if (ImGui::Button("Cancel")) {
+  if (ImGui::Button(ui::tr(state_, "Cancel"))) {
     ImGui::CloseCurrentPopup();
     state_.quitRequested = false;
   }
@@ -143,20 +144,21 @@ void Session::unlessUnsaved(std::function<void()> action) {
 }
 
 void Session::discardDialog() {
+  const char* title = ui::tr(state_, "Discard unsaved changes?###Discard unsaved changes?");
   if (askDiscard_) {
-    ImGui::OpenPopup("Discard unsaved changes?");
+    ImGui::OpenPopup(title);
     askDiscard_ = false;
   }
-  if (!ImGui::BeginPopupModal("Discard unsaved changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-  ImGui::Text("The scene has unsaved changes. They are lost if another scene is opened.");
-  if (ImGui::Button("Discard them")) {
+  if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::TextUnformatted(ui::tr(state_, "The scene has unsaved changes. They are lost if another scene is opened."));
+  if (ImGui::Button(ui::tr(state_, "Discard them"))) {
     ImGui::CloseCurrentPopup();
     if (pendingReplace_) pendingReplace_();
     pendingReplace_ = nullptr;
   }
   ui::recordRect(state_, "discard.confirm");
   ImGui::SameLine();
-  if (ImGui::Button("Keep editing")) {
+  if (ImGui::Button(ui::tr(state_, "Keep editing"))) {
     ImGui::CloseCurrentPopup();
     pendingReplace_ = nullptr;
   }
@@ -214,7 +216,7 @@ void Session::openLesson(const std::filesystem::path& file, size_t step) {
   unlessUnsaved([this, shared, step] {
     const size_t first = std::min(step, shared->steps.size() - 1);
     startDocument(shared->steps[first].state.scene);
-    setStatus("lesson: " + shared->title, false);
+    setStatus(ui::tr(state_, "lesson: {1}", {shared->title}), false);
     state_.lesson.emplace(std::move(*shared), first);
     changed_();
   });
@@ -223,13 +225,13 @@ void Session::openLesson(const std::filesystem::path& file, size_t step) {
 void Session::openScene(const std::filesystem::path& file) {
   loader_.start(file);
   pendingLink_.reset();
-  setStatus("opening " + file.string() + " …", false);
+  setStatus(ui::tr(state_, "opening {1} …", {file.string()}), false);
   changed_();
 }
 
 void Session::cancelLoading() {
   if (!loader_.busy()) return;
-  setStatus("opening " + loader_.file().string() + " cancelled; the open scene stays", false);
+  setStatus(ui::tr(state_, "opening {1} cancelled; the open scene stays", {loader_.file().string()}), false);
   loader_.cancel();
   pendingLink_.reset();
   changed_();
@@ -241,15 +243,15 @@ void Session::loadingWindow(float scale) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowSize(ImVec2(420 * scale, 0), ImGuiCond_Always);
-  ImGui::Begin("Loading", nullptr,
+  ImGui::Begin(ui::tr(state_, "Loading###Loading"), nullptr,
                ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
-  ImGui::TextWrapped("Reading and tessellating %s", loader_.file().filename().string().c_str());
+  ImGui::TextWrapped("%s", ui::tr(state_, "Reading and tessellating {1}", {loader_.file().filename().string()}).c_str());
   // The reader reports no fraction: the bar sweeps to show the work goes on, the time counts.
   const double t = loader_.elapsed();
   char label[32];
   std::snprintf(label, sizeof label, "%.1f s", t);
   ImGui::ProgressBar(float(std::fmod(t, 1.5) / 1.5), ImVec2(-1, 0), label);
-  if (ImGui::Button("Cancel")) cancelLoading();
+  if (ImGui::Button(ui::tr(state_, "Cancel"))) cancelLoading();
   ui::recordRect(state_, "load.cancel");
   ImGui::End();
 }
@@ -269,21 +271,21 @@ bool Session::isBundled(const std::filesystem::path& file) const {
 }
 
 void Session::saveAs() {
-  dialog_->open("Save the scene", FileChooser::Mode::save, {".json"}, isBundled(state_.doc.path()) ? copyName(state_.doc.path()) : state_.doc.path(),
+  dialog_->open(ui::tr(state_, "Save the scene###Save the scene"), FileChooser::Mode::save, {".json"}, isBundled(state_.doc.path()) ? copyName(state_.doc.path()) : state_.doc.path(),
                [this](const std::filesystem::path& f) { saveScene(f); });
 }
 
 void Session::saveScene(const std::filesystem::path& file) {
   if (dialog_->downloads()) {  // the browser: every save is a new download, named after the scene
-    dialog_->open("Save the scene", FileChooser::Mode::save, {".json"},
+    dialog_->open(ui::tr(state_, "Save the scene###Save the scene"), FileChooser::Mode::save, {".json"},
                   file.empty() ? std::filesystem::path("lecture-scene.json") : file.filename(),
                   [this](const std::filesystem::path& f) { writeScene(f); });
     return;
   }
   if (file.empty() || isBundled(file)) {  // never over a scene shipped with vplab: save a copy
-    dialog_->open("Save a copy of the scene", FileChooser::Mode::save, {".json"}, copyName(file),
+    dialog_->open(ui::tr(state_, "Save a copy of the scene###Save a copy of the scene"), FileChooser::Mode::save, {".json"}, copyName(file),
                  [this](const std::filesystem::path& f) {
-                   if (isBundled(f)) setStatus(f.string() + " is a scene shipped with vplab: save the copy elsewhere", true);
+                   if (isBundled(f)) setStatus(ui::tr(state_, "{1} is a scene shipped with vplab: save the copy elsewhere", {f.string()}), true);
                    else saveScene(f);
                  });
     return;
@@ -294,7 +296,7 @@ void Session::saveScene(const std::filesystem::path& file) {
 void Session::writeScene(const std::filesystem::path& file) {
   try {
     state_.doc.save(file, /*carryMeshes=*/browser_);  // a scene downloaded from the page names no in-page file
-    setStatus("saved " + file.string(), false);
+    setStatus(ui::tr(state_, "saved {1}", {file.string()}), false);
   } catch (const Error& e) {
     setStatus(e.what(), true);
   }
@@ -302,11 +304,11 @@ void Session::writeScene(const std::filesystem::path& file) {
 
 void Session::chooseFileToOpen() {
   if (browser_) {
-    dialog_->open("Open a scene or an OBJ mesh", FileChooser::Mode::open, {".json", ".obj"}, state_.doc.path(),
+    dialog_->open(ui::tr(state_, "Open a scene or an OBJ mesh###Open a scene or an OBJ mesh"), FileChooser::Mode::open, {".json", ".obj"}, state_.doc.path(),
                   [this](const std::filesystem::path& f) { openFile(f); });
     return;
   }
-  dialog_->open("Open a scene", FileChooser::Mode::open, {".json"}, state_.doc.path(),
+  dialog_->open(ui::tr(state_, "Open a scene###Open a scene"), FileChooser::Mode::open, {".json"}, state_.doc.path(),
                 [this](const std::filesystem::path& f) { unlessUnsaved([this, f] { openScene(f); }); });
 }
 
@@ -318,7 +320,7 @@ void Session::openFile(const std::filesystem::path& file) {
     return;
   }
   ui::addObject(state_, Shape::mesh, file.string());  // as the scene panel's "+ OBJ mesh…"
-  setStatus("adding " + file.string() + " …", false);
+  setStatus(ui::tr(state_, "adding {1} …", {file.string()}), false);
   changed_();
 }
 
@@ -362,13 +364,13 @@ void Session::showUrlState(const UrlState& link, bool atStart) {
   }
   if (!link.lesson.empty()) {
     const std::filesystem::path file = bundledLessonFile(link.lesson, state_.display.language);
-    if (file.empty()) throw Error("the link's lesson \"" + link.lesson + "\" is not one of vplab's bundled lessons");
+    if (file.empty()) throw Error(ui::tr(state_, "the link's lesson \"{1}\" is not one of vplab's bundled lessons", {link.lesson}));
     const size_t step = link.step > 0 ? link.step - 1 : 0;
     std::error_code ec;
     if (state_.lesson && std::filesystem::equivalent(state_.lesson->lesson().file, file, ec)) {
       if (step >= state_.lesson->stepCount())
-        throw Error("the link's step " + std::to_string(link.step) + " is not one of the lesson's " +
-                    std::to_string(state_.lesson->stepCount()) + " steps");
+        throw Error(ui::tr(state_, "the link's step {1} is not one of the lesson's {2} steps",
+                           {std::to_string(link.step), std::to_string(state_.lesson->stepCount())}));
       ui::goToStep(state_, step, ImGui::GetTime());  // the address followed a step: move there
       changed_();
       return;
@@ -391,7 +393,7 @@ void Session::showUrlState(const UrlState& link, bool atStart) {
     if (otherScene) {
       const auto preset = std::find_if(state_.presets.begin(), state_.presets.end(),
                                        [&](const SceneFileInfo& p) { return p.file.stem() == link.scene; });
-      if (preset == state_.presets.end()) throw Error("the link's scene \"" + link.scene + "\" is not one of vplab's bundled scenes");
+      if (preset == state_.presets.end()) throw Error(ui::tr(state_, "the link's scene \"{1}\" is not one of vplab's bundled scenes", {link.scene}));
       if (loader_.remote()) {
         // The page: its worker reads the scene while the page goes on (a million triangles took most
         // of a second); the link's camera and views apply when it is there (beginFrame).
@@ -437,8 +439,9 @@ void Session::offerRecoveries(std::vector<Recovery> recoveries) {
 
 namespace {
 
-std::string sceneName(const Recovery& r) {
-  return r.scenePath.empty() ? "the default lecture scene" : r.scenePath.string();
+/// The kept scene's file, or the built-in scene's name (in German in the dative: it follows "an").
+std::string sceneName(const ViewerState& s, const Recovery& r) {
+  return r.scenePath.empty() ? ui::tr(s, "the default lecture scene") : r.scenePath.string();
 }
 
 }  // namespace
@@ -451,11 +454,16 @@ void Session::recover(size_t i) {
     Autosave::discard(r);  // this session's autosave keeps them from now on
     if (autosave_) autosave_->writeNow(state_.doc);
     const size_t others = recoveries_.size() - 1;
-    setStatus("recovered the unsaved changes of " + sceneName(r) +
-                  (others == 0 ? std::string()
-                               : "; " + std::to_string(others) + " other kept scene" + (others == 1 ? " is" : "s are") +
-                                     (browser_ ? " offered in the next tab or visit" : " offered at the next start")),
-              false);
+    const std::string name = sceneName(state_, r), count = std::to_string(others);
+    if (others == 0) setStatus(ui::tr(state_, "recovered the unsaved changes of {1}", {name}), false);
+    else if (others == 1 && browser_)
+      setStatus(ui::tr(state_, "recovered the unsaved changes of {1}; 1 other kept scene is offered in the next tab or visit", {name}), false);
+    else if (others == 1)
+      setStatus(ui::tr(state_, "recovered the unsaved changes of {1}; 1 other kept scene is offered at the next start", {name}), false);
+    else if (browser_)
+      setStatus(ui::tr(state_, "recovered the unsaved changes of {1}; {2} other kept scenes are offered in the next tab or visit", {name, count}), false);
+    else
+      setStatus(ui::tr(state_, "recovered the unsaved changes of {1}; {2} other kept scenes are offered at the next start", {name, count}), false);
   } catch (const Error& e) {
     setStatus(e.what(), true);  // the file stays for another try
   }
@@ -463,21 +471,32 @@ void Session::recover(size_t i) {
 }
 
 void Session::recoveryDialog() {
+  const char* title = ui::tr(state_, "Recover unsaved changes?###Recover unsaved changes?");
   if (askRecovery_) {
-    ImGui::OpenPopup("Recover unsaved changes?");
+    ImGui::OpenPopup(title);
     askRecovery_ = false;
   }
-  if (!ImGui::BeginPopupModal("Recover unsaved changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-  const char* ended = browser_ ? "A visit to vplab was left" : "vplab did not end normally";
+  if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  auto line = [](const std::string& text) { ImGui::TextUnformatted(text.c_str()); };
   if (recoveries_.size() == 1) {
     const Recovery& r = recoveries_.front();
-    ImGui::Text("%s with unsaved changes of %s;", ended, sceneName(r).c_str());
-    if (browser_) ImGui::Text("they were kept at %s.", r.savedAt.c_str());
-    else ImGui::Text("they were kept at %s (%s).", r.savedAt.c_str(), r.file.string().c_str());
+    const std::string name = sceneName(state_, r);
+    if (browser_) {
+      line(ui::tr(state_, "A visit to vplab was left with unsaved changes of {1};", {name}));
+      line(ui::tr(state_, "they were kept at {1}.", {r.savedAt}));
+    } else {
+      line(ui::tr(state_, "vplab did not end normally with unsaved changes of {1};", {name}));
+      line(ui::tr(state_, "they were kept at {1} ({2}).", {r.savedAt, r.file.string()}));
+    }
   } else {
-    ImGui::Text("%zu %s left with unsaved changes. Recover one here;", recoveries_.size(),
-                browser_ ? "tabs or visits were" : "sessions were");
-    ImGui::Text("the others stay kept and are offered %s.", browser_ ? "in the next tab or visit" : "at the next start");
+    const std::string count = std::to_string(recoveries_.size());
+    if (browser_) {
+      line(ui::tr(state_, "{1} tabs or visits were left with unsaved changes. Recover one here;", {count}));
+      ImGui::TextUnformatted(ui::tr(state_, "the others stay kept and are offered in the next tab or visit."));
+    } else {
+      line(ui::tr(state_, "{1} sessions were left with unsaved changes. Recover one here;", {count}));
+      ImGui::TextUnformatted(ui::tr(state_, "the others stay kept and are offered at the next start."));
+    }
   }
   std::optional<size_t> recovered, discarded;
   // The newest few, so that the dialog fits a screen after many crashes; the others come up as
@@ -488,25 +507,27 @@ void Session::recoveryDialog() {
     ImGui::PushID(int(i));
     if (recoveries_.size() > 1) {
       ImGui::Separator();
-      ImGui::Text("%s, kept at %s", sceneName(recoveries_[i]).c_str(), recoveries_[i].savedAt.c_str());
+      line(ui::tr(state_, "{1}, kept at {2}", {sceneName(state_, recoveries_[i]), recoveries_[i].savedAt}));
     }
-    if (ImGui::Button("Recover them")) recovered = i;
+    if (ImGui::Button(ui::tr(state_, "Recover them"))) recovered = i;
     const std::string suffix = i == 0 ? std::string() : "." + std::to_string(i);
     ui::recordRect(state_, ("recovery.recover" + suffix).c_str());
     ImGui::SameLine();
-    if (ImGui::Button("Discard them")) discarded = i;
+    if (ImGui::Button(ui::tr(state_, "Discard them"))) discarded = i;
     ui::recordRect(state_, ("recovery.discard" + suffix).c_str());
     ImGui::PopID();
   }
   if (recoveries_.size() > listed) {
     ImGui::Separator();
-    ImGui::Text("and %zu older ones, listed as these are discarded", recoveries_.size() - listed);
+    line(ui::tr(state_, "and {1} older ones, listed as these are discarded", {std::to_string(recoveries_.size() - listed)}));
   }
   if (recoveries_.size() > 1) {
     ImGui::Separator();
-    if (ImGui::Button("Later")) {
+    if (ImGui::Button(ui::tr(state_, "Later"))) {
       recoveries_.clear();  // all stay kept
-      setStatus("the kept scenes are offered again " + std::string(browser_ ? "in the next tab or visit" : "at the next start"), false);
+      setStatus(browser_ ? ui::tr(state_, "the kept scenes are offered again in the next tab or visit")
+                         : ui::tr(state_, "the kept scenes are offered again at the next start"),
+                false);
     }
     ui::recordRect(state_, "recovery.later");
   }
@@ -517,6 +538,18 @@ void Session::recoveryDialog() {
   }
   if (recoveries_.empty()) ImGui::CloseCurrentPopup();
   ImGui::EndPopup();
+}
+
+// ---------------------------------------------------------------- 6 preferences
+
+void Session::chooseLanguage(Language lang) {
+  state_.display.language = lang;
+  if (!rememberLanguage_) return;
+  try {
+    rememberLanguage_(lang);
+  } catch (const Error& e) {
+    setStatus(e.what(), true);
+  }
 }
 
 }  // namespace vplab

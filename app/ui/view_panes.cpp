@@ -109,9 +109,9 @@ void ViewPanes::busyMark(ViewKind kind) {
   const ImVec2 max = ImGui::GetItemRectMax();
   const ImVec2 min = ImGui::GetItemRectMin();
   // A run in steps (the page) says how far it is; a view drawn in slices only that it is busy.
-  char progress[32] = "updating…";
-  if (const std::optional<double> p = run_.progress()) std::snprintf(progress, sizeof progress, "updating… %d %%", int(*p * 100));
-  const char* text = progress;
+  const std::optional<double> p = run_.progress();
+  const std::string progress = p ? ui::tr(s_, "updating… {1} %", {std::to_string(int(*p * 100))}) : ui::tr(s_, "updating…");
+  const char* text = progress.c_str();
   const float pad = 4 * uiScale_, radius = ImGui::GetTextLineHeight() * 0.4f;
   const ImVec2 textSize = ImGui::CalcTextSize(text);
   const ImVec2 size(pad * 3 + radius * 2 + textSize.x, pad * 2 + textSize.y);
@@ -169,7 +169,7 @@ void ViewPanes::viewWindows() {
   if (shown(ViewKind::camera)) {
     ui::placeNext(layout, layout.camera, relayout_);
     nextViewWindowTransparent();
-    if (ImGui::Begin("Camera view (DC)", nullptr, flags)) cameraWindowContents();
+    if (ImGui::Begin(ui::tr(s_, "Camera view (DC)###Camera view (DC)"), nullptr, flags)) cameraWindowContents();
     ImGui::End();
   }
   if (shown(ViewKind::npc)) npcWindow(layout, flags, fbScale);
@@ -180,7 +180,7 @@ void ViewPanes::viewWindows() {
 void ViewPanes::worldWindow(const ui::Layout& layout, ImGuiWindowFlags flags, ImVec2 fbScale) {
   ui::placeNext(layout, layout.world, relayout_);
   nextViewWindowTransparent();
-  if (ImGui::Begin("World view (WC)", nullptr, flags)) {
+  if (ImGui::Begin(ui::tr(s_, "World view (WC)###World view (WC)"), nullptr, flags)) {
     const ImVec2 size = ImGui::GetContentRegionAvail();
     if (size.x >= 8 && size.y >= 8) {
       // On a phone the view's shape changes with the panel and the phone's turn: the scene is framed
@@ -206,7 +206,7 @@ void ViewPanes::worldWindow(const ui::Layout& layout, ImGuiWindowFlags flags, Im
 void ViewPanes::npcWindow(const ui::Layout& layout, ImGuiWindowFlags flags, ImVec2 fbScale) {
   ui::placeNext(layout, layout.npc, relayout_);
   nextViewWindowTransparent();
-  if (ImGui::Begin("NPC view", nullptr, flags)) {
+  if (ImGui::Begin(ui::tr(s_, "NPC view###NPC view"), nullptr, flags)) {
     const ImVec2 size = ImGui::GetContentRegionAvail();
     if (size.x >= 8 && size.y >= 8) {
       const GLuint texture = drawView(ViewKind::npc, size);
@@ -241,7 +241,8 @@ void ViewPanes::cameraWindowContents() {
     else  // the strategy's run failed (its error is in the status line): no picture of it
       ImGui::Dummy(size);
     ui::recordRect(s_, "view.divideFirst");
-    caption(at, size.x, IM_COL32(255, 120, 110, 255), {"divide first, then clip (wrong)", "divide first (wrong)", "wrong"});
+    caption(at, size.x, IM_COL32(255, 120, 110, 255),
+            {ui::tr(s_, "divide first, then clip (wrong)"), ui::tr(s_, "divide first (wrong)"), ui::tr(s_, "(wrong)")});
     ImGui::SameLine();
   } else {
     ImGui::SetCursorPos(ImGui::GetCursorPos() + (avail - size) * 0.5f);
@@ -251,10 +252,11 @@ void ViewPanes::cameraWindowContents() {
   busyMark(ViewKind::camera);
   ui::recordRect(s_, "view.camera");
   if (demo) {
-    caption(at, size.x, IM_COL32(140, 230, 140, 255), {"clip, then divide (right)", "clip first (right)", "right"});
-    ui::errorText("Dividing by w first flips x/w and y/w of every point behind the eye (w < 0), so an edge that "
-                  "reaches behind the eye wraps around through infinity. Clipping at z ≤ w first cuts it before w "
-                  "reaches 0 (Hill 7.4 and the DGL wiki).");
+    caption(at, size.x, IM_COL32(140, 230, 140, 255),
+            {ui::tr(s_, "clip, then divide (right)"), ui::tr(s_, "clip first (right)"), ui::tr(s_, "(right)")});
+    ui::errorText(ui::tr(s_, "Dividing by w first flips x/w and y/w of every point behind the eye (w < 0), so an edge that "
+                             "reaches behind the eye wraps around through infinity. Clipping at z ≤ w first cuts it before w "
+                             "reaches 0 (Hill 7.4 and the DGL wiki)."));
   }
   if (!hovered || !clicked()) return;
   const Vec2 mouse = mouseIn(ImGui::GetItemRectMin(), ImVec2(1, 1));
@@ -276,7 +278,7 @@ void ViewPanes::morphWindow() {
   ImGui::SetNextWindowSize(ImVec2(560, 420) * uiScale_, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowPos(ImGui::GetIO().DisplaySize * 0.5f, ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
-  if (ImGui::Begin("Stage morph", &s_.showMorph, kViewFlags)) {
+  if (ImGui::Begin(ui::tr(s_, "Stage morph###Stage morph"), &s_.showMorph, kViewFlags)) {
     const ImVec2 size = ImGui::GetContentRegionAvail();
     if (size.x >= 8 && size.y >= 8) {
       const GLuint texture = drawView(ViewKind::morph, size);
@@ -361,7 +363,7 @@ void ViewPanes::lectureWindow() {
       });
     }
     ImGui::SetCursorPos(ImVec2(14 * uiScale_, size.y - ImGui::GetTextLineHeightWithSpacing() - 6 * uiScale_));
-    panelBehind([] { ImGui::TextDisabled("lecture mode — F11 or Esc returns to the panels"); });
+    panelBehind([this] { ImGui::TextDisabled("%s", ui::tr(s_, "lecture mode — F11 or Esc returns to the panels")); });
   }
   ImGui::End();
   ImGui::PopStyleVar(2);

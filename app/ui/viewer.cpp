@@ -111,18 +111,18 @@ Viewer::~Viewer() {
 
 std::string Viewer::title() const {
   const auto& path = s_.doc.path();
-  return "vplab — " + (path.empty() ? std::string("default lecture scene") : path.filename().string()) +
+  return "vplab — " + (path.empty() ? std::string(ui::tr(s_, "default lecture scene")) : path.filename().string()) +
          (s_.doc.dirty() ? " *" : "");
 }
 
 void Viewer::screenshotTaken(const std::string& file) {
   s_.screenshotRequested = false;
-  setStatus("screenshot saved: " + file, false);
+  setStatus(ui::tr(s_, "screenshot saved: {1}", {file}), false);
 }
 
 void Viewer::screenshotFailed(const std::string& why) {
   s_.screenshotRequested = false;
-  setStatus("no screenshot: " + why, true);
+  setStatus(ui::tr(s_, "no screenshot: {1}", {why}), true);
 }
 
 void Viewer::setStatus(std::string message, bool error) { session_.setStatus(std::move(message), error); }
@@ -252,13 +252,13 @@ void Viewer::controlsWindow() {
   const ui::Layout l = ui::currentLayout(s_, uiScale_);
   if (l.compact && s_.compactPanel != ViewerState::controlsPanel) return;
   ui::placeNext(l, l.controls, relayout_);
-  ImGui::Begin("Controls", nullptr, ui::layoutFlags(l, ImGuiWindowFlags_NoCollapse));
+  ImGui::Begin(ui::tr(s_, "Controls###Controls"), nullptr, ui::layoutFlags(l, ImGuiWindowFlags_NoCollapse));
   const Scene& scene = s_.doc.scene();
   // In a lesson the caption box says what to look at: the scene's own caption would leave the panel
   // no room at a projector's scale.
   if (!s_.lesson && (!scene.title.empty() || !scene.caption.empty())) {
     ImGui::PushStyleColor(ImGuiCol_Text, ui::accentColor());
-    ImGui::TextWrapped("%s", scene.title.empty() ? "Scene" : scene.title.c_str());
+    ImGui::TextWrapped("%s", scene.title.empty() ? ui::tr(s_, "Scene") : scene.title.c_str());
     ImGui::PopStyleColor();
     if (!scene.caption.empty()) ImGui::TextWrapped("%s", scene.caption.c_str());
     ImGui::Spacing();
@@ -294,7 +294,7 @@ void Viewer::inspectWindow() {
   const ui::Layout l = ui::currentLayout(s_, uiScale_);
   if (l.compact && s_.compactPanel != ViewerState::inspectPanel) return;
   ui::placeNext(l, l.inspect, relayout_);
-  ImGui::Begin("Inspect", nullptr, ui::layoutFlags(l, ImGuiWindowFlags_NoCollapse));
+  ImGui::Begin(ui::tr(s_, "Inspect###Inspect"), nullptr, ui::layoutFlags(l, ImGuiWindowFlags_NoCollapse));
   // A new probe (a vertex clicked in a view) brings the probe forward; the tabs stay in place while
   // the panel scrolls.
   if (s_.probe && s_.probe != s_.probeShown) s_.inspectTab = ViewerState::probeTab;
@@ -332,15 +332,15 @@ void Viewer::compactSwitcher() {
     ImGui::SameLine();
     return pressed;
   };
-  for (const auto& [kind, name, id] : {std::tuple{ViewKind::world, "World", "switch.world"},
-                                       std::tuple{ViewKind::camera, "Camera", "switch.camera"},
-                                       std::tuple{ViewKind::npc, "NPC", "switch.npc"}})
-    if (choice(name, id, s_.compactView == kind)) s_.compactView = kind;
+  for (const auto& [kind, name, id] : {std::tuple{ViewKind::world, text::Text("World"), "switch.world"},
+                                       std::tuple{ViewKind::camera, text::Text("Camera"), "switch.camera"},
+                                       std::tuple{ViewKind::npc, text::Text("NPC"), "switch.npc"}})
+    if (choice(ui::tr(s_, name), id, s_.compactView == kind)) s_.compactView = kind;
   ImGui::SeparatorEx(ImGuiSeparatorFlags_Vertical);
   ImGui::SameLine();
-  for (const auto& [panel, name, id] : {std::tuple{int(ViewerState::controlsPanel), "Controls", "switch.controls"},
-                                        std::tuple{int(ViewerState::inspectPanel), "Inspect", "switch.inspect"}})
-    if (choice(name, id, s_.compactPanel == panel)) s_.compactPanel = s_.compactPanel == panel ? ViewerState::noPanel : panel;
+  for (const auto& [panel, name, id] : {std::tuple{int(ViewerState::controlsPanel), text::Text("Controls"), "switch.controls"},
+                                        std::tuple{int(ViewerState::inspectPanel), text::Text("Inspect"), "switch.inspect"}})
+    if (choice(ui::tr(s_, name), id, s_.compactPanel == panel)) s_.compactPanel = s_.compactPanel == panel ? ViewerState::noPanel : panel;
   ImGui::End();
   ImGui::PopStyleVar();
 }

@@ -91,14 +91,15 @@ bool dragDouble(ViewerState& s, const char* label, const char* id, double& v, fl
   return changed;
 }
 
-void tabRow(ViewerState& s, const char* id, std::initializer_list<const char*> names, int& current) {
+void tabRow(ViewerState& s, const char* id, std::initializer_list<text::Text> names, int& current) {
   const ImGuiStyle& style = ImGui::GetStyle();
   ImGui::PushID(id);
   ImGui::PushStyleVar(ImGuiStyleVar_FrameRounding, style.TabRounding);
   ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(style.ItemInnerSpacing.x, style.ItemInnerSpacing.x));
   float x = 0;
   int i = 0;
-  for (const char* name : names) {
+  for (const text::Text tab : names) {
+    const char* name = tr(s, tab);
     const float w = ImGui::CalcTextSize(name).x + style.FramePadding.x * 2;
     if (i > 0 && x + style.ItemInnerSpacing.x + w <= ImGui::GetContentRegionAvail().x) {
       ImGui::SameLine();
@@ -110,9 +111,11 @@ void tabRow(ViewerState& s, const char* id, std::initializer_list<const char*> n
     ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(selected ? ImGuiCol_TabActive : ImGuiCol_Tab));
     ImGui::PushStyleColor(ImGuiCol_ButtonHovered, ImGui::GetStyleColorVec4(ImGuiCol_TabHovered));
     ImGui::PushStyleColor(ImGuiCol_ButtonActive, ImGui::GetStyleColorVec4(ImGuiCol_TabActive));
+    ImGui::PushID(i);  // the same button in either language
     if (ImGui::Button(name)) current = i;
+    ImGui::PopID();
     ImGui::PopStyleColor(3);
-    recordRect(s, (std::string("tab.") + id + "." + name).c_str());
+    recordRect(s, (std::string("tab.") + id + "." + std::string(tab.english())).c_str());
     x += w;
     ++i;
   }
@@ -171,20 +174,21 @@ void sameLineIfFits(const char* next, bool button) {
 }
 
 
-void tooltip(const char* english, const char* german) {
+void tooltip(const ViewerState& s, text::Text t) {
   if (!ImGui::IsItemHovered()) return;
   ImGui::BeginTooltip();
   ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28);
-  ImGui::TextUnformatted(english);
-  ImGui::TextDisabled("%s", german);
+  ImGui::TextUnformatted(t.in(s.display.language));
+  // In English the lecture notes' German follows: the terms the students read in the notes.
+  if (s.display.language == Language::en) ImGui::TextDisabled("%s", t.in(Language::de));
   ImGui::PopTextWrapPos();
   ImGui::EndTooltip();
 }
 
-void help(const char* english, const char* german) {
+void help(const ViewerState& s, text::Text t) {
   ImGui::SameLine();
   ImGui::TextDisabled("(?)");
-  tooltip(english, german);
+  tooltip(s, t);
 }
 
 void errorText(const std::string& text) {
@@ -230,7 +234,7 @@ void copiedNotice(ViewerState& s, const char* id) {
     return;
   }
   ImGui::SameLine();
-  ImGui::TextColored(insideColor(), "copied");
+  ImGui::TextColored(insideColor(), "%s", tr(s, "copied"));
 }
 
 namespace {

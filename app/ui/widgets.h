@@ -2,6 +2,7 @@
 // record of where named widgets were drawn (for the UI tests).
 #pragma once
 
+#include "app/text/catalogue.h"
 #include "app/ui/viewer_state.h"
 
 #include <imgui.h>
@@ -12,6 +13,14 @@
 
 namespace vplab::ui {
 
+/// A text of the catalogue (app/text/catalogue.h) in the viewer's language (View ▸ Language, --lang):
+/// ui::tr(s, "Undo").
+inline const char* tr(const ViewerState& s, text::Text t) { return t.in(s.display.language); }
+/// The text with {1}, {2}, … filled in.
+inline std::string tr(const ViewerState& s, text::Text t, std::initializer_list<std::string_view> values) {
+  return text::fill(s.display.language, t, values);
+}
+
 /// A drag field for a WC vector; records its rect as `id` in s.rects.
 bool dragVec3(ViewerState& s, const char* label, const char* id, Vec3& v, float speed = 0.02f);
 bool dragDouble(ViewerState& s, const char* label, const char* id, double& v, float speed = 0.01f,
@@ -20,8 +29,8 @@ bool dragDouble(ViewerState& s, const char* label, const char* id, double& v, fl
 void recordRect(ViewerState& s, const char* id);
 /// A row of tabs that wraps onto further lines when the window is narrow (a large UI scale) rather
 /// than shortening the names ("Cam…"); `current` is the selected tab's index. Records each tab's rect
-/// as "tab.ID.NAME".
-void tabRow(ViewerState& s, const char* id, std::initializer_list<const char*> names, int& current);
+/// as "tab.ID.NAME" with the English NAME (in either language).
+void tabRow(ViewerState& s, const char* id, std::initializer_list<text::Text> names, int& current);
 /// ImGui's checkbox and radio button with the label wrapped at the window's edge (clicking the
 /// label toggles, as ImGui's does). The last item afterwards is the label (for tooltips).
 bool checkbox(const char* label, bool* v);
@@ -31,10 +40,11 @@ bool radio(const char* label, int* v, int value);
 void sameLineIfFits(const char* next, bool button = true);
 /// Makes the next widget narrow enough for its label (after "##", nothing) to fit beside it.
 void fitLabel(const char* label);
-/// A tooltip on the last item: the English explanation, then the German one of the lecture notes.
-void tooltip(const char* english, const char* german);
+/// A tooltip on the last item: the text in the viewer's language; in English the lecture notes'
+/// German follows in grey.
+void tooltip(const ViewerState& s, text::Text t);
 /// A (?) marker with a tooltip.
-void help(const char* english, const char* german);
+void help(const ViewerState& s, text::Text t);
 void errorText(const std::string& text);
 /// Colours of text that read on the current style's ground (the dark or the light theme): titles,
 /// a boundary coordinate inside (≥ 0) and outside (< 0).

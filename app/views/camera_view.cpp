@@ -2,14 +2,13 @@
 // matrices (lecture notes 15.2). At the device's W × H its pixels are DC: the overlays the CPU
 // pipeline gives in DC (the probe, its clipped polygons, the vanishing points) are drawn in pixels,
 // DC scaled to the view's size.
+#include "app/text/catalogue.h"
 #include "app/views/batches.h"
 #include "app/views/number_text.h"
 #include "app/views/theme.h"
 #include "app/views/views.h"
 
 #include "pipeline/vanishing_points.h"
-
-#include <cstdio>
 
 namespace vplab {
 
@@ -56,8 +55,8 @@ void addEdges(const Scene& scene, const theme::Palette& pal, Style style, float 
 
 // lecture notes 14.2: the images of an object's edges along each principal axis meet in the axis's
 // vanishing point. Each edge is drawn on to it, dashed, in the axis's colour.
-void addVanishingPoints(const PipelineRun& run, const theme::Palette& pal, int sceneIndex, const PixelsFromDc& pixels,
-                        Marks& b, std::vector<TextLabel>& labels, int width, int height) {
+void addVanishingPoints(const PipelineRun& run, const theme::Palette& pal, Language lang, int sceneIndex,
+                        const PixelsFromDc& pixels, Marks& b, std::vector<TextLabel>& labels, int width, int height) {
   const ObjectRun* o = nullptr;
   for (size_t i = 0; i < run.sceneIndex.size(); ++i)
     if (int(run.sceneIndex[i]) == sceneIndex) o = &run.objects[i];
@@ -85,10 +84,10 @@ void addVanishingPoints(const PipelineRun& run, const theme::Palette& pal, int s
     b.point(target, colors[axis], 12.f);
     const Vec2 at(target);
     const bool inside = at.x >= 0 && at.y >= 0 && at.x <= width && at.y <= height;
-    char text[96];
-    std::snprintf(text, sizeof text, "VP %s (%s, %s)%s", names[axis], formatNumber(std::round(vp.dc.x), {10}).c_str(),
-                  formatNumber(std::round(vp.dc.y), {10}).c_str(), inside ? "" : " outside");
-    labels.push_back({glm::clamp(at, Vec2(4), Vec2(width - 4, height - 4)) + Vec2(8, -8), text, colors[axis],
+    const std::string x = formatNumber(std::round(vp.dc.x), {10}), y = formatNumber(std::round(vp.dc.y), {10});
+    std::string name = inside ? text::fill(lang, "VP {1} ({2}, {3})", {names[axis], x, y})
+                              : text::fill(lang, "VP {1} ({2}, {3}) outside", {names[axis], x, y});
+    labels.push_back({glm::clamp(at, Vec2(4), Vec2(width - 4, height - 4)) + Vec2(8, -8), std::move(name), colors[axis],
                       TextSize::label, Anchor::left});
   }
 }
@@ -140,7 +139,7 @@ DisplayList cameraView(const ViewInput& in) {
   }
   std::vector<TextLabel> labels;
   if (s.overlays.vanishingPoints)
-    addVanishingPoints(run, pal, in.highlights.vanishingObject, pixels, marks, labels, w, h);
+    addVanishingPoints(run, pal, s.language, in.highlights.vanishingObject, pixels, marks, labels, w, h);
   marks.emit(list, Space::pixels, Depth::ignore, scale);
   if (!labels.empty()) list.add(Text{placeLabels(labels, in.text, w, h), pal.labelOutline});
   return list;

@@ -3,6 +3,7 @@
 // plane F; equal VRC steps crowd at B, which is where a depth buffer resolves least.
 #include "app/views/depth_plot.h"
 
+#include "app/text/catalogue.h"
 #include "app/views/number_text.h"
 #include "app/views/theme.h"
 #include "pipeline/device_mapping.h"
@@ -53,12 +54,14 @@ struct Legend {
   std::string npc = "— NPC z", gl;
   int rows = 0;
 };
-Legend legendFor(int width, const TextMetrics& text, bool shown) {
+Legend legendFor(int width, const TextMetrics& text, const DepthPlotOptions& options) {
   Legend l;
-  if (!shown) return l;
+  if (!options.legend) return l;
   const float pad = float(text.measure("0.5", TextSize::label).x) + 8, line = float(text.measure("Ag", TextSize::label).y);
   const float room = float(width) - 8 - pad, npcWidth = float(text.measure(l.npc, TextSize::label).x);
-  for (const char* gl : {"- - GL window depth = 1 − z", "- - GL depth = 1 − z", "- - 1 − z"}) {
+  const Language lang = options.language;
+  for (const char* gl :
+       {text::Text("- - GL window depth = 1 − z").in(lang), text::Text("- - GL depth = 1 − z").in(lang), "- - 1 − z"}) {
     l.gl = gl;
     const float glWidth = float(text.measure(l.gl, TextSize::label).x);
     l.rows = npcWidth + line + glWidth <= room ? 1 : 2;
@@ -83,7 +86,7 @@ glm::vec2 DepthPlot::at(double vrcZ, double depth) const {
 float depthPlotExtraHeight(const PipelineRun& run, int width, const TextMetrics& text, const DepthPlotOptions& options) {
   const Metrics m(text);
   // The legend above; under the plot: 2 px, the axis row, then one row per bar.
-  return m.legendHeight(legendFor(width, text, options.legend).rows) + 2 + m.gap +
+  return m.legendHeight(legendFor(width, text, options).rows) + 2 + m.gap +
          m.rowHeight() * float(1 + barCount(run));
 }
 
@@ -111,7 +114,7 @@ DepthPlot depthPlot(const PipelineRun& run, int width, int plotHeight, const Tex
   list.antialiased = false;
 
   std::vector<TextLabel> labels;
-  const Legend legend = legendFor(width, text, options.legend);
+  const Legend legend = legendFor(width, text, options);
   const float top = m.legendHeight(legend.rows);
   if (legend.rows) {
     const float pad = float(text.measure("0.5", TextSize::label).x) + 8;
@@ -210,6 +213,7 @@ DepthPlot depthPlot(const PipelineRun& run, int width, int plotHeight, const Tex
 DisplayList depthPlotView(const ViewInput& in) {
   DepthPlotOptions options;
   options.legend = true;
+  options.language = in.settings.language;
   const float extra = depthPlotExtraHeight(in.run, in.width, in.text, options);
   const float line = float(in.text.measure("Ag", TextSize::label).y);
   const int plotHeight = std::max(int(std::floor(float(in.height) - extra)), int(std::ceil(4 * line)));

@@ -18,6 +18,7 @@ namespace vplab {
 struct DepthPlotOptions {
   bool legend = false;      // the curves' legend above the plot (the panel shows its own, in ImGui)
   bool background = true;   // the list's background is theme::kViewBackground (the panel: its window's)
+  Language language = Language::en;  // the legend's
 };
 
 /// The chart and where its parts went, for the panel's hover boxes and the tests.

@@ -1,6 +1,7 @@
 // The stage morph view (pipeline/stage_morph.h): the visible part of the scene (the CPU clipper's
 // polygons) and the view volume move together from MC (t = 0) through WC, VRC, homogeneous NPC and
 // NPC to DC (t = 4). The observer keeps its angles and follows the morphing scene to keep it framed.
+#include "app/text/catalogue.h"
 #include "app/views/batches.h"
 #include "app/views/theme.h"
 #include "app/views/views.h"
@@ -37,6 +38,16 @@ StageValues cornerStages(const PipelineRun& run, const Inverses& inv, int i) {
   const Vec3 vrc = Vec3(vrcH) / vrcH.w;
   const Vec3 wc = transformAffine(inv.wcFromVrc, vrc);
   return {wc, wc, vrc, run.npcFromVrc * Vec4(vrc, 1.0), Vec3(run.dcFromNpc * Vec4(npc, 1.0))};
+}
+
+// The stage's name at t in the language: pipeline/stage_morph.h names the stages in English, most
+// of them by their symbols alone (MC, WC → VRC), which both languages use.
+std::string stageName(double t, Language lang) {
+  const std::string_view en = morphStageName(t);
+  for (const text::Text name : {text::Text("homogeneous NPC (before ÷ w)"), text::Text("VRC → homogeneous NPC"),
+                                text::Text("÷ w: homogeneous NPC → NPC")})
+    if (name.english() == en) return name.in(lang);
+  return std::string(en);
 }
 
 }  // namespace
@@ -107,9 +118,9 @@ void morphView(const ViewInput& in, DisplayList& list) {
 
   std::vector<TextLabel> labels;
   char title[160];
-  std::snprintf(title, sizeof title, "t = %.2f   %s", t, std::string(morphStageName(t)).c_str());
+  std::snprintf(title, sizeof title, "t = %.2f   %s", t, stageName(t, s.language).c_str());
   labels.push_back({{10, 10}, title, pal.text, TextSize::title, Anchor::topLeft});
-  labels.push_back({{10, 38}, "step: " + std::string(morphStepName(std::min(t, 3.999))), pal.frustum,
+  labels.push_back({{10, 38}, text::fill(s.language, "step: {1}", {morphStepName(std::min(t, 3.999))}), pal.frustum,
                     TextSize::label, Anchor::topLeft});
   auto axisLabel = [&](const Vec3& p, const char* text, const glm::vec4& color) {
     const Projected q = projectToPixels(view, p, w, h);

@@ -1,5 +1,6 @@
 // The picture of a view kind: one view, or "all": the camera, world and NPC views side by side under
 // a strip of titles (for slides, the README and the tests).
+#include "app/text/catalogue.h"
 #include "app/views/depth_plot.h"
 #include "app/views/theme.h"
 #include "app/views/views.h"
@@ -38,9 +39,11 @@ DisplayList titleStrip(const ViewInput& in, int titleHeight) {
   strip.background = pal.stripBackground;
   strip.observer.space = Space::pixels;
   strip.antialiased = true;
-  const char* titles[][2] = {{"camera: what the synthetic camera sees (DC)", "camera (DC)"},
-                             {"world: scene, camera and view volume (WC)", "world (WC)"},
-                             {"npc: after view mapping, clipping and division (NPC)", "NPC"}};
+  const Language lang = in.settings.language;
+  const char* titles[][2] = {
+      {text::Text("camera: what the synthetic camera sees (DC)").in(lang), text::Text("camera (DC)").in(lang)},
+      {text::Text("world: scene, camera and view volume (WC)").in(lang), text::Text("world (WC)").in(lang)},
+      {text::Text("npc: after view mapping, clipping and division (NPC)").in(lang), "NPC"}};
   std::vector<TextLabel> labels;
   for (int i = 0; i < 3; ++i) {
     const bool fits = in.text.measure(titles[i][0], TextSize::title).x <= width - 12;

@@ -1,5 +1,6 @@
 #include "app/views/view_geometry.h"
 
+#include "app/text/catalogue.h"
 #include "app/views/theme.h"
 
 namespace vplab::geometry {
@@ -89,12 +90,11 @@ std::vector<NamedPoint> polygonVertexNames(const Scene& scene) {
 
 std::vector<AnchoredLabel> npcCubeLabels(const theme::Palette& pal, Language lang) {
   const double len = kNpcAxisLength;
-  const bool de = lang == Language::de;
   return {{{len + 0.07, 0, 0}, "x", pal.u},          {{0, len + 0.07, 0}, "y", pal.v},
           {{0, 0, len + 0.07}, "z", pal.n},          {{-0.06, -0.06, -0.06}, "0", pal.text},
           {{1, -0.07, 0}, "1", pal.u},               {{-0.07, 1, 0}, "1", pal.v},
-          {{-0.07, -0.07, 1}, "1", pal.n},           {{0.5, 1.08, 1}, de ? "vorne z = 1" : "front z = 1", pal.frustum},
-          {{0.5, 1.08, 0}, de ? "hinten z = 0" : "back z = 0", pal.frustum}};
+          {{-0.07, -0.07, 1}, "1", pal.n},           {{0.5, 1.08, 1}, text::Text("front z = 1").in(lang), pal.frustum},
+          {{0.5, 1.08, 0}, text::Text("back z = 0").in(lang), pal.frustum}};
 }
 
 }  // namespace vplab::geometry

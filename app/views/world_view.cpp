@@ -2,6 +2,7 @@
 // WC together with the scene camera: VRP, PRP, VUP, the U, V, N axes, the window in the view plane
 // and the view volume. What lies inside the view volume is drawn solid, the rest faded; the edges
 // the CPU clipper created are highlighted (lecture notes 15.1, figures 15.1–15.5).
+#include "app/text/catalogue.h"
 #include "app/views/batches.h"
 #include "app/views/theme.h"
 #include "app/views/view_geometry.h"
@@ -12,6 +13,14 @@ namespace vplab {
 namespace {
 
 using namespace draw;
+
+// A handle's name: app/core/picking.h names them in English (their ids); the frustum's planes are
+// labelled in the language, as the frustum's own labels.
+std::string handleLabel(const std::string& name, Language lang) {
+  for (const text::Text t : {text::Text("front F"), text::Text("back B")})
+    if (t.english() == name) return t.in(lang);
+  return name;  // VRP, PRP, xmin, …: the same in both languages
+}
 
 void addArrow(Marks& b, const Vec3& from, const Vec3& to, const Vec3& eye, const glm::vec4& color, float dash = 0.f) {
   // The arrows are the camera's axes: solid, but for VUP's dashes, in every theme.
@@ -95,7 +104,7 @@ DisplayList worldView(const ViewInput& in) {
   const int w = in.width, h = in.height;
   const float scale = in.text.scale();
   const theme::Palette& pal = theme::palette(in.settings.theme);
-  const bool de = in.settings.language == Language::de;
+  const Language lang = in.settings.language;
 
   DisplayList list;
   list.width = w;
@@ -145,8 +154,8 @@ DisplayList worldView(const ViewInput& in) {
         b.line(run.camera.prp, c[front[i]], glm::vec4(glm::vec3(pal.frustum), 0.6f), 1.5f, pal.projectorDashPx);
     }
     // The lecture's names: vordere/hintere Clippingebene (front and back plane).
-    label(c[7], de ? "vordere Ebene F" : "front F", pal.frustum, {6, -10});
-    label(c[3], de ? "hintere Ebene B" : "back B", pal.frustum, {6, -10});
+    label(c[7], text::Text("front F").in(lang), pal.frustum, {6, -10});
+    label(c[3], text::Text("back B").in(lang), pal.frustum, {6, -10});
   }
   // User clip planes (DGL wiki): a translucent square on each, around its point, with its normal.
   const double planeSize = geometry::clipPlaneSquareSize(run.camera);
@@ -157,7 +166,7 @@ DisplayList worldView(const ViewInput& in) {
     b.quad(q[0], q[1], q[2], q[3], pal.clipPlane);
     b.polyline(q, true, glm::vec4(glm::vec3(pal.clipPlane), 0.8f), 1.5f);
     addArrow(b, p.point, p.point + n * (0.3 * planeSize), view.camera.prp, glm::vec4(glm::vec3(pal.clipPlane), 1.f));
-    label(p.point + n * (0.3 * planeSize), de ? "Clipebene" : "clip plane", glm::vec4(glm::vec3(pal.clipPlane), 1.f));
+    label(p.point + n * (0.3 * planeSize), text::Text("clip plane").in(lang), glm::vec4(glm::vec3(pal.clipPlane), 1.f));
   }
   if (ov.viewPlane) {
     const ViewWindow& win = run.camera.window;
@@ -167,7 +176,7 @@ DisplayList worldView(const ViewInput& in) {
                                       transformAffine(wcFromVrc, {win.xmin, win.ymax, 0})};
     b.quad(corners[0], corners[1], corners[2], corners[3], pal.windowFill);
     b.polyline(corners, true, pal.window, pal.windowWidthPx, pal.windowDashPx);
-    label(corners[3], de ? "Fenster" : "window", pal.window, {6, -10});
+    label(corners[3], text::Text("window").in(lang), pal.window, {6, -10});
   }
   if (ov.cameraAxes) {
     const Camera& cam = run.camera;
@@ -197,7 +206,7 @@ DisplayList worldView(const ViewInput& in) {
   const Highlights& hl = in.highlights;
   for (const Highlights::HandleMark& m : hl.handles) {
     b.point(m.wc, m.hot ? pal.handleHot : pal.handle, m.hot ? 15.f : 9.f);
-    if (m.hot) label(m.wc, m.name, pal.handleHot, {10, -12});
+    if (m.hot) label(m.wc, handleLabel(m.name, lang), pal.handleHot, {10, -12});
   }
   if (hl.probeWc) b.point(*hl.probeWc, pal.probe, 14.f);
   // A lesson's highlighted planes: a face of the view volume as the step-through shows its plane,

@@ -550,3 +550,68 @@ TEST(Browser, SaveIsANewDownloadEveryTimeAndTheBrowsersShortcutsAreLeftToIt) {
 
 }  // namespace
 }  // namespace vplab
+
+namespace vplab {
+namespace {
+
+// ---------------------------------------------------------------- the language (issue 22 item 4)
+
+// View > Language switches the menus, the panels, the windows' titles and the views' labels at once,
+// and hands the choice to what remembers it (the preferences file, the page's localStorage); a
+// choice that cannot be remembered still applies and says why it is not kept.
+TEST(Language, ViewLanguageSwitchesTheViewerAndIsRemembered) {
+  auto v = makeViewer();
+  std::vector<Language> remembered;
+  v->viewer().session().rememberLanguageWith([&](Language lang) { remembered.push_back(lang); });
+  v->frames(2);
+  EXPECT_EQ(v->viewer().title(), "vplab — default lecture scene");
+  const Image english = v->image();
+  // A tab is as wide as its name: "Display", then "Darstellung".
+  const float displayTab = v->state().rects.at("tab.controls.Display").z;
+
+  clickId(*v, "menu.view");
+  v->frames(2);
+  clickId(*v, "menu.language");
+  v->frames(2);
+  clickId(*v, "menu.language.de");
+  v->frames(3);
+  EXPECT_EQ(v->state().display.language, Language::de);
+  EXPECT_EQ(remembered, std::vector<Language>{Language::de});
+  EXPECT_GT(v->state().rects.at("tab.controls.Display").z, displayTab * 1.3f);
+  EXPECT_EQ(v->viewer().title(), "vplab — Standardszene der Vorlesung");
+  EXPECT_FALSE(v->state().doc.dirty()) << "a preference is no change of the scene";
+  EXPECT_FALSE(v->state().doc.canUndo());
+  // The tabs keep their ids (and the tests their names) in either language.
+  const auto [tx, ty] = v->centreOf("tab.controls.Display");
+  v->click(tx, ty);
+  v->frames(2);
+  EXPECT_EQ(v->state().controlsTab, ViewerState::displayTab);
+  EXPECT_GT(test::differingPixels(english, v->image()), 2000u) << "the German window looks like the English one";
+
+  v->viewer().session().rememberLanguageWith([](Language) { throw Error("/ro/preferences.json: read-only file system"); });
+  clickId(*v, "menu.view");
+  v->frames(2);
+  clickId(*v, "menu.language");
+  v->frames(2);
+  clickId(*v, "menu.language.en");
+  v->frames(2);
+  EXPECT_EQ(v->state().display.language, Language::en);
+  EXPECT_TRUE(v->state().statusIsError);
+  EXPECT_THAT(v->state().status, HasSubstr("/ro/preferences.json"));
+  v->frames(2);
+  EXPECT_EQ(v->state().rects.at("tab.controls.Display").z, displayTab);
+}
+
+// A new document keeps the language (a preference, not a setting of the scene).
+TEST(Language, ANewDocumentKeepsTheLanguage) {
+  auto v = makeViewer();
+  v->state().display.language = Language::de;
+  clickId(*v, "menu.file");
+  v->frames(2);
+  clickId(*v, "menu.new");
+  v->frames(2);
+  EXPECT_EQ(v->state().display.language, Language::de);
+}
+
+}  // namespace
+}  // namespace vplab

@@ -149,9 +149,9 @@ struct Shown {
   std::function<void(HeadlessViewer&)> show;
 };
 
-// Every panel and tab at 1280 × 720 and UI scale 1, 1.6 and 2: no text cut off at the side of its
-// window, column or child window, no name shortened with "…". The pictures are left in the test
-// output directory to look at.
+// Every panel and tab at 1280 × 720 and UI scale 1, 1.6 and 2, in English and in German: no text
+// cut off at the side of its window, column or child window, no name shortened with "…". The
+// pictures are left in the test output directory to look at.
 TEST(UiLecture, NoTextIsCutOffAtAnyScale) {
   auto clickTab = [](HeadlessViewer& v, const std::string& id) {
     const auto [x, y] = v.centreOf(id);
@@ -180,19 +180,24 @@ TEST(UiLecture, NoTextIsCutOffAtAnyScale) {
                      v.frames(2);
                    }});
   shown.push_back({"help", [&](HeadlessViewer& v) { v.key(keys::kF1); }});
+  // German words are longer (issue 22 item 4): both languages, every scale.
+  for (const Language lang : {Language::en, Language::de})
   for (float scale : {1.f, 1.6f, 2.f}) {
     auto v = makeViewer(defaultScene(), scale);
+    v->state().display.language = lang;
+    v->frames(2);
+    const char* code = lang == Language::de ? "de" : "en";
     for (const Shown& s : shown) {
-      SCOPED_TRACE(std::string(s.what) + " at UI scale " + std::to_string(scale));
+      SCOPED_TRACE(std::string(s.what) + " at UI scale " + std::to_string(scale) + " in " + code);
       s.show(*v);
       char prefix[128];
-      std::snprintf(prefix, sizeof prefix, "ui-%.1f-%s", scale, s.what);
+      std::snprintf(prefix, sizeof prefix, "ui-%s-%.1f-%s", code, scale, s.what);
       std::vector<std::string> problems = clippedTextOfEveryPage(*v, prefix);
       if (std::string(s.what) == "Depth") {  // the plot at least ten lines high at every scale
         EXPECT_GE(v->state().rects.at("depth.plot").w, 10 * ImGui::GetTextLineHeight());
       }
       char name[128];
-      std::snprintf(name, sizeof name, "ui-%.1f-%s.png", scale, s.what);
+      std::snprintf(name, sizeof name, "ui-%s-%.1f-%s.png", code, scale, s.what);
       writePng(v->image(), test::outputDir() / name);
       std::string list;
       for (size_t i = 0; i < std::min<size_t>(problems.size(), 6); ++i) list += "\n  " + problems[i];
@@ -205,7 +210,8 @@ TEST(UiLecture, NoTextIsCutOffAtAnyScale) {
 // ---------------------------------------------------------------- issue 24 item 2: a phone's screen
 
 bool windowShown(const char* name) {
-  const ImGuiWindow* w = ImGui::FindWindowByName(name);
+  // A window's id is its English name after "###", in either language (app/text/ui_menus.inc).
+  const ImGuiWindow* w = ImGui::FindWindowByName(("###" + std::string(name)).c_str());
   return w && w->Active;
 }
 
@@ -214,11 +220,13 @@ bool windowShown(const char* name) {
 // Every view and every panel's tab is reached from the switcher, with no text cut off.
 TEST(UiCompact, APhoneShowsOneViewAtATimeAndEveryPanelWithNothingCutOff) {
   const float scale = 2.f * 0.886f;  // the page's: the pixel ratio × the CSS size's factor (page.cpp)
+  for (const Language lang : {Language::en, Language::de})
   for (const auto& [w, h] : {std::pair{780, 1688}, std::pair{1688, 780}}) {
     const bool upright = h > w;
-    SCOPED_TRACE(upright ? "upright" : "on its side");
+    SCOPED_TRACE(std::string(upright ? "upright" : "on its side") + (lang == Language::de ? " in German" : " in English"));
     auto v = std::make_unique<HeadlessViewer>(*test::egl().context, defaultScene(), w, h, scale);
     v->state().compactAllowed = true;
+    v->state().display.language = lang;
     v->frames(3);
     const std::map<ViewKind, const char*> windows = {
         {ViewKind::world, "World view (WC)"}, {ViewKind::camera, "Camera view (DC)"}, {ViewKind::npc, "NPC view"}};
@@ -228,13 +236,13 @@ TEST(UiCompact, APhoneShowsOneViewAtATimeAndEveryPanelWithNothingCutOff) {
       v->click(x, y);
       v->frames(2);
       for (const auto& [k, name] : windows) EXPECT_EQ(windowShown(name), k == kind) << name << " after " << id;
-      const ImGuiWindow* shown = ImGui::FindWindowByName(windows.at(kind));
+      const ImGuiWindow* shown = ImGui::FindWindowByName((std::string("###") + windows.at(kind)).c_str());
       EXPECT_GE(shown->Size.x, 0.99f * float(w)) << windows.at(kind) << " does not fill the screen's width";
       EXPECT_GE(shown->Size.y, 0.8f * float(h)) << windows.at(kind) << " does not fill the screen's height";
       EXPECT_FALSE(windowShown("Controls") || windowShown("Inspect"));
     }
     char name[64];
-    std::snprintf(name, sizeof name, "compact-%s-world.png", upright ? "upright" : "side");
+    std::snprintf(name, sizeof name, "compact-%s-%s-world.png", lang == Language::de ? "de" : "en", upright ? "upright" : "side");
     writePng(v->image(), test::outputDir() / name);
 
     for (const auto& [panel, tabs] :
@@ -246,14 +254,15 @@ TEST(UiCompact, APhoneShowsOneViewAtATimeAndEveryPanelWithNothingCutOff) {
       v->frames(2);
       ASSERT_TRUE(windowShown(panel)) << panel << " does not open";
       EXPECT_TRUE(windowShown("World view (WC)")) << "the view is not in sight beside the open panel";
-      const ImGuiWindow* p = ImGui::FindWindowByName(panel);
+      const ImGuiWindow* p = ImGui::FindWindowByName((std::string("###") + panel).c_str());
       EXPECT_GE(p->Size.x, (upright ? 0.99f : 0.49f) * float(w)) << "the panel is not below (upright) or beside the view";
       for (const std::string& tab : tabs) {
         SCOPED_TRACE(tab);
         const auto [tx, ty] = v->centreOf("tab." + lower + "." + tab);
         v->click(tx, ty);
         v->frames(2);
-        std::snprintf(name, sizeof name, "compact-%s-%s", upright ? "upright" : "side", tab.c_str());
+        std::snprintf(name, sizeof name, "compact-%s-%s-%s", lang == Language::de ? "de" : "en", upright ? "upright" : "side",
+                      tab.c_str());
         writePng(v->image(), test::outputDir() / (std::string(name) + ".png"));
         const std::vector<std::string> problems = clippedTextOfEveryPage(*v, name);
         std::string list;
@@ -312,7 +321,7 @@ TEST(UiLecture, TypedValuesApplyWhenTheFieldLosesFocus) {
   typeSlowly(*v, "camera.front", "2.5");
   EXPECT_EQ(v->state().doc.scene().camera.front, 3.0) << "applied while typing";
   EXPECT_FALSE(v->state().doc.canUndo());
-  const ImGuiWindow* controls = ImGui::FindWindowByName("Controls");  // its bottom is empty
+  const ImGuiWindow* controls = ImGui::FindWindowByName("###Controls");  // its bottom is empty
   ASSERT_NE(controls, nullptr);
   v->click(controls->Pos.x + 20, controls->Pos.y + controls->Size.y - 20);  // the field loses focus
   EXPECT_EQ(v->state().doc.scene().camera.front, 2.5);

@@ -49,7 +49,8 @@ PixelRect rectOf(HeadlessViewer& v, const std::string& id) {
 /// recorded rect of their own; the title bar's colour shows which window has the focus, which a
 /// click elsewhere changes).
 PixelRect windowRect(const char* name) {
-  const ImGuiWindow* w = ImGui::FindWindowByName(name);
+  // A window's id is its English name after "###", in either language (app/text/ui_menus.inc).
+  const ImGuiWindow* w = ImGui::FindWindowByName(("###" + std::string(name)).c_str());
   EXPECT_NE(w, nullptr) << name;
   if (!w) return {};
   const float title = w->TitleBarHeight();
