@@ -3,7 +3,8 @@
 //   {put: PATH, bytes: Uint8Array}                      a file the page was given (/uploads/…)
 //   {id, text: Uint8Array, source, baseDir}             a scene's text to read, its meshes to build
 // Answers: {id, error, meshes: [[positions, indices, faceStart, cornerNormals], …]} (ArrayBuffers,
-// transferred), one entry per object in order.
+// transferred), one entry per object in order; {id, failure: {source, reason}, meshes: []} when the
+// loader itself failed (the page words it).
 "use strict";
 importScripts("vplab-loader.js");
 const ready = createVplabLoader();
@@ -46,7 +47,8 @@ onmessage = (e) => {
       if (m.put) put(M, m.put, m.bytes);
       else build(M, m);
     } catch (err) {
-      if (!m.put) postMessage({ id: m.id, error: m.source + ": the page's loader failed (" + err + ")", meshes: [] });
+      // The page says it in its language (index.html: "{1}: the page's loader failed ({2})").
+      if (!m.put) postMessage({ id: m.id, error: "", failure: { source: m.source, reason: String(err) }, meshes: [] });
     }
   });
 };

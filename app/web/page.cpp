@@ -12,6 +12,7 @@
 #include "app/gl/render_target.h"
 #include "app/ui/text_fit.h"
 #include "app/ui/viewer.h"
+#include "app/ui/widgets.h"
 #include "app/ui/window_input.h"
 #include "app/web/page_services.h"
 #include "io/dump.h"
@@ -90,6 +91,15 @@ struct Page {
     files = chooser.get();
     viewer.session().useFileChooser(std::move(chooser), /*browser=*/true);
     viewer.state().compactAllowed = true;  // a phone's screen: one view at a time (app/ui/layout.h)
+    // The language: View ▸ Language's last choice, else the browser's (index.html decides it, for its
+    // own texts too); a choice in the menu is kept in localStorage, as the desktop keeps it in its
+    // preferences file (app/ui/run_viewer.cpp). Set before a link is shown: a lesson named without
+    // its language opens in this one.
+    viewer.state().display.language = page::language();
+    viewer.session().rememberLanguageWith([](Language lang) {
+      if (!page::rememberLanguage(lang))
+        throw Error(text::Text("the browser cannot remember the language (its localStorage is full or disabled)").in(lang));
+    });
     // SwiftShader takes about 7 s for the three views of a million triangles: a large scene's views
     // are drawn across frames (README "Large scenes in the page").
     viewer.drawViewsInSlices(kFirstSliceTriangles);
@@ -142,7 +152,7 @@ struct Page {
       std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
       if (text == storedAutosave) return;
       if (!page::storeRecovery(text)) {
-        viewer.state().status = "the browser keeps no autosave of this scene (its localStorage is full or disabled)";
+        viewer.state().status = ui::tr(viewer.state(), "the browser keeps no autosave of this scene (its localStorage is full or disabled)");
         viewer.state().statusIsError = true;
       }
       storedAutosave = std::move(text);
@@ -254,6 +264,8 @@ struct Page {
     j["scene"] = s.doc.path().string();
     j["dirty"] = s.doc.dirty();
     j["status"] = s.status;
+    j["language"] = std::string(text::languageCode(s.display.language));
+    j["labels"] = {{"menu.file", ui::tr(s, "File")}};  // the File menu's title as the menu bar shows it
     j["statusIsError"] = s.statusIsError;
     j["hash"] = shownHash;
     j["camera"] = {{"vrp", {c.vrp.x, c.vrp.y, c.vrp.z}},
@@ -307,7 +319,7 @@ void tick(void* arg) {
       return;
     }
     emscripten_cancel_main_loop();
-    page::showFatalError(std::string("vplab stopped: ") + e.what());
+    page::showFatalError(ui::tr(p->viewer.state(), "vplab stopped: {1}", {e.what()}));
   }
 }
 
@@ -323,7 +335,7 @@ int main() {
     EM_ASM({ vplabPage.started($0); }, page);
     emscripten_set_main_loop_arg(vplab::tick, page, 0, false);
   } catch (const std::exception& e) {
-    vplab::page::showFatalError(std::string("vplab could not start: ") + e.what());
+    vplab::page::showFatalError(vplab::text::fill(vplab::page::language(), "vplab could not start: {1}", {e.what()}));
     return 1;
   }
   return 0;
@@ -437,9 +449,11 @@ EMSCRIPTEN_KEEPALIVE void vplab_loader_done(Page* p, double id, const char* erro
   p->arriving.clear();
   p->arrivingCounts.clear();
   std::string e = error;
-  if (e.empty() && int(built.size()) != meshes) e = "the page's loader sent " + std::to_string(meshes) + " meshes; " +
-                                                    std::to_string(built.size()) + " of them fit the limits";
-  if (e.empty() && !whole) e = "the page's loader sent a mesh in part";
+  const vplab::ViewerState& s = p->viewer.state();
+  if (e.empty() && int(built.size()) != meshes)
+    e = vplab::ui::tr(s, "the page's loader sent {1} meshes; {2} of them fit the limits",
+                      {std::to_string(meshes), std::to_string(built.size())});
+  if (e.empty() && !whole) e = vplab::ui::tr(s, "the page's loader sent a mesh in part");
   p->viewer.session().loader().deliver(uint64_t(id), std::move(built), std::move(e));
   p->input.changed = true;
 }
@@ -474,11 +488,13 @@ EMSCRIPTEN_KEEPALIVE const char* vplab_state_json(Page* p) { return (p->reply = 
 EMSCRIPTEN_KEEPALIVE const char* vplab_export_png(Page* p, const char* view, int width, int height) {
   p->reply.clear();
   try {
+    const vplab::ViewerState& s = p->viewer.state();
     const auto kind = vplab::viewKindFromString(view);
-    if (!kind) throw vplab::Error(std::string("no view \"") + view + "\"");
-    if (p->graphicsLost) throw vplab::Error("the graphics context is lost: nothing can be drawn until the browser gives it back");
+    if (!kind) throw vplab::Error(vplab::ui::tr(s, "no view \"{1}\"", {view}));
+    if (p->graphicsLost) throw vplab::Error(vplab::ui::tr(s, "the graphics context is lost: nothing can be drawn until the browser gives it back"));
     if (width < 1 || height < 1 || width > 8192 || height > 8192)
-      throw vplab::Error("an exported view has 1 to 8192 pixels a side, not " + std::to_string(width) + " × " + std::to_string(height));
+      throw vplab::Error(vplab::ui::tr(s, "an exported view has 1 to 8192 pixels a side, not {1} × {2}",
+                                       {std::to_string(width), std::to_string(height)}));
     p->window.makeCurrent();
     const std::filesystem::path file = "/exports/vplab-" + std::string(view) + ".png";
     std::error_code ec;

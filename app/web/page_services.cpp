@@ -26,6 +26,8 @@ EM_JS(char*, jsKeptScenes, (), {
 });
 EM_JS(void, jsDropKeptScene, (const char* key), { vplabPage.dropKeptScene(UTF8ToString(key)); });
 EM_JS(int, jsStoreRecovery, (const char* text), { return vplabPage.storeRecovery(UTF8ToString(text)) ? 1 : 0; });
+EM_JS(int, jsLanguageIsGerman, (), { return vplabPage.language() === "de" ? 1 : 0; });
+EM_JS(int, jsRememberLanguage, (const char* code), { return vplabPage.rememberLanguage(UTF8ToString(code)) ? 1 : 0; });
 EM_JS(void, jsReplaceLocationHash, (const char* fragment), { vplabPage.replaceHash(UTF8ToString(fragment)); });
 EM_JS(void, jsSetUnsaved, (int unsaved), { vplabPage.unsaved = !!unsaved; });
 EM_JS(void, jsFirstFrame, (), { vplabPage.firstFrame(); });
@@ -107,6 +109,9 @@ std::vector<KeptScene> keptScenes() {
 void dropKeptScene(const std::string& key) { jsDropKeptScene(key.c_str()); }
 
 bool storeRecovery(const std::string& text) { return jsStoreRecovery(text.c_str()) != 0; }
+
+Language language() { return jsLanguageIsGerman() ? Language::de : Language::en; }
+bool rememberLanguage(Language lang) { return jsRememberLanguage(lang == Language::de ? "de" : "en") != 0; }
 
 void replaceLocationHash(const std::string& fragment) { jsReplaceLocationHash(fragment.c_str()); }
 void setUnsavedChanges(bool unsaved) { jsSetUnsaved(unsaved ? 1 : 0); }

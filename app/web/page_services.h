@@ -2,10 +2,12 @@
 // (README "In the browser"): the file picker and drag and drop (the files land in the in-memory file
 // system under /uploads), downloads (saved scenes and exported views are written under /downloads,
 // handed to the browser and removed), the address's fragment (the link to what is shown), the
-// autosave kept in localStorage, and the warning before a page with unsaved changes is left. The DOM side is in index.html (vplabPage).
+// autosave and the chosen language kept in localStorage, and the warning before a page with unsaved
+// changes is left. The DOM side is in index.html (vplabPage).
 #pragma once
 
 #include "app/ui/file_dialog.h"
+#include "pipeline/language.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -66,6 +68,12 @@ void dropKeptScene(const std::string& key);
 /// Keeps `text` (this tab's autosave file) in localStorage; an empty text removes it. Returns
 /// false when the browser refused (storage full or disabled).
 bool storeRecovery(const std::string& text);
+/// The page's language (index.html decides it before the lab starts): View ▸ Language's choice kept in
+/// localStorage ("vplab.language"), else the browser's (navigator.languages: German for "de…", else English).
+Language language();
+/// View ▸ Language chose `lang`: the page's own texts follow it, and localStorage keeps it for the
+/// next visit. Returns false when the browser refused to keep it (storage full or disabled).
+bool rememberLanguage(Language lang);
 /// Whether the canvas's WebGL context is lost now (its webglcontextlost event may not have come yet).
 bool graphicsContextLost();
 /// Forgets every GL name of a lost context in emscripten's tables (the context was restored without
