@@ -11,6 +11,8 @@ mkdir -p "$out"
 "$vplab" render --view ui --size 1280x720 --ui-scale 1.6 --tab lecture --tab matrices --out "$out/viewer-lecture.png"
 "$vplab" render --view ui --size 1280x720 --strategy divide-first --tab clipping --tab depth \
   --out "$out/viewer-divide-first.png"
+# In German (View > Language, --lang), at a projector's scale with the Clipping tab and the matrices.
+"$vplab" render --view ui --size 1280x720 --ui-scale 1.6 --lang de --tab clipping --tab matrices --out "$out/viewer-de.png"
 "$vplab" render --view all --style shaded --size 480x360 --out "$out/all-shaded.png"
 "$vplab" render --view all --style hidden-line --size 480x360 --out "$out/all-hidden-line.png"
 "$vplab" render --scene "$root/assets/scenes/behind-the-eye.json" --view all --style shaded --size 480x360 \
