@@ -18,9 +18,9 @@ import { after, before, describe, test } from 'node:test';
 import { fileURLToPath } from 'node:url';
 
 import {
-  catchDownloads, click, comparePngs, cssRect, decodePng, distinctColours, drag, exportPng, formatComparison,
-  afterInput, keepArtifacts, launchBrowser, openPage, rectPoint, runVplab, startServer, tempDir, unlessPageFails,
-  vplabBin, vplabState, waitFrames, webDir,
+  afterInput, catchDownloads, click, comparePngs, cssRect, decodePng, distinctColours, drag, exportPng,
+  formatComparison, keepArtifacts, launchBrowser, openPage, rectPoint, runVplab, startServer, tempDir,
+  unlessPageFails, vplabBin, vplabState, waitForState, waitFrames, webDir,
 } from './support.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -132,17 +132,6 @@ function objScene(dir, objFile) {
   const file = path.join(dir, 'obj-alone.json');
   writeFileSync(file, JSON.stringify(scene));
   return file;
-}
-
-async function waitForState(page, predicate, what, messages, timeout = 30_000) {
-  try {
-    await unlessPageFails(page.waitForFunction(`(${String(predicate)})(window.vplab.state())`, { timeout, polling: 100 }),
-      messages, what);
-  } catch (error) {
-    const state = await vplabState(page).then((s) => JSON.stringify({ ...s, rects: undefined }), (e) => `unreadable (${e.message})`);
-    assert.fail(`waited for ${what} in vain (${error.message}); state(): ${state}; the console said:\n` +
-      (messages.map((m) => `  ${m.type}: ${m.text} ${m.location}`).join('\n') || '  (nothing)'));
-  }
 }
 
 /** state().hash with its '#' (the contract's examples have it; a fragment without one gets it). */

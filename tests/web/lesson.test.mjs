@@ -7,19 +7,9 @@ import path from 'node:path';
 import { after, before, describe, test } from 'node:test';
 
 import {
-  afterInput, distinctColours, launchBrowser, openPage, startServer, tempDir, vplabState, waitFrames, webDir,
+  afterInput, distinctColours, launchBrowser, openPage, startServer, tempDir, vplabState, waitForState,
+  waitFrames, webDir,
 } from './support.mjs';
-
-/** Waits until `predicate(state())` holds in the page; fails with the state and the console otherwise. */
-async function waitForState(page, predicate, what, messages, timeout = 30_000) {
-  try {
-    await page.waitForFunction(`(${String(predicate)})(window.vplab.state())`, { timeout, polling: 100 });
-  } catch (error) {
-    const state = JSON.stringify({ ...(await vplabState(page)), rects: undefined });
-    assert.fail(`waited for ${what} in vain (${error.message}); state(): ${state}; the console said:\n` +
-      (messages.map((m) => `  ${m.type}: ${m.text}`).join('\n') || '  (nothing)'));
-  }
-}
 
 const errorsOf = (messages) => messages.filter((m) => m.type === 'error' || m.type === 'warning');
 

@@ -255,6 +255,22 @@ export function vplabState(page) {
 }
 
 /**
+ * Waits until `predicate(state())` holds in the page (the predicate runs in the page: it may use
+ * nothing but its argument); fails naming `what`, with the state (without its rects) and the console
+ * (`messages`, openPage's list), when it does not within `timeout` ms or the page throws meanwhile.
+ */
+export async function waitForState(page, predicate, what, messages, timeout = 30_000) {
+  try {
+    await unlessPageFails(page.waitForFunction(`(${String(predicate)})(window.vplab.state())`, { timeout, polling: 100 }),
+      messages, what);
+  } catch (error) {
+    const state = await vplabState(page).then((s) => JSON.stringify({ ...s, rects: undefined }), (e) => `unreadable (${e.message})`);
+    throw new Error(`waited for ${what} in vain (${error.message}); state(): ${state}; the console said:\n` +
+      (messages.map((m) => `  ${m.type}: ${m.text} ${m.location ?? ''}`).join('\n') || '  (nothing)'));
+  }
+}
+
+/**
  * Lets the page settle: waits until it drew `count` more frames (state().frames), or until it went
  * idle (no frame for `quietMs`). The page draws only when something changed (input, a due wake-up) plus
  * a few frames for ImGui to settle, as the desktop window does, so an idle page draws nothing.
