@@ -47,60 +47,78 @@ VrcAxes frameUnchecked(const Camera& c) {
 constexpr double kDegenerate = 1e-12;
 constexpr double kParallelSine = 1e-9;  // |VUP × N| / |VUP| below this: VUP parallel to N
 
-std::optional<std::string> inputError(const Camera& c) {
-  if (!isFinite(c.vrp) || !isFinite(c.prp) || !isFinite(c.vup))
-    return "VRP " + format(c.vrp) + ", PRP " + format(c.prp) + " and VUP " + format(c.vup) +
-           " must be finite numbers";
+std::optional<CameraProblem> inputProblem(const Camera& c) {
+  using K = CameraProblem::Kind;
+  if (!isFinite(c.vrp) || !isFinite(c.prp) || !isFinite(c.vup)) return CameraProblem{K::vectorsNotFinite};
   const ViewWindow& w = c.window;
   if (!isFinite(w.xmin) || !isFinite(w.xmax) || !isFinite(w.ymin) || !isFinite(w.ymax) ||
       !isFinite(c.front) || !isFinite(c.back))
-    return "the window and the front and back planes must be finite numbers";
+    return CameraProblem{K::planesNotFinite};
   const double scale = std::max({1.0, maxAbs(c.vrp), maxAbs(c.prp)});
-  if (glm::length(c.prp - c.vrp) <= kDegenerate * scale)
-    return "PRP " + format(c.prp) + " equals VRP " + format(c.vrp) +
-           ": the view plane normal N = PRP − VRP is undefined";
-  if (glm::length(c.vup) <= kDegenerate)
-    return "VUP " + format(c.vup) + " is the zero vector: the camera has no up direction";
+  if (glm::length(c.prp - c.vrp) <= kDegenerate * scale) return CameraProblem{K::prpOnVrp};
+  if (glm::length(c.vup) <= kDegenerate) return CameraProblem{K::vupZero};
   const Vec3 n = glm::normalize((c.prp - c.vrp) / maxAbs(c.prp - c.vrp));
   if (glm::length(glm::cross(glm::normalize(c.vup / maxAbs(c.vup)), n)) <= kParallelSine)
-    return "VUP " + format(c.vup) + " is parallel to the view plane normal N " + format(n) +
-           " (PRP − VRP): U = VUP × N is undefined";
-  if (!(w.xmax > w.xmin))
-    return "the window needs xmin < xmax, but xmin = " + format(w.xmin) +
-           ", xmax = " + format(w.xmax);
-  if (!(w.ymax > w.ymin))
-    return "the window needs ymin < ymax, but ymin = " + format(w.ymin) +
-           ", ymax = " + format(w.ymax);
-  if (!(c.back < c.front))
-    return "the back plane must lie behind the front plane (B < F), but B = " + format(c.back) +
-           ", F = " + format(c.front);
+    return CameraProblem{K::vupAlongN, n};
+  if (!(w.xmax > w.xmin)) return CameraProblem{K::windowX};
+  if (!(w.ymax > w.ymin)) return CameraProblem{K::windowY};
+  if (!(c.back < c.front)) return CameraProblem{K::backNotBehindFront};
   if (c.projection == Projection::perspective) {
     const double vpd = glm::length(c.prp - c.vrp);
-    if (!(c.front < vpd))
-      return "perspective needs the front plane in front of the eye (F < VPD), but F = " +
-             format(c.front) + ", VPD = |PRP − VRP| = " + format(vpd) +
-             " (dmin = VPD − F = " + format(vpd - c.front) + " must be > 0)";
+    if (!(c.front < vpd)) return CameraProblem{K::frontBehindEye, Vec3(0), vpd};
   }
-  if (c.projection == Projection::oblique) {
-    if (!isFinite(c.oblique.d) || !isFinite(c.oblique.phiDeg) || c.oblique.d < 0)
-      return "the oblique projection needs a finite shortening factor d >= 0 and a finite angle "
-             "phi, but d = " + format(c.oblique.d) + ", phi = " + format(c.oblique.phiDeg);
-  }
+  if (c.projection == Projection::oblique &&
+      (!isFinite(c.oblique.d) || !isFinite(c.oblique.phiDeg) || c.oblique.d < 0))
+    return CameraProblem{K::obliqueFactors};
   return std::nullopt;
+}
+
+/// The problem in English, naming the camera's values.
+std::string englishText(const CameraProblem& p, const Camera& c) {
+  const ViewWindow& w = c.window;
+  switch (p.kind) {
+    case CameraProblem::Kind::vectorsNotFinite:
+      return "VRP " + format(c.vrp) + ", PRP " + format(c.prp) + " and VUP " + format(c.vup) + " must be finite numbers";
+    case CameraProblem::Kind::planesNotFinite: return "the window and the front and back planes must be finite numbers";
+    case CameraProblem::Kind::prpOnVrp:
+      return "PRP " + format(c.prp) + " equals VRP " + format(c.vrp) + ": the view plane normal N = PRP − VRP is undefined";
+    case CameraProblem::Kind::vupZero: return "VUP " + format(c.vup) + " is the zero vector: the camera has no up direction";
+    case CameraProblem::Kind::vupAlongN:
+      return "VUP " + format(c.vup) + " is parallel to the view plane normal N " + format(p.n) +
+             " (PRP − VRP): U = VUP × N is undefined";
+    case CameraProblem::Kind::windowX:
+      return "the window needs xmin < xmax, but xmin = " + format(w.xmin) + ", xmax = " + format(w.xmax);
+    case CameraProblem::Kind::windowY:
+      return "the window needs ymin < ymax, but ymin = " + format(w.ymin) + ", ymax = " + format(w.ymax);
+    case CameraProblem::Kind::backNotBehindFront:
+      return "the back plane must lie behind the front plane (B < F), but B = " + format(c.back) + ", F = " + format(c.front);
+    case CameraProblem::Kind::frontBehindEye:
+      return "perspective needs the front plane in front of the eye (F < VPD), but F = " + format(c.front) +
+             ", VPD = |PRP − VRP| = " + format(p.vpd) + " (dmin = VPD − F = " + format(p.vpd - c.front) + " must be > 0)";
+    case CameraProblem::Kind::obliqueFactors:
+      return "the oblique projection needs a finite shortening factor d >= 0 and a finite angle phi, but d = " +
+             format(c.oblique.d) + ", phi = " + format(c.oblique.phiDeg);
+    case CameraProblem::Kind::mappingNotFinite:
+      return "the camera's values are too large or too small: the view mapping is not finite (window " + format(w.xmin) +
+             ".." + format(w.xmax) + " × " + format(w.ymin) + ".." + format(w.ymax) + ", VPD " + format(p.vpd) + ")";
+  }
+  return "?";
 }
 
 }  // namespace
 
-std::optional<std::string> cameraError(const Camera& camera) {
-  if (auto e = inputError(camera)) return e;
+std::optional<CameraProblem> cameraProblem(const Camera& camera) {
+  if (auto p = inputProblem(camera)) return p;
   // Finite inputs can still overflow (a window 1e-300 wide): check what the stages will use.
   const VrcAxes f = frameUnchecked(camera);
   const Mat4 m = npcFromVrc(camera, f) * vrcFromWc(f, camera.vrp);
   if (!isFinite(m) || !isFinite(f.u) || !isFinite(f.v) || !isFinite(f.n))
-    return "the camera's values are too large or too small: the view mapping is not finite "
-           "(window " + format(camera.window.xmin) + ".." + format(camera.window.xmax) + " × " +
-           format(camera.window.ymin) + ".." + format(camera.window.ymax) + ", VPD " +
-           format(f.vpd) + ")";
+    return CameraProblem{CameraProblem::Kind::mappingNotFinite, Vec3(0), f.vpd};
+  return std::nullopt;
+}
+
+std::optional<std::string> cameraError(const Camera& camera) {
+  if (auto p = cameraProblem(camera)) return englishText(*p, camera);
   return std::nullopt;
 }
 

@@ -58,8 +58,33 @@ struct VrcAxes {
   double dmax;   // VPD − B: distance eye → back plane (perspective)
 };
 
-/// Why the camera is invalid, naming the offending values; nullopt when it is valid.
-/// A valid camera never leads to NaN or infinity in any stage matrix.
+/// What makes a camera invalid, as data: cameraError says it in English, naming the camera's values;
+/// the viewer says it in its language from the same data (app/core/camera_text.h).
+struct CameraProblem {
+  enum class Kind {
+    vectorsNotFinite,    // VRP, PRP or VUP has a NaN or infinite component
+    planesNotFinite,     // the window, F or B is not finite
+    prpOnVrp,            // PRP = VRP: N = PRP − VRP is undefined
+    vupZero,             // VUP = 0: no up direction
+    vupAlongN,           // VUP ∥ N: U = VUP × N is undefined
+    windowX,             // not xmin < xmax
+    windowY,             // not ymin < ymax
+    backNotBehindFront,  // not B < F
+    frontBehindEye,      // perspective: not F < VPD
+    obliqueFactors,      // oblique: d < 0, or d or φ not finite
+    mappingNotFinite,    // finite values whose view mapping overflows
+  };
+  Kind kind;
+  Vec3 n{0};       // vupAlongN: the view plane normal N
+  double vpd = 0;  // frontBehindEye, mappingNotFinite: |PRP − VRP|
+};
+
+/// What makes the camera invalid; nullopt when it is valid. A valid camera never leads to NaN or
+/// infinity in any stage matrix.
+std::optional<CameraProblem> cameraProblem(const Camera& camera);
+
+/// Why the camera is invalid, in English naming the offending values (cameraProblem's); nullopt
+/// when it is valid.
 std::optional<std::string> cameraError(const Camera& camera);
 
 /// U, V, N, VPD, dmin, dmax. Throws vplab::Error with cameraError's message when invalid.

@@ -16,6 +16,7 @@
 //   ui_lecture_views.inc             the Lecture tab, the lessons' box, the views' windows
 //   ui_messages.inc                  the viewer's frame and the session: files, dialogs, the status line
 //   views.inc                        the labels and titles the views draw (also in exported pictures)
+//   camera.inc                       what makes a camera invalid (app/core/camera_text.cpp)
 //   page.inc                         the page's own texts (app/web/)
 #pragma once
 
@@ -42,6 +43,7 @@ inline constexpr Entry kCatalogue[] = {
 #include "app/text/ui_lecture_views.inc"
 #include "app/text/ui_messages.inc"
 #include "app/text/views.inc"
+#include "app/text/camera.inc"
 #include "app/text/page.inc"
 };
 // clang-format on

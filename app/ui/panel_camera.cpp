@@ -1,5 +1,6 @@
 // The camera panel: the synthetic camera's parameters (lecture notes 15.1–15.2) and what follows from them.
 #include "app/ui/panels.h"
+#include "app/core/camera_text.h"
 #include "app/core/picking.h"
 #include "app/ui/widgets.h"
 
@@ -68,7 +69,9 @@ void cameraPanel(ViewerState& s) {
   }
   ImGui::Separator();
   if (!s.doc.error().empty()) {
-    errorText(s.doc.error());
+    // The camera's own problem in the viewer's language; another of the scene as the document says it.
+    const std::optional<CameraProblem> problem = cameraProblem(c);
+    errorText(problem ? cameraProblemText(*problem, c, s.display.language) : s.doc.error());
     ImGui::TextDisabled("%s", tr(s, "The views show the last valid camera."));
   } else {
     derived(s);
