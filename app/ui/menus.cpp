@@ -118,11 +118,20 @@ void Menus::languageMenu() {
   ImGui::EndMenu();
 }
 
+// The bundled lessons do not change while vplab runs: their titles are read once per language, not in
+// every frame the menu bar is drawn.
+const std::vector<LessonFileInfo>& Menus::bundledLessons(Language lang) {
+  auto found = bundledLessons_.find(lang);
+  if (found == bundledLessons_.end()) found = bundledLessons_.emplace(lang, listBundledLessons(lang)).first;
+  return found->second;
+}
+
 void Menus::lessonsMenu() {
   // The lessons in the labels' language first, then the others (a German course may show an English one).
   const Language first = s_.display.language;
   const Language second = first == Language::de ? Language::en : Language::de;
-  const std::vector<LessonFileInfo> mine = listBundledLessons(first), others = listBundledLessons(second);
+  const std::vector<LessonFileInfo>& mine = bundledLessons(first);
+  const std::vector<LessonFileInfo>& others = bundledLessons(second);
   const bool open = ImGui::BeginMenu(ui::tr(s_, "Lessons"), !mine.empty() || !others.empty());
   ui::recordRect(s_, "menu.lessons");
   if (!open) return;

@@ -5,10 +5,14 @@
 #pragma once
 
 #include "app/context/context.h"
+#include "app/core/lesson.h"
 #include "app/render/view_images.h"
 #include "app/render/view_renderer.h"
 #include "app/ui/session.h"
 #include "app/ui/viewer_state.h"
+
+#include <map>
+#include <vector>
 
 namespace vplab {
 
@@ -36,6 +40,8 @@ class Menus {
   void lessonsMenu();
   /// View > Language: English or German, remembered (Session::chooseLanguage).
   void languageMenu();
+  /// listBundledLessons(lang), read once.
+  const std::vector<LessonFileInfo>& bundledLessons(Language lang);
 
   GlContext& ctx_;
   ViewerState& s_;
@@ -43,6 +49,7 @@ class Menus {
   ViewImages& images_;
   ViewRenderer& renderer_;
   float uiScale_ = 1.f;
+  std::map<Language, std::vector<LessonFileInfo>> bundledLessons_;
 };
 
 }  // namespace vplab
