@@ -90,8 +90,8 @@ bool GlBackend::drawSlice(const draw::DisplayList& list, gl::RenderTarget& targe
     if (!marks.empty()) drawMarks(marks, draw::Depth::xray, view);
     marks.clear();
   };
-  // A slice ends only inside a fill, after the x-ray run before it was drawn: the next slice starts
-  // at that fill with nothing of an x-ray run pending.
+  // A slice ends only inside a fill, mesh edges or a batch of marks that is no x-ray, after the x-ray
+  // run before it was drawn: the next slice starts at that batch with nothing of an x-ray run pending.
   for (size_t i = c.batch; i < list.batches.size(); ++i) {
     const draw::Batch& b = list.batches[i];
     if (const auto* fill = std::get_if<draw::Fill>(&b)) {
@@ -116,9 +116,17 @@ bool GlBackend::drawSlice(const draw::DisplayList& list, gl::RenderTarget& targe
           depth = m.depth;
       }, b);
       const auto* lines = std::get_if<draw::Lines>(&b);
-      if (lines && !lines->meshEdges.empty()) {
+      auto stop = [&] {
+        c.batch = i;
+        c.polygonSlot = polygonSlot_;
+        return false;
+      };
+      if (lines && !lines->meshEdges.empty() && c.primitive == 0) {
         flush();
-        drawMeshEdges(*lines, view);
+        if (!drawMeshEdges(*lines, view, c, triangles)) return stop();
+        c.mesh = 0;
+        c.pass = 0;
+        c.index = 0;
         if (lines->segments.empty()) continue;
       }
       if (depth == draw::Depth::xray) {
@@ -126,7 +134,8 @@ bool GlBackend::drawSlice(const draw::DisplayList& list, gl::RenderTarget& targe
         continue;
       }
       flush();
-      drawMarks({&b}, depth, view);
+      if (!drawMarksSlice(b, depth, view, c, triangles)) return stop();
+      c.primitive = 0;
     }
   }
   flush();
@@ -423,36 +432,86 @@ bool GlBackend::drawPolygons(const draw::Fill& fill, const ViewCamera& camera, C
 
 // ---------------------------------------------------------------- 4 lines, points, triangles
 
-void GlBackend::drawMeshEdges(const draw::Lines& lines, const View& view) {
+bool GlBackend::drawMeshEdges(const draw::Lines& lines, const View& view, Cursor& c, size_t& triangles) {
   const ViewCamera& camera = view.cameraFor(lines.space);
   overlay_.setUserPlanes(lines.clipPlanes);
   gl_.Enable(GL_BLEND);
   gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   gl_.DepthMask(GL_FALSE);
-  auto pass = [&](GLenum depthFunc, float alphaScale) {
-    gl_.DepthFunc(depthFunc);
-    for (const draw::MeshInstance& m : lines.meshEdges) {
-      if (!m.mesh) continue;
-      const GpuMesh& g = meshes_.withEdges(m.mesh);
-      overlay_.drawMeshEdges(g.edges.id(), g.edgeCount, camera, m.spaceFromMc, view.width, view.height,
-                             glm::vec4(glm::vec3(m.color), m.color.a * alphaScale), lines.widthPx, lines.dashPx);
+  // An x-ray draws every instance's hidden part faint first, then the visible part: two passes.
+  const bool xray = lines.depth == draw::Depth::xray;
+  auto depthOf = [&](int pass) -> std::pair<GLenum, float> {
+    switch (lines.depth) {
+      case draw::Depth::ignore: return {GL_ALWAYS, 1.f};
+      case draw::Depth::hiddenOnly: return {GL_GREATER, 1.f};
+      case draw::Depth::xray: return pass == 0 ? std::pair{GLenum(GL_GREATER), draw::kXrayAlpha} : std::pair{GLenum(GL_LEQUAL), 1.f};
+      case draw::Depth::test: break;
     }
+    return {GL_LEQUAL, 1.f};
   };
-  switch (lines.depth) {
-    case draw::Depth::ignore: pass(GL_ALWAYS, 1.f); break;
-    case draw::Depth::test: pass(GL_LEQUAL, 1.f); break;
-    case draw::Depth::hiddenOnly: pass(GL_GREATER, 1.f); break;
-    case draw::Depth::xray:
-      pass(GL_GREATER, draw::kXrayAlpha);
-      pass(GL_LEQUAL, 1.f);
-      break;
+  bool drawn = false;  // something in this slice: a slice always draws (or uploads) something
+  bool done = true;
+  for (; c.pass < (xray ? 2 : 1) && done; ++c.pass, c.mesh = 0) {
+    const auto [depthFunc, alphaScale] = depthOf(c.pass);
+    gl_.DepthFunc(depthFunc);
+    for (; c.mesh < lines.meshEdges.size() && done; ++c.mesh, c.index = 0) {
+      const draw::MeshInstance& m = lines.meshEdges[c.mesh];
+      if (!m.mesh) continue;
+      const size_t before = triangles;
+      const GpuMesh* g = meshes_.uploadEdges(m.mesh, triangles);
+      drawn = drawn || triangles != before;
+      if (!g) {
+        done = false;
+        break;
+      }
+      for (const GpuEdgeChunk& chunk : g->edgeChunks) {
+        if (c.index >= chunk.first + chunk.count) continue;
+        if (triangles < 2 && drawn) {
+          done = false;
+          break;
+        }
+        const GLsizei first = c.index - chunk.first;
+        const GLsizei count = std::max<GLsizei>(1, GLsizei(std::min<size_t>(size_t(chunk.count - first), triangles / 2)));
+        pointEdgesAt(gl_, chunk, first);
+        overlay_.drawMeshEdges(chunk.vao.id(), count, camera, m.spaceFromMc, view.width, view.height,
+                               glm::vec4(glm::vec3(m.color), m.color.a * alphaScale), lines.widthPx, lines.dashPx);
+        triangles -= std::min(triangles, 2 * size_t(count));
+        c.index += count;
+        drawn = true;
+      }
+      if (c.index < g->edgeCount) done = false;
+      if (!done) break;
+    }
+    if (!done) break;
   }
   gl_.DepthFunc(GL_LESS);
   gl_.DepthMask(GL_TRUE);
   overlay_.setUserPlanes({});
+  return done;
+}
+
+bool GlBackend::drawMarksSlice(const draw::Batch& b, draw::Depth depth, const View& view, Cursor& c,
+                               size_t& triangles) {
+  // A line or a point is a quad: two triangles. At least one primitive a slice.
+  size_t count = 0, cost = 2;
+  if (const auto* l = std::get_if<draw::Lines>(&b)) count = l->segments.size() / 2;
+  else if (const auto* p = std::get_if<draw::Points>(&b)) count = p->points.size();
+  else if (const auto* t = std::get_if<draw::Triangles>(&b)) count = t->vertices.size() / 3, cost = 1;
+  const size_t first = std::min(c.primitive, count);
+  const size_t end = first + std::min(count - first, std::max<size_t>(1, triangles / cost));
+  drawMarks({&b}, depth, view, first, end);
+  triangles -= std::min(triangles, cost * (end - first));
+  c.primitive = end;
+  return end >= count;
 }
 
 void GlBackend::drawMarks(const std::vector<const draw::Batch*>& batches, draw::Depth depth, const View& view) {
+  drawMarks(batches, depth, view, 0, SIZE_MAX);
+}
+
+// Primitives [first, end) of each batch (a slice of one batch, or all of an x-ray run).
+void GlBackend::drawMarks(const std::vector<const draw::Batch*>& batches, draw::Depth depth, const View& view,
+                          size_t first, size_t end) {
   OverlayBatch marks;
   std::optional<draw::Space> space;
   bool pushedBack = false;
@@ -463,15 +522,16 @@ void GlBackend::drawMarks(const std::vector<const draw::Batch*>& batches, draw::
   for (const draw::Batch* b : batches) {
     if (const auto* l = std::get_if<draw::Lines>(b)) {
       useSpace(l->space);
-      for (size_t i = 0; i + 1 < l->segments.size(); i += 2)
+      for (size_t i = 2 * first; i + 1 < l->segments.size() && i / 2 < end; i += 2)
         marks.line(l->segments[i].position, l->segments[i + 1].position, l->segments[i].color, l->widthPx, l->dashPx);
     } else if (const auto* p = std::get_if<draw::Points>(b)) {
       useSpace(p->space);
-      for (const draw::Vertex& v : p->points) marks.point(v.position, v.color, p->sizePx);
+      for (size_t i = first; i < p->points.size() && i < end; ++i)
+        marks.point(p->points[i].position, p->points[i].color, p->sizePx);
     } else if (const auto* t = std::get_if<draw::Triangles>(b)) {
       useSpace(t->space);
       pushedBack = pushedBack || t->pushedBack;
-      for (size_t i = 0; i + 2 < t->vertices.size(); i += 3)
+      for (size_t i = 3 * first; i + 2 < t->vertices.size() && i / 3 < end; i += 3)
         marks.triangle(t->vertices[i].position, t->vertices[i + 1].position, t->vertices[i + 2].position,
                        t->vertices[i].color);
     }

@@ -49,14 +49,16 @@ class GlBackend {
     size_t batch = 0;
     size_t mesh = 0;     // the mesh instance, or in pass 2 the polygon set
     int pass = 0;        // 0: the whole mesh, or the inside faces drawn early; 1: the volume pass;
-                         // 2: the fill's polygons (begun: their buffer is the fill's slot)
-    GLsizei index = 0;   // the next element of the pass's index list, or polygon of the set
+                         // 2: the fill's polygons (begun: their buffer is the fill's slot). Mesh
+                         // edges: 0, or 1 for an x-ray's visible pass
+    GLsizei index = 0;   // the next element of the pass's index list, polygon of the set or mesh edge
+    size_t primitive = 0;    // in lines, points or triangles: the next one
     uint64_t serial = 0;     // the draw it is (the volume partition made for it)
     size_t polygonSlot = 0;  // the polygon buffers its fills took so far
   };
   /// Draws `list` as draw() does, in slices: from `cursor` on, at most `triangles` of its meshes' and
-  /// polygons' triangles (taken off the count; the other batches, a few thousand primitives, are
-  /// drawn whole when reached). The first slice clears `target`. A slice's GL state is its own and
+  /// polygons' triangles, counting a line, a mesh edge or a point as two (taken off the count; a
+  /// run of x-ray batches, the overlays' few hundred primitives, is drawn whole when reached). The first slice clears `target`. A slice's GL state is its own and
   /// its polygons stay in `polygons` (the view's own buffers), so other lists may be drawn between
   /// two slices. True when the list is drawn to its end. A software renderer takes seconds for a
   /// million triangles: the page draws such a view across frames.
@@ -106,10 +108,17 @@ class GlBackend {
   /// `polygons`: the next one when `newSlot` (the fill's first slice), else the one it took.
   void uploadPolygons(const draw::Fill& fill, const std::vector<PolygonSegment>& segments, GLsizei vertices,
                       bool newSlot, PolygonBuffers& polygons);
-  void drawMeshEdges(const draw::Lines& lines, const View& view);
+  /// The mesh edges of `lines` from the cursor on, while `triangles` last (two an edge); true when done.
+  bool drawMeshEdges(const draw::Lines& lines, const View& view, Cursor& cursor, size_t& triangles);
   /// One OverlayBatch's worth of lines, points and triangles (a run of consecutive x-ray batches
   /// is drawn as one: all hidden parts first, then all visible ones, as the views expect).
   void drawMarks(const std::vector<const draw::Batch*>& batches, draw::Depth depth, const View& view);
+  /// A batch of lines, points or triangles that is no x-ray, from the cursor's primitive on while
+  /// `triangles` last (at least one primitive); true when done.
+  bool drawMarksSlice(const draw::Batch& batch, draw::Depth depth, const View& view, Cursor& cursor,
+                      size_t& triangles);
+  void drawMarks(const std::vector<const draw::Batch*>& batches, draw::Depth depth, const View& view,
+                 size_t first, size_t end);
   void setFillProgram(const gl::Program& p, const draw::Fill& fill, const ViewCamera& camera, int planes);
   void setClipDistances(int planes);
 

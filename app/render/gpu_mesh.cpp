@@ -53,25 +53,40 @@ GpuMeshChunk makeChunk(const GladGLContext& gl, const Mesh& mesh, size_t first, 
   return chunk;
 }
 
-void uploadEdges(const GladGLContext& gl, const Mesh& mesh, GpuMesh& g) {
+GpuEdgeChunk makeEdgeChunk(const GladGLContext& gl, const Mesh& mesh, const std::vector<Edge>& edges, size_t first,
+                           size_t end) {
   // The end points of each edge side by side: instanced attributes cannot go through an index buffer.
   std::vector<glm::vec3> ends;
-  for (const Edge& e : uniqueEdges(mesh)) ends.insert(ends.end(), {glm::vec3(mesh.positions[e.a]), glm::vec3(mesh.positions[e.b])});
-  g.edges = gl::makeVertexArray(gl);
-  g.edgeEnds = gl::makeBuffer(gl);
-  gl.BindVertexArray(g.edges.id());
-  gl.BindBuffer(GL_ARRAY_BUFFER, g.edgeEnds.id());
+  ends.reserve(2 * (end - first));
+  for (size_t i = first; i < end; ++i)
+    ends.insert(ends.end(), {glm::vec3(mesh.positions[edges[i].a]), glm::vec3(mesh.positions[edges[i].b])});
+  GpuEdgeChunk chunk;
+  chunk.first = GLsizei(first);
+  chunk.count = GLsizei(end - first);
+  chunk.vao = gl::makeVertexArray(gl);
+  chunk.ends = gl::makeBuffer(gl);
+  gl.BindVertexArray(chunk.vao.id());
+  gl.BindBuffer(GL_ARRAY_BUFFER, chunk.ends.id());
   gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(ends.size() * sizeof(glm::vec3)), ends.data(), GL_STATIC_DRAW);
-  for (GLuint end = 0; end < 2; ++end) {
-    gl.EnableVertexAttribArray(2 * end);
-    gl.VertexAttribPointer(2 * end, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), reinterpret_cast<void*>(end * sizeof(glm::vec3)));
-    gl.VertexAttribDivisor(2 * end, 1);
-  }
-  g.edgeCount = GLsizei(ends.size() / 2);
   gl.BindVertexArray(0);
+  pointEdgesAt(gl, chunk, 0);
+  return chunk;
 }
 
 }  // namespace
+
+void pointEdgesAt(const GladGLContext& gl, const GpuEdgeChunk& chunk, GLsizei first) {
+  gl.BindVertexArray(chunk.vao.id());
+  gl.BindBuffer(GL_ARRAY_BUFFER, chunk.ends.id());
+  for (GLuint end = 0; end < 2; ++end) {
+    const size_t offset = (2 * size_t(first) + end) * sizeof(glm::vec3);
+    gl.EnableVertexAttribArray(2 * end);
+    gl.VertexAttribPointer(2 * end, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), reinterpret_cast<void*>(offset));
+    gl.VertexAttribDivisor(2 * end, 1);
+  }
+  gl.BindVertexArray(0);
+  gl.BindBuffer(GL_ARRAY_BUFFER, 0);
+}
 
 GpuMeshCache::Entry& GpuMeshCache::entry(const std::shared_ptr<const Mesh>& mesh) {
   auto it = entries_.find(mesh.get());
@@ -106,13 +121,31 @@ const GpuMesh& GpuMeshCache::get(const std::shared_ptr<const Mesh>& mesh) {
   return *upload(mesh, all);
 }
 
-const GpuMesh& GpuMeshCache::withEdges(const std::shared_ptr<const Mesh>& mesh) {
+const GpuMesh* GpuMeshCache::uploadEdges(const std::shared_ptr<const Mesh>& mesh, size_t& triangles) {
   Entry& e = entry(mesh);
-  if (!e.edges) {
-    uploadEdges(*gl_, *mesh, e.gpu);
-    e.edges = true;
+  GpuMesh& g = e.gpu;
+  if (!e.edgesListed) {
+    e.edges = uniqueEdges(*mesh);
+    e.edgesListed = true;
+    g.edgeCount = GLsizei(e.edges.size());
   }
-  return e.gpu;
+  const size_t all = size_t(g.edgeCount), per = chunkEdges();
+  size_t next = g.edgeChunks.empty() ? 0 : size_t(g.edgeChunks.back().first + g.edgeChunks.back().count);
+  for (bool first = true; next < all; first = false) {
+    const size_t end = std::min(all, next + per);
+    if (!first && 2 * (end - next) > triangles) break;
+    g.edgeChunks.push_back(makeEdgeChunk(*gl_, *mesh, e.edges, next, end));
+    triangles -= std::min(triangles, 2 * (end - next));
+    next = end;
+  }
+  if (next < all) return nullptr;
+  std::vector<Edge>().swap(e.edges);
+  return &g;
+}
+
+const GpuMesh& GpuMeshCache::withEdges(const std::shared_ptr<const Mesh>& mesh) {
+  size_t all = std::numeric_limits<size_t>::max();
+  return *uploadEdges(mesh, all);
 }
 
 void GpuMeshCache::collect() {

@@ -2,7 +2,7 @@
 // triangulated faces with a normal per corner (the mesh's own, or the face normal for flat faces),
 // and the unique edges, one pair of end points each (an instance of shaders/line.vert). The edges
 // are uploaded only when a view first draws them (a shaded view never does): listing a million
-// edges takes a tenth of the first upload of a large mesh.
+// edges takes a tenth of the first upload of a large mesh. They go in chunks as the faces do.
 //
 // The faces go to the GPU in chunks of consecutive faces, each with buffers of its own of at most
 // about chunkCorners() corners: a chunk is made at once with its data, so no frame makes (and
@@ -27,15 +27,24 @@ struct GpuMeshChunk {
   uint32_t firstCorner = 0;
 };
 
+/// Edges [first, first + count) of the mesh's unique edges (uniqueEdges), one instance each.
+struct GpuEdgeChunk {
+  gl::VertexArray vao;  // per instance: location 0, 2: the MC end points (1, 3, the colours, are set constant)
+  gl::Buffer ends;
+  GLsizei first = 0, count = 0;
+};
+/// Points the chunk's instanced attributes at its edge `first` (0: its start). WebGL2 has no base
+/// instance, so a draw of a part of a chunk moves the attributes' offsets instead.
+void pointEdgesAt(const GladGLContext& gl, const GpuEdgeChunk& chunk, GLsizei first);
+
 struct GpuMesh {
   std::vector<GpuMeshChunk> chunks;
   /// Chunk k's triangles are elements [indexStart[k], indexStart[k + 1]) of the mesh's triangle
   /// list (3 per triangle), at 0 in its own index buffer. One more entry than chunks.
   std::vector<GLsizei> indexStart{0};
   GLsizei faceIndexCount() const { return indexStart.back(); }
-  gl::VertexArray edges;     // per instance: location 0, 2: the MC end points (1, 3, the colours, are set constant)
-  gl::Buffer edgeEnds;
-  GLsizei edgeCount = 0;
+  std::vector<GpuEdgeChunk> edgeChunks;  // consecutive, from edge 0 on
+  GLsizei edgeCount = 0;                  // the mesh's unique edges (all chunks' once complete)
 };
 
 class GpuMeshCache {
@@ -49,7 +58,11 @@ class GpuMeshCache {
   /// off: a view drawn in slices (the page) uploads a large mesh across frames. The mesh once it is
   /// complete, else null.
   const GpuMesh* upload(const std::shared_ptr<const Mesh>& mesh, size_t& triangles);
-  /// The same with its edges uploaded too.
+  /// Uploads chunks of `mesh`'s edges (kChunkCorners / 2 edges each, charged two triangles an
+  /// edge) while they fit in `triangles` (at least one): the mesh with all its edges, else null.
+  /// Only the edges: the faces are uploaded by get or upload.
+  const GpuMesh* uploadEdges(const std::shared_ptr<const Mesh>& mesh, size_t& triangles);
+  /// The mesh with all its edges uploaded.
   const GpuMesh& withEdges(const std::shared_ptr<const Mesh>& mesh);
   /// Drops the GPU copies of meshes nobody else holds any more.
   void collect();
@@ -57,12 +70,15 @@ class GpuMeshCache {
   /// Meshes uploaded before keep their chunks.
   void setChunkCorners(uint32_t corners) { chunkCorners_ = std::max<uint32_t>(corners, 3); }
   uint32_t chunkCorners() const { return chunkCorners_; }
+  /// The edges an edge chunk holds: the corners of a face chunk, two per edge.
+  uint32_t chunkEdges() const { return std::max<uint32_t>(chunkCorners_ / 2, 1); }
 
  private:
   struct Entry {
     std::weak_ptr<const Mesh> mesh;
     GpuMesh gpu;
-    bool edges = false;  // gpu.edges uploaded
+    bool edgesListed = false;  // gpu.edgeCount is known
+    std::vector<Edge> edges;   // while its edges are uploaded: all of them (freed when complete)
   };
   Entry& entry(const std::shared_ptr<const Mesh>& mesh);
   const GladGLContext* gl_;

@@ -1,8 +1,9 @@
 // Measures the page opening the bundled large-mesh scene (issue 24 item 3): the time from the link to
 // the scene shown, every frame interval (requestAnimationFrame), when the views' new images are
 // complete (the page's count of views drawn), then the same after a change of the camera (P: the next
-// projection). Not a test: run by hand (node tests/web/measure-large.mjs) with VPLAB_WEB_DIR as for
-// the tests; it prints what the page's console said as well.
+// projection). Not a test: run by hand (node tests/web/measure-large.mjs [more of the link]) with
+// VPLAB_WEB_DIR as for the tests; it prints what the page's console said as well. More of the link,
+// e.g. `camera-style=wire&world-style=wire&npc-style=wire`, measures the scene in other styles.
 import { launchBrowser, openPage, startServer, webDir } from './support.mjs';
 
 const server = await startServer(webDir);
@@ -30,14 +31,14 @@ try {
   const { page } = await openPage(browser, `${server.url}index.html`);
   const said = [];
   page.on('console', (m) => said.push(m.text()));
-  await page.evaluate(() => {
+  await page.evaluate((more) => {
     window.__frames = [];
     let last = performance.now();
     const tick = (t) => { window.__frames.push([last, t - last]); last = t; requestAnimationFrame(tick); };
     requestAnimationFrame(tick);
-    window.location.hash = '#scene=large-mesh';
-  });
-  console.log(`opening #scene=large-mesh: ${await watch(page, 30)}`);
+    window.location.hash = `#scene=large-mesh${more ? `&${more}` : ''}`;
+  }, process.argv[2] ?? '');
+  console.log(`opening #scene=large-mesh${process.argv[2] ? `&${process.argv[2]}` : ''}: ${await watch(page, 30)}`);
   await page.keyboard.press('p');
   console.log(`after P (the next projection): ${await watch(page, 30)}`);
   if (said.length) console.log(`the console said:\n${said.join('\n')}`);

@@ -60,7 +60,7 @@ TEST(ViewSlices, AViewDrawnInSlicesIsTheViewDrawnWholeWithOtherViewsBetween) {
   ViewRenderer& renderer = *test::egl().renderer;
   const Scene scene = cutSphereScene();
   const PipelineRun run = runPipeline(scene, {ClipStrategy::npc, false, true});
-  for (Style style : {Style::shaded, Style::flat, Style::hiddenLine}) {
+  for (Style style : {Style::shaded, Style::flat, Style::wire, Style::hiddenLine}) {
     DisplaySettings settings = displaySettingsFor(scene, style, 400.0 / 300.0);
     orbitBy(settings.world.orbit, 70, -15);
     settings.morphing.t = 2.5;
@@ -79,7 +79,8 @@ TEST(ViewSlices, AViewDrawnInSlicesIsTheViewDrawnWholeWithOtherViewsBetween) {
           size_t triangles = 1000;
           done = renderer.drawSlice(slices, target, triangles);
           // A slice ends when its triangles run out, or before a clipped polygon whose fan does
-          // not fit any more (polygons go whole: a quad cut by six planes has at most 10 corners, 8 triangles).
+          // not fit any more (polygons go whole: a quad cut by six planes has at most 10 corners,
+          // 8 triangles), or a line, point or mesh edge (two).
           if (!done) {
             EXPECT_LT(triangles, 8u) << "a slice stopped before its triangles ran out";
           }
@@ -88,7 +89,8 @@ TEST(ViewSlices, AViewDrawnInSlicesIsTheViewDrawnWholeWithOtherViewsBetween) {
         }
         target.resolve();
         // The camera and world views fill the sphere's 28 800 triangles (meshes), the NPC and morph
-        // views its clipped polygons' 7 000 or so: dozens of slices, or 8.
+        // views its clipped polygons' 7 000 or so: dozens of slices, or 8. The wireframe styles draw
+        // its 14 280 edges or their clipped parts as lines, two triangles each.
         EXPECT_GE(count, 6) << toString(kind) << ": drawn in " << count << " slices";
         EXPECT_EQ(test::differingPixels(whole, target.read()), 0u)
             << toString(kind) << ", " << toString(style) << ", " << samples << " samples, " << count << " slices";
@@ -127,6 +129,38 @@ TEST(ViewSlices, ANewMeshIsUploadedAndPartitionedInSlices) {
   const auto [inside, outside] = renderer.partitionedTriangles(fresh.objects.size() - 1);
   EXPECT_GT(inside + outside, 0u) << "the sphere was drawn whole, not partitioned";
   EXPECT_EQ(test::differingPixels(whole, target.read()), 0u) << count << " slices";
+}
+
+// The camera view's wireframe draws the mesh's edges from the GPU (GpuMesh's edge chunks): a mesh
+// whose edges the renderer has not uploaded gets them a chunk a slice (with chunks of 2048 corners,
+// 1024 edges: the sphere's 14 280 edges in at least 14 slices of 1000 triangles), and they are then
+// drawn 500 a slice, parts of a chunk included: the picture is the one drawn whole from another copy.
+TEST(ViewSlices, ANewMeshsEdgesAreUploadedAndDrawnInSlices) {
+  ViewRenderer& renderer = *test::egl().renderer;
+  const Scene fresh = test::cutSphereScene(), copy = test::cutSphereScene();
+  const PipelineRun freshRun = runPipeline(fresh), copyRun = runPipeline(copy);
+  for (Style style : {Style::wire, Style::hiddenLine}) {
+    const DisplaySettings settings = displaySettingsFor(fresh, style, 400.0 / 300.0);
+    const Image whole = drawWhole(renderer, ViewKind::camera, copy, copyRun, settings, 1);
+    ASSERT_GE(test::distinctColours(whole), 3u);
+    gl::RenderTarget target(renderer.context().gl());
+    target.resize(400, 300, 1);
+    renderer.setMeshChunkCorners(2048);
+    ViewRenderer::Slices slices;
+    renderer.startSlices(ViewKind::camera, fresh, freshRun, settings, {}, target, slices);
+    int count = 0;
+    for (bool done = false; !done; ++count) {
+      size_t triangles = 1000;
+      done = renderer.drawSlice(slices, target, triangles);
+      ASSERT_LT(count, 10000) << "the slices never end";
+    }
+    renderer.setMeshChunkCorners(GpuMeshCache::kChunkCorners);
+    const size_t edges = uniqueEdges(*fresh.objects.back().mesh).size();
+    ASSERT_GT(edges, 10000u);
+    // Uploaded a chunk a slice, then drawn 500 edges a slice (hidden-line: twice, solid and dashed).
+    EXPECT_GE(count, int(edges / 1024 + edges / 500)) << toString(style) << ": " << count << " slices";
+    EXPECT_EQ(test::differingPixels(whole, target.read()), 0u) << toString(style) << ", " << count << " slices";
+  }
 }
 
 // The three views of a page draw their slices in turn: two world views (two observers) whose slices
