@@ -10,8 +10,10 @@
 #include "pipeline/clipping.h"
 
 #include <array>
-#include <set>
+#include <cstdint>
+#include <cstring>
 #include <tuple>
+#include <vector>
 
 namespace vplab {
 
@@ -30,6 +32,51 @@ std::array<double, 6> edgeKey(const Vec3& a, const Vec3& b) {
   const Vec3 &p = swap ? b : a, &q = swap ? a : b;
   return {p.x, p.y, p.z, q.x, q.y, q.z};
 }
+
+// The edges drawn so far, by their end points (edgeKey): a set in flat arrays, open addressing over
+// FNV-1a of the coordinates' bits (−0 as +0: they are equal keys). A tree of a million-edge mesh's
+// keys took two seconds of the view's build, a node-based hash set one.
+class DrawnEdges {
+ public:
+  explicit DrawnEdges(size_t expected) { grow(expected); }
+  /// True when the edge was not drawn before (and is now).
+  bool insert(const std::array<double, 6>& key) {
+    if (2 * (keys_.size() + 1) > slots_.size()) grow(2 * keys_.size());
+    for (size_t i = hash(key) & (slots_.size() - 1);; i = (i + 1) & (slots_.size() - 1)) {
+      if (slots_[i] == 0) {
+        keys_.push_back(key);
+        slots_[i] = uint32_t(keys_.size());
+        return true;
+      }
+      if (keys_[slots_[i] - 1] == key) return false;
+    }
+  }
+
+ private:
+  static uint64_t hash(const std::array<double, 6>& key) {
+    uint64_t h = 1469598103934665603ull;
+    for (double d : key) {
+      const double positive = d + 0.0;
+      uint64_t bits;  // std::bit_cast is not in the page's libc++
+      std::memcpy(&bits, &positive, sizeof bits);
+      h = (h ^ bits) * 1099511628211ull;
+    }
+    return h ^ (h >> 29);
+  }
+  void grow(size_t keys) {  // slots for twice `keys` at least, a power of two; the keys placed again
+    size_t n = 16;
+    while (n < 2 * keys) n *= 2;
+    slots_.assign(n, 0);
+    keys_.reserve(keys);
+    for (uint32_t k = 1; k <= keys_.size(); ++k) {
+      size_t i = hash(keys_[k - 1]) & (n - 1);
+      while (slots_[i] != 0) i = (i + 1) & (n - 1);
+      slots_[i] = k;
+    }
+  }
+  std::vector<std::array<double, 6>> keys_;
+  std::vector<uint32_t> slots_;  // 0: empty, else 1 + the key's index
+};
 
 void addCube(const theme::Palette& pal, Language lang, Marks& b, std::vector<TextLabel>& labels, const ViewCamera& view,
              int w, int h, bool withLabels) {
@@ -75,8 +122,11 @@ void npcView(const ViewInput& in, DisplayList& list) {
   std::vector<PolygonSet> faded = recycled.polygonSets(keepFaded ? run.objects.size() : 0);
   Marks outlines, dashedOutlines, newEdges, fadedOutlines;
   ClipScratch scratch;
-  std::set<std::array<double, 6>> drawnEdges;
   const bool outlined = !isFilled(style) || style == Style::hiddenLine;
+  size_t corners = 0;  // each edge is shared by about two faces
+  if (outlined)
+    for (const ObjectRun& o : run.objects) corners += o.faceCount() * 3;
+  DrawnEdges drawnEdges(corners / 2);
   std::vector<Vec3> poly;  // reused: no allocation per polygon
   for (size_t k = 0; k < run.objects.size(); ++k) {
     const ObjectRun& o = run.objects[k];
@@ -104,7 +154,7 @@ void npcView(const ViewInput& in, DisplayList& list) {
             continue;
           }
           // Two faces share each mesh edge: draw it once, or its dashes would overlap out of phase.
-          if (!outlined || !drawnEdges.insert(edgeKey(a, b)).second) continue;
+          if (!outlined || !drawnEdges.insert(edgeKey(a, b))) continue;
           if (!isFilled(style)) outlines.line(a, b, c, pal.edgeWidthPx);
           if (style == Style::hiddenLine)
             dashedOutlines.line(a, b, glm::vec4(glm::vec3(c), 0.8f), pal.edgeWidthPx, theme::kDashPx);

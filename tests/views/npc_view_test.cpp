@@ -6,6 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <set>
+#include <tuple>
+
 namespace vplab {
 namespace {
 
@@ -68,6 +72,24 @@ TEST(NpcView, HiddenLineOutlinesEachEdgeOnceOverAnOccluder) {
   EXPECT_EQ(hidden.depth, Depth::hiddenOnly);
   EXPECT_EQ(hidden.segments.size(), visible.segments.size());
   EXPECT_GT(visible.segments.size(), 0u);
+  // Each edge of the clipped polygons once (two faces share it; new edges are drawn apart), found
+  // here with a plain ordered set: the view's own set is a hash table of its own making.
+  auto key = [](Vec3 a, Vec3 b) {
+    if (std::tie(b.x, b.y, b.z) < std::tie(a.x, a.y, a.z)) std::swap(a, b);
+    return std::array<double, 6>{a.x, a.y, a.z, b.x, b.y, b.z};
+  };
+  std::set<std::array<double, 6>> expected, drawn;
+  for (const ObjectRun& o : f.run.objects)
+    for (size_t face = 0; face < o.faceCount(); ++face) {
+      const auto refs = o.clippedFace(face);
+      for (size_t i = 0; i < refs.size(); ++i)
+        if (!(f.settings.overlays.newEdges && o.fate[face] == Fate::clipped && o.isNewEdge(face, i)))
+          expected.insert(key(o.clippedNpc(refs[i]), o.clippedNpc(refs[(i + 1) % refs.size()])));
+    }
+  for (size_t i = 0; i + 1 < visible.segments.size(); i += 2)
+    EXPECT_TRUE(drawn.insert(key(visible.segments[i].position, visible.segments[i + 1].position)).second)
+        << "segment " << i / 2 << " drawn twice";
+  EXPECT_EQ(drawn, expected);
 }
 
 // Where a polygon set keeps its polygons: the run's face numbers, or its own points.
