@@ -505,11 +505,6 @@ bool GlBackend::drawMarksSlice(const draw::Batch& b, draw::Depth depth, const Vi
   return end >= count;
 }
 
-void GlBackend::drawMarks(const std::vector<const draw::Batch*>& batches, draw::Depth depth, const View& view) {
-  drawMarks(batches, depth, view, 0, SIZE_MAX);
-}
-
-// Primitives [first, end) of each batch (a slice of one batch, or all of an x-ray run).
 void GlBackend::drawMarks(const std::vector<const draw::Batch*>& batches, draw::Depth depth, const View& view,
                           size_t first, size_t end) {
   OverlayBatch marks;

@@ -17,6 +17,7 @@
 #include "app/views/image.h"
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -110,15 +111,15 @@ class GlBackend {
                       bool newSlot, PolygonBuffers& polygons);
   /// The mesh edges of `lines` from the cursor on, while `triangles` last (two an edge); true when done.
   bool drawMeshEdges(const draw::Lines& lines, const View& view, Cursor& cursor, size_t& triangles);
-  /// One OverlayBatch's worth of lines, points and triangles (a run of consecutive x-ray batches
-  /// is drawn as one: all hidden parts first, then all visible ones, as the views expect).
-  void drawMarks(const std::vector<const draw::Batch*>& batches, draw::Depth depth, const View& view);
+  /// One OverlayBatch's worth of lines, points and triangles, primitives [first, end) of each batch
+  /// (a run of consecutive x-ray batches is drawn as one: all hidden parts first, then all visible
+  /// ones, as the views expect).
+  void drawMarks(const std::vector<const draw::Batch*>& batches, draw::Depth depth, const View& view,
+                 size_t first = 0, size_t end = SIZE_MAX);
   /// A batch of lines, points or triangles that is no x-ray, from the cursor's primitive on while
   /// `triangles` last (at least one primitive); true when done.
   bool drawMarksSlice(const draw::Batch& batch, draw::Depth depth, const View& view, Cursor& cursor,
                       size_t& triangles);
-  void drawMarks(const std::vector<const draw::Batch*>& batches, draw::Depth depth, const View& view,
-                 size_t first, size_t end);
   void setFillProgram(const gl::Program& p, const draw::Fill& fill, const ViewCamera& camera, int planes);
   void setClipDistances(int planes);
 
