@@ -12,7 +12,8 @@ void LessonPlayer::go(size_t step, const LessonState& shown, double now, double 
   step_ = std::min(step, lesson_.steps.size() - 1);
   from_ = shown;
   start_ = now;
-  seconds_ = std::max(0.0, seconds);
+  // From or to a state that has no blend (an invalid camera left in a free step): a cut.
+  seconds_ = blendable(from_, lesson_.steps[step_].state) ? std::max(0.0, seconds) : 0.0;
   settled_ = false;
 }
 

@@ -29,6 +29,8 @@ class LessonPlayer {
   /// The state to show at `now`: between `shown` and the step's, eased in and out; the step's own
   /// once the move is over.
   LessonState stateAt(double now) const;
+  /// Ends a move at once: the step's own state from now on (an error arose on the way).
+  void cut() { seconds_ = 0; }
   /// Whether the move is still under way at `now` (the viewer draws frames until it is over).
   bool moving(double now) const { return now < start_ + seconds_; }
   /// Whether the step's state has been applied once the move ended (the viewer records it once).

@@ -1,5 +1,8 @@
 #include "app/core/lesson_transition.h"
 
+#include "pipeline/error.h"
+#include "pipeline/modeling.h"
+
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
@@ -94,9 +97,30 @@ bool sameSceneObjects(const Scene& a, const Scene& b) {
   return true;
 }
 
+namespace {
+
+/// A valid camera and valid transforms: the numbers a blend starts or ends at (meshes play no part).
+bool hasValidGeometry(const Scene& s) {
+  if (cameraError(s.camera)) return false;
+  for (const SceneObject& o : s.objects) {
+    try {
+      wcFromMc(o.transform);
+    } catch (const Error&) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+bool blendable(const LessonState& a, const LessonState& b) {
+  return sameSceneObjects(a.scene, b.scene) && hasValidGeometry(a.scene) && hasValidGeometry(b.scene);
+}
+
 LessonState stateBetween(const LessonState& a, const LessonState& b, double t) {
   if (t <= 0) return a;
-  if (t >= 1 || !sameSceneObjects(a.scene, b.scene)) return b;
+  if (t >= 1 || !blendable(a, b)) return b;
   LessonState s = t < 0.5 ? a : b;
   s.scene.camera = cameraBetween(a.scene.camera, b.scene.camera, t);
   for (size_t i = 0; i < s.scene.objects.size(); ++i)

@@ -26,10 +26,16 @@ Orbit orbitBetween(const Orbit& a, const Orbit& b, double t);
 /// and meshes, in the same order). Another scene is shown at once.
 bool sameSceneObjects(const Scene& a, const Scene& b);
 
+/// Whether a move from `a` to `b` can be shown as a blend: the same scene objects (sameSceneObjects)
+/// and valid numbers at both ends (a valid camera, valid transforms). A class may leave
+/// an invalid camera in a free step (VUP typed parallel to N); a blend from it has no valid first
+/// half, so the move to the next step is a cut (issue 37: no lesson move may end the lecture).
+bool blendable(const LessonState& a, const LessonState& b);
+
 /// The state at `t` between two steps' states: the camera, the objects' transforms, the user clip
 /// planes, the observers and the morph's t blended; what has no between (styles, overlays, the
 /// strategy, visibility, the tab and the step's marks) is `a`'s until halfway, then `b`'s. With
-/// scenes that cannot be blended (sameSceneObjects), `b` at any t > 0. t = 0 is `a` and t = 1 is
+/// states that cannot be blended (blendable), `b` at any t > 0. t = 0 is `a` and t = 1 is
 /// `b`, exactly.
 LessonState stateBetween(const LessonState& a, const LessonState& b, double t);
 

@@ -2,6 +2,10 @@
 // camera on the way is valid, for random cameras and for every transition of the bundled lessons.
 #include "app/core/lesson_transition.h"
 
+#include "app/core/lesson_player.h"
+#include "pipeline/error.h"
+#include "pipeline/modeling.h"
+
 #include "app/core/assets.h"
 
 #include <gtest/gtest.h>
@@ -137,6 +141,43 @@ TEST(LessonTransition, EveryTransitionOfTheBundledLessonsShowsOnlyValidScenes) {
     }
   }
   EXPECT_GT(transitions, 40u);
+}
+
+// Issue 37: in lesson 02's free step the class types PRP = (0, 8, 0), VUP (0, 1, 0) parallel to N,
+// then presses ←. The move from that invalid camera has no valid first half (there is no U, V, N to
+// turn from): it is a cut to the step's own state, at once, and no state on the way throws.
+TEST(LessonTransition, AMoveFromOrToAnInvalidCameraIsACut) {
+  LessonState valid;
+  valid.scene.objects.push_back({});
+  valid.scene.camera.vrp = {0, 0, 0};
+  valid.scene.camera.prp = {0, 2, 8};
+  valid.scene.camera.vup = {0, 1, 0};
+  LessonState invalid = valid;
+  invalid.scene.camera.prp = {0, 8, 0};  // N along VUP
+  ASSERT_TRUE(cameraError(invalid.scene.camera));
+  EXPECT_TRUE(blendable(valid, valid));
+  EXPECT_FALSE(blendable(invalid, valid));
+  EXPECT_FALSE(blendable(valid, invalid));
+  for (double t : {0.01, 0.5, 0.99}) {
+    EXPECT_EQ(stateBetween(invalid, valid, t).scene.camera, valid.scene.camera) << "t = " << t;
+    EXPECT_EQ(stateBetween(valid, invalid, t).scene.camera, invalid.scene.camera) << "t = " << t;
+  }
+  // An invalid transform (a scale of 0) has no blend either.
+  LessonState flat = valid;
+  flat.scene.objects[0].transform.scale = {0, 1, 1};
+  ASSERT_THROW(wcFromMc(flat.scene.objects[0].transform), Error);
+  EXPECT_FALSE(blendable(flat, valid));
+
+  Lesson lesson;
+  lesson.steps.resize(2);
+  lesson.steps[0].state = valid;
+  lesson.steps[1].state = valid;
+  LessonPlayer player(lesson, 1);
+  player.go(0, invalid, /*now=*/10, /*seconds=*/0.8);
+  EXPECT_FALSE(player.moving(10)) << "a move from an invalid camera must be a cut";
+  EXPECT_EQ(player.stateAt(10).scene.camera, valid.scene.camera);
+  player.go(1, valid, 20, 0.8);
+  EXPECT_TRUE(player.moving(20.1)) << "between valid steps the move is still a blend";
 }
 
 }  // namespace
