@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
@@ -54,6 +55,53 @@ std::string readText(const std::filesystem::path& file) {
   return text.str();
 }
 
+/// A camera's numbers as they are, valid or not (a scene file's reader would refuse an invalid one).
+nlohmann::ordered_json cameraNumbers(const Camera& c) {
+  auto vec = [](const Vec3& v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); };
+  return {{"vrp", vec(c.vrp)},
+          {"prp", vec(c.prp)},
+          {"vup", vec(c.vup)},
+          {"window", {c.window.xmin, c.window.xmax, c.window.ymin, c.window.ymax}},
+          {"front", c.front},
+          {"back", c.back},
+          {"projection", std::string(toString(c.projection))},
+          {"oblique", {c.oblique.d, c.oblique.phiDeg}}};
+}
+
+/// cameraNumbers read back; nothing for anything else (each number finite: a field never holds NaN).
+std::optional<Camera> cameraFromNumbers(const nlohmann::json& j) {
+  try {
+    auto number = [](const nlohmann::json& v) {
+      const double d = v.get<double>();
+      if (!std::isfinite(d)) throw std::range_error("not finite");
+      return d;
+    };
+    auto vec = [&](const nlohmann::json& v) {
+      if (v.size() != 3) throw std::range_error("not 3 numbers");
+      return Vec3(number(v[0]), number(v[1]), number(v[2]));
+    };
+    Camera c;
+    c.vrp = vec(j.at("vrp"));
+    c.prp = vec(j.at("prp"));
+    c.vup = vec(j.at("vup"));
+    const auto& w = j.at("window");
+    if (w.size() != 4) return std::nullopt;
+    c.window = {number(w[0]), number(w[1]), number(w[2]), number(w[3])};
+    c.front = number(j.at("front"));
+    c.back = number(j.at("back"));
+    const std::string projection = j.at("projection").get<std::string>();
+    const auto p = std::find_if(kAllProjections.begin(), kAllProjections.end(), [&](Projection x) { return toString(x) == projection; });
+    if (p == kAllProjections.end()) return std::nullopt;
+    c.projection = *p;
+    const auto& o = j.at("oblique");
+    if (o.size() != 2) return std::nullopt;
+    c.oblique = {number(o[0]), number(o[1])};
+    return c;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
 std::filesystem::path Autosave::defaultDirectory() {
@@ -69,7 +117,7 @@ Autosave::Autosave(std::filesystem::path directory, double delaySeconds)
   if (!directory_.empty()) file_ = directory_ / ("recovery-" + std::to_string(::getpid()) + ".json");
 }
 
-void Autosave::update(const Document& doc, double now) {
+void Autosave::update(const Document& doc, double now, const RecoveryView& view) {
   if (file_.empty()) return;
   if (!doc.dirty()) {
     if (savedRevision_ != 0) removeFile();
@@ -77,25 +125,25 @@ void Autosave::update(const Document& doc, double now) {
     seenRevision_ = doc.revision();
     return;
   }
-  if (doc.revision() != seenRevision_) {  // a new change: wait until it is `delay` old
+  if (doc.revision() != seenRevision_ || (view != writtenView_ && !pending_)) {  // a change: wait until it is `delay` old
     seenRevision_ = doc.revision();
     changedAt_ = now;
-    pending_ = seenRevision_ != savedRevision_;
+    pending_ = seenRevision_ != savedRevision_ || view != writtenView_;
   }
-  if (pending_ && now - changedAt_ >= delay_) write(doc);
+  if (pending_ && now - changedAt_ >= delay_) write(doc, view);
 }
 
 double Autosave::dueIn(double now) const {
   return pending_ ? std::max(0.0, changedAt_ + delay_ - now) : kNever;
 }
 
-bool Autosave::writeNow(const Document& doc) {
+bool Autosave::writeNow(const Document& doc, const RecoveryView& view) {
   if (file_.empty()) return false;
-  if (doc.dirty() && (pending_ || savedRevision_ != doc.revision())) write(doc);
+  if (doc.dirty() && (pending_ || savedRevision_ != doc.revision() || view != writtenView_)) write(doc, view);
   return doc.dirty() && savedRevision_ == doc.revision();
 }
 
-void Autosave::write(const Document& doc) {
+void Autosave::write(const Document& doc, const RecoveryView& view) {
   pending_ = false;
   try {
     std::error_code ec;
@@ -104,9 +152,14 @@ void Autosave::write(const Document& doc) {
     nlohmann::ordered_json j;
     j["scene_path"] = doc.path().empty() ? std::string() : std::filesystem::absolute(doc.path()).string();
     j["saved_at"] = localTime();
-    j["scene"] = nlohmann::ordered_json::parse(sceneToJson(doc.scene()));
+    // The scene the views showed: a scene file holds only valid cameras; the typed one beside it.
+    j["scene"] = nlohmann::ordered_json::parse(sceneToJson(doc.shown()));
+    if (!view.lesson.empty()) j["lesson"] = {{"file", std::filesystem::absolute(view.lesson).string()}, {"step", view.step}};
+    if (!view.views.empty()) j["views"] = view.views;
+    if (doc.scene().camera != doc.shown().camera) j["edited_camera"] = cameraNumbers(doc.scene().camera);
     writeFileAtomically(file_, j.dump(2) + "\n");
     savedRevision_ = doc.revision();
+    writtenView_ = view;
     error_.clear();
   } catch (const std::exception& e) {
     error_ = std::string("autosave failed: ") + e.what();
@@ -154,6 +207,22 @@ std::optional<Recovery> Autosave::find(const std::filesystem::path& directory) {
   std::vector<Recovery> all = findAll(directory);
   if (all.empty()) return std::nullopt;
   return std::move(all.front());
+}
+
+RecoveryView Autosave::loadView(const Recovery& recovery) {
+  RecoveryView view;
+  try {
+    const auto j = nlohmann::json::parse(readText(recovery.file));
+    if (j.contains("lesson") && j["lesson"].is_object()) {
+      view.lesson = j["lesson"].at("file").get<std::string>();
+      view.step = j["lesson"].at("step").get<size_t>();
+    }
+    if (j.contains("views") && j["views"].is_string()) view.views = j["views"].get<std::string>();
+    if (j.contains("edited_camera")) view.editedCamera = cameraFromNumbers(j["edited_camera"]);
+  } catch (const std::exception&) {
+    // What can be read of it was read; the scene is load()'s.
+  }
+  return view;
 }
 
 Scene Autosave::load(const Recovery& recovery) {

@@ -6,8 +6,11 @@
 // left by a crash or a signal, and the next start offers to recover it.
 //
 // The file: {"scene_path": the scene's own file or "" for the built-in one, "saved_at": local
-// time, "scene": the scene in the scene format (io/scene_io.h)}. Mesh files are resolved
-// relative to scene_path's directory, as when the scene itself is opened.
+// time, "scene": the scene the views showed in the scene format (io/scene_io.h), and what else was
+// on screen (RecoveryView): "lesson" {"file", "step"}, "views" (the views' settings as a link's
+// fragment, app/core/url_state.h) and "edited_camera" (the camera as typed while it was invalid,
+// its numbers as they were)}. Mesh files are resolved relative to scene_path's directory, as when
+// the scene itself is opened.
 #pragma once
 
 #include <filesystem>
@@ -18,6 +21,17 @@
 #include "app/core/document.h"
 
 namespace vplab {
+
+/// What was on screen besides the scene, so that recovery shows exactly that again (issue 37).
+struct RecoveryView {
+  std::filesystem::path lesson;  // the lesson presented (empty: none)
+  size_t step = 0;               // its step, from 0
+  std::string views;             // the views' styles, observers and the strategy, as a link's fragment
+  /// Read back only (the writer takes it from the document): the camera in the fields when it
+  /// differs from the scene's (an invalid one typed; the views kept the last valid camera).
+  std::optional<Camera> editedCamera;
+  bool operator==(const RecoveryView&) const = default;
+};
 
 /// A recovery file left by an earlier session.
 struct Recovery {
@@ -36,13 +50,14 @@ class Autosave {
 
   /// Call after every frame with the time in seconds (any monotonic clock): writes the scene when a
   /// change is `delay` old; removes the file when the document is clean (saved or replaced).
-  void update(const Document& doc, double now);
+  /// `view`: what else is on screen, written with the scene.
+  void update(const Document& doc, double now, const RecoveryView& view = {});
   /// Seconds until update() has work to do (the viewer's event wait wakes by then); a large number
   /// when nothing is pending.
   double dueIn(double now) const;
   /// Writes the scene now if it has unsaved changes (asked to end by a signal). Returns whether a
   /// recovery file exists afterwards.
-  bool writeNow(const Document& doc);
+  bool writeNow(const Document& doc, const RecoveryView& view = {});
   /// The session ends normally: its recovery file goes.
   void removeFile();
 
@@ -60,11 +75,14 @@ class Autosave {
   static std::optional<Recovery> read(const std::filesystem::path& file);
   /// Reads a recovery file's scene. Throws vplab::Error naming the file.
   static Scene load(const Recovery& recovery);
+  /// Reads what else was on screen; what a file does not have (an older one) or cannot be read as
+  /// such stays empty: the scene is what matters.
+  static RecoveryView loadView(const Recovery& recovery);
   /// Removes a recovery file (recovered or declined).
   static void discard(const Recovery& recovery);
 
  private:
-  void write(const Document& doc);
+  void write(const Document& doc, const RecoveryView& view);
 
   std::filesystem::path directory_, file_;
   double delay_;
@@ -73,6 +91,7 @@ class Autosave {
   double changedAt_ = 0;        // when seenRevision_ was first seen
   bool pending_ = false;        // a dirty revision not yet written
   std::string error_;
+  RecoveryView writtenView_;    // the view in the file
 };
 
 }  // namespace vplab

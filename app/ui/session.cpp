@@ -10,6 +10,7 @@
 
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include <imgui.h>
+#include <imgui_internal.h>  // GetTopMostPopupModal
 
 #include <algorithm>
 #include <cctype>
@@ -78,7 +79,7 @@ bool Session::beginFrame() {
 
 void Session::endFrame(double now) {
   if (!autosave_) return;
-  autosave_->update(state_.doc, now);
+  autosave_->update(state_.doc, now, recoveryView());
   if (autosave_->error() != autosaveError_) {  // say it once, not every frame
     autosaveError_ = autosave_->error();
     if (!autosaveError_.empty()) setStatus(autosaveError_, true);
@@ -100,6 +101,10 @@ std::optional<double> Session::wakeIn(double now) const {
 }
 
 // ---------------------------------------------------------------- 3 dialogs
+
+bool Session::dialogOpen() const {
+  return askRecovery_ || askDiscard_ || ImGui::GetTopMostPopupModal() != nullptr;
+}
 
 void Session::quitDialog() {
   if (state_.quitRequested && !state_.doc.dirty()) state_.quitConfirmed = true;
@@ -424,7 +429,7 @@ void Session::enableAutosave(const std::filesystem::path& directory, double dela
 }
 
 std::filesystem::path Session::writeRecoveryNow() {
-  if (!autosave_ || !autosave_->writeNow(state_.doc)) return {};
+  if (!autosave_ || !autosave_->writeNow(state_.doc, recoveryView())) return {};
   return autosave_->file();
 }
 
@@ -447,12 +452,61 @@ std::string sceneName(const ViewerState& s, const Recovery& r) {
 }  // namespace
 
 /// The i-th kept scene becomes this session's document; the others stay kept for the next start.
+RecoveryView Session::recoveryView() const {
+  RecoveryView v;
+  if (state_.lesson) {
+    v.lesson = state_.lesson->lesson().file;
+    v.step = state_.lesson->step();
+  }
+  UrlState views;
+  views.cameraStyle = state_.display.camera.style;
+  views.worldStyle = state_.display.world.style;
+  views.npcStyle = state_.display.npc.style;
+  views.worldOrbit = state_.display.world.orbit;
+  views.npcOrbit = state_.display.npc.orbit;
+  views.strategy = state_.pipeline.strategy;
+  v.views = encodeUrlState(views);
+  return v;
+}
+
+void Session::showRecoveredView(const RecoveryView& v) {
+  // The lesson at its step, as it was left: settled (its step's state is not applied again over
+  // the recovered scene). A lesson that cannot be read any more leaves the scene alone.
+  if (!v.lesson.empty()) {
+    try {
+      Lesson lesson = loadLesson(v.lesson, lessonContext());
+      const size_t step = std::min(v.step, lesson.steps.size() - 1);
+      state_.lesson.emplace(std::move(lesson), step);
+      state_.lesson->markSettled();
+    } catch (const Error& e) {
+      setStatus(e.what(), true);
+    }
+  }
+  try {
+    const UrlState u = decodeUrlState(v.views);
+    if (u.cameraStyle) state_.display.camera.style = *u.cameraStyle;
+    if (u.worldStyle) state_.display.world.style = *u.worldStyle;
+    if (u.npcStyle) state_.display.npc.style = *u.npcStyle;
+    if (u.worldOrbit) state_.display.world.orbit = *u.worldOrbit;
+    if (u.npcOrbit) state_.display.npc.orbit = *u.npcOrbit;
+    if (u.strategy) state_.pipeline.strategy = *u.strategy;
+  } catch (const Error&) {
+    // the views of a fresh start
+  }
+  // The camera in the fields as it was typed; the views keep the scene's, the last valid one.
+  if (v.editedCamera) {
+    state_.doc.scene().camera = *v.editedCamera;
+    state_.doc.endFrame(false);
+  }
+}
+
 void Session::recover(size_t i) {
   const Recovery r = recoveries_[i];
   try {
     startDocument(Autosave::load(r), /*dirty=*/true);
+    showRecoveredView(Autosave::loadView(r));
     Autosave::discard(r);  // this session's autosave keeps them from now on
-    if (autosave_) autosave_->writeNow(state_.doc);
+    if (autosave_) autosave_->writeNow(state_.doc, recoveryView());
     const size_t others = recoveries_.size() - 1;
     const std::string name = sceneName(state_, r), count = std::to_string(others);
     if (others == 0) setStatus(ui::tr(state_, "recovered the unsaved changes of {1}", {name}), false);

@@ -63,6 +63,9 @@ class Session {
   void endFrame(double now);
   /// The loading bar, the recovery, quit and discard dialogs and the file chooser, at UI scale `scale`.
   void drawDialogs(float scale);
+  /// Whether a modal dialog is open or about to open (recovery, unsaved changes, the file chooser):
+  /// it takes the keys, and nothing behind it moves (no lesson step, no shortcut).
+  bool dialogOpen() const;
   /// Seconds until the session needs a frame: 0 while a file loads or a dialog is about to open, the
   /// next autosave, else nothing.
   std::optional<double> wakeIn(double now) const;
@@ -124,6 +127,10 @@ class Session {
   void loadingWindow(float scale);
   void recoveryDialog();
   void recover(size_t i);
+  /// What else is on screen, for the recovery file: the lesson and its step, the views' settings.
+  RecoveryView recoveryView() const;
+  /// A recovered document shows what was on screen: the lesson at its step, the views, the typed camera.
+  void showRecoveredView(const RecoveryView& view);
   void quitDialog();
   void discardDialog();
 

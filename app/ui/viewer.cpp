@@ -162,6 +162,40 @@ double Viewer::wakeIn() const {
 
 void Viewer::frame(GLuint framebuffer, int width, int height) {
   ImGui::SetCurrentContext(imgui_);
+  try {
+    drawFrame(framebuffer, width, height);
+    lastGood_ = LastGood{s_.doc.shown(), s_.display, s_.pipeline};
+    caught_.inARow = 0;
+  } catch (const std::exception& e) {
+    recoverFrom(e.what());
+  }
+}
+
+void Viewer::recoverFrom(const std::string& what) {
+  ++caught_.count;
+  ++caught_.inARow;
+  caught_.last = what;
+  // Close whatever the frame left open (windows, IDs, style), then the frame itself.
+  ImGui::ErrorCheckEndFrameRecover(nullptr);
+  if (ImGuiContext* g = ImGui::GetCurrentContext(); g->FrameCountEnded != g->FrameCount) ImGui::EndFrame();
+  images_.endFrame();
+  ctx_.discardErrors();
+  // The lesson's move ends where it was going (a step's own state is valid: the lesson was checked
+  // when read); anything else goes back to the state the last good frame was drawn from.
+  if (s_.lesson) s_.lesson->cut();
+  if (lastGood_) {
+    if (s_.doc.scene() != lastGood_->scene) s_.doc.scene() = lastGood_->scene;
+    s_.display = lastGood_->display;
+    s_.pipeline = lastGood_->pipeline;
+  }
+  s_.drag = {};
+  s_.doc.endFrame(false);
+  setStatus(ui::tr(s_, "an error was stopped, the last working state is shown: {1}", {what}), true);
+  // A frame to show it; a frame that fails again and again does not spin.
+  if (caught_.inARow == 1) requestFrames(2);
+}
+
+void Viewer::drawFrame(GLuint framebuffer, int width, int height) {
   // The font atlas is locked during a frame: the scale (and with it the style) changes before one.
   if (s_.uiScale != uiScale_ || s_.display.theme != styledTheme_) applyUiScale(s_.uiScale);
   if (settleFrames_ > 0) --settleFrames_;
@@ -177,7 +211,9 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
     if (s_.display.morphing.t >= 4) s_.morphPlaying = false;
   }
   const double now = ImGui::GetTime();
-  ui::lessonKeys(s_, now);
+  // A modal dialog (recovery, unsaved changes, the file chooser) takes the keys: nothing behind it moves.
+  const bool modal = session_.dialogOpen();
+  if (!modal) ui::lessonKeys(s_, now);
   ui::lessonFrame(s_, now);
   // A lesson's caption box takes the bottom of the layout (not in lecture mode: there it lies over the view).
   const float captionHeight = s_.lectureMode ? 0 : ui::lessonCaptionHeight(s_, ImGui::GetIO().DisplaySize.x);
@@ -188,7 +224,7 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   panes_.beginFrame(uiScale_, relayout_);
   menus_.beginFrame(uiScale_);
 
-  menus_.shortcuts();
+  if (!modal) menus_.shortcuts();
   if (s_.lectureMode) {
     s_.doc.endFrame(true);
     updateRun();
@@ -219,7 +255,11 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   session_.drawDialogs(uiScale_);
   relayout_ = false;
   images_.endFrame();
-  if (const auto error = images_.takeError()) setStatus(*error, true);
+  if (const auto error = images_.takeError()) {  // a view's image failed on the render thread: said, counted
+    setStatus(*error, true);
+    ++caught_.count;
+    caught_.last = *error;
+  }
   ImGui::Render();
 
   // Going straight from one field into the next keeps some item active in every frame: the change

@@ -38,8 +38,15 @@ class Viewer {
   Viewer& operator=(const Viewer&) = delete;
 
   /// Builds and draws one frame into `framebuffer` (0: the window) of width × height pixels. The
-  /// platform has fed ImGui its input, display size and time step before.
+  /// platform has fed ImGui its input, display size and time step before. Never throws: an error
+  /// that arises in a frame (a lesson move, a view, the GL driver) is caught, the ImGui frame is
+  /// closed, the last state a frame was drawn from is shown again, and the status line says why
+  /// (issue 37: no input ends the window).
   void frame(GLuint framebuffer, int width, int height);
+  /// How many errors frame() caught (a frame's exception, a GL error, a view's image that failed on
+  /// the render thread), and the last one's message: none is expected, so the monkey test fails on any.
+  unsigned caughtErrors() const { return caught_.count; }
+  const std::string& lastCaughtError() const { return caught_.last; }
 
   /// The document's file, autosave, recovery and links (app/ui/session.h).
   Session& session() { return session_; }
@@ -111,6 +118,9 @@ class Viewer {
   std::vector<ViewKind> viewsNotReady() const;
 
  private:
+  void drawFrame(GLuint framebuffer, int width, int height);
+  /// After a frame ended in `what`: ImGui's frame closed, the last good state back, the reason said.
+  void recoverFrom(const std::string& what);
   void controlsWindow();
   void inspectWindow();
   void compactSwitcher();
@@ -134,6 +144,18 @@ class Viewer {
   bool relayout_ = true;
   unsigned lastActive_ = 0;  // the ImGui item active in the previous frame
   int settleFrames_ = 2;     // frames still to draw without input (wakeIn)
+  // The state the last frame that ended well was drawn from: what recoverFrom shows again.
+  struct LastGood {
+    Scene scene;
+    DisplaySettings display;
+    PipelineOptions pipeline;
+  };
+  std::optional<LastGood> lastGood_;
+  struct Caught {
+    unsigned count = 0;
+    unsigned inARow = 0;
+    std::string last;
+  } caught_;
 };
 
 }  // namespace vplab

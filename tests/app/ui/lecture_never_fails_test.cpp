@@ -1,0 +1,175 @@
+// The lecture never fails (issue 37 item 1): no input ends the window. The lecturer's reproduction
+// (lesson 02's free step, PRP typed onto VUP's line, ←) moves the lesson; an error that arises in a
+// frame is caught, the last good state shown and the reason said; a modal dialog takes the keys;
+// recovery restores exactly what was on screen, the lesson and its step and the typed camera
+// included. The real window under a random user: tests/app/window/monkey_test.cpp.
+#include "app/core/autosave.h"
+#include "app/ui/headless_viewer.h"
+#include "app/ui/keys.h"
+#include "tests/support/files.h"
+#include "tests/support/gl_test_support.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+
+namespace vplab {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+fs::path lessonFile(const char* name) { return fs::path(VPLAB_ASSETS) / "lessons" / name; }
+
+/// A viewer presenting lesson 02 in German at `step` (from 0), settled.
+struct Presenting {
+  HeadlessViewer v{*test::egl().context, defaultScene(), 1280, 720, 1.6f};
+  explicit Presenting(size_t step) {
+    v.state().display.language = Language::de;
+    v.frames(2);
+    v.viewer().session().openLesson(lessonFile("02-view-orientation.de.json"), step);
+    v.frames(3);
+  }
+  ViewerState& s() { return v.state(); }
+  const LessonState& step(size_t i) { return s().lesson->lesson().steps[i].state; }
+  void settle() { v.frames(int(s().lessonSeconds * 60) + 3); }
+};
+
+void expectFinite(const Camera& c) {
+  for (const Vec3& v : {c.vrp, c.prp, c.vup})
+    EXPECT_TRUE(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
+}
+
+// The issue's reproduction: step 9 (a free step) asks for PRP = (0, 8, 0), which puts N on VUP's
+// line; ← then moved from that invalid camera into step 8 and the window ended. Now the move is a
+// cut into step 8, with nothing caught.
+TEST(LectureNeverFails, AnInvalidCameraInAFreeStepThenBackIsACutIntoTheStep) {
+  Presenting p(8);
+  ASSERT_EQ(p.s().lesson->step(), 8u);
+  ASSERT_TRUE(p.s().lesson->current().free) << "lesson 02's step 9 is the free step the issue names";
+  p.s().doc.scene().camera.prp = {0, 8, 0};
+  p.s().doc.scene().camera.vrp = {0, 0, 0};
+  p.v.frames(2);
+  ASSERT_THAT(p.s().doc.error(), HasSubstr("VUP")) << "PRP (0, 8, 0) makes N parallel to VUP";
+  p.v.key(keys::kLeft);
+  p.settle();
+  EXPECT_EQ(p.v.viewer().caughtErrors(), 0u) << p.v.viewer().lastCaughtError();
+  EXPECT_EQ(p.s().lesson->step(), 7u);
+  EXPECT_EQ(p.s().doc.scene().camera, p.step(7).scene.camera);
+  EXPECT_TRUE(p.s().doc.error().empty()) << p.s().doc.error();
+  expectFinite(p.s().run().camera);
+  // And forward again, into the free step, then on past it: every move still works.
+  p.v.key(keys::kRight);
+  p.settle();
+  p.v.key(keys::kRight);
+  p.settle();
+  EXPECT_EQ(p.v.viewer().caughtErrors(), 0u) << p.v.viewer().lastCaughtError();
+  EXPECT_EQ(p.s().lesson->step(), std::min<size_t>(9, p.s().lesson->stepCount() - 1));
+}
+
+// An error in the middle of a frame (here: a step number that is no number, put where only digits
+// can come from the keys) is caught: the frame is closed, the status line says why in the UI's
+// language, and the next frames draw as before.
+TEST(LectureNeverFails, AnErrorInAFrameIsCaughtSaidAndTheNextFramesDraw) {
+  Presenting p(2);
+  const size_t step = p.s().lesson->step();
+  p.s().lessonTyped = "x";  // std::stoul throws on Enter
+  p.v.key(keys::kEnter);
+  EXPECT_EQ(p.v.viewer().caughtErrors(), 1u);
+  EXPECT_TRUE(p.s().statusIsError);
+  EXPECT_THAT(p.s().status, HasSubstr("ein Fehler wurde abgefangen")) << p.s().status;
+  p.s().lessonTyped.clear();
+  p.v.frames(3);
+  EXPECT_EQ(p.v.viewer().caughtErrors(), 1u) << "the frames after it draw without error";
+  EXPECT_EQ(p.s().lesson->step(), step);
+  p.v.key(keys::kRight);
+  p.settle();
+  EXPECT_EQ(p.s().lesson->step(), step + 1) << "the lesson still moves";
+  const Image image = p.v.image();
+  EXPECT_GT(test::distinctColours(image), 200u) << "the window still shows the viewer";
+}
+
+// A GL error raised in a frame (the driver refusing a call) is caught the same way.
+TEST(LectureNeverFails, AGlErrorInAFrameIsCaughtAndSaid) {
+  HeadlessViewer v{*test::egl().context, defaultScene(), 1280, 720};
+  v.frames(2);
+  test::egl().context->gl().Enable(0xFFFF);  // GL_INVALID_ENUM, found when the frame checks
+  v.frame();
+  EXPECT_EQ(v.viewer().caughtErrors(), 1u);
+  EXPECT_THAT(v.viewer().lastCaughtError(), HasSubstr("GL_INVALID_ENUM"));
+  EXPECT_THAT(v.state().status, HasSubstr("GL_INVALID_ENUM"));
+  v.frames(2);
+  EXPECT_EQ(v.viewer().caughtErrors(), 1u);
+}
+
+// The recovery dialog is modal: keys pressed behind it (a clicker's → and Page Down) move nothing.
+TEST(LectureNeverFails, AModalDialogTakesTheKeys) {
+  test::TempDir dir;
+  Presenting p(3);
+  // Any recovery file will do: the dialog is what matters.
+  Document doc(defaultScene());
+  doc.scene().camera.front = 0.75;
+  doc.endFrame(false);
+  Autosave a(dir.path, 0);
+  ASSERT_TRUE(a.writeNow(doc));
+  const std::optional<Recovery> r = Autosave::read(a.file());
+  ASSERT_TRUE(r);
+  p.v.viewer().session().offerRecovery(*r);
+  p.v.frames(2);
+  ASSERT_TRUE(p.v.viewer().session().dialogOpen());
+  for (int key : {keys::kRight, keys::kPageDown, keys::kSpace, keys::kEnd, keys::kP}) p.v.key(key);
+  p.settle();
+  EXPECT_EQ(p.s().lesson->step(), 3u) << "a key behind the dialog moved the lesson";
+  EXPECT_EQ(p.s().doc.scene().camera.projection, p.step(3).scene.camera.projection) << "P behind the dialog changed the projection";
+}
+
+// What was on screen comes back: the lesson at its step, the views' styles and the camera as typed
+// (invalid: the views show the last valid one, the fields the typed one).
+TEST(LectureNeverFails, RecoveryRestoresTheLessonItsStepAndTheTypedCamera) {
+  test::TempDir dir;
+  fs::path kept;
+  Camera typed, shown;
+  {
+    Presenting p(8);
+    p.v.viewer().session().enableAutosave(dir.path / "state", 3);
+    p.s().display.npc.style = Style::wire;
+    p.s().doc.scene().camera.prp = {0, 8, 0};
+    p.v.frames(2);
+    ASSERT_FALSE(p.s().doc.error().empty());
+    typed = p.s().doc.scene().camera;
+    shown = p.s().doc.shown().camera;
+    kept = p.v.viewer().session().writeRecoveryNow();
+    ASSERT_FALSE(kept.empty()) << "an invalid camera typed is an unsaved change";
+    const nlohmann::json j = nlohmann::json::parse(test::readFile(kept));
+    EXPECT_EQ(j["lesson"]["step"], 8);
+    EXPECT_EQ(j["edited_camera"]["prp"], nlohmann::json::array({0, 8, 0}));
+  }
+  // Another session finds it (read by its name: this process is still running).
+  const fs::path copy = dir.path / "recovery-copy.json";
+  fs::copy_file(kept, copy);
+  const std::optional<Recovery> r = Autosave::read(copy);
+  ASSERT_TRUE(r);
+  HeadlessViewer v{*test::egl().context, defaultScene(), 1280, 720};
+  v.frames(2);
+  v.viewer().session().offerRecovery(*r);
+  v.frames(3);
+  const auto [x, y] = v.centreOf("recovery.recover");
+  v.click(x, y);
+  v.frames(3);
+  ASSERT_TRUE(v.state().lesson) << v.state().status;
+  EXPECT_EQ(v.state().lesson->step(), 8u);
+  EXPECT_EQ(v.state().lesson->lesson().file.filename(), "02-view-orientation.de.json");
+  EXPECT_EQ(v.state().doc.scene().camera, typed) << "the fields show the camera as typed";
+  EXPECT_EQ(v.state().doc.shown().camera, shown) << "the views the last valid one";
+  EXPECT_EQ(v.state().display.npc.style, Style::wire);
+  EXPECT_TRUE(v.state().doc.dirty());
+  v.frames(30);
+  EXPECT_EQ(v.state().doc.scene().camera, typed) << "the lesson's step is not applied over the recovered state";
+  EXPECT_EQ(v.viewer().caughtErrors(), 0u) << v.viewer().lastCaughtError();
+}
+
+}  // namespace
+}  // namespace vplab
