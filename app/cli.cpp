@@ -316,17 +316,28 @@ struct ViewerOptions {
   std::string lang;  // --lang en|de; empty: the remembered choice, else the locale's
   bool glDebug = false;
   bool reportFrames = false;
+  std::string noDisplayDir;  // --no-display-dir: where the fallback writes; empty: it writes nothing
 };
 
-// Without a display the viewer cannot open: say so, and leave what can be made headless instead.
+// The window could not be opened at start (no display, no OpenGL): say so, and only when asked
+// (--no-display-dir) leave what can be made headless instead. Nothing is written into the working
+// directory unasked (issue 37).
 int viewerFallback(const ViewerOptions& v, const std::string& why) {
-  std::cerr << "vplab: " << why << "\n"
-            << "vplab: writing the pipeline dump to vplab-dump.json and the three views to vplab-all.png instead\n";
+  std::cerr << "vplab: " << why << "\n";
+  if (v.noDisplayDir.empty()) {
+    std::cerr << "vplab: --no-display-dir DIR writes the scene's pipeline dump and its three views there instead; "
+                 "`vplab render` and `vplab dump` make pictures and dumps without a display\n";
+    return 1;
+  }
+  const std::filesystem::path dir = v.noDisplayDir;
+  const std::filesystem::path dumpFile = dir / "vplab-dump.json", allFile = dir / "vplab-all.png";
+  std::cerr << "vplab: writing the pipeline dump to " << dumpFile.string() << " and the three views to "
+            << allFile.string() << " instead\n";
   const Scene scene = sceneFrom(v.scene);
   {
-    std::ofstream out("vplab-dump.json");
+    std::ofstream out(dumpFile);
     out << dumpJson(runPipeline(scene, {}));
-    if (!out) throw Error("vplab-dump.json: cannot write the dump");
+    if (!out) throw Error(dumpFile.string() + ": cannot write the dump");
   }
   try {
     auto context = createHeadlessContext(Backend::automatic, false);
@@ -335,7 +346,7 @@ int viewerFallback(const ViewerOptions& v, const std::string& why) {
     request.style = Style::shaded;
     request.scale = v.uiScale;
     ViewRenderer renderer(*context, request.scale);
-    writePng(renderImage(renderer, scene, request), "vplab-all.png");
+    writePng(renderImage(renderer, scene, request), allFile);
   } catch (const Error& e) {
     std::cerr << "vplab: no headless picture either: " << e.what() << "\n";
   }
@@ -373,7 +384,7 @@ int runViewer(const ViewerOptions& v) {
   if ((!display || !*display) && (!wayland || !*wayland))
     return viewerFallback(v, "no display (DISPLAY is not set): the interactive viewer needs one");
   try {
-    return runViewerWindow(std::move(launch));
+    return runViewerWindow(std::move(launch));  // past the window's opening it returns, never throws
   } catch (const Error& e) {
     return viewerFallback(v, e.what());
   }
@@ -455,6 +466,11 @@ int runCommandLine(int argc, char** argv) {
       ->check(CLI::IsMember({"en", "de"}));
   app.add_flag("--gl-debug", viewer.glDebug, "Turn on KHR_debug and fail on any OpenGL error");
   app.add_flag("--report-frames", viewer.reportFrames, "Print how many frames the window drew when it ends (tests)");
+  app.add_option("--no-display-dir", viewer.noDisplayDir,
+                 "When no window can be opened (no display): write the scene's pipeline dump (vplab-dump.json) "
+                 "and its three views (vplab-all.png) into this directory instead, and end with status 0 "
+                 "(without it: status 1, nothing written)")
+      ->check(CLI::ExistingDirectory);
 
   DumpOptions dump;
   CLI::App* dumpCmd = app.add_subcommand("dump", "Run the CPU pipeline and print every stage's results as JSON");

@@ -181,9 +181,14 @@ int runViewerWindow(ViewerLaunch launch) {
     // call cannot be interrupted): the window goes at once.
     glfwHideWindow(window.handle());
     return status;
-  } catch (...) {
-    viewer.session().writeRecoveryNow();  // an unexpected error ends the viewer: keep the work first
-    throw;
+  } catch (const std::exception& e) {
+    // The window was open: no headless fallback now (it would write files nobody asked for). Keep
+    // the work, say what happened, and end with a status that says it was no normal end.
+    const std::filesystem::path kept = viewer.session().writeRecoveryNow();
+    std::cerr << "vplab: the viewer ended unexpectedly: " << e.what();
+    if (!kept.empty()) std::cerr << "; the unsaved changes are kept in " << kept.string() << " and offered at the next start";
+    std::cerr << "\n";
+    return kUnexpectedEnd;
   }
 }
 
@@ -203,11 +208,12 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
       std::cerr << "vplab: " << frames << " frames drawn, the longest in " << std::lround(longestFrame * 1000)
                 << " ms, the longest answering input in " << std::lround(longestAnswer * 1000) << " ms\n";
   };
+  double lastFrame = 0;
   for (;;) {
     const bool scriptedEnd = launch.quitAfterFrames > 0 && frames >= launch.quitAfterFrames;
-    // Smoke tests and scripted screenshots (--quit-after-frames) draw every frame, as fast as vsync;
-    // past their count they wait, as an idle window does, for the render thread's images.
-    const bool continuous = launch.quitAfterFrames > 0 && !scriptedEnd;
+    // Smoke tests, scripted screenshots (--quit-after-frames) and a driver draw every frame, as fast
+    // as vsync; past their count they wait, as an idle window does, for the render thread's images.
+    const bool continuous = (launch.quitAfterFrames > 0 && !scriptedEnd) || launch.driver;
     const double wait = continuous || input.changed || !input.queue.empty() ? 0 : viewer.wakeIn();
     // wakeIn() counts from the last frame's time, which stands still while no frame is drawn: the
     // timer's end is kept here in real time (the next autosave, the text cursor's blink).
@@ -227,6 +233,7 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
       window.setShouldClose(false);
       input.changed = true;
     }
+    if (launch.driver && !launch.driver(viewer, input.queue, window, lastFrame)) break;
     const bool answering = input.changed || !input.queue.empty();
     if (answering) viewer.requestFrames(kSettleFrames);
     input.changed = false;
@@ -264,12 +271,18 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
       } else if (shot) {
         waitingSince = -1;
         const std::string file = viewer.screenshotRequested() ? screenshotName() : launch.screenshotOnQuit;
-        writePng(gl::readPixels(window.gl(), 0, w, h), file);
-        viewer.screenshotTaken(file);
+        try {
+          writePng(gl::readPixels(window.gl(), 0, w, h), file);
+          viewer.screenshotTaken(file);
+        } catch (const std::exception& e) {  // a read-only working directory, a full disk: said, not fatal
+          if (!viewer.screenshotRequested()) throw;
+          viewer.screenshotFailed(e.what());
+        }
       }
     }
     window.swapBuffers();
-    longestFrame = std::max(longestFrame, glfwGetTime() - frameStart);
+    lastFrame = glfwGetTime() - frameStart;
+    longestFrame = std::max(longestFrame, lastFrame);
     if (answering && frames > 1) longestAnswer = std::max(longestAnswer, glfwGetTime() - frameStart);
     if (viewer.title() != shownTitle) window.setTitle(shownTitle = viewer.title());
     if (quitting) break;

@@ -4,10 +4,24 @@
 #include "pipeline/language.h"
 #include "pipeline/scene.h"
 
+#include <functional>
 #include <optional>
 #include <string>
 
 namespace vplab {
+
+class Viewer;
+class InputQueue;
+class GlfwWindow;
+
+/// The status of a viewer that ended by an error after its window had opened (EX_SOFTWARE): never 0.
+inline constexpr int kUnexpectedEnd = 70;
+
+/// Plays the user (the monkey test, tests/app/window/monkey_test.cpp): called before every frame with
+/// the viewer, the window's input queue (events put there are handed to ImGui as GLFW's are) and
+/// the window, and the seconds the last frame took; false ends the viewer as quitting does. With a
+/// driver every frame is drawn, none waited for.
+using ViewerDriver = std::function<bool(Viewer&, InputQueue&, GlfwWindow&, double lastFrameSeconds)>;
 
 struct ViewerLaunch {
   Scene scene;
@@ -23,11 +37,13 @@ struct ViewerLaunch {
   double waitForViews = 30;
   bool glDebug = false;
   bool reportFrames = false;        // print the number of frames drawn when the viewer ends (tests)
+  ViewerDriver driver;              // empty: the user drives
 };
 
 /// Runs until the window is closed (0), or a signal ends it (128 + SIGTERM, SIGINT or SIGHUP, after writing
 /// the recovery file of unsaved changes), or the scripted end found views not ready within
-/// waitForViews (1). Throws vplab::Error when no window can be opened.
+/// waitForViews (1), or an error escaped the frame's own guard (kUnexpectedEnd, after writing the
+/// recovery file). Throws vplab::Error only when no window can be opened.
 int runViewerWindow(ViewerLaunch launch);
 
 }  // namespace vplab

@@ -99,8 +99,8 @@ TEST_F(Cli, VersionNamesTheReleaseAndTheCommitItWasBuiltFrom) {
 // The desktop entry and a file manager give the scene by its name alone (`vplab FILE`).
 TEST_F(Cli, ASceneGivenByItsNameAloneIsOpenedAsWithScene) {
   const fs::path scene = fs::path(VPLAB_ASSETS) / "scenes" / "perspective.json";
-  const ProcessResult r = vplab(shellQuoted(scene.string()), "env -u DISPLAY -u WAYLAND_DISPLAY");
-  ASSERT_EQ(r.exitCode, 0) << r.err;  // no display: the viewer leaves the scene's dump
+  const ProcessResult r = vplab(shellQuoted(scene.string()) + " --no-display-dir .", "env -u DISPLAY -u WAYLAND_DISPLAY");
+  ASSERT_EQ(r.exitCode, 0) << r.err;  // no display: the viewer leaves the scene's dump where asked
   EXPECT_EQ(readFile(dir_ / "vplab-dump.json"), dumpJson(runPipeline(loadScene(scene))));
   const ProcessResult both = vplab(shellQuoted(scene.string()) + " --scene " + shellQuoted(scene.string()));
   EXPECT_EQ(both.exitCode, 2) << "a scene given twice is a usage error";
@@ -349,11 +349,20 @@ TEST_F(Cli, HostileFilesNeverEndOnASignal) {
 
 // ---------------------------------------------------------------- no display
 
-// Without DISPLAY (and WAYLAND_DISPLAY) the viewer cannot open: vplab says so on stderr and writes
-// the dump and the three views into its working directory, the same as `vplab dump` and
-// `vplab render --view all --style shaded` produce.
-TEST_F(Cli, WithoutADisplayTheViewerLeavesADumpAndAPicture) {
+// Without DISPLAY (and WAYLAND_DISPLAY) the viewer cannot open: vplab says so on stderr, names the
+// way to a headless picture, writes nothing unasked and ends with status 1 (issue 37).
+TEST_F(Cli, WithoutADisplayTheViewerSaysSoAndWritesNothingUnasked) {
   const ProcessResult r = vplab("", "env -u DISPLAY -u WAYLAND_DISPLAY");
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("no display"));
+  EXPECT_THAT(r.err, HasSubstr("--no-display-dir"));
+  EXPECT_TRUE(fs::is_empty(dir_)) << "the working directory must stay as it was";
+}
+
+// Asked with --no-display-dir DIR, it writes the dump and the three views there, the same as
+// `vplab dump` and `vplab render --view all --style shaded` produce.
+TEST_F(Cli, WithoutADisplayTheViewerLeavesADumpAndAPictureWhereAsked) {
+  const ProcessResult r = vplab("--no-display-dir .", "env -u DISPLAY -u WAYLAND_DISPLAY");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_THAT(r.err, HasSubstr("no display"));
   EXPECT_THAT(r.err, HasSubstr("DISPLAY"));
