@@ -2,6 +2,8 @@
 
 #include "app/core/assets.h"
 #include "app/core/lesson.h"
+#include "app/core/preferences.h"
+#include "app/text/catalogue.h"
 #include "app/export/progress_bar.h"
 #include "app/lessons/lesson_export.h"
 #include "bench/bench_command.h"
@@ -18,6 +20,7 @@
 #include <CLI/CLI.hpp>
 #include <vplab_version.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -175,18 +178,57 @@ std::pair<int, int> parseSize(const std::string& s) {
 
 /// A lesson given on the command line: a file, or a bundled lesson's name ("02-view-orientation",
 /// in English unless ".de" follows).
-std::filesystem::path lessonFileFrom(const std::string& given) {
+/// How many single-character edits (insert, delete, replace) turn `a` into `b` (Levenshtein).
+size_t editDistance(std::string_view a, std::string_view b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+/// The bundled lesson's name nearest to a misspelt one ("05-cliping.de" → "05-clipping.de"), written as
+/// it was (with or without its language), or empty when none is near.
+std::string nearestLessonName(const std::string& given) {
+  const bool withLanguage = given.ends_with(".de") || given.ends_with(".en");
+  std::string best;
+  size_t bestDistance = std::max<size_t>(2, given.size() / 4) + 1;
+  for (Language lang : {Language::en, Language::de})
+    for (const LessonFileInfo& l : listBundledLessons(lang)) {
+      std::string name = l.file.stem().string();  // "05-clipping.de"
+      if (!withLanguage) name = name.substr(0, name.find('.'));
+      if (const size_t d = editDistance(given, name); d < bestDistance) {
+        bestDistance = d;
+        best = name;
+      }
+    }
+  return best;
+}
+
+/// A lesson given on the command line: a file, else a bundled lesson by its name, in `language`
+/// (the UI's) when the name does not say ".de" or ".en". A name that is neither says so in that
+/// language and offers the nearest bundled one.
+std::filesystem::path lessonFileFrom(const std::string& given, Language language) {
   std::error_code ec;
   if (std::filesystem::exists(given, ec)) return given;
-  const std::filesystem::path bundled = bundledLessonFile(given, Language::en);
-  if (bundled.empty())
-    throw Error("--lesson " + given + ": no such file, and no bundled lesson of that name (`vplab lessons` lists them)");
-  return bundled;
+  const std::filesystem::path bundled = bundledLessonFile(given, language);
+  if (!bundled.empty()) return bundled;
+  if (const std::string near = nearestLessonName(given); !near.empty())
+    throw Error(text::fill(language, "--lesson {1}: no such file and no bundled lesson of that name; did you mean {2}? (`vplab lessons` lists them)",
+                           {given, near}));
+  throw Error(text::fill(language, "--lesson {1}: no such file and no bundled lesson of that name (`vplab lessons` lists them)", {given}));
 }
 
 /// `render --lesson`: every step as a still and the index, or with --animate the lesson as a GIF.
 int renderLesson(const RenderOptions& r) {
-  const std::filesystem::path file = lessonFileFrom(r.lesson);
+  const std::filesystem::path file = lessonFileFrom(r.lesson, r.lang == "de" ? Language::de : Language::en);
   LessonContext lessonContext;
   lessonContext.scenesDirectory = assetsDirectory() / "scenes";
   const Lesson lesson = loadLesson(file, lessonContext);
@@ -360,7 +402,11 @@ int runViewer(const ViewerOptions& v) {
     // Read here first, so that a broken lesson ends with its error before a window opens.
     LessonContext context;
     context.scenesDirectory = assetsDirectory() / "scenes";
-    const std::filesystem::path file = lessonFileFrom(v.lesson);
+    // The lesson in the language the window will speak: --lang, else the remembered one, else the locale's.
+    const Language language =
+        startLanguage(v.lang.empty() ? std::nullopt : std::optional(v.lang == "de" ? Language::de : Language::en),
+                      readPreferences(defaultPreferencesFile(), nullptr));
+    const std::filesystem::path file = lessonFileFrom(v.lesson, language);
     const Lesson lesson = loadLesson(file, context);
     if (v.step > lesson.steps.size())
       throw Error("--step " + std::to_string(v.step) + ": the lesson " + v.lesson + " has " +

@@ -359,6 +359,25 @@ TEST_F(Cli, WithoutADisplayTheViewerSaysSoAndWritesNothingUnasked) {
   EXPECT_TRUE(fs::is_empty(dir_)) << "the working directory must stay as it was";
 }
 
+// A lesson named without .de or .en opens in the UI's language; a misspelt name says which bundled
+// lesson is near, in the UI's language (issue 37 items 5 and 6). The lesson is read before any window
+// opens, so this needs no display.
+TEST_F(Cli, ALessonNameFollowsTheUiLanguageAndAMisspeltOneOffersTheNearest) {
+  const ProcessResult de = vplab("--lesson 05-cliping.de --lang de", "env -u DISPLAY -u WAYLAND_DISPLAY");
+  EXPECT_EQ(de.exitCode, 1) << de.err;
+  EXPECT_THAT(de.err, HasSubstr("war 05-clipping.de gemeint?")) << de.err;
+  const ProcessResult en = vplab("--lesson 05-cliping --lang en", "env -u DISPLAY -u WAYLAND_DISPLAY");
+  EXPECT_EQ(en.exitCode, 1) << en.err;
+  EXPECT_THAT(en.err, HasSubstr("did you mean 05-clipping?")) << en.err;
+  const ProcessResult far = vplab("--lesson quaternions --lang en", "env -u DISPLAY -u WAYLAND_DISPLAY");
+  EXPECT_THAT(far.err, ::testing::Not(HasSubstr("did you mean"))) << far.err;
+
+  // render --lesson NAME --lang de: the German lesson's stills and index.
+  const ProcessResult r = vplab("render --lesson 05-clipping --lang de --size 240x180 --out stills");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_THAT(readFile(dir_ / "stills" / "index.md"), HasSubstr("# Clipping in homogenen Koordinaten"));
+}
+
 // Asked with --no-display-dir DIR, it writes the dump and the three views there, the same as
 // `vplab dump` and `vplab render --view all --style shaded` produce.
 TEST_F(Cli, WithoutADisplayTheViewerLeavesADumpAndAPictureWhereAsked) {
