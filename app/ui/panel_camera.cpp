@@ -4,6 +4,11 @@
 #include "app/core/picking.h"
 #include "app/ui/widgets.h"
 
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+#include <vector>
+
 namespace vplab::ui {
 
 namespace {
@@ -22,32 +27,83 @@ void derived(const ViewerState& s) {
              "of the front and back planes from the eye.");
 }
 
+/// The fields that make the camera invalid (their rects' ids): what the student must change.
+std::vector<std::string_view> offendingFields(const CameraProblem& p, const Camera& c) {
+  auto finite = [](const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+  std::vector<std::string_view> ids;
+  using K = CameraProblem::Kind;
+  switch (p.kind) {
+    case K::vectorsNotFinite:
+      for (const auto& [id, v] : {std::pair{"camera.vrp", c.vrp}, {"camera.prp", c.prp}, {"camera.vup", c.vup}})
+        if (!finite(v)) ids.push_back(id);
+      break;
+    case K::planesNotFinite:
+      for (const auto& [id, v] : {std::pair{"camera.xmin", c.window.xmin}, {"camera.xmax", c.window.xmax},
+                                  {"camera.ymin", c.window.ymin}, {"camera.ymax", c.window.ymax},
+                                  {"camera.front", c.front}, {"camera.back", c.back}})
+        if (!std::isfinite(v)) ids.push_back(id);
+      break;
+    case K::prpOnVrp: ids = {"camera.vrp", "camera.prp"}; break;
+    case K::vupZero: ids = {"camera.vup"}; break;
+    case K::vupAlongN: ids = {"camera.vup", "camera.prp", "camera.vrp"}; break;
+    case K::windowX: ids = {"camera.xmin", "camera.xmax"}; break;
+    case K::windowY: ids = {"camera.ymin", "camera.ymax"}; break;
+    case K::backNotBehindFront: ids = {"camera.front", "camera.back"}; break;
+    case K::frontBehindEye: ids = {"camera.front", "camera.prp"}; break;
+    case K::obliqueFactors: ids = {"camera.oblique.d", "camera.oblique.phi"}; break;
+    case K::mappingNotFinite: ids = {"camera.vrp", "camera.prp", "camera.front", "camera.back"}; break;
+  }
+  return ids;
+}
+
 }  // namespace
 
 void cameraPanel(ViewerState& s) {
   Camera& c = s.doc.scene().camera;
+  const std::optional<CameraProblem> problem = cameraProblem(c);
+  const std::vector<std::string_view> offending = problem ? offendingFields(*problem, c) : std::vector<std::string_view>{};
+  // An offending field gets a red frame, drawn over the field just drawn (its rect, recorded by the widget).
+  auto mark = [&](const char* id) {
+    if (std::find(offending.begin(), offending.end(), std::string_view(id)) == offending.end()) return;
+    const auto it = s.rects.find(id);
+    if (it == s.rects.end()) return;
+    // Inside the field's sides (the panel clips at them) and just outside its top and bottom.
+    const ImVec4& r = it->second;
+    const float thick = std::max(2.f, ImGui::GetFontSize() / 8), pad = ImGui::GetStyle().ItemSpacing.y * 0.4f;
+    ImGui::GetWindowDrawList()->AddRect(ImVec2(r.x + thick * 0.5f, r.y - pad), ImVec2(r.x + r.z - thick * 0.5f, r.y + r.w + pad),
+                                        errorColour(), 0, 0, thick);
+  };
   dragVec3(s, "VRP", "camera.vrp", c.vrp);
+  mark("camera.vrp");
   tooltip(s, "View reference point: the point looked at, origin of VRC (WC).");
   dragVec3(s, "PRP", "camera.prp", c.prp);
+  mark("camera.prp");
   tooltip(s, "Projection reference point: the eye, the centre of projection (WC).");
   dragVec3(s, "VUP", "camera.vup", c.vup);
+  mark("camera.vup");
   tooltip(s, "View up vector: which way is up; projected into the view plane it gives V.");
 
   section(tr(s, "window (view plane, VRC)"));
   ViewWindow& w = c.window;
   const double aspect = s.doc.scene().device.aspect();
   bool xChanged = dragDouble(s, "xmin", "camera.xmin", w.xmin);
+  mark("camera.xmin");
   xChanged |= dragDouble(s, "xmax", "camera.xmax", w.xmax);
+  mark("camera.xmax");
   bool yChanged = dragDouble(s, "ymin", "camera.ymin", w.ymin);
+  mark("camera.ymin");
   yChanged |= dragDouble(s, "ymax", "camera.ymax", w.ymax);
+  mark("camera.ymax");
   if (checkbox(tr(s, "keep the device's aspect ratio"), &s.keepAspect) && s.keepAspect) xChanged = true;
   if (s.keepAspect && (xChanged || yChanged)) keepWindowAspect(w, aspect, xChanged);
   tooltip(s, "The window's width : height stays the device's W : H, so nothing is stretched.");
 
   section(tr(s, "front and back planes (VRC z)"));
   dragDouble(s, tr(s, "front F"), "camera.front", c.front);
+  mark("camera.front");
   tooltip(s, "F: the front (near) plane z = F in VRC; maps to NPC z = 1. Needs B < F (< VPD in perspective).");
   dragDouble(s, tr(s, "back B"), "camera.back", c.back);
+  mark("camera.back");
   tooltip(s, "B: the back (far) plane z = B in VRC; maps to NPC z = 0.");
 
   section(tr(s, "projection"));
@@ -60,8 +116,10 @@ void cameraPanel(ViewerState& s) {
   c.projection = Projection(p);
   if (c.projection == Projection::oblique) {
     dragDouble(s, "d", "camera.oblique.d", c.oblique.d, 0.01f, 0.0, 4.0);
+    mark("camera.oblique.d");
     tooltip(s, "d = 1 / tan α: how much a unit of depth is shortened (lecture notes 14.3.2).");
     dragDouble(s, tr(s, "phi (deg)"), "camera.oblique.phi", c.oblique.phiDeg, 0.5f, -180.0, 180.0, "%.1f");
+    mark("camera.oblique.phi");
     tooltip(s, "φ: the angle under which depth is drawn in the view plane.");
     if (ImGui::Button(tr(s, "cavalier (d = 1, φ = 35°)"))) c.oblique = kCavalier;
     sameLineIfFits(tr(s, "cabinet (d = 0.5, φ = 50°)"));
@@ -70,9 +128,10 @@ void cameraPanel(ViewerState& s) {
   ImGui::Separator();
   if (!s.doc.error().empty()) {
     // The camera's own problem in the viewer's language; another of the scene as the document says it.
-    const std::optional<CameraProblem> problem = cameraProblem(c);
     errorText(problem ? cameraProblemText(*problem, c, s.display.language) : s.doc.error());
-    ImGui::TextDisabled("%s", tr(s, "The views show the last valid camera."));
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", tr(s, "The views show the last valid camera."));
+    ImGui::PopStyleColor();
   } else {
     derived(s);
   }

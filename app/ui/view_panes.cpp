@@ -3,6 +3,7 @@
 // Index: 1 helpers  2 drawing a view  3 the windows  4 interaction
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include "app/ui/layout.h"
+#include "app/core/camera_text.h"
 #include "app/core/lesson_marks.h"
 #include "app/core/picking.h"
 #include "app/ui/view_panes.h"
@@ -126,6 +127,27 @@ void ViewPanes::busyMark(ViewKind kind) {
   draw->AddText(at + ImVec2(pad * 2 + radius * 2, pad), IM_COL32(235, 235, 235, 255), text);
 }
 
+void ViewPanes::lastValidNote() {
+  if (s_.doc.error().empty()) return;
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  const Camera& edited = s_.doc.scene().camera;
+  const std::optional<CameraProblem> problem = cameraProblem(edited);
+  const std::string why = problem ? cameraProblemText(*problem, edited, s_.display.language) : s_.doc.error();
+  const std::string note = problem ? ui::tr(s_, "This view shows the last valid camera: {1}", {why})
+                                   : ui::tr(s_, "This view shows the last valid scene: {1}", {why});
+  // Across the view's bottom, wrapped to its width, over a dark band: readable on any picture.
+  const float pad = 5 * uiScale_, wrap = std::max(1.f, max.x - min.x - 2 * pad);
+  const ImVec2 text = ImGui::CalcTextSize(note.c_str(), nullptr, false, wrap);
+  const float top = std::max(min.y, max.y - text.y - 2 * pad);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->PushClipRect(min, max, true);
+  draw->AddRectFilled(ImVec2(min.x, top), max, IM_COL32(20, 22, 28, 225));
+  draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(min.x + pad, top + pad), IM_COL32(255, 110, 100, 255),
+                note.c_str(), nullptr, wrap);
+  draw->PopClipRect();
+  ui::recordRect(s_, "view.lastValidNote");
+}
+
 std::optional<Vec3> ViewPanes::probePositionOf(ViewKind view) const {
   return s_.probe ? probePosition(s_.run(), *s_.probe, view) : std::nullopt;
 }
@@ -195,6 +217,7 @@ void ViewPanes::worldWindow(const ui::Layout& layout, ImGuiWindowFlags flags, Im
       const bool hovered = viewImage("world", texture, size);
       ui::recordRect(s_, "view.world");
       busyMark(ViewKind::world);
+      lastValidNote();
       const ImVec2 origin = ImGui::GetItemRectMin();
       worldInteraction(hovered, observer, cachedWidth(ViewKind::world), cachedHeight(ViewKind::world), mouseIn(origin, fbScale));
       recordHandles(origin, observer, fbScale);
@@ -213,6 +236,7 @@ void ViewPanes::npcWindow(const ui::Layout& layout, ImGuiWindowFlags flags, ImVe
       const ViewCamera observer = viewCameraOf(observerCamera(s_.display.npc.orbit, double(cachedWidth(ViewKind::npc)) / cachedHeight(ViewKind::npc)));
       const bool hovered = viewImage("npc", texture, size);
       busyMark(ViewKind::npc);
+      lastValidNote();
       ui::recordRect(s_, "view.npc");
       orbitInteraction(hovered, ViewKind::npc, s_.display.npc.orbit, observer, cachedWidth(ViewKind::npc), cachedHeight(ViewKind::npc),
                        mouseIn(ImGui::GetItemRectMin(), fbScale));
@@ -250,6 +274,7 @@ void ViewPanes::cameraWindowContents() {
   const ImVec2 at = ImGui::GetCursorScreenPos();
   const bool hovered = viewImage("camera", texture, size);
   busyMark(ViewKind::camera);
+  lastValidNote();
   ui::recordRect(s_, "view.camera");
   if (demo) {
     caption(at, size.x, IM_COL32(140, 230, 140, 255),
@@ -284,6 +309,7 @@ void ViewPanes::morphWindow() {
       const GLuint texture = drawView(ViewKind::morph, size);
       const bool hovered = viewImage("morph", texture, size);
       busyMark(ViewKind::morph);
+      lastValidNote();
       ui::recordRect(s_, "view.morph");
       morphInteraction(hovered);
     }
@@ -319,11 +345,13 @@ void ViewPanes::lectureWindow() {
       ImGui::SetCursorPos((size - shown) * 0.5f);
       viewImage("lecture", texture, shown);
       busyMark(kind);
+      lastValidNote();
     } else {
       if (kind == ViewKind::world) s_.worldAspect = aspectOf(size);
       const GLuint texture = drawView(kind, size);
       const bool hovered = viewImage("lecture", texture, size);
       busyMark(kind);
+      lastValidNote();
       const ImVec2 fb = io.DisplayFramebufferScale;
       const Vec2 mouse = mouseIn(ImGui::GetItemRectMin(), fb);
       if (kind == ViewKind::world)

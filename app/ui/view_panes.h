@@ -41,6 +41,9 @@ class ViewPanes {
   /// A spinner and "updating…" in the top right corner of the last item (a view's image) while
   /// `kind` (or the run it shows) is being drawn anew.
   void busyMark(ViewKind kind);
+  /// While the edited camera (or scene) is invalid, across the bottom of the last item (a view's
+  /// image): that the view shows the last valid one, and why (issue 37: seen where people look).
+  void lastValidNote();
   std::optional<Vec3> probePositionOf(ViewKind view) const;
   void stepHighlight();
   void cameraWindowContents();

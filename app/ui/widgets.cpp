@@ -191,8 +191,10 @@ void help(const ViewerState& s, text::Text t) {
   tooltip(s, t);
 }
 
+ImU32 errorColour() { return ImGui::ColorConvertFloat4ToU32(ImVec4(1.f, 0.38f, 0.35f, 1.f)); }
+
 void errorText(const std::string& text) {
-  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.38f, 0.35f, 1.f));
+  ImGui::PushStyleColor(ImGuiCol_Text, errorColour());
   ImGui::TextWrapped("%s", text.c_str());
   ImGui::PopStyleColor();
 }

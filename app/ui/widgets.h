@@ -45,6 +45,8 @@ void fitLabel(const char* label);
 void tooltip(const ViewerState& s, text::Text t);
 /// A (?) marker with a tooltip.
 void help(const ViewerState& s, text::Text t);
+/// The colour of errors: a message, an offending field's frame.
+ImU32 errorColour();
 void errorText(const std::string& text);
 /// Colours of text that read on the current style's ground (the dark or the light theme): titles,
 /// a boundary coordinate inside (≥ 0) and outside (< 0).

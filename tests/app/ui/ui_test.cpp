@@ -311,32 +311,67 @@ TEST(Ui, DraggingThePrpHandleChangesPrpAndUndoRedoWork) {
 
 // ---------------------------------------------------------------- invalid cameras
 
+/// The upper half of a view: the note of an invalid camera lies across its bottom.
+Image upperHalf(HeadlessViewer& v, const char* id) {
+  PixelRect r = rectOf(v, id);
+  r.h /= 2;
+  return region(v, r);
+}
+/// The lower half of a view, where the note of an invalid camera is.
+Image lowerHalf(HeadlessViewer& v, const char* id) {
+  PixelRect r = rectOf(v, id);
+  r.y += r.h / 2;
+  r.h -= r.h / 2;
+  return region(v, r);
+}
+
+/// Pixels of the error colour in a field's frame: bands 3 pixels wide along the inside of its left
+/// and right sides (the fields are stacked, so a neighbour's frame never reaches its sides).
+size_t frameErrorPixels(HeadlessViewer& v, const char* id) {
+  const PixelRect r = rectOf(v, id);
+  const Image left = test::crop(v.image(), r.x, r.y, 3, r.h);
+  const Image right = test::crop(v.image(), r.x + r.w - 3, r.y, 3, r.h);
+  return errorTextPixels(left) + errorTextPixels(right);
+}
+
 // PRP = VRP (set through the document, as a preset or a script might): the camera panel shows the
-// error in red, the views keep showing the last valid camera, nothing in the run is NaN.
+// error in red and frames PRP and VRP, each view keeps showing the last valid camera and says so
+// across its bottom (issue 37 item 2: seen where people look), nothing in the run is NaN.
 TEST(Ui, PrpOnVrpShowsAnErrorAndKeepsTheLastValidCamera) {
   auto v = makeViewer();
   const Camera valid = v->state().doc.scene().camera;
   const PixelRect controls = windowRect("Controls");
   ASSERT_EQ(errorTextPixels(region(*v, controls)), 0u);
-  const Image cameraBefore = region(*v, rectOf(*v, "view.camera"));
-  const Image worldBefore = region(*v, rectOf(*v, "view.world"));
+  const Image cameraBefore = upperHalf(*v, "view.camera");
+  const Image worldBefore = upperHalf(*v, "view.world");
+  const size_t worldRedBefore = errorTextPixels(lowerHalf(*v, "view.world"));
+  const size_t npcRedBefore = errorTextPixels(lowerHalf(*v, "view.npc"));
+  EXPECT_EQ(frameErrorPixels(*v, "camera.prp"), 0u);
 
   v->state().doc.scene().camera.prp = valid.vrp;
   v->frames(2);
   EXPECT_THAT(v->state().doc.error(), HasSubstr("PRP"));
   EXPECT_THAT(v->state().doc.error(), HasSubstr("VRP"));
   EXPECT_GT(errorTextPixels(region(*v, controls)), 30u) << "no error text in the camera panel";
+  EXPECT_GT(frameErrorPixels(*v, "camera.prp"), 20u) << "PRP is not framed";
+  EXPECT_GT(frameErrorPixels(*v, "camera.vrp"), 20u) << "VRP is not framed";
+  EXPECT_EQ(frameErrorPixels(*v, "camera.vup"), 0u) << "VUP is not at fault";
   EXPECT_EQ(v->state().doc.shown().camera, valid);
   EXPECT_EQ(v->state().run().camera, valid);
   expectRunFinite(v->state().run());
-  EXPECT_EQ(test::differingPixels(region(*v, rectOf(*v, "view.camera")), cameraBefore), 0u);
-  EXPECT_EQ(test::differingPixels(region(*v, rectOf(*v, "view.world")), worldBefore), 0u);
+  EXPECT_EQ(test::differingPixels(upperHalf(*v, "view.camera"), cameraBefore), 0u);
+  EXPECT_EQ(test::differingPixels(upperHalf(*v, "view.world"), worldBefore), 0u);
+  EXPECT_GT(errorTextPixels(lowerHalf(*v, "view.camera")), 60u) << "the camera view does not say it";
+  EXPECT_GT(errorTextPixels(lowerHalf(*v, "view.world")), worldRedBefore + 60) << "the world view does not say it";
+  EXPECT_GT(errorTextPixels(lowerHalf(*v, "view.npc")), npcRedBefore + 60) << "the NPC view does not say it";
 
-  // Valid again: the error goes.
+  // Valid again: the error, the frames and the notes go.
   v->state().doc.scene().camera.prp = valid.prp;
   v->frames(2);
   EXPECT_TRUE(v->state().doc.error().empty());
   EXPECT_EQ(errorTextPixels(region(*v, controls)), 0u);
+  EXPECT_EQ(frameErrorPixels(*v, "camera.prp"), 0u);
+  EXPECT_EQ(errorTextPixels(lowerHalf(*v, "view.world")), worldRedBefore);
 }
 
 /// Types `text` into field `field` (0, 1, 2) of a three-field drag widget: Ctrl+click turns an ImGui
@@ -373,7 +408,7 @@ TEST(Ui, TypingVupParallelToNShowsAnErrorAndKeepsTheLastValidCamera) {
   EXPECT_TRUE(v->state().doc.error().empty()) << v->state().doc.error();
   const Camera lastValid = v->state().doc.scene().camera;
   EXPECT_EQ(v->state().run().camera, lastValid);
-  const Image cameraValid = region(*v, rectOf(*v, "view.camera"));
+  const Image cameraValid = upperHalf(*v, "view.camera");
 
   typeInto(*v, "camera.vup", "VUP", 2, "7.5", true);
   EXPECT_EQ(v->state().doc.scene().camera.vup, n);
@@ -382,7 +417,8 @@ TEST(Ui, TypingVupParallelToNShowsAnErrorAndKeepsTheLastValidCamera) {
   EXPECT_GT(errorTextPixels(region(*v, controls)), 30u) << "no error text in the camera panel";
   EXPECT_EQ(v->state().run().camera, lastValid);
   expectRunFinite(v->state().run());
-  EXPECT_EQ(test::differingPixels(region(*v, rectOf(*v, "view.camera")), cameraValid), 0u);
+  EXPECT_EQ(test::differingPixels(upperHalf(*v, "view.camera"), cameraValid), 0u);
+  EXPECT_GT(frameErrorPixels(*v, "camera.vup"), 20u) << "VUP is not framed";
 
   v->key(keys::kZ, true);  // each finished field edit is one step
   EXPECT_EQ(v->state().doc.scene().camera.vup, lastValid.vup);
