@@ -15,6 +15,7 @@ void LessonPlayer::go(size_t step, const LessonState& shown, double now, double 
   // From or to a state that has no blend (an invalid camera left in a free step): a cut.
   seconds_ = blendable(from_, lesson_.steps[step_].state) ? std::max(0.0, seconds) : 0.0;
   settled_ = false;
+  marksShown_ = false;
 }
 
 LessonState LessonPlayer::stateAt(double now) const {

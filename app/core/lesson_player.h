@@ -36,6 +36,11 @@ class LessonPlayer {
   /// Whether the step's state has been applied once the move ended (the viewer records it once).
   bool settled() const { return settled_; }
   void markSettled() { settled_ = true; }
+  /// Whether the step's marks (tab, highlights) have been shown since the move into it began: only
+  /// then is the step settled (a lesson opened from the menu late in a frame is not settled before
+  /// its first step was ever shown).
+  bool marksShown() const { return marksShown_; }
+  void markMarksShown() { marksShown_ = true; }
 
  private:
   Lesson lesson_;
@@ -43,6 +48,7 @@ class LessonPlayer {
   LessonState from_;
   double start_ = 0, seconds_ = 0;
   bool settled_ = false;
+  bool marksShown_ = false;
 };
 
 }  // namespace vplab

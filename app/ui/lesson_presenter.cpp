@@ -79,10 +79,11 @@ void lessonFrame(ViewerState& s, double now) {
   applyState(s, s.lesson->stateAt(now));
   if (s.lesson->moving(now)) return;
   applyMarks(s, s.lesson->current().state);
+  s.lesson->markMarksShown();
 }
 
 void lessonEndFrame(ViewerState& s, double now) {
-  if (!s.lesson || s.lesson->settled() || s.lesson->moving(now)) return;
+  if (!s.lesson || s.lesson->settled() || s.lesson->moving(now) || !s.lesson->marksShown()) return;
   s.lesson->markSettled();
   s.doc.markClean();
 }

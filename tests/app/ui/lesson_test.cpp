@@ -132,6 +132,32 @@ TEST(LessonPresenter, TheStepsMarksShowOnceItIsReached) {
     }
 }
 
+// File ▸ Lessons while another lesson is open: the new lesson's first step shows its own tab and
+// highlights (issue 37 item 6: the menu's lesson was settled in the frame it opened, before its step
+// was ever shown, and the tab and highlights were skipped).
+TEST(LessonPresenter, ALessonOpenedFromTheMenuOverAnotherShowsItsFirstStepsMarks) {
+  Presenting p;
+  p.v.key(keys::kEnd);
+  p.settle();
+  auto click = [&](const char* id) {
+    const auto [x, y] = p.v.centreOf(id);
+    p.v.click(x, y);
+    p.v.frames(2);
+  };
+  click("menu.file");
+  const auto [lx, ly] = p.v.centreOf("menu.lessons");
+  p.v.mouseMove(lx, ly);
+  p.v.frames(3);
+  click("menu.lesson.05-clipping.en");
+  p.v.frames(3);
+  ASSERT_TRUE(p.s().lesson);
+  EXPECT_EQ(p.s().lesson->lesson().file.filename(), "05-clipping.en.json");
+  EXPECT_EQ(p.s().lesson->step(), 0u);
+  EXPECT_EQ(p.s().controlsTab, int(ViewerState::clippingTab)) << "step 1's tab";
+  ASSERT_EQ(p.s().lessonMarks.size(), 1u) << "step 1's highlight";
+  EXPECT_EQ(p.s().lessonMarks[0].kind, LessonHighlight::Kind::plane);
+}
+
 TEST(LessonPresenter, ABrokenLessonChangesNothingAndSaysWhy) {
   HeadlessViewer v{*test::egl().context, defaultScene(), 1280, 720};
   v.frames(2);
