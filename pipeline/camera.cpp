@@ -96,7 +96,7 @@ std::string englishText(const CameraProblem& p, const Camera& c) {
       return "perspective needs the front plane in front of the eye (F < VPD), but F = " + format(c.front) +
              ", VPD = |PRP − VRP| = " + format(p.vpd) + " (dmin = VPD − F = " + format(p.vpd - c.front) + " must be > 0)";
     case CameraProblem::Kind::obliqueFactors:
-      return "the oblique projection needs a finite shortening factor d >= 0 and a finite angle phi, but d = " +
+      return "the oblique projection needs a finite shortening factor d ≥ 0 and a finite angle phi, but d = " +
              format(c.oblique.d) + ", phi = " + format(c.oblique.phiDeg);
     case CameraProblem::Kind::mappingNotFinite:
       return "the camera's values are too large or too small: the view mapping is not finite (window " + format(w.xmin) +

@@ -10,8 +10,8 @@ std::string_view planeName(int plane) {
 }
 
 std::string_view planeInequality(int plane) {
-  static constexpr std::string_view names[] = {"x >= 0", "x <= w", "y >= 0", "y <= w", "z >= 0", "z <= w"};
-  return plane < kPlaneCount ? names[plane] : "a·x + b·y + c·z + d >= 0 (WC)";
+  static constexpr std::string_view names[] = {"x ≥ 0", "x ≤ w", "y ≥ 0", "y ≤ w", "z ≥ 0", "z ≤ w"};
+  return plane < kPlaneCount ? names[plane] : "a·x + b·y + c·z + d ≥ 0 (WC)";
 }
 
 ClipValues clipValues(const Boundary& cube, std::span<const double> user) {

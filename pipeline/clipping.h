@@ -27,7 +27,7 @@ enum ClipPlane : int { kLeft = 0, kRight, kBottom, kTop, kBack, kFront, kPlaneCo
 inline constexpr int kMaxUserPlanes = 6;
 inline constexpr int kMaxClipPlanes = kPlaneCount + kMaxUserPlanes;
 std::string_view planeName(int plane);         // "left", "right", …, "user plane 1", …
-std::string_view planeInequality(int plane);   // "x >= 0", "x <= w", …, "a·x + b·y + c·z + d >= 0"
+std::string_view planeInequality(int plane);   // "x ≥ 0", "x ≤ w", …, "a·x + b·y + c·z + d ≥ 0", as the lecture notes write them
 
 using Outcode = uint16_t;  // bits 0–5: the cube's planes; bits 6–11: user planes
 using Boundary = std::array<double, kPlaneCount>;       // BC0..BC5

@@ -27,7 +27,7 @@ std::string cameraProblemText(const CameraProblem& p, const Camera& c, Language 
                  "(dmin = VPD − F = {3} must be > 0)",
                  {format(c.front), format(p.vpd), format(p.vpd - c.front)});
     case K::obliqueFactors:
-      return say("the oblique projection needs a finite shortening factor d >= 0 and a finite angle phi, but d = {1}, phi = {2}",
+      return say("the oblique projection needs a finite shortening factor d ≥ 0 and a finite angle phi, but d = {1}, phi = {2}",
                  {format(c.oblique.d), format(c.oblique.phiDeg)});
     case K::mappingNotFinite:
       return say("the camera's values are too large or too small: the view mapping is not finite "

@@ -125,7 +125,7 @@ std::vector<BadCamera> badCameras() {
   add("infinite window", [](Camera& c) { c.window.xmax = kInf; }, {"window", "finite"});
   add("NaN front", [](Camera& c) { c.front = kNaN; }, {"front and back planes must be finite"});
   add("oblique d < 0", [](Camera& c) { c.projection = Projection::oblique; c.oblique = {-1, 30}; },
-      {"d >= 0", "d = -1, phi = 30"});
+      {"d ≥ 0", "d = -1, phi = 30"});
   add("oblique phi NaN", [](Camera& c) { c.projection = Projection::oblique; c.oblique = {0.5, kNaN}; },
       {"phi = nan"});
   add("window 1e-300 wide, far eye", [](Camera& c) { c.prp = {0, 0, 1e10}; c.window = {0, 1e-300, -1, 1}; },

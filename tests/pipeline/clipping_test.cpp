@@ -116,7 +116,7 @@ TEST(Clipping, BoundaryCoordinatesAndOutcodes) {
 
 TEST(Clipping, PlaneNames) {
   const char* names[] = {"left", "right", "bottom", "top", "back", "front"};
-  const char* ineq[] = {"x >= 0", "x <= w", "y >= 0", "y <= w", "z >= 0", "z <= w"};
+  const char* ineq[] = {"x ≥ 0", "x ≤ w", "y ≥ 0", "y ≤ w", "z ≥ 0", "z ≤ w"};
   for (int i = 0; i < kPlaneCount; ++i) {
     EXPECT_EQ(planeName(i), names[i]);
     EXPECT_EQ(planeInequality(i), ineq[i]);

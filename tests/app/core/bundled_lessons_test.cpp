@@ -1,6 +1,7 @@
 // The bundled lessons (assets/lessons/): each in German and English, the two showing the same
 // states step by step, each step citing a section docs/sources.md lists.
 #include "app/core/lesson.h"
+#include "app/text/catalogue.h"
 
 #include "tests/support/files.h"
 
@@ -8,6 +9,8 @@
 
 #include <cctype>
 #include <map>
+#include <regex>
+#include <set>
 #include <string>
 
 namespace vplab {
@@ -100,6 +103,35 @@ TEST(BundledLessons, AreListedByLanguage) {
               en[i].file.filename().string().substr(0, en[i].file.filename().string().find('.')));
     EXPECT_NE(de[i].title, en[i].title);
   }
+}
+
+// A caption that names a tab ("im Reiter Kamera", "the Clipping tab") names it as the viewer shows
+// it in the caption's language (issue 37 item 5: "Reiter Camera" in the German lesson 02, whose tab
+// is "Kamera").
+TEST(BundledLessons, ACaptionNamesATabAsTheViewerDoesInItsLanguage) {
+  size_t named = 0;
+  for (const Language language : {Language::en, Language::de}) {
+    std::set<std::string> tabs;
+    for (const text::Text t : {text::Text("Camera"), text::Text("Scene"), text::Text("Clipping"), text::Text("Display"),
+                               text::Text("Lecture"), text::Text("Vertex probe"), text::Text("Matrices"), text::Text("Depth")})
+      tabs.insert(t.in(language));
+    // German: "Reiter X"; English: "X tab" (a one- or two-word name).
+    const std::regex tabRef = language == Language::de ? std::regex("Reiter ([A-ZÄÖÜ][^ ,.;:()]*)")
+                                                       : std::regex("([A-Z][a-z]+(?: probe)?) tab\\b");
+    for (const LessonFileInfo& info : listBundledLessons(language)) {
+      const Lesson lesson = loadLesson(info.file, context());
+      for (size_t i = 0; i < lesson.steps.size(); ++i) {
+        const std::string& caption = lesson.steps[i].caption;
+        for (std::sregex_iterator m(caption.begin(), caption.end(), tabRef), end; m != end; ++m) {
+          ++named;
+          EXPECT_TRUE(tabs.count((*m)[1].str()))
+              << info.file.filename().string() << " step " << i + 1 << " names the tab \"" << (*m)[1].str()
+              << "\", which the viewer does not show in this language";
+        }
+      }
+    }
+  }
+  EXPECT_GT(named, 10u) << "the lessons name tabs in both languages";
 }
 
 }  // namespace
