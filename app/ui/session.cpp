@@ -353,13 +353,26 @@ UrlState Session::urlState() const {
   if (state_.doc.path().empty()) u.scene = "default";
   else if (isBundled(state_.doc.path())) u.scene = state_.doc.path().stem().string();
   u.camera = cameraLinkOf(state_.doc.scene().camera);
+  addViews(u);
+  return u;
+}
+
+void Session::applyViews(const UrlState& link) {
+  if (link.cameraStyle) state_.display.camera.style = *link.cameraStyle;
+  if (link.worldStyle) state_.display.world.style = *link.worldStyle;
+  if (link.npcStyle) state_.display.npc.style = *link.npcStyle;
+  if (link.worldOrbit) state_.display.world.orbit = *link.worldOrbit;
+  if (link.npcOrbit) state_.display.npc.orbit = *link.npcOrbit;
+  if (link.strategy) state_.pipeline.strategy = *link.strategy;
+}
+
+void Session::addViews(UrlState& u) const {
   u.cameraStyle = state_.display.camera.style;
   u.worldStyle = state_.display.world.style;
   u.npcStyle = state_.display.npc.style;
   u.worldOrbit = state_.display.world.orbit;
   u.npcOrbit = state_.display.npc.orbit;
   u.strategy = state_.pipeline.strategy;
-  return u;
 }
 
 void Session::showUrlState(const UrlState& link, bool atStart) {
@@ -384,12 +397,7 @@ void Session::showUrlState(const UrlState& link, bool atStart) {
     return;
   }
   auto showViews = [this, link] {
-    if (link.cameraStyle) state_.display.camera.style = *link.cameraStyle;
-    if (link.worldStyle) state_.display.world.style = *link.worldStyle;
-    if (link.npcStyle) state_.display.npc.style = *link.npcStyle;
-    if (link.worldOrbit) state_.display.world.orbit = *link.worldOrbit;
-    if (link.npcOrbit) state_.display.npc.orbit = *link.npcOrbit;
-    if (link.strategy) state_.pipeline.strategy = *link.strategy;
+    applyViews(link);
     changed_();
   };
   const bool otherScene = !link.scene.empty() && link.scene != urlState().scene;
@@ -459,12 +467,7 @@ RecoveryView Session::recoveryView() const {
     v.step = state_.lesson->step();
   }
   UrlState views;
-  views.cameraStyle = state_.display.camera.style;
-  views.worldStyle = state_.display.world.style;
-  views.npcStyle = state_.display.npc.style;
-  views.worldOrbit = state_.display.world.orbit;
-  views.npcOrbit = state_.display.npc.orbit;
-  views.strategy = state_.pipeline.strategy;
+  addViews(views);
   v.views = encodeUrlState(views);
   return v;
 }
@@ -483,13 +486,7 @@ void Session::showRecoveredView(const RecoveryView& v) {
     }
   }
   try {
-    const UrlState u = decodeUrlState(v.views);
-    if (u.cameraStyle) state_.display.camera.style = *u.cameraStyle;
-    if (u.worldStyle) state_.display.world.style = *u.worldStyle;
-    if (u.npcStyle) state_.display.npc.style = *u.npcStyle;
-    if (u.worldOrbit) state_.display.world.orbit = *u.worldOrbit;
-    if (u.npcOrbit) state_.display.npc.orbit = *u.npcOrbit;
-    if (u.strategy) state_.pipeline.strategy = *u.strategy;
+    applyViews(decodeUrlState(v.views));
   } catch (const Error&) {
     // the views of a fresh start
   }

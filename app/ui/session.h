@@ -127,6 +127,10 @@ class Session {
   void loadingWindow(float scale);
   void recoveryDialog();
   void recover(size_t i);
+  /// The views' part of a link: each view's style and observer, the clipping strategy.
+  void addViews(UrlState& u) const;
+  /// Shows what a link gives of the views (addViews' parts); the others stay.
+  void applyViews(const UrlState& link);
   /// What else is on screen, for the recovery file: the lesson and its step, the views' settings.
   RecoveryView recoveryView() const;
   /// A recovered document shows what was on screen: the lesson at its step, the views, the typed camera.

@@ -57,6 +57,8 @@ const std::vector<int> kKeys = {keys::kRight, keys::kLeft,  keys::kSpace, keys::
 
 class Monkey {
  public:
+  static constexpr unsigned long kWarmUpFrames = 30;
+
   Monkey(unsigned seed, unsigned long events) : rng_(seed), events_(events) {
     for (Language lang : {Language::en, Language::de})
       for (const LessonFileInfo& l : listBundledLessons(lang)) lessons_.push_back(l.file);
@@ -67,9 +69,13 @@ class Monkey {
   bool operator()(Viewer& viewer, InputQueue& queue, GlfwWindow& window, double lastFrame) {
     ++frames_;
     if (viewer.caughtErrors() > 0) return fail("the viewer caught an error: " + viewer.lastCaughtError());
-    // The first frames compile the shaders and build the font atlas: the user has not acted yet.
-    if (done_ > 0) {
-      longest_ = std::max(longest_, lastFrame);
+    // The first frames compile the shaders and build the font atlas (llvmpipe, no shader cache): the
+    // user has not acted yet, and a lecturer sees them before the class does.
+    if (frames_ > kWarmUpFrames) {
+      if (lastFrame > longest_) {
+        longest_ = lastFrame;
+        longestAfter_ = lastAction_;
+      }
       if (lastFrame > 1.0) return fail("a frame took " + std::to_string(lastFrame) + " s");
     }
     if (queue.pending() > 6) return true;  // the viewer takes one transition a frame: let it catch up
@@ -87,6 +93,7 @@ class Monkey {
   unsigned long frames() const { return frames_; }
   double longest() const { return longest_; }
   const std::string& lastAction() const { return lastAction_; }
+  const std::string& longestAfter() const { return longestAfter_; }
 
  private:
   bool fail(std::string why) {
@@ -219,7 +226,7 @@ class Monkey {
   std::vector<fs::path> lessons_, scenes_;
   double longest_ = 0;
   bool finished_ = false;
-  std::string failure_, lastAction_ = "none";
+  std::string failure_, lastAction_ = "none", longestAfter_;
 };
 
 TEST(Monkey, TheWindowSurvivesRandomInputOverEveryLessonAndScene) {
@@ -235,8 +242,8 @@ TEST(Monkey, TheWindowSurvivesRandomInputOverEveryLessonAndScene) {
   Monkey monkey(seed, events);
   ViewerLaunch launch;
   launch.scene = defaultScene();
-  launch.width = 1280;
-  launch.height = 720;
+  launch.width = 1024;  // a projector's 1024 × 768 less the title bar; resizes reach the rest
+  launch.height = 600;
   launch.driver = [&monkey](Viewer& v, InputQueue& q, GlfwWindow& w, double last) { return monkey(v, q, w, last); };
   int status = -1;
   try {
@@ -245,7 +252,7 @@ TEST(Monkey, TheWindowSurvivesRandomInputOverEveryLessonAndScene) {
     FAIL() << "the window did not open: " << e.what();
   }
   std::cout << "monkey: " << monkey.done() << " events in " << monkey.frames() << " frames, the longest frame "
-            << monkey.longest() << " s" << std::endl;
+            << monkey.longest() << " s (after: " << monkey.longestAfter() << ")" << std::endl;
   const std::string replay = "replay: VPLAB_MONKEY_SEED=" + std::to_string(seed) +
                              " VPLAB_MONKEY_EVENTS=" + std::to_string(events) + " xvfb-run -a test_monkey";
   EXPECT_EQ(monkey.failure(), "") << replay;
