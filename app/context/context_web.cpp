@@ -12,6 +12,7 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <emscripten.h>
 #include <emscripten/html5.h>
 
 #include <algorithm>
@@ -73,7 +74,11 @@ void GlfwWindow::framebufferSize(int& width, int& height) const {
   const int h = std::clamp(int(std::lround(cssHeight * ratio)), 1, kLargestCanvas);
   int current = 0, currentHeight = 0;
   glfwGetWindowSize(window_, &current, &currentHeight);
-  if (w != current || h != currentHeight) glfwSetWindowSize(window_, w, h);  // sets canvas.width and .height
+  // Not glfwSetWindowSize: Emscripten's GLFW asks the browser for full screen when the size it is
+  // given equals the screen's (a phone's page, a browser in kiosk mode), which a page may not do
+  // without a user's gesture (Chromium rejects it: "TypeError: Permissions check failed"; found by
+  // the monkey test). Browser.setCanvasSize sets canvas.width and .height and tells GLFW the size.
+  if (w != current || h != currentHeight) EM_ASM({ Browser.setCanvasSize($0, $1); }, w, h);
   glfwGetFramebufferSize(window_, &width, &height);
 }
 

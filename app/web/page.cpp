@@ -267,6 +267,8 @@ struct Page {
     j["language"] = std::string(text::languageCode(s.display.language));
     j["labels"] = {{"menu.file", ui::tr(s, "File")}};  // the File menu's title as the menu bar shows it
     j["statusIsError"] = s.statusIsError;
+    j["caughtErrors"] = viewer.caughtErrors();  // errors a frame caught (none is expected: the monkey test fails on any)
+    j["lastCaughtError"] = viewer.lastCaughtError();
     j["hash"] = shownHash;
     j["camera"] = {{"vrp", {c.vrp.x, c.vrp.y, c.vrp.z}},
                    {"prp", {c.prp.x, c.prp.y, c.prp.z}},
