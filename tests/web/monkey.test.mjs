@@ -17,7 +17,7 @@ import { after, before, test } from 'node:test';
 import { cssRect, launchBrowser, openPage, startServer, vplabState, webDir } from './support.mjs';
 
 const seed = Number(process.env.VPLAB_MONKEY_SEED ?? 41);
-const events = Number(process.env.VPLAB_MONKEY_EVENTS ?? 1500);
+const events = Number(process.env.VPLAB_MONKEY_EVENTS ?? 600);
 
 /** mulberry32: a small seeded generator, so that a seed replays the same events. */
 function generator(s) {
