@@ -79,7 +79,9 @@ bool Session::beginFrame() {
 
 void Session::endFrame(double now) {
   if (!autosave_) return;
-  autosave_->update(state_.doc, now, recoveryView());
+  // What else is on screen matters only to a file that will be written: not built every clean frame.
+  if (state_.doc.dirty()) autosave_->update(state_.doc, now, recoveryView());
+  else autosave_->update(state_.doc, now);
   if (autosave_->error() != autosaveError_) {  // say it once, not every frame
     autosaveError_ = autosave_->error();
     if (!autosaveError_.empty()) setStatus(autosaveError_, true);

@@ -164,7 +164,11 @@ void Viewer::frame(GLuint framebuffer, int width, int height) {
   ImGui::SetCurrentContext(imgui_);
   try {
     drawFrame(framebuffer, width, height);
-    lastGood_ = LastGood{s_.doc.shown(), s_.display, s_.pipeline};
+    // The scene is copied only when it changed (a frame of hover copies nothing of it).
+    if (!lastGood_ || lastGood_->revision != s_.doc.shownRevision() || lastGood_->generation != s_.doc.generation())
+      lastGood_ = LastGood{s_.doc.shown(), s_.doc.shownRevision(), s_.doc.generation(), s_.display, s_.pipeline};
+    lastGood_->display = s_.display;
+    lastGood_->pipeline = s_.pipeline;
     caught_.inARow = 0;
   } catch (const std::exception& e) {
     recoverFrom(e.what());

@@ -147,6 +147,7 @@ class Viewer {
   // The state the last frame that ended well was drawn from: what recoverFrom shows again.
   struct LastGood {
     Scene scene;
+    unsigned revision = 0, generation = 0;  // the document's shownRevision and generation it is of
     DisplaySettings display;
     PipelineOptions pipeline;
   };
