@@ -133,11 +133,18 @@ void ViewPanes::lastValidNote() {
   const Camera& edited = s_.doc.scene().camera;
   const std::optional<CameraProblem> problem = cameraProblem(edited);
   const std::string why = problem ? cameraProblemText(*problem, edited, s_.display.language) : s_.doc.error();
-  const std::string note = problem ? ui::tr(s_, "This view shows the last valid camera: {1}", {why})
-                                   : ui::tr(s_, "This view shows the last valid scene: {1}", {why});
-  // Across the view's bottom, wrapped to its width, over a dark band: readable on any picture.
+  std::string note = problem ? ui::tr(s_, "This view shows the last valid camera: {1}", {why})
+                             : ui::tr(s_, "This view shows the last valid scene: {1}", {why});
+  // Across the view's bottom, wrapped to its width, over a dark band: readable on any picture. A
+  // view too small for the reason (a projector's 1.6) keeps most of its picture: the reason is in the
+  // camera panel beside it.
   const float pad = 5 * uiScale_, wrap = std::max(1.f, max.x - min.x - 2 * pad);
-  const ImVec2 text = ImGui::CalcTextSize(note.c_str(), nullptr, false, wrap);
+  ImVec2 text = ImGui::CalcTextSize(note.c_str(), nullptr, false, wrap);
+  if (text.y > (max.y - min.y) * 0.3f) {
+    note = problem ? ui::tr(s_, "This view shows the last valid camera (why: camera panel)")
+                   : ui::tr(s_, "This view shows the last valid scene (why: status line)");
+    text = ImGui::CalcTextSize(note.c_str(), nullptr, false, wrap);
+  }
   const float top = std::max(min.y, max.y - text.y - 2 * pad);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->PushClipRect(min, max, true);
