@@ -133,6 +133,7 @@ GLuint ViewImages::image(ViewRequest r, unsigned runRevision) {
   slot.asked = true;
   Stamp stamp{runRevision, r.settings, r.highlights, r.width, r.height, r.samples, r.uiScale};
   if (slot.texture != 0 && slot.stamp == stamp) return slot.texture;
+  slot.lastRequest = r;
   if (worker_) return onWorker(slot, std::move(r), std::move(stamp));
   if (pacing_.triangles > 0) return inSlices(slot, std::move(r), std::move(stamp));
   try {

@@ -117,6 +117,12 @@ class ViewImages {
   GLuint texture(ViewKind kind) const { return slots_[size_t(kind)].texture; }
   int width(ViewKind kind) const { return slots_[size_t(kind)].width; }
   int height(ViewKind kind) const { return slots_[size_t(kind)].height; }
+  /// What `kind`'s image was last drawn from (or is being drawn from): the tests build its display
+  /// list again to see where its labels went. Null before its first image.
+  const ViewRequest* lastRequest(ViewKind kind) const {
+    const auto& r = slots_[size_t(kind)].lastRequest;
+    return r ? &*r : nullptr;
+  }
   /// How many images were drawn (not reused): tests check hover frames cost none.
   unsigned drawn() const { return drawn_; }
   /// Every view is drawn again when next asked for.
@@ -155,6 +161,7 @@ class ViewImages {
     // alive for the list, which points into them), and how far.
     std::optional<ViewRequest> slicing;
     ViewRenderer::Slices slices;
+    std::optional<ViewRequest> lastRequest;  // what its image was last drawn from (lastRequest())
   };
   GLuint onWorker(Slot& slot, ViewRequest r, Stamp stamp);
   GLuint inSlices(Slot& slot, ViewRequest r, Stamp stamp);

@@ -68,6 +68,11 @@ class Viewer {
   double wakeIn() const;
   /// How many times a view was drawn (not reused from its last image): tests check hover frames cost none.
   unsigned viewsDrawn() const { return images_.drawn(); }
+  /// The views asked for in the last frame, what each was drawn from, and the metrics their labels
+  /// are measured with (for the tests of where the labels went: tests/app/ui/lesson_layout_test.cpp).
+  std::vector<ViewKind> viewsShown() const { return images_.asked(); }
+  const ViewRequest* viewRequest(ViewKind kind) const { return images_.lastRequest(kind); }
+  const TextMetrics& viewTextMetrics() const { return renderer_.textMetrics(); }
   /// Draws the views on a render thread with `context` (GlContext::createShared of the window's):
   /// a view whose image is not ready within the frame shows its last image with a busy mark.
   /// `wake` wakes the window's event wait (called on the render thread). Without it (headless, the

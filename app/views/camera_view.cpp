@@ -87,8 +87,9 @@ void addVanishingPoints(const PipelineRun& run, const theme::Palette& pal, Langu
     const std::string x = formatNumber(std::round(vp.dc.x), {10}), y = formatNumber(std::round(vp.dc.y), {10});
     std::string name = inside ? text::fill(lang, "VP {1} ({2}, {3})", {names[axis], x, y})
                               : text::fill(lang, "VP {1} ({2}, {3}) outside", {names[axis], x, y});
-    labels.push_back({glm::clamp(at, Vec2(4), Vec2(width - 4, height - 4)) + Vec2(8, -8), std::move(name), colors[axis],
-                      TextSize::label, Anchor::left});
+    const Vec2 shown = glm::clamp(at, Vec2(4), Vec2(width - 4, height - 4));
+    labels.push_back({shown + Vec2(8, -8), std::move(name), colors[axis], TextSize::label, Anchor::left, true, true, shown,
+                      0, text::fill(lang, "VP {1}", {names[axis]})});
   }
 }
 

@@ -1,5 +1,8 @@
-// Labels and titles in a view's pixels (origin top-left, y down), placed once for every backend:
-// anchored, rounded, kept inside the view and moved off each other and off the points they name.
+// Labels and titles in a view's pixels (origin top-left, y down), placed once for every backend in
+// one layout pass over the view: anchored, rounded, kept inside the view, off each other, off the
+// points they name and off the view's axes; a label that finds no place near its point is
+// shortened, or dropped when a more important one needs the room (issue 37: labels never sit on
+// each other, and each stays by what it names).
 // Text is measured through TextMetrics (app/fonts/font_atlas.h measures with Dear ImGui's font
 // atlas, the GL backend draws those very glyphs, the SVG names the same font at the same size).
 #pragma once
@@ -29,6 +32,15 @@ struct TextLabel {
   bool avoid = true;   // moved near its place when it would overlap a label placed before it or a marker
   /// The point the label names (a drawn marker, pixels): no label may cover it.
   std::optional<Vec2> marker{};
+  /// Placed before the less important, which give way (moved, shortened, dropped) when both want a place.
+  int priority = 0;
+  /// Shown instead when the text finds no place near its point ("vordere Ebene F" → "F").
+  std::string shortText{};
+};
+
+/// A line drawn in the view (an axis) that no label may cross, in pixels.
+struct LabelObstacle {
+  Vec2 a, b;
 };
 
 /// A label where it goes: its top-left corner and size in pixels.
@@ -39,6 +51,10 @@ struct PlacedLabel {
   glm::vec4 color;
   TextSize size = TextSize::label;
   bool shadow = true;
+  /// The point it names (its marker, else the place asked for) and how far from it the label may
+  /// be: its nearest edge within `reach` pixels (what the tests check).
+  glm::vec2 anchor{0, 0};
+  float reach = 0;
 };
 
 /// How large a text is, and the lecture mode's scale (text, line widths and markers grow with it).
@@ -50,10 +66,17 @@ class TextMetrics {
   virtual float scale() const = 0;
 };
 
-/// Places the labels in order in a width × height view: anchored, rounded, clamped to the view,
-/// and moved near their place when one would overlap a label placed before it or come within
-/// 7 px (× scale) of any label's marker.
+/// Places the labels in a width × height view, the more important first (by priority, then in
+/// order): anchored and rounded. A label that would leave the view, overlap a label placed before
+/// it, come within 7 px (× scale) of a marker or cross an obstacle is moved around its point (never
+/// farther than 2.5 lines and a gap), then tried in its short text, then dropped. Labels that do not
+/// avoid (titles, a plot's fixed scale) stay where asked and are placed first. A label that says
+/// what one placed before it says about the same point is dropped (a highlighted handle's name
+/// beside the overlay's).
 std::vector<PlacedLabel> placeLabels(const std::vector<TextLabel>& labels, const TextMetrics& metrics, int width,
-                                     int height);
+                                     int height, const std::vector<LabelObstacle>& obstacles = {});
+
+/// How far a placed label's box is from a point (0 inside it), in pixels.
+float distanceToBox(const PlacedLabel& label, glm::vec2 point);
 
 }  // namespace vplab

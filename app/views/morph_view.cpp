@@ -119,12 +119,14 @@ void morphView(const ViewInput& in, DisplayList& list) {
   std::vector<TextLabel> labels;
   char title[160];
   std::snprintf(title, sizeof title, "t = %.2f   %s", t, stageName(t, s.language).c_str());
-  labels.push_back({{10, 10}, title, pal.text, TextSize::title, Anchor::topLeft});
-  labels.push_back({{10, 38}, text::fill(s.language, "step: {1}", {morphStepName(std::min(t, 3.999))}), pal.frustum,
-                    TextSize::label, Anchor::topLeft});
+  // The stage and the step are the view's heading: fixed in its corner, the axes' names place around them.
+  const double lineGap = 28.0 * scale;
+  labels.push_back({{10, 10}, title, pal.text, TextSize::title, Anchor::topLeft, true, false});
+  labels.push_back({{10, 10 + lineGap}, text::fill(s.language, "step: {1}", {morphStepName(std::min(t, 3.999))}),
+                    pal.frustum, TextSize::label, Anchor::topLeft, true, false});
   auto axisLabel = [&](const Vec3& p, const char* text, const glm::vec4& color) {
     const Projected q = projectToPixels(view, p, w, h);
-    if (q.visible) labels.push_back({q.pixel + Vec2(6, 0), text, color, TextSize::label, Anchor::left});
+    if (q.visible) labels.push_back({q.pixel + Vec2(6, 0) * double(scale), text, color, TextSize::label, Anchor::left, true, true, q.pixel});
   };
   axisLabel({axis, 0, 0}, "x", pal.u);
   axisLabel({0, t > 3.5 ? -axis : axis, 0}, "y", pal.v);

@@ -78,8 +78,8 @@ class DrawnEdges {
   std::vector<uint32_t> slots_;  // 0: empty, else 1 + the key's index
 };
 
-void addCube(const theme::Palette& pal, Language lang, Marks& b, std::vector<TextLabel>& labels, const ViewCamera& view,
-             int w, int h, bool withLabels) {
+void addCube(const theme::Palette& pal, Language lang, Marks& b, std::vector<TextLabel>& labels,
+             std::vector<LabelObstacle>& axes, const ViewCamera& view, int w, int h, bool withLabels) {
   using geometry::cubeCorner;
   for (int i = 0; i < 8; ++i)
     for (int bit : {1, 2, 4})
@@ -90,9 +90,16 @@ void addCube(const theme::Palette& pal, Language lang, Marks& b, std::vector<Tex
   b.line({0, 0, 0}, {0, len, 0}, pal.v, theme::kLineWidth);
   b.line({0, 0, 0}, {0, 0, len}, pal.n, theme::kLineWidth);
   if (!withLabels) return;
+  // No label crosses an axis ("vorne z = 1" lay across y in every view).
+  const Projected origin = projectToPixels(view, {0, 0, 0}, w, h);
+  for (const Vec3& end : {Vec3(len, 0, 0), Vec3(0, len, 0), Vec3(0, 0, len)}) {
+    const Projected q = projectToPixels(view, end, w, h);
+    if (origin.visible && q.visible) axes.push_back({origin.pixel, q.pixel});
+  }
   for (const geometry::AnchoredLabel& l : geometry::npcCubeLabels(pal, lang)) {
     const Projected q = projectToPixels(view, l.at, w, h);
-    if (q.visible) labels.push_back({q.pixel, l.text, l.color, TextSize::label, Anchor::center});
+    if (q.visible)
+      labels.push_back({q.pixel, l.text, l.color, TextSize::label, Anchor::center, true, true, {}, l.priority, l.shortText});
   }
 }
 
@@ -195,7 +202,8 @@ void npcView(const ViewInput& in, DisplayList& list) {
 
   Marks cube;
   std::vector<TextLabel> labels;
-  if (ov.cube) addCube(pal, s.language, cube, labels, view, w, h, ov.labels);
+  std::vector<LabelObstacle> axes;
+  if (ov.cube) addCube(pal, s.language, cube, labels, axes, view, w, h, ov.labels);
   // The translucent front face lies in z = 1, where clipping puts the scene's cut polygons and
   // edges: pushed back, it loses every depth tie to them instead of z-fighting (the cube's lines
   // are not pushed back).
@@ -233,11 +241,11 @@ void npcView(const ViewInput& in, DisplayList& list) {
       const Projected q = projectToPixels(view, p, w, h);
       if (q.visible)
         labels.push_back({q.pixel + Vec2(7, -9) * double(scale), v.name, theme::ink(pal, v.color), TextSize::label,
-                          Anchor::left, true, true, q.pixel});
+                          Anchor::left, true, true, q.pixel, 1});
     }
   }
   newEdges.emit(list, Space::npc, Depth::xray, scale);
-  if (!labels.empty()) list.add(Text{placeLabels(labels, in.text, w, h), pal.labelOutline});
+  if (!labels.empty()) list.add(Text{placeLabels(labels, in.text, w, h, axes), pal.labelOutline});
 }
 
 DisplayList npcView(const ViewInput& in) {

@@ -90,11 +90,16 @@ std::vector<NamedPoint> polygonVertexNames(const Scene& scene) {
 
 std::vector<AnchoredLabel> npcCubeLabels(const theme::Palette& pal, Language lang) {
   const double len = kNpcAxisLength;
-  return {{{len + 0.07, 0, 0}, "x", pal.u},          {{0, len + 0.07, 0}, "y", pal.v},
-          {{0, 0, len + 0.07}, "z", pal.n},          {{-0.06, -0.06, -0.06}, "0", pal.text},
-          {{1, -0.07, 0}, "1", pal.u},               {{-0.07, 1, 0}, "1", pal.v},
-          {{-0.07, -0.07, 1}, "1", pal.n},           {{0.5, 1.08, 1}, text::Text("front z = 1").in(lang), pal.frustum},
-          {{0.5, 1.08, 0}, text::Text("back z = 0").in(lang), pal.frustum}};
+  // The axes' names first, the faces' next, the ticks last (they give way when the view is small).
+  return {{{len + 0.07, 0, 0}, "x", pal.u, {}, 2},
+          {{0, len + 0.07, 0}, "y", pal.v, {}, 2},
+          {{0, 0, len + 0.07}, "z", pal.n, {}, 2},
+          {{-0.06, -0.06, -0.06}, "0", pal.text},
+          {{1, -0.07, 0}, "1", pal.u},
+          {{-0.07, 1, 0}, "1", pal.v},
+          {{-0.07, -0.07, 1}, "1", pal.n},
+          {{0.5, 1.08, 1}, text::Text("front z = 1").in(lang), pal.frustum, "z = 1", 1},
+          {{0.5, 1.08, 0}, text::Text("back z = 0").in(lang), pal.frustum, "z = 0", 1}};
 }
 
 }  // namespace vplab::geometry

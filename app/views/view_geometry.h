@@ -46,6 +46,8 @@ struct AnchoredLabel {
   Vec3 at;
   std::string text;
   glm::vec4 color;
+  std::string shortText{};  // where the text finds no room (labels.h)
+  int priority = 0;
 };
 /// The NPC cube's axis length and its labels (axes, 0 and 1 ticks, the front and back faces).
 inline constexpr double kNpcAxisLength = 1.18;

@@ -120,12 +120,17 @@ DisplayList worldView(const ViewInput& in) {
   const Mat4 &wcFromNpc = run.wcFromNpc, &wcFromVrc = run.wcFromVrc;
   Marks b;
   std::vector<TextLabel> labels;
-  auto label = [&](const Vec3& p, const std::string& text, const glm::vec4& color, Vec2 offset = {8, 0}) {
+  // Priorities when labels compete for room (labels.h): a lesson's highlighted handle, then the
+  // camera's points and axes, then planes, the window and vertex names.
+  enum Priority { kPlane = 0, kCamera = 1, kHot = 2 };
+  auto label = [&](const Vec3& p, const std::string& text, const glm::vec4& color, Vec2 offset = {8, 0},
+                   int priority = kPlane, std::string shortText = {}) {
     if (!ov.labels) return;
     const Projected q = projectToPixels(view, p, w, h);
     // The offset from the point grows with the text (and the markers) at a large UI scale.
     if (q.visible)
-      labels.push_back({q.pixel + offset * double(scale), text, color, TextSize::label, Anchor::left, true, true, q.pixel});
+      labels.push_back({q.pixel + offset * double(scale), text, color, TextSize::label, Anchor::left, true, true, q.pixel,
+                        priority, std::move(shortText)});
   };
 
   if (ov.newEdges) {
@@ -154,8 +159,8 @@ DisplayList worldView(const ViewInput& in) {
         b.line(run.camera.prp, c[front[i]], glm::vec4(glm::vec3(pal.frustum), 0.6f), 1.5f, pal.projectorDashPx);
     }
     // The lecture's names: vordere/hintere Clippingebene (front and back plane).
-    label(c[7], text::Text("front F").in(lang), pal.frustum, {6, -10});
-    label(c[3], text::Text("back B").in(lang), pal.frustum, {6, -10});
+    label(c[7], text::Text("front F").in(lang), pal.frustum, {6, -10}, kPlane, "F");
+    label(c[3], text::Text("back B").in(lang), pal.frustum, {6, -10}, kPlane, "B");
   }
   // User clip planes (DGL wiki): a translucent square on each, around its point, with its normal.
   const double planeSize = geometry::clipPlaneSquareSize(run.camera);
@@ -189,12 +194,12 @@ DisplayList worldView(const ViewInput& in) {
     b.point(cam.prp, pal.prp, theme::kPointSize);
     if (cam.projection == Projection::perspective)
       b.line(cam.vrp, cam.prp, glm::vec4(glm::vec3(pal.n), 0.5f), 1.5f, theme::kDashPx);
-    label(cam.vrp + len * run.vrc.u, "U", pal.u);
-    label(cam.vrp + len * run.vrc.v, "V", pal.v);
-    label(cam.vrp + len * run.vrc.n, "N", pal.n);
-    label(cam.vrp + len * glm::normalize(cam.vup), "VUP", pal.vup);
-    label(cam.vrp, "VRP", pal.vrp, {8, 12});
-    label(cam.prp, "PRP", pal.prp);
+    label(cam.vrp + len * run.vrc.u, "U", pal.u, {8, 0}, kCamera);
+    label(cam.vrp + len * run.vrc.v, "V", pal.v, {8, 0}, kCamera);
+    label(cam.vrp + len * run.vrc.n, "N", pal.n, {8, 0}, kCamera);
+    label(cam.vrp + len * glm::normalize(cam.vup), "VUP", pal.vup, {8, 0}, kCamera);
+    label(cam.vrp, "VRP", pal.vrp, {8, 12}, kCamera);
+    label(cam.prp, "PRP", pal.prp, {8, 0}, kCamera);
   }
   if (ov.vertexNames) {
     // The polygons' vertices as the exercise sheets name them: P1 … Pn in the given order.
@@ -206,7 +211,7 @@ DisplayList worldView(const ViewInput& in) {
   const Highlights& hl = in.highlights;
   for (const Highlights::HandleMark& m : hl.handles) {
     b.point(m.wc, m.hot ? pal.handleHot : pal.handle, m.hot ? 15.f : 9.f);
-    if (m.hot) label(m.wc, handleLabel(m.name, lang), pal.handleHot, {10, -12});
+    if (m.hot) label(m.wc, handleLabel(m.name, lang), pal.handleHot, {10, -12}, kHot);
   }
   if (hl.probeWc) b.point(*hl.probeWc, pal.probe, 14.f);
   // A lesson's highlighted planes: a face of the view volume as the step-through shows its plane,
