@@ -204,6 +204,7 @@ void Viewer::drawFrame(GLuint framebuffer, int width, int height) {
   if (s_.uiScale != uiScale_ || s_.display.theme != styledTheme_) applyUiScale(s_.uiScale);
   if (settleFrames_ > 0) --settleFrames_;
   images_.beginFrame();
+  s_.visibleRects.clear();  // filled again by this frame's widgets
   run_.beginFrame();
   if (session_.beginFrame()) requestFrames(2);
   const Scene atFrameStart = s_.doc.scene();

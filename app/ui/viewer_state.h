@@ -125,6 +125,9 @@ struct ViewerState {
   // Where named widgets and views were drawn last frame (screen coordinates): the UI tests drive
   // the viewer through them with synthetic input.
   std::map<std::string, ImVec4> rects;  // x, y, width, height
+  // The part of each rect recorded in the last frame that could be seen: inside its window and its
+  // scroll region, not scrolled away (a lesson step's evidence must be on screen: issue 37).
+  std::map<std::string, ImVec4> visibleRects;
 };
 
 }  // namespace vplab

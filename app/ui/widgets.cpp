@@ -14,6 +14,12 @@ namespace vplab::ui {
 void recordRect(ViewerState& s, const char* id) {
   const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
   s.rects[id] = ImVec4(a.x, a.y, b.x - a.x, b.y - a.y);
+  // The draw list's clip rect is the window's visible area, within its parents' (child windows,
+  // tables' cells): what of the item can be seen.
+  const ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImVec2 c0 = draw->GetClipRectMin(), c1 = draw->GetClipRectMax();
+  const ImVec2 v0(std::max(a.x, c0.x), std::max(a.y, c0.y)), v1(std::min(b.x, c1.x), std::min(b.y, c1.y));
+  s.visibleRects[id] = ImVec4(v0.x, v0.y, std::max(0.f, v1.x - v0.x), std::max(0.f, v1.y - v0.y));
 }
 
 namespace {
