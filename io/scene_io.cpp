@@ -31,13 +31,14 @@ using Reader = JsonReader;
 SceneObject readObject(const Reader& r, const Json& j, const std::string& path, size_t index,
                        const std::filesystem::path& baseDir, const Limits& limits, const MeshSize& used,
                        const BuiltMeshes* built) {
-  r.object(j, path, {"name", "shape", "segments", "vertices", "file", "obj", "color", "visible", "translate", "rotate", "scale"});
+  r.object(j, path, {"name", "name_de", "shape", "segments", "vertices", "file", "obj", "color", "visible", "translate", "rotate", "scale"});
   SceneObject o;
   const std::string s = r.string(r.required(j, path, "shape"), path + "/shape");
   const auto shape = shapeFromString(s);
   if (!shape) r.fail(path + "/shape", "\"" + s + "\" is not one of cube, tetrahedron, cylinder, sphere, polygon, mesh");
   o.shape = *shape;
   o.name = j.contains("name") ? r.string(j["name"], path + "/name") : std::string(s) + " " + std::to_string(index);
+  if (j.contains("name_de")) o.nameDe = r.string(j["name_de"], path + "/name_de");
   auto onlyFor = [&](const char* key, bool allowed, const char* shapes) {
     if (j.contains(key) && !allowed) r.fail(path + "/" + key, std::string("is only for ") + shapes + ", not for a " + s);
   };
@@ -92,6 +93,7 @@ Json toJson(const Vec3& v) { return Json::array({v.x, v.y, v.z}); }
 Json toJson(const SceneObject& o) {
   Json j;
   j["name"] = o.name;
+  if (!o.nameDe.empty()) j["name_de"] = o.nameDe;
   j["shape"] = std::string(toString(o.shape));
   if (o.shape == Shape::cylinder || o.shape == Shape::sphere) j["segments"] = o.segments;
   if (o.shape == Shape::polygon) {
@@ -207,10 +209,12 @@ Scene parseScene(std::string_view text, std::string_view source, const std::file
                  const Limits& limits, const BuiltMeshes* built) {
   const Reader r{std::string(source)};
   const Json j = parseCheckedJson(text, source, limits.jsonDepth);
-  r.object(j, "", {"title", "caption", "camera", "device", "background", "lights", "clip_planes", "objects"});
+  r.object(j, "", {"title", "title_de", "caption", "caption_de", "camera", "device", "background", "lights", "clip_planes", "objects"});
   Scene scene;
   if (auto it = j.find("title"); it != j.end()) scene.title = r.string(*it, "/title");
   if (auto it = j.find("caption"); it != j.end()) scene.caption = r.string(*it, "/caption");
+  if (auto it = j.find("title_de"); it != j.end()) scene.titleDe = r.string(*it, "/title_de");
+  if (auto it = j.find("caption_de"); it != j.end()) scene.captionDe = r.string(*it, "/caption_de");
   scene.camera = readCamera(r, r.required(j, "", "camera"), "/camera");
   if (auto it = j.find("device"); it != j.end()) {
     r.object(*it, "/device", {"width", "height"});
@@ -273,6 +277,8 @@ std::string sceneToJson(const Scene& scene) {
   Json j;
   if (!scene.title.empty()) j["title"] = scene.title;
   if (!scene.caption.empty()) j["caption"] = scene.caption;
+  if (!scene.titleDe.empty()) j["title_de"] = scene.titleDe;
+  if (!scene.captionDe.empty()) j["caption_de"] = scene.captionDe;
   j["camera"] = {{"vrp", toJson(c.vrp)},
                  {"prp", toJson(c.prp)},
                  {"vup", toJson(c.vup)},

@@ -530,6 +530,7 @@ PipelineJob::PipelineJob(const Scene& scene, const PipelineOptions& options, Pip
       o.generation = 0;
     }
     o.name = so.name;
+    o.nameDe = so.nameDe;
     o.color = so.color;
     o.mesh = so.mesh;
     o.wcFromMc = wcFromMcs[k];

@@ -56,7 +56,7 @@ enum class BoxVerdict : uint8_t { notTested, inside, outside, crossing };
 /// One object's pass through the pipeline. Vertex refs of clipped polygons below `vertexCount()`
 /// name mesh vertices; refs from `vertexCount()` on name vertices created by clipping.
 struct ObjectRun {
-  std::string name;
+  std::string name, nameDe;  // the scene object's (SceneObject::name, nameDe)
   Vec3 color{1};
   std::shared_ptr<const Mesh> mesh;  // MC, stage 0
   Mat4 wcFromMc{1.0};
@@ -189,6 +189,11 @@ class PipelineJob {
   uint64_t done_ = 0, total_ = 0;
   bool finished_ = false;
 };
+
+/// The object's name as a viewer in `lang` shows it (nameIn of its scene object).
+inline const std::string& nameIn(const ObjectRun& o, Language lang) {
+  return lang == Language::de && !o.nameDe.empty() ? o.nameDe : o.name;
+}
 
 /// Runs the five stages over the scene's visible objects, reusing `run`'s buffers.
 /// Throws vplab::Error when the camera is invalid (nothing in `run` is NaN or infinite then either:

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "pipeline/camera.h"
+#include "pipeline/language.h"
 #include "pipeline/device_mapping.h"
 #include "pipeline/mesh.h"
 #include "pipeline/modeling.h"
@@ -19,7 +20,8 @@ std::string_view toString(Shape s);
 std::optional<Shape> shapeFromString(std::string_view s);
 
 struct SceneObject {
-  std::string name;
+  std::string name;              // its name in files, lessons and links (the scene format's "name")
+  std::string nameDe;            // shown in a German viewer ("name_de"); empty: the name
   Shape shape = Shape::cube;
   int segments = 32;             // cylinder and sphere
   std::vector<Vec3> vertices;    // polygon, MC
@@ -54,6 +56,7 @@ struct UserClipPlane {
 struct Scene {
   std::string title;    // a preset's name, shown in the viewer's menu and title
   std::string caption;  // one or two sentences on the idea the scene shows
+  std::string titleDe, captionDe;  // the same in German ("title_de", "caption_de"); empty: the above
   Camera camera;
   Device device;
   Vec3 background{0.12, 0.12, 0.14};
@@ -72,6 +75,12 @@ std::shared_ptr<const Mesh> primitiveMesh(const SceneObject& object);
 /// Why the scene cannot be run (an invalid camera, an object's invalid transform, a missing mesh),
 /// naming the values; nullopt when it can.
 std::optional<std::string> sceneError(const Scene& scene);
+
+/// The words a viewer shows in `lang` (README "Scene format": a scene speaks the lecture's German
+/// beside its own language): the German ones when asked for and given, else those as written.
+const std::string& titleIn(const Scene& scene, Language lang);
+const std::string& captionIn(const Scene& scene, Language lang);
+const std::string& nameIn(const SceneObject& object, Language lang);
 
 /// The built-in default lecture scene (also assets/scenes/default.json).
 Scene defaultScene();

@@ -61,6 +61,7 @@ std::vector<SceneFileInfo> listPresetScenes() {
     std::ifstream in(e.path());
     const auto j = nlohmann::json::parse(in, nullptr, false);
     if (j.is_object() && j.contains("title") && j["title"].is_string()) info.title = j["title"].get<std::string>();
+    if (j.is_object() && j.contains("title_de") && j["title_de"].is_string()) info.titleDe = j["title_de"].get<std::string>();
     scenes.push_back(std::move(info));
   }
   std::sort(scenes.begin(), scenes.end(), [](const SceneFileInfo& a, const SceneFileInfo& b) {

@@ -3,6 +3,8 @@
 // up, or, for a program in its build tree only, the source tree it was built from.
 #pragma once
 
+#include "pipeline/language.h"
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -20,6 +22,8 @@ std::filesystem::path iconFile();
 struct SceneFileInfo {
   std::filesystem::path file;
   std::string title;  // the scene's "title", or its file name
+  std::string titleDe;  // its "title_de" (empty: none)
+  const std::string& titleIn(Language lang) const { return lang == Language::de && !titleDe.empty() ? titleDe : title; }
 };
 /// The scenes in assets/scenes/, the default lecture scene first, then by file name.
 std::vector<SceneFileInfo> listPresetScenes();

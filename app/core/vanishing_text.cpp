@@ -18,11 +18,11 @@ VanishingText vanishingText(const PipelineRun& run, const ObjectRun& object, Lan
   VanishingText t;
   if (projection == Projection::perspective)
     t.headline =
-        text::fill(lang, "{1}: {2}-point perspective", {object.name, std::to_string(vanishingPointCount(vps))});
+        text::fill(lang, "{1}: {2}-point perspective", {nameIn(object, lang), std::to_string(vanishingPointCount(vps))});
   else if (projection == Projection::oblique)
-    t.headline = text::fill(lang, "{1}: oblique parallel projection, no vanishing points", {object.name});
+    t.headline = text::fill(lang, "{1}: oblique parallel projection, no vanishing points", {nameIn(object, lang)});
   else
-    t.headline = text::fill(lang, "{1}: orthographic parallel projection, no vanishing points", {object.name});
+    t.headline = text::fill(lang, "{1}: orthographic parallel projection, no vanishing points", {nameIn(object, lang)});
   for (int i = 0; i < 3; ++i) {
     const VanishingPoint& vp = vps[size_t(i)];
     const bool parallel = parallelToViewPlane(run.vrc, vp.directionWc);

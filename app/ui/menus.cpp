@@ -56,7 +56,7 @@ void Menus::menuBar() {
     }
     if (ImGui::BeginMenu(ui::tr(s_, "Presets"), !s_.presets.empty())) {
       for (const SceneFileInfo& p : s_.presets)
-        if (ImGui::MenuItem(p.title.c_str())) {
+        if (ImGui::MenuItem((p.titleIn(s_.display.language) + "##" + p.file.filename().string()).c_str())) {
           const std::filesystem::path file = p.file;
           session_.unlessUnsaved([this, file] { session_.openScene(file); });
         }

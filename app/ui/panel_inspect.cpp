@@ -111,7 +111,7 @@ void matricesPanel(ViewerState& s) {
     for (size_t i = 0; i < run.sceneIndex.size(); ++i)
       if (int(run.sceneIndex[i]) == s.selectedObject) k = int(i);
     wcFromMc = run.objects[size_t(k)].wcFromMc;
-    objectName = run.objects[size_t(k)].name;
+    objectName = nameIn(run.objects[size_t(k)], s.display.language);
   }
   matrixTable(s, ("wcFromMc — " + objectName).c_str(), "wcFromMc", wcFromMc, tr(s, "stage 1, modeling"));
   matrixTable(s, "vrcFromWc", "vrcFromWc", run.vrcFromWc, tr(s, "stage 2, view orientation"));

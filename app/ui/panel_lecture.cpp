@@ -90,9 +90,11 @@ void stepThroughSection(ViewerState& s) {
   st.object = std::clamp(st.object, 0, int(scene.objects.size()) - 1);
   const char* objectLabel = tr(s, "object");
   fitLabel(objectLabel);
-  if (ImGui::BeginCombo(objectLabel, scene.objects[size_t(st.object)].name.c_str())) {
+  const Language lang = s.display.language;
+  if (ImGui::BeginCombo(objectLabel, nameIn(scene.objects[size_t(st.object)], lang).c_str())) {
     for (int i = 0; i < int(scene.objects.size()); ++i)
-      if (ImGui::Selectable(scene.objects[size_t(i)].name.c_str(), i == st.object)) st.object = i;
+      if (ImGui::Selectable((nameIn(scene.objects[size_t(i)], lang) + "##" + std::to_string(i)).c_str(), i == st.object))
+        st.object = i;
     ImGui::EndCombo();
   }
   const ObjectRun* o = runOf(s, st.object);
@@ -240,7 +242,7 @@ void depthPanel(ViewerState& s) {
   // At least ten lines of text high, so the curves read at any UI scale.
   const float height = std::clamp(ImGui::GetContentRegionAvail().y - line * 9, line * 10, line * 22);
   const ImGuiTextMetrics text(s.uiScale);
-  const DepthPlot plot = depthPlot(s.run(), int(width), int(height), text, {false, false});
+  const DepthPlot plot = depthPlot(s.run(), int(width), int(height), text, {false, false, s.display.language});
   drawDisplayList(*ImGui::GetWindowDrawList(), plot.list, origin);
   ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(ImGui::GetStyle().ItemSpacing.x, 0));
   ImGui::Dummy(ImVec2(width, plot.plot.max.y + 2));

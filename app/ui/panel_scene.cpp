@@ -136,7 +136,8 @@ void scenePanel(ViewerState& s, FileChooser& dialog) {
   if (ImGui::BeginListBox("##objects", ImVec2(-1, ImGui::GetTextLineHeightWithSpacing() * 5.5f))) {
     for (size_t i = 0; i < scene.objects.size(); ++i) {
       const SceneObject& o = scene.objects[i];
-      const std::string label = (o.visible ? o.name : tr(s, "(hidden) {1}", {o.name})) + "##" + std::to_string(i);
+      const std::string& name = nameIn(o, s.display.language);
+      const std::string label = (o.visible ? name : tr(s, "(hidden) {1}", {name})) + "##" + std::to_string(i);
       if (ImGui::Selectable(label.c_str(), s.selectedObject == int(i))) s.selectedObject = int(i);
     }
     ImGui::EndListBox();

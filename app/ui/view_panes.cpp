@@ -403,12 +403,14 @@ void ViewPanes::lectureWindow() {
       dl->ChannelsMerge();
       ui::recordRect(s_, "lecture.caption");
     };
-    if (!scene.title.empty() || !scene.caption.empty()) {
+    const std::string& title = titleIn(scene, s_.display.language);
+    const std::string& sceneCaption = captionIn(scene, s_.display.language);
+    if (!title.empty() || !sceneCaption.empty()) {
       ImGui::SetCursorPos(ImVec2(14, 10) * uiScale_);
       panelBehind([&] {
         ImGui::PushTextWrapPos(size.x * 0.6f);
-        if (!scene.title.empty()) ImGui::TextColored(ui::accentColor(), "%s", scene.title.c_str());
-        if (!scene.caption.empty()) ImGui::TextWrapped("%s", scene.caption.c_str());
+        if (!title.empty()) ImGui::TextColored(ui::accentColor(), "%s", title.c_str());
+        if (!sceneCaption.empty()) ImGui::TextWrapped("%s", sceneCaption.c_str());
         ImGui::PopTextWrapPos();
       });
     }

@@ -303,9 +303,11 @@ void Viewer::controlsWindow() {
   // no room at a projector's scale.
   if (!s_.lesson && (!scene.title.empty() || !scene.caption.empty())) {
     ImGui::PushStyleColor(ImGuiCol_Text, ui::accentColor());
-    ImGui::TextWrapped("%s", scene.title.empty() ? ui::tr(s_, "Scene") : scene.title.c_str());
+    const std::string& title = titleIn(scene, s_.display.language);
+    ImGui::TextWrapped("%s", title.empty() ? ui::tr(s_, "Scene") : title.c_str());
     ImGui::PopStyleColor();
-    if (!scene.caption.empty()) ImGui::TextWrapped("%s", scene.caption.c_str());
+    if (const std::string& caption = captionIn(scene, s_.display.language); !caption.empty())
+      ImGui::TextWrapped("%s", caption.c_str());
     ImGui::Spacing();
   }
   // The tabs stay in place while their panel scrolls; the status line stays below.

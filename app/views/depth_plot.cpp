@@ -193,15 +193,15 @@ DepthPlot depthPlot(const PipelineRun& run, int width, int plotHeight, const Tex
     }
     const double shownLo = std::clamp(lo, c.back, c.front), shownHi = std::clamp(hi, c.back, c.front);
     const float x0 = std::round(out.at(shownLo, 0).x), x1 = std::max(std::round(out.at(shownHi, 0).x), x0 + 2);
-    DepthPlot::Bar bar{o.name, {{0, rowTop}, {float(width), rowTop + m.line}},
+    DepthPlot::Bar bar{nameIn(o, options.language), {{0, rowTop}, {float(width), rowTop + m.line}},
                        {{x0, std::round(rowTop + m.line * 0.25f)}, {x1, std::round(rowTop + m.line * 0.75f)}}, lo, hi};
     const glm::vec4 color(glm::vec3(o.color), 0.9f);
     bars.quad({x0, bar.bar.min.y, kFlat}, {x1, bar.bar.min.y, kFlat}, {x1, bar.bar.max.y, kFlat}, {x0, bar.bar.max.y, kFlat},
               color);
     // The name beside the bar, on whichever side has room.
-    const float nameWidth = float(text.measure(o.name, TextSize::label).x);
+    const float nameWidth = float(text.measure(bar.name, TextSize::label).x);
     const float nameX = x1 + 6 + nameWidth <= p1.x ? x1 + 6 : std::max(0.f, x0 - 6 - nameWidth);
-    labels.push_back(fixedLabel({nameX, rowTop}, o.name, kLabel));
+    labels.push_back(fixedLabel({nameX, rowTop}, bar.name, kLabel));
     out.bars.push_back(std::move(bar));
     rowTop += m.rowHeight();
   }

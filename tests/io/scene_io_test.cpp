@@ -158,6 +158,8 @@ TEST(SceneIo, BadScenesNameTheJsonPath) {
       {"unknown key in a light", [](J& j) { j["lights"] = {{{"position", {1, 2, 3}}, {"intensity", 2}}}; },
        {"/lights/0/intensity: unknown key"}},
       {"not an object", [](J& j) { j = J::array(); }, {"bad.json: /: must be an object, not array"}},
+      {"a German name that is no text", [](J& j) { j["objects"][0]["name_de"] = 3; }, {"bad.json: /objects/0/name_de: "}},
+      {"a German title that is no text", [](J& j) { j["title_de"] = J::array(); }, {"bad.json: /title_de: "}},
       {"vrp a string", [](J& j) { j["camera"]["vrp"] = "origin"; }, {"/camera/vrp: must be an array of 3 numbers, not string"}},
       {"vrp of 2", [](J& j) { j["camera"]["vrp"] = {0, 0}; }, {"/camera/vrp: must be an array of 3 numbers, not an array of 2"}},
       {"vup element a bool", [](J& j) { j["camera"]["vup"][1] = true; }, {"/camera/vup/1: must be a number, not boolean"}},
@@ -239,6 +241,8 @@ TEST(SceneIo, LoadSceneErrorsNameTheFile) {
 void expectSameScene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.title, b.title);
   EXPECT_EQ(a.caption, b.caption);
+  EXPECT_EQ(a.titleDe, b.titleDe);
+  EXPECT_EQ(a.captionDe, b.captionDe);
   EXPECT_EQ(a.camera.vrp, b.camera.vrp);
   EXPECT_EQ(a.camera.prp, b.camera.prp);
   EXPECT_EQ(a.camera.vup, b.camera.vup);
@@ -266,6 +270,7 @@ void expectSameScene(const Scene& a, const Scene& b) {
     const SceneObject &x = a.objects[i], &y = b.objects[i];
     SCOPED_TRACE(x.name);
     EXPECT_EQ(x.name, y.name);
+    EXPECT_EQ(x.nameDe, y.nameDe);
     EXPECT_EQ(x.shape, y.shape);
     if (x.shape == Shape::sphere || x.shape == Shape::cylinder) {
       EXPECT_EQ(x.segments, y.segments);
@@ -302,7 +307,10 @@ Scene richScene() {
   t.scale = {2, 2, 2};
   s.objects.push_back(test::shapeObject("can", Shape::cylinder, t, 9));
   s.objects.back().color = {0, 1, 0.123456789012345};
+  s.objects.back().nameDe = "Dose";
   s.title = "Rich \"scene\"";
+  s.titleDe = "Reiche „Szene“";
+  s.captionDe = "Jedes Feld des Formats.";
   s.caption = "Every field of the format, with values that need all 17 digits: ü, ∞.";
   return s;
 }
@@ -351,7 +359,25 @@ TEST(SceneIo, ShippedScenesLoadAndRun) {
   Scene builtIn = defaultScene();
   fromFile.title = builtIn.title;  // presentation only
   fromFile.caption = builtIn.caption;
+  fromFile.titleDe = builtIn.titleDe;
+  fromFile.captionDe = builtIn.captionDe;
   expectSameScene(builtIn, fromFile);
+}
+
+// German throughout (issue 37): every shipped scene has its title, caption and each object's name in
+// German too, and the German differs from the English where it is a sentence (not copied over).
+TEST(SceneIo, ShippedScenesSpeakGerman) {
+  for (const auto& entry : fs::directory_iterator(fs::path(VPLAB_ASSETS) / "scenes")) {
+    if (entry.path().extension() != ".json") continue;
+    SCOPED_TRACE(entry.path().filename().string());
+    const Scene s = loadScene(entry.path());
+    EXPECT_FALSE(s.titleDe.empty());
+    EXPECT_FALSE(s.captionDe.empty());
+    EXPECT_NE(s.captionDe, s.caption);
+    for (const SceneObject& o : s.objects) EXPECT_FALSE(o.nameDe.empty()) << o.name;
+    EXPECT_EQ(titleIn(s, Language::de), s.titleDe);
+    EXPECT_EQ(titleIn(s, Language::en), s.title);
+  }
 }
 
 TEST(SceneIo, SaveSceneWritesAtomically) {
