@@ -216,7 +216,7 @@ LessonStep readStep(const JsonReader& r, const Json& j, const std::string& path,
                     SceneCache& scenes) {
   r.object(j, path, {"caption", "section", "scene", "scene_file", "camera", "objects", "clip_planes", "views",
                      "overlays", "strategy", "bounding_box", "morph", "select", "tab", "probe", "step_through",
-                     "highlight", "free"});
+                     "highlight", "free", "cites"});
   const LessonContext& context = scenes.context;
   LessonStep step;
   step.caption = r.string(r.required(j, path, "caption"), path + "/caption");
@@ -225,6 +225,20 @@ LessonStep readStep(const JsonReader& r, const Json& j, const std::string& path,
                                   std::to_string(context.lessonLimits.captionBytes));
   if (auto it = j.find("section"); it != j.end()) step.section = r.string(*it, path + "/section");
   if (auto it = j.find("free"); it != j.end()) step.free = r.boolean(*it, path + "/free");
+  if (auto it = j.find("cites"); it != j.end()) {
+    const Json& cites = r.array(*it, path + "/cites");
+    if (cites.size() > context.lessonLimits.cites)
+      r.fail(path + "/cites", "at most " + std::to_string(context.lessonLimits.cites) + " values, not " +
+                                  std::to_string(cites.size()));
+    for (size_t i = 0; i < cites.size(); ++i) {
+      const std::string where = path + "/cites/" + std::to_string(i);
+      const std::string value = r.string(cites[i], where);
+      // A cited value is one the caption says (so a reader can find it in both).
+      if (value.empty() || step.caption.find(value) == std::string::npos)
+        r.fail(where, "\"" + value + "\" is not in the step's caption");
+      step.cites.push_back(value);
+    }
+  }
 
   // The scene: a new one starts from a fresh document's views; otherwise the previous step's state.
   LessonState& s = step.state;

@@ -54,6 +54,7 @@ struct LessonLimits {
   size_t steps = 200;
   size_t captionBytes = 4000;
   size_t highlights = 16;  // of one step
+  size_t cites = 16;       // of one step
   size_t scenes = 16;      // different scenes a lesson loads
 };
 inline constexpr LessonLimits kDefaultLessonLimits{};
@@ -104,6 +105,10 @@ struct LessonStep {
   std::string caption;  // a few sentences; $…$ is inline math
   std::string section;  // the lecture notes' section it follows ("15.2.2"), may be empty
   bool free = false;    // the class explores; nothing is restored until the next step
+  /// The values the caption cites that a panel shows ("cites": ["6.44", "34"], as the caption writes
+  /// them): the step's evidence, which the lesson's layout must put on screen (issue 37; the test in
+  /// tests/app/ui/lesson_layout_test.cpp finds each among the numbers the window shows).
+  std::vector<std::string> cites;
   LessonState state;
 };
 

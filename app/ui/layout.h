@@ -66,8 +66,11 @@ inline Layout computeCompactLayout(ImVec2 display, float menuHeight, float switc
 }
 
 /// The desktop layout; a lesson's caption box, `captionHeight` high, takes the bottom across the
-/// whole width, and the windows share what is left above it.
-inline Layout computeLayout(ImVec2 display, float menuHeight, float scale, float captionHeight = 0) {
+/// whole width, and the windows share what is left above it. A lesson step whose evidence is in the
+/// inspector (its probe, a matrix, the depth plot) gives the inspector the tall column on the left
+/// (`inspectorLeft`) and the controls its place: the cited values are read there, from the back row.
+inline Layout computeLayout(ImVec2 display, float menuHeight, float scale, float captionHeight = 0,
+                            bool inspectorLeft = false) {
   Layout l;
   const float top = menuHeight;
   const float h = std::max(1.f, display.y - top - captionHeight);
@@ -81,7 +84,16 @@ inline Layout computeLayout(ImVec2 display, float menuHeight, float scale, float
   l.camera = {{left + wWorld, top}, {rw - wWorld, upper}};
   l.npc = {{left, top + upper}, {wWorld, h - upper}};
   l.inspect = {{left + wWorld, top + upper}, {rw - wWorld, h - upper}};
+  if (inspectorLeft) std::swap(l.controls, l.inspect);
   return l;
+}
+
+/// Whether the lesson's current step shows its evidence in the inspector (its tab is one of the
+/// inspector's): the lesson layout then puts the inspector in the tall column.
+inline bool lessonEvidenceInInspector(const ViewerState& s) {
+  if (!s.lesson || s.lectureMode) return false;
+  const std::string& tab = s.lesson->current().state.tab;
+  return tab == "probe" || tab == "matrices" || tab == "depth";
 }
 
 /// The embed form (a figure in a course page, `#embed=camera,world`): the named views side by side in
@@ -127,7 +139,7 @@ inline Layout currentLayout(const ViewerState& s, float scale) {
   if (s.compactAllowed && tooSmallForDesktop(display, scale))
     return computeCompactLayout(display, ImGui::GetFrameHeight(), switcherHeight(), s.compactPanel != ViewerState::noPanel,
                                 s.captionHeight);
-  return computeLayout(display, ImGui::GetFrameHeight(), scale, s.captionHeight);
+  return computeLayout(display, ImGui::GetFrameHeight(), scale, s.captionHeight, lessonEvidenceInInspector(s));
 }
 
 }  // namespace vplab::ui

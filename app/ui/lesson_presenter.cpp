@@ -46,6 +46,33 @@ void applyState(ViewerState& s, const LessonState& state) {
   s.selectedObject = int(state.selected);
 }
 
+/// Where in its tab's panel a step's evidence starts (ui::scrollAnchor): the fields, derived values
+/// or counts its highlights point at. A matrix scrolls itself into sight (lessonScroll).
+std::string evidencePlace(const LessonState& state) {
+  auto highlights = [&](LessonHighlight::Kind kind, auto&& test) {
+    return std::any_of(state.highlights.begin(), state.highlights.end(),
+                       [&](const LessonHighlight& h) { return h.kind == kind && test(h); });
+  };
+  const auto any = [](const LessonHighlight&) { return true; };
+  if (state.tab == "camera") {
+    if (highlights(LessonHighlight::Kind::axis, any)) return "camera.derived";
+    if (highlights(LessonHighlight::Kind::handle, [](const LessonHighlight& h) {
+          return h.handle == Handle::windowLeft || h.handle == Handle::windowRight || h.handle == Handle::windowBottom ||
+                 h.handle == Handle::windowTop;
+        }))
+      return "camera.window";
+    if (highlights(LessonHighlight::Kind::handle, [](const LessonHighlight& h) { return h.handle == Handle::front || h.handle == Handle::back; }))
+      return "camera.planes";
+    return "camera.points";
+  }
+  if (state.tab == "clipping") return "clipping.counts";
+  if (state.tab == "probe") return "probe";
+  if (state.tab == "scene" && highlights(LessonHighlight::Kind::plane, [](const LessonHighlight& h) { return h.plane >= kPlaneCount; }))
+    return "scene.clipPlanes";
+  if (state.tab == "lecture") return state.stepThrough ? "lecture.stepThrough" : state.morphShown ? "lecture.morph" : "lecture.vanishing";
+  return {};
+}
+
 /// Once the step is reached: its tab, probe, step-through and highlights.
 void applyMarks(ViewerState& s, const LessonState& state) {
   if (!state.tab.empty()) selectTab(s, state.tab);
@@ -59,6 +86,8 @@ void applyMarks(ViewerState& s, const LessonState& state) {
   }
   s.lessonMarks = state.highlights;
   s.lessonScroll = !state.highlights.empty();
+  s.lessonScrollTo = evidencePlace(state);
+  s.lessonScrollFrames = 3;
   s.morphPlaying = false;
 }
 
@@ -160,14 +189,16 @@ float lessonCaptionHeight(const ViewerState& s, float width) {
   if (!s.lesson) return 0;
   const ImGuiStyle& style = ImGui::GetStyle();
   const float inner = width - style.WindowPadding.x * 2;
-  float tallest = 0;
-  for (const LessonStep& step : s.lesson->lesson().steps) {
-    float h = 0;
-    layOut(step.caption, inner, &h);
-    tallest = std::max(tallest, h);
-  }
-  // The heading row and a row for the free step's note or the typed number.
-  return std::floor(tallest + ImGui::GetFrameHeightWithSpacing() + ImGui::GetTextLineHeightWithSpacing() + style.WindowPadding.y * 2 + 2);
+  // The current step's caption, and at least two lines: the box leaves the rest to the step's
+  // evidence (sized for the longest caption, it took a third of a 720-line projector at 1.6).
+  float tallest = 2 * ImGui::GetTextLineHeightWithSpacing();
+  float h = 0;
+  layOut(s.lesson->current().caption, inner, &h);
+  tallest = std::max(tallest, h);
+  // The heading row, and a row for the free step's note or the typed number when there is one.
+  const bool noteRow = s.lesson->current().free || !s.lessonTyped.empty();
+  return std::floor(tallest + ImGui::GetFrameHeightWithSpacing() + (noteRow ? ImGui::GetTextLineHeightWithSpacing() : 0) +
+                    style.WindowPadding.y * 2 + 2);
 }
 
 void lessonCaption(ViewerState& s, const Rect& rect, double now) {

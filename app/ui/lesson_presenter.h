@@ -28,7 +28,7 @@ bool lessonMoving(const ViewerState& s, double now);
 /// After the document recorded the frame (Document::endFrame): a step just reached is what the
 /// lesson file says, so it leaves nothing unsaved.
 void lessonEndFrame(ViewerState& s, double now);
-/// The caption box's height for the lesson's longest caption at `width` pixels (0: no lesson).
+/// The caption box's height for the current step's caption (at least two lines) at `width` pixels (0: no lesson).
 float lessonCaptionHeight(const ViewerState& s, float width);
 /// The caption box in `rect`: the lesson's title, the step and its section, the caption with its
 /// mathematics, the buttons back, next and close.

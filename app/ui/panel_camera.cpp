@@ -73,6 +73,7 @@ void cameraPanel(ViewerState& s) {
     ImGui::GetWindowDrawList()->AddRect(ImVec2(r.x + thick * 0.5f, r.y - pad), ImVec2(r.x + r.z - thick * 0.5f, r.y + r.w + pad),
                                         errorColour(), 0, 0, thick);
   };
+  scrollAnchor(s, "camera.points");
   dragVec3(s, "VRP", "camera.vrp", c.vrp);
   mark("camera.vrp");
   tooltip(s, "View reference point: the point looked at, origin of VRC (WC).");
@@ -83,6 +84,7 @@ void cameraPanel(ViewerState& s) {
   mark("camera.vup");
   tooltip(s, "View up vector: which way is up; projected into the view plane it gives V.");
 
+  scrollAnchor(s, "camera.window");
   section(tr(s, "window (view plane, VRC)"));
   ViewWindow& w = c.window;
   const double aspect = s.doc.scene().device.aspect();
@@ -98,6 +100,7 @@ void cameraPanel(ViewerState& s) {
   if (s.keepAspect && (xChanged || yChanged)) keepWindowAspect(w, aspect, xChanged);
   tooltip(s, "The window's width : height stays the device's W : H, so nothing is stretched.");
 
+  scrollAnchor(s, "camera.planes");
   section(tr(s, "front and back planes (VRC z)"));
   dragDouble(s, tr(s, "front F"), "camera.front", c.front);
   mark("camera.front");
@@ -133,6 +136,7 @@ void cameraPanel(ViewerState& s) {
     ImGui::TextWrapped("%s", tr(s, "The views show the last valid camera."));
     ImGui::PopStyleColor();
   } else {
+    scrollAnchor(s, "camera.derived");
     derived(s);
   }
 }

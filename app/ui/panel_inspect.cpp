@@ -123,6 +123,7 @@ void matricesPanel(ViewerState& s) {
 }
 
 void probePanel(ViewerState& s) {
+  scrollAnchor(s, "probe");
   if (!s.probe) {
     ImGui::TextWrapped("%s", tr(s, "Click a vertex in any view to follow it through the pipeline."));
     return;
@@ -137,14 +138,22 @@ void probePanel(ViewerState& s) {
   }
   const uint32_t v = s.probe->vertex;
   const Vec4 h = o->npcH[v];
-  ImGui::TextUnformatted(tr(s, "{1}, vertex {2}", {o->name, std::to_string(v)}).c_str());
+  ImGui::TextUnformatted(tr(s, "{1}, vertex {2}", {nameIn(*o, s.display.language), std::to_string(v)}).c_str());
   ImGui::SameLine();
   if (ImGui::SmallButton(tr(s, "clear"))) s.probe.reset();
-  // Each space's name, then its coordinates beside it, wrapped at the window's edge.
+  // Each space's name, then its coordinates beside it, wrapped at the window's edge between
+  // coordinates, never inside a number (ImGui breaks a line after a '.': "6." over "109").
   auto row = [](const char* space, const std::string& value) {
     ImGui::TextDisabled("%s", space);
-    ImGui::SameLine();
-    ImGui::TextWrapped("%s", value.c_str());
+    size_t start = 0;
+    while (start < value.size()) {
+      const size_t comma = value.find(", ", start);
+      const size_t end = comma == std::string::npos ? value.size() : comma + 1;
+      const std::string part = value.substr(start, end - start);
+      sameLineIfFits(part.c_str(), false);
+      ImGui::TextUnformatted(part.c_str());
+      start = comma == std::string::npos ? value.size() : comma + 2;
+    }
   };
   row("MC", vecText(o->mesh->positions[v]));
   row("WC", vecText(o->wc(v)));
@@ -158,10 +167,19 @@ void probePanel(ViewerState& s) {
     row("NPC (÷ w)", tr(s, "w ≤ 0: behind the eye, no image point"));
     row("DC", "—");
   }
-  // Blinn's boundary coordinates of the homogeneous point, whatever the strategy (Hill 7.4).
+  // Blinn's boundary coordinates of the homogeneous point, whatever the strategy (Hill 7.4); the
+  // outcode they give first, in binary and as the lecture says it (34), then each coordinate.
   const Boundary bc = boundaryCoordinates(h);
   const Outcode code = outcodeOf(bc);
   section(tr(s, "boundary coordinates (inside when ≥ 0)"));
+  std::string bits, names;
+  for (int i = kPlaneCount - 1; i >= 0; --i) bits += (code >> i & 1) ? '1' : '0';
+  bits += " = " + std::to_string(code & ((1u << kPlaneCount) - 1));
+  for (int i = 0; i < kPlaneCount; ++i)
+    if (code >> i & 1) names += (names.empty() ? "" : ", ") + planeLabel(s, i);
+  const std::string outcode =
+      code ? tr(s, "outcode {1}  outside: {2}", {bits, names}) : tr(s, "outcode {1}  inside", {bits});
+  ImGui::TextWrapped("%s", outcode.c_str());
   const double bcScale = magnitudeOf({bc[0], bc[1], bc[2], bc[3], bc[4], bc[5], h.w});
   // One line per plane (wrapping in a narrow inspector): the form, its value, the plane.
   static constexpr const char* kForms[] = {"BC0 = x", "BC1 = w − x", "BC2 = y", "BC3 = w − y", "BC4 = z", "BC5 = w − z"};
@@ -176,13 +194,6 @@ void probePanel(ViewerState& s) {
     ImGui::TextWrapped("%s", plane.c_str());
     ImGui::PopStyleColor();
   }
-  std::string bits, names;
-  for (int i = kPlaneCount - 1; i >= 0; --i) bits += (code >> i & 1) ? '1' : '0';
-  for (int i = 0; i < kPlaneCount; ++i)
-    if (code >> i & 1) names += (names.empty() ? "" : ", ") + planeLabel(s, i);
-  const std::string outcode =
-      code ? tr(s, "outcode {1}  outside: {2}", {bits, names}) : tr(s, "outcode {1}  inside", {bits});
-  ImGui::TextWrapped("%s", outcode.c_str());
 }
 
 }  // namespace vplab::ui

@@ -73,6 +73,45 @@ void morphSection(ViewerState& s) {
   if (ImGui::SliderFloat(speedLabel, &speed, 0.1f, 2.f, "%.2f")) s.morphSpeed = speed;
 }
 
+/// The outcodes of the polygon's vertices as it enters stage 4, with their AND (all outside one
+/// plane: rejected whole) and OR (all inside: accepted whole; else the planes it is clipped against),
+/// in binary as the bits lie and in decimal as the lecture says them (Blinn; lecture notes 15.3.2).
+void outcodeTable(ViewerState& s, const std::vector<ClipVertex>& polygon) {
+  auto bitsOf = [](Outcode code) {
+    std::string bits;
+    for (int i = kPlaneCount - 1; i >= 0; --i) bits += (code >> i & 1) ? '1' : '0';
+    return bits + " = " + std::to_string(code & ((1u << kPlaneCount) - 1));
+  };
+  Outcode all = ~Outcode(0), any = 0;
+  if (ImGui::BeginTable("outcodes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit)) {
+    ImGui::TableSetupColumn(tr(s, "vertex"));
+    ImGui::TableSetupColumn(tr(s, "outcode"));
+    ImGui::TableHeadersRow();
+    for (size_t i = 0; i < polygon.size(); ++i) {
+      const Outcode code = outcodeOf(polygon[i].p) & ((1u << kPlaneCount) - 1);
+      all &= code;
+      any |= code;
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::Text("%zu", i);
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(bitsOf(code).c_str());
+    }
+    ImGui::EndTable();
+  }
+  all &= (1u << kPlaneCount) - 1;
+  std::string planes;
+  for (int i = 0; i < kPlaneCount; ++i)
+    if (any >> i & 1) planes += (planes.empty() ? "" : ", ") + planeText(s, i);
+  ImGui::TextWrapped("%s", tr(s, "AND of the outcodes = {1}: {2}",
+                              {bitsOf(all), all ? tr(s, "rejected whole: every vertex lies outside one plane")
+                                                : tr(s, "not rejected whole")})
+                               .c_str());
+  ImGui::TextWrapped("%s", tr(s, "OR of the outcodes = {1}: {2}",
+                              {bitsOf(any), any ? tr(s, "clipped against {1}", {planes}) : tr(s, "accepted whole")})
+                               .c_str());
+}
+
 void stepThroughSection(ViewerState& s) {
   StepThrough& st = s.stepThrough;
   if (s.showStepThrough) {  // Shift+click in the camera view chose a polygon: show it
@@ -110,6 +149,8 @@ void stepThroughSection(ViewerState& s) {
   const std::vector<ClipStep> steps = clipSteps(s.run(), *o, size_t(st.face));
   const int last = int(steps.size());
   st.step = std::clamp(st.step, 0, last);
+  // A lesson's step shows the pass: its buttons at the panel's top, its result below them.
+  scrollAnchor(s, "lecture.stepThrough");
   ImGui::BeginDisabled(st.step == 0);  // nothing before the first plane
   if (ImGui::Button(tr(s, "< back"))) --st.step;
   ImGui::EndDisabled();
@@ -126,6 +167,7 @@ void stepThroughSection(ViewerState& s) {
 
   if (st.step == 0) {
     ImGui::TextWrapped(tr(s, "The polygon as it enters stage 4: %zu vertices in homogeneous NPC."), steps[0].input.size());
+    outcodeTable(s, steps[0].input);
     return;
   }
   const ClipStep& step = steps[size_t(st.step - 1)];
@@ -207,10 +249,12 @@ void lectureModeSection(ViewerState& s) {
 }  // namespace
 
 void lecturePanel(ViewerState& s) {
+  scrollAnchor(s, "lecture.morph");
   section(tr(s, "stage morph"));
   morphSection(s);
   section(tr(s, "clipping step-through"));
   stepThroughSection(s);
+  scrollAnchor(s, "lecture.vanishing");
   section(tr(s, "vanishing points"));
   vanishingSection(s);
   section(tr(s, "lecture mode"));

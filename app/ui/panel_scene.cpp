@@ -175,6 +175,7 @@ void scenePanel(ViewerState& s, FileChooser& dialog) {
     scene.objects.erase(scene.objects.begin() + s.selectedObject);
     s.probe.reset();
   }
+  scrollAnchor(s, "scene.clipPlanes");
   section(tr(s, "user clip planes (DGL wiki)"));
   clipPlanesEditor(s);
 }

@@ -223,7 +223,9 @@ void Session::openLesson(const std::filesystem::path& file, size_t step) {
   unlessUnsaved([this, shared, step] {
     const size_t first = std::min(step, shared->steps.size() - 1);
     startDocument(shared->steps[first].state.scene);
-    setStatus(ui::tr(state_, "lesson: {1}", {shared->title}), false);
+    // The caption box names the lesson: the status line says nothing, and the panels keep its rows
+    // for the step's evidence (at 1.6 it took two).
+    setStatus("", false);
     state_.lesson.emplace(std::move(*shared), first);
     changed_();
   });

@@ -222,7 +222,10 @@ void Viewer::drawFrame(GLuint framebuffer, int width, int height) {
   ui::lessonFrame(s_, now);
   // A lesson's caption box takes the bottom of the layout (not in lecture mode: there it lies over the view).
   const float captionHeight = s_.lectureMode ? 0 : ui::lessonCaptionHeight(s_, ImGui::GetIO().DisplaySize.x);
-  if (width != lastWidth_ || height != lastHeight_ || captionHeight != s_.captionHeight) relayout_ = true;
+  const bool inspectorLeft = ui::lessonEvidenceInInspector(s_);
+  if (width != lastWidth_ || height != lastHeight_ || captionHeight != s_.captionHeight || inspectorLeft != inspectorLeft_)
+    relayout_ = true;
+  inspectorLeft_ = inspectorLeft;
   lastWidth_ = width;
   lastHeight_ = height;
   s_.captionHeight = captionHeight;

@@ -146,6 +146,7 @@ class Viewer {
   float uiScale_;
   Theme styledTheme_ = Theme::dark;  // the ImGui colours set up (StyleColorsDark or Light)
   int lastWidth_ = 0, lastHeight_ = 0;
+  bool inspectorLeft_ = false;  // the lesson layout's inspector in the tall column (ui::lessonEvidenceInInspector)
   bool relayout_ = true;
   unsigned lastActive_ = 0;  // the ImGui item active in the previous frame
   int settleFrames_ = 2;     // frames still to draw without input (wakeIn)

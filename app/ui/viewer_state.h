@@ -116,6 +116,8 @@ struct ViewerState {
   std::string lessonTyped;      // the digits of a step number typed so far (Enter goes there)
   std::vector<LessonHighlight> lessonMarks;  // the highlights of the step reached (none while moving)
   bool lessonScroll = false;    // the step's highlighted matrix is still to be scrolled into sight
+  std::string lessonScrollTo;   // the panel's place the step's evidence starts at (ui::scrollAnchor), still to be scrolled to
+  int lessonScrollFrames = 0;   // the frames it is still scrolled to
   std::vector<ViewKind> embedViews;  // the embed form (a link's `embed=`): only these views and the caption
   float captionHeight = 0;      // the lesson's caption box, across the bottom of the layout (0: none)
 

@@ -22,6 +22,14 @@ void recordRect(ViewerState& s, const char* id) {
   s.visibleRects[id] = ImVec4(v0.x, v0.y, std::max(0.f, v1.x - v0.x), std::max(0.f, v1.y - v0.y));
 }
 
+void scrollAnchor(ViewerState& s, const char* id) {
+  if (s.lessonScrollTo != id) return;
+  // Over a few frames: a tab just brought forward has not measured its content yet, and ImGui
+  // clamps the scroll to the last frame's content.
+  ImGui::SetScrollHereY(0.f);
+  if (--s.lessonScrollFrames <= 0) s.lessonScrollTo.clear();
+}
+
 namespace {
 
 // ImGui's drag fields become text fields on Ctrl+click or double-click, and then write the value

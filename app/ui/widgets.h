@@ -27,6 +27,9 @@ bool dragDouble(ViewerState& s, const char* label, const char* id, double& v, fl
                 double min = 0, double max = 0, const char* format = "%.3f");
 /// Remembers the last item's screen rect under `id`.
 void recordRect(ViewerState& s, const char* id);
+/// A place in a panel a lesson step may scroll to (ViewerState::lessonScrollTo): when the step names
+/// `id`, the panel scrolls so that what follows starts at its top, once.
+void scrollAnchor(ViewerState& s, const char* id);
 /// A row of tabs that wraps onto further lines when the window is narrow (a large UI scale) rather
 /// than shortening the names ("Cam…"); `current` is the selected tab's index. Records each tab's rect
 /// as "tab.ID.NAME" with the English NAME (in either language).

@@ -1,16 +1,23 @@
 // Every lesson step laid out for the room (issue 37 items 3 and 4): each bundled lesson, in its
 // language, walked step by step in the viewer at the two projector sizes the issue names
-// (1280 × 720 at UI scale 1.6, 1024 × 768 at 1.25). In every view each step shows, the labels
-// never sit on each other, none leaves its view, and each stays by the point it names.
+// (1280 × 720 at UI scale 1.6, 1024 × 768 at 1.25). Each value the caption cites (the step's
+// "cites") is on screen, readable, in the panel of the step's tab; in every view each step shows,
+// the labels never sit on each other, none leaves its view, and each stays by the point it names.
+// The test writes the table of cited values per step (test output: lesson-evidence-*.md).
 #include "app/ui/headless_viewer.h"
 #include "app/views/views.h"
+#include "tests/app/ui/screen_text.h"
 #include "tests/support/gl_test_support.h"
 
 #include <gtest/gtest.h>
+#include <imgui_internal.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -89,6 +96,58 @@ std::vector<std::string> labelFaults(const draw::DisplayList& list, float scale)
   return faults;
 }
 
+/// The numbers in a text, as a reader reads them: "−0.33" and "-0.33" alike, "101 060" one number.
+std::vector<std::string> numbersIn(std::string text) {
+  for (const std::string minus : {"\u2212"})
+    for (size_t at; (at = text.find(minus)) != std::string::npos;) text.replace(at, minus.size(), "-");
+  text = std::regex_replace(text, std::regex("(\\d)[ \u2009\u202f](\\d{3})(?!\\d)"), "$1$2");
+  std::vector<std::string> out;
+  const std::regex number("-?\\d+(\\.\\d+)?");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it)
+    out.push_back(it->str());
+  return out;
+}
+
+/// Whether a number shown says the cited value: equal to it when rounded to the cited precision
+/// (the caption writes 8.13 where the probe shows 8.128).
+bool says(const std::string& shown, const std::string& cited) {
+  const auto dot = cited.find('.');
+  const int decimals = dot == std::string::npos ? 0 : int(cited.size() - dot - 1);
+  const double a = std::stod(shown), b = std::stod(cited), half = 0.5 * std::pow(10.0, -decimals);
+  if (decimals == 0 && shown.find('.') != std::string::npos) return std::abs(a - b) < 1e-9;  // 15.000, not 15.2
+  return std::abs(a - b) <= half * (1 + 1e-9);
+}
+
+/// The window that holds the step's tab: the controls or the inspector.
+const char* windowOfTab(const std::string& tab) {
+  return tab == "probe" || tab == "matrices" || tab == "depth" ? "###Inspect" : "###Controls";
+}
+
+struct CitedFinding {
+  std::string value;
+  bool shown = false;
+};
+
+/// Each cited value: whether a line of text inside the window `window` shows it, whole and unscrolled.
+std::vector<CitedFinding> findCited(const std::vector<std::string>& cites, const char* window) {
+  const ImGuiWindow* w = ImGui::FindWindowByName(window);
+  std::vector<CitedFinding> found;
+  const std::vector<test::ScreenLine> lines = test::screenText();
+  for (const std::string& cite : cites) {
+    CitedFinding f{cite};
+    const std::vector<std::string> value = numbersIn(cite);
+    for (const test::ScreenLine& l : lines) {
+      if (!w || l.min.x < w->Pos.x || l.min.y < w->Pos.y || l.max.x > w->Pos.x + w->Size.x ||
+          l.max.y > w->Pos.y + w->Size.y)
+        continue;
+      for (const std::string& n : numbersIn(l.text))
+        if (value.size() == 1 && says(n, value[0])) f.shown = true;
+    }
+    found.push_back(f);
+  }
+  return found;
+}
+
 class LessonLayout : public ::testing::TestWithParam<std::tuple<std::string, int>> {};
 
 TEST_P(LessonLayout, EveryStepsLabelsNeverOverlapLeaveTheirViewOrStrayFromTheirPoint) {
@@ -102,6 +161,11 @@ TEST_P(LessonLayout, EveryStepsLabelsNeverOverlapLeaveTheirViewOrStrayFromTheirP
   ASSERT_TRUE(v.state().lesson) << v.state().status;
   const size_t steps = v.state().lesson->stepCount();
   size_t views = 0, labels = 0, reasons = 0;
+  const std::string sizeName = std::to_string(size.width) + " × " + std::to_string(size.height) + " × " +
+                               (sizeIndex == 0 ? "1.6" : "1.25");
+  std::ofstream table(test::outputDir() / ("lesson-evidence-" + file.substr(0, file.size() - 5) + "-" +
+                                           std::to_string(size.width) + ".md"));
+  table << "| " << file << " at " << sizeName << " | cited values | on screen |\n| --- | --- | --- |\n";
   for (size_t step = 0; step < steps; ++step) {
     SCOPED_TRACE("step " + std::to_string(step + 1));
     v.viewer().session().openLesson(fs::path(VPLAB_ASSETS) / "lessons" / file, step);
@@ -112,6 +176,20 @@ TEST_P(LessonLayout, EveryStepsLabelsNeverOverlapLeaveTheirViewOrStrayFromTheirP
       const std::string name = file.substr(0, file.size() - 5) + "-" + std::to_string(size.width) + "-step" +
                                std::to_string(step + 1) + ".png";
       writePng(v.image(), test::outputDir() / "lesson-layout" / name);
+    }
+    // The step's evidence: each value its caption cites, in the panel of its tab.
+    const LessonStep& current = v.state().lesson->current();
+    if (!current.cites.empty()) {
+      const char* window = windowOfTab(current.state.tab);
+      std::string values, missing;
+      for (const CitedFinding& f : findCited(current.cites, window)) {
+        values += (values.empty() ? "" : ", ") + f.value;
+        if (!f.shown) missing += (missing.empty() ? "" : ", ") + f.value;
+      }
+      table << "| step " << step + 1 << " | " << values << " | " << (missing.empty() ? "yes" : "no: " + missing) << " |\n";
+      EXPECT_TRUE(missing.empty()) << file << " step " << step + 1 << " at " << sizeName << ": " << missing
+                                   << " not on screen in " << window << ":\n"
+                                   << test::screenTextDump(test::screenText());
     }
     // The divide-first reason under the camera view is read whole (it stopped mid-sentence at 1024 × 768).
     if (auto it = v.state().visibleRects.find("view.divideFirst.reason"); it != v.state().visibleRects.end()) {
