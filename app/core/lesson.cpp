@@ -3,6 +3,7 @@
 #include "app/core/lesson.h"
 
 #include "app/core/assets.h"
+#include "app/core/lesson_framing.h"
 #include "app/core/tabs.h"
 #include "io/json_read.h"
 #include "io/read_file.h"
@@ -321,6 +322,15 @@ Lesson parseLesson(std::string_view text, std::string_view source, const std::fi
   for (size_t i = 0; i < steps.size(); ++i) {
     const LessonState* previous = i == 0 ? nullptr : &lesson.steps.back().state;
     lesson.steps.push_back(readStep(r, steps[i], "/steps/" + std::to_string(i), previous, scenes));
+  }
+  // Then each step's object framed in the view that shows it: after the chain, so the next step
+  // starts from the views as written, not from the zoom (lesson_framing.h).
+  for (size_t i = 0; i < steps.size(); ++i) {
+    auto ownOrbit = [&](const char* view) {
+      const Json& step = steps[i];
+      return step.contains("views") && step["views"].contains(view) && step["views"][view].contains("orbit");
+    };
+    frameStepObjects(lesson.steps[i].state, context.worldAspect, ownOrbit("world"), ownOrbit("npc"));
   }
   return lesson;
 }

@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -148,6 +149,43 @@ std::vector<CitedFinding> findCited(const std::vector<std::string>& cites, const
   return found;
 }
 
+/// How much of a view the points' bounding box covers (clamped to the view), 0 to 1.
+double coverage(const draw::DisplayList& list, const std::vector<Vec3>& points) {
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (const Vec3& p : points) {
+    const Projected q = projectToPixels(list.observer.camera, p, list.width, list.height);
+    if (!q.visible) continue;
+    lo = glm::min(lo, glm::dvec2(q.pixel));
+    hi = glm::max(hi, glm::dvec2(q.pixel));
+  }
+  lo = glm::max(lo, glm::dvec2(0));
+  hi = glm::min(hi, glm::dvec2(list.width, list.height));
+  if (!(hi.x > lo.x && hi.y > lo.y)) return 0;
+  return (hi.x - lo.x) * (hi.y - lo.y) / (double(list.width) * list.height);
+}
+
+/// The step's object as the views show it: the stepped polygon (NPC, the NPC view) or the probed
+/// object (WC, the world view), from the frame's highlights and run, not from the lesson's framing.
+std::optional<std::pair<ViewKind, std::vector<Vec3>>> stepObject(const Viewer& viewer, const LessonState& state) {
+  if (state.stepThrough) {
+    const ViewRequest* r = viewer.viewRequest(ViewKind::npc);
+    if (!r || !r->highlights.step) return std::nullopt;
+    return std::make_pair(ViewKind::npc, r->highlights.step->polygonNpc);
+  }
+  if (state.probe) {
+    const ViewRequest* r = viewer.viewRequest(ViewKind::world);
+    if (!r) return std::nullopt;
+    for (size_t i = 0; i < r->run->sceneIndex.size(); ++i) {
+      if (r->run->sceneIndex[i] != state.probe->object) continue;
+      const ObjectRun& o = r->run->objects[i];
+      std::vector<Vec3> points;
+      for (uint32_t v = 0; v < o.vertexCount(); ++v) points.push_back(o.wc(v));
+      return std::make_pair(ViewKind::world, points);
+    }
+  }
+  return std::nullopt;
+}
+
 class LessonLayout : public ::testing::TestWithParam<std::tuple<std::string, int>> {};
 
 TEST_P(LessonLayout, EveryStepsLabelsNeverOverlapLeaveTheirViewOrStrayFromTheirPoint) {
@@ -160,7 +198,7 @@ TEST_P(LessonLayout, EveryStepsLabelsNeverOverlapLeaveTheirViewOrStrayFromTheirP
   v.frames(2);
   ASSERT_TRUE(v.state().lesson) << v.state().status;
   const size_t steps = v.state().lesson->stepCount();
-  size_t views = 0, labels = 0, reasons = 0;
+  size_t views = 0, labels = 0, reasons = 0, framedSteps = 0;
   const std::string sizeName = std::to_string(size.width) + " × " + std::to_string(size.height) + " × " +
                                (sizeIndex == 0 ? "1.6" : "1.25");
   std::ofstream table(test::outputDir() / ("lesson-evidence-" + file.substr(0, file.size() - 5) + "-" +
@@ -190,6 +228,15 @@ TEST_P(LessonLayout, EveryStepsLabelsNeverOverlapLeaveTheirViewOrStrayFromTheirP
       EXPECT_TRUE(missing.empty()) << file << " step " << step + 1 << " at " << sizeName << ": " << missing
                                    << " not on screen in " << window << ":\n"
                                    << test::screenTextDump(test::screenText());
+    }
+    // The step's object, framed: it covers at least a fifth of the view that shows it.
+    if (const auto object = stepObject(v.viewer(), current.state)) {
+      const double covered = coverage(listOf(v.viewer(), object->first), object->second);
+      EXPECT_GE(covered, 0.2) << file << " step " << step + 1 << " at " << sizeName << ": the step's object covers "
+                              << covered * 100 << " % of the " << toString(object->first) << " view";
+      framedSteps++;
+      table << "| step " << step + 1 << " | (its object in the " << toString(object->first) << " view) | "
+            << int(std::round(covered * 100)) << " % of the view |\n";
     }
     // The divide-first reason under the camera view is read whole (it stopped mid-sentence at 1024 × 768).
     if (auto it = v.state().visibleRects.find("view.divideFirst.reason"); it != v.state().visibleRects.end()) {
