@@ -13,6 +13,15 @@ mkdir -p "$out"
   --out "$out/viewer-divide-first.png"
 # In German (View > Language, --lang), at a projector's scale with the Clipping tab and the matrices.
 "$vplab" render --view ui --size 1280x720 --ui-scale 1.6 --lang de --tab clipping --tab matrices --out "$out/viewer-de.png"
+# A lesson as the lecture hall sees it, in German at 1280 × 720 × 1.6: the real window (under Xvfb
+# when there is no display) at the clipping lesson's step 5, and a still of the view-orientation lesson.
+window() { if [ -n "${DISPLAY:-}" ]; then "$@"; else xvfb-run -a -s "-screen 0 1280x720x24" "$@"; fi; }
+window "$vplab" --lesson 05-clipping.de --step 5 --ui-scale 1.6 --lang de --quit-after-frames 90 --wait-for-views 20 \
+  --screenshot "$out/lesson-window.png"
+stills="$(mktemp -d)"
+"$vplab" render --lesson 02-view-orientation.de --size 400x300 --ui-scale 1.6 --out "$stills"
+cp "$stills/step-06.png" "$out/lesson-still.png"
+rm -rf "$stills"
 "$vplab" render --view all --style shaded --size 480x360 --out "$out/all-shaded.png"
 "$vplab" render --view all --style hidden-line --size 480x360 --out "$out/all-hidden-line.png"
 "$vplab" render --scene "$root/assets/scenes/behind-the-eye.json" --view all --style shaded --size 480x360 \
