@@ -204,6 +204,11 @@ TEST(Lesson, EveryErrorNamesTheFileTheStepAndTheKey) {
       {"a selection the scene lacks", [](J& j) { j["steps"][2]["select"] = "teapot"; },
        {"/steps/2/select: the scene has no object named \"teapot\""}},
       {"free is not a boolean", [](J& j) { j["steps"][2]["free"] = "yes"; }, {"/steps/2/free: must be true or false, not string"}},
+      {"a cited value the caption does not say", [](J& j) { j["steps"][1]["cites"] = {"6.44"}; },
+       {"/steps/1/cites/0: \"6.44\" is not in the step's caption"}},
+      {"a cited value that is no text", [](J& j) { j["steps"][1]["cites"] = {34}; }, {"/steps/1/cites/0: must be a string"}},
+      {"too many cited values", [](J& j) { j["steps"][1]["cites"] = J::array(); for (int i = 0; i < 17; ++i) j["steps"][1]["cites"].push_back("a"); },
+       {"/steps/1/cites: at most 16 values, not 17"}},
   };
   for (const BadLesson& c : cases) {
     SCOPED_TRACE(c.what);
