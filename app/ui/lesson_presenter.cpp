@@ -214,22 +214,37 @@ void lessonCaption(ViewerState& s, const Rect& rect, double now) {
 
   // The heading: title, step k of n, the source; the buttons at the right. The box speaks the
   // lesson's language, whatever the viewer's.
-  const std::string heading = text::fill(lesson.language, "{1}  ·  step {2} / {3}",
-                                         {lesson.title, std::to_string(player.step() + 1), std::to_string(player.stepCount())});
-  const std::string source = sectionText(lesson, step.section);
-  ImGui::PushStyleColor(ImGuiCol_Text, accentColor());
-  ImGui::TextUnformatted(heading.c_str());
-  ImGui::PopStyleColor();
-  if (!source.empty()) {
-    ImGui::SameLine();
-    ImGui::TextDisabled("(%s)", source.c_str());
-  }
   const ImGuiStyle& style = ImGui::GetStyle();
   const char* back = text::Text("← Back").in(lesson.language);
   const char* next = text::Text("Next →").in(lesson.language);
   const char* close = text::Text("Close").in(lesson.language);
   const float buttons = ImGui::CalcTextSize(back).x + ImGui::CalcTextSize(next).x + ImGui::CalcTextSize(close).x +
                         style.FramePadding.x * 6 + style.ItemSpacing.x * 2;
+  // The heading left of the buttons, never under them: the lesson's title, the step and the source
+  // where they fit; else the step and the source (the title is in the menu and the first step);
+  // else the step alone (at 1024 × 768 "← Zurück" covered the source).
+  const std::string stepOf =
+      text::fill(lesson.language, "step {1} / {2}", {std::to_string(player.step() + 1), std::to_string(player.stepCount())});
+  const std::string titled = text::fill(lesson.language, "{1}  ·  step {2} / {3}",
+                                        {lesson.title, std::to_string(player.step() + 1), std::to_string(player.stepCount())});
+  const std::string sourceText = step.section.empty() ? "" : "(" + sectionText(lesson, step.section) + ")";
+  const float room = ImGui::GetContentRegionAvail().x - buttons - style.ItemSpacing.x;
+  auto width = [&](const std::string& heading, const std::string& source) {
+    return ImGui::CalcTextSize(heading.c_str()).x + (source.empty() ? 0 : style.ItemSpacing.x + ImGui::CalcTextSize(source.c_str()).x);
+  };
+  std::string heading = titled, source = sourceText;
+  if (width(heading, source) > room) heading = stepOf;
+  if (width(heading, source) > room) source.clear();
+  ImGui::BeginGroup();
+  ImGui::PushStyleColor(ImGuiCol_Text, accentColor());
+  ImGui::TextUnformatted(heading.c_str());
+  ImGui::PopStyleColor();
+  if (!source.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", source.c_str());
+  }
+  ImGui::EndGroup();
+  recordRect(s, "lesson.heading");
   ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowContentRegionMax().x - buttons));
   ImGui::BeginDisabled(player.step() == 0);
   if (ImGui::Button(back)) goToStep(s, player.step() - 1, now);

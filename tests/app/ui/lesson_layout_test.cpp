@@ -238,6 +238,15 @@ TEST_P(LessonLayout, EveryStepsLabelsNeverOverlapLeaveTheirViewOrStrayFromTheirP
       table << "| step " << step + 1 << " | (its object in the " << toString(object->first) << " view) | "
             << int(std::round(covered * 100)) << " % of the view |\n";
     }
+    // The caption box's buttons are whole and the heading stays left of them.
+    {
+      const auto& rects = v.state().rects;
+      const auto& shown = v.state().visibleRects;
+      for (const char* id : {"lesson.back", "lesson.next", "lesson.close"})
+        EXPECT_GE(shown.at(id).z, rects.at(id).z - 1) << file << " step " << step + 1 << " at " << sizeName << ": " << id << " is cut off";
+      EXPECT_LE(rects.at("lesson.heading").x + rects.at("lesson.heading").z, rects.at("lesson.back").x)
+          << file << " step " << step + 1 << " at " << sizeName << ": the heading runs under the buttons";
+    }
     // The divide-first reason under the camera view is read whole (it stopped mid-sentence at 1024 × 768).
     if (auto it = v.state().visibleRects.find("view.divideFirst.reason"); it != v.state().visibleRects.end()) {
       const ImVec4 whole = v.state().rects.at("view.divideFirst.reason");
