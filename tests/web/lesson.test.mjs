@@ -7,8 +7,8 @@ import path from 'node:path';
 import { after, before, describe, test } from 'node:test';
 
 import {
-  afterInput, distinctColours, launchBrowser, openPage, startServer, tempDir, vplabState, waitForState,
-  waitFrames, webDir,
+  afterInput, cssRect, distinctColours, launchBrowser, openPage, rectPoint, startServer, tempDir, vplabState,
+  waitForState, waitFrames, webDir,
 } from './support.mjs';
 
 const errorsOf = (messages) => messages.filter((m) => m.type === 'error' || m.type === 'warning');
@@ -93,6 +93,67 @@ describe('lessons in the browser', { concurrency: 1 }, () => {
     await afterInput(page, () => page.keyboard.press('Space'));
     await waitForState(page, (s) => s.lesson.step === 3 && /^embed=camera,world&lesson=/.test(s.hash), 'step 3, still embedded', messages);
     assert.deepEqual(errorsOf(messages), [], 'the page logged errors or warnings');
+    await context.close();
+  });
+
+  // Issue 37's page reproduction: in lesson 02's free step the class types PRP = (0, 8, 0) (VUP ∥ N,
+  // an invalid camera), then ←: the page stopped ("vplab stopped: invalid camera …") with the caption
+  // frozen. Now ← cuts into step 8, and a reload's recovery gives back what was typed, in its step.
+  test('(r) an invalid camera typed in a free step, then ←, then a reload: nothing stops, recovery is what was typed', { timeout: 180_000 }, async () => {
+    const context = await browser.createBrowserContext();
+    const url = `${server.url}#lesson=02-view-orientation.de&step=9`;
+    let { page, console: messages } = await openPage(context, url);
+    await waitForState(page, (s) => s.lesson && s.lesson.step === 9 && s.lesson.settled, 'the lesson at step 9', messages);
+    let state = await vplabState(page);
+    // Ctrl+click makes a drag field a text field (Dear ImGui); each of PRP's three typed, then Enter.
+    const typeInto = async (fx, text) => {
+      const at = rectPoint(await cssRect(page, state, 'camera.prp'), fx, 0.5);
+      await page.keyboard.down('Control');
+      await page.mouse.click(at.x, at.y);
+      await page.keyboard.up('Control');
+      await waitFrames(page, 2);
+      await page.keyboard.press('End');
+      for (let i = 0; i < 12; ++i) await page.keyboard.press('Backspace');
+      await page.keyboard.type(text);
+      await afterInput(page, () => page.keyboard.press('Enter'));
+      state = await vplabState(page);
+    };
+    await typeInto(1 / 6, '0');
+    await typeInto(3 / 6, '8');
+    await typeInto(5 / 6, '0');
+    await waitForState(page, (s) => s.camera.prp[0] === 0 && s.camera.prp[1] === 8 && s.camera.prp[2] === 0, 'PRP typed as (0, 8, 0)', messages);
+    const typed = await vplabState(page);
+    // The autosave (3 s after the last change) reaches localStorage.
+    await page.waitForFunction(() => Object.keys(localStorage).some((k) => k.startsWith('vplab.recovery') && /edited_camera/.test(localStorage.getItem(k))),
+      { timeout: 20_000, polling: 250 }).catch(() => assert.fail('no autosave with the typed camera within 20 s'));
+    // ← moves into step 8: a cut, nothing caught, the page alive.
+    await afterInput(page, () => page.keyboard.press('ArrowLeft'));
+    await waitForState(page, (s) => s.lesson.step === 8 && s.lesson.settled && /step=8/.test(s.hash), 'step 8 after ←', messages);
+    state = await vplabState(page);
+    assert.equal(state.caughtErrors, 0, `an error was caught: ${state.lastCaughtError}`);
+    assert.ok(!messages.some((m) => m.type === 'pageerror' || /vplab stopped|vplab wurde angehalten/.test(m.text)), 'the page stopped');
+    // Back to the free step, type it again, and leave without saving: the next visit recovers it.
+    await afterInput(page, () => page.keyboard.press('ArrowRight'));
+    await waitForState(page, (s) => s.lesson.step === 9 && s.lesson.settled, 'step 9 again', messages);
+    state = await vplabState(page);
+    await typeInto(1 / 6, '0');
+    await typeInto(3 / 6, '8');
+    await typeInto(5 / 6, '0');
+    const before = await page.evaluate(() => Object.keys(localStorage).map((k) => localStorage.getItem(k)).join(''));
+    await page.waitForFunction((text) => Object.keys(localStorage).map((k) => localStorage.getItem(k)).join('') !== text,
+      { timeout: 20_000, polling: 250 }, before).catch(() => assert.fail('no autosave of the typed camera within 20 s'));
+    await page.close();
+    ({ page, console: messages } = await openPage(context, url));
+    await waitFrames(page, 5);
+    state = await vplabState(page);
+    assert.equal(state.recoveryOffered, true, 'the next visit does not offer the typed camera back');
+    await afterInput(page, async () => page.mouse.click(...Object.values(rectPoint(await cssRect(page, state, 'recovery.recover')))));
+    await waitForState(page, (s) => !s.recoveryOffered, 'the recovery dialog to close', messages);
+    await waitFrames(page, 3);
+    state = await vplabState(page);
+    assert.deepEqual(state.camera.prp, typed.camera.prp, 'the recovered PRP is not the one typed');
+    assert.equal(state.lesson?.step, 9, 'the recovered lesson is not at its step');
+    assert.equal(state.caughtErrors, 0, `an error was caught: ${state.lastCaughtError}`);
     await context.close();
   });
 });
