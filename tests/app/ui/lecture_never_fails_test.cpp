@@ -171,5 +171,56 @@ TEST(LectureNeverFails, RecoveryRestoresTheLessonItsStepAndTheTypedCamera) {
   EXPECT_EQ(v.viewer().caughtErrors(), 0u) << v.viewer().lastCaughtError();
 }
 
+// A recovery file someone else wrote (or a disk that garbled it): its scene is valid, everything
+// beside it hostile — a lesson outside the bundled ones and one that does not exist, a step of 10^18,
+// the typed camera with strings, NaN and a missing key, views that are no link. Recovering shows the
+// scene, says nothing it cannot do in a way that stops the viewer, and catches no error.
+TEST(LectureNeverFails, AHostileRecoveryFileRecoversItsSceneAndNothingElseBreaks) {
+  test::TempDir dir;
+  const std::vector<nlohmann::json> extras = {
+      {{"lesson", {{"file", "/etc/passwd"}, {"step", 3}}}},
+      {{"lesson", {{"file", "no-such-lesson.json"}, {"step", 1000000000000000000ull}}}},
+      {{"lesson", {{"file", 7}, {"step", "two"}}}},
+      {{"edited_camera", {{"vrp", {"a", "b", "c"}}, {"prp", {0, 8}}}}},
+      {{"edited_camera", {{"vrp", {0, 0, 0}}, {"prp", {1e308, -1e308, 0}}, {"vup", {0, 0, 0}}}}},
+      {{"edited_camera", "PRP = (0, 8, 0)"}},
+      {{"views", {{"npc", "wire"}}}},
+      {{"views", "npc=toon&world=&orbit=nan,nan"}},
+  };
+  Scene scene = defaultScene();
+  scene.camera.prp = {3, 2.4, 9};
+  for (size_t i = 0; i < extras.size(); ++i) {
+    SCOPED_TRACE(extras[i].dump());
+    nlohmann::json j = nlohmann::json::parse(test::readFile([&] {
+      const fs::path valid = dir.path / ("valid-" + std::to_string(i) + ".json");
+      {
+        HeadlessViewer writer{*test::egl().context, scene, 640, 480};
+        writer.viewer().session().enableAutosave(dir.path / ("state-" + std::to_string(i)), 3);
+        writer.state().doc.scene().camera.vrp = {0.25, 0, 0};
+        writer.frames(2);
+        fs::copy_file(writer.viewer().session().writeRecoveryNow(), valid);
+      }
+      return valid;
+    }()));
+    for (auto it = extras[i].begin(); it != extras[i].end(); ++it) j[it.key()] = it.value();
+    const fs::path file = dir.write("hostile-" + std::to_string(i) + ".json", j.dump());
+    const std::optional<Recovery> r = Autosave::read(file);
+    ASSERT_TRUE(r);
+    HeadlessViewer v{*test::egl().context, defaultScene(), 1280, 720};
+    v.frames(2);
+    v.viewer().session().offerRecovery(*r);
+    v.frames(3);
+    const auto [x, y] = v.centreOf("recovery.recover");
+    v.click(x, y);
+    v.frames(5);
+    EXPECT_EQ(v.state().doc.shown().camera.vrp, Vec3(0.25, 0, 0)) << "the recovered scene is not shown";
+    EXPECT_EQ(v.viewer().caughtErrors(), 0u) << v.viewer().lastCaughtError();
+    expectFinite(v.state().run().camera);
+    if (v.state().lesson) {
+      EXPECT_LT(v.state().lesson->step(), v.state().lesson->stepCount());
+    }
+  }
+}
+
 }  // namespace
 }  // namespace vplab
