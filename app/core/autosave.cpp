@@ -68,6 +68,48 @@ nlohmann::ordered_json cameraNumbers(const Camera& c) {
           {"oblique", {c.oblique.d, c.oblique.phiDeg}}};
 }
 
+/// A transform's numbers as they are, valid or not (a scale of 0, a rotation about the zero vector).
+nlohmann::ordered_json transformNumbers(const ModelTransform& t) {
+  auto vec = [](const Vec3& v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); };
+  nlohmann::ordered_json rotations = nlohmann::ordered_json::array();
+  for (const Rotation& r : t.rotations) {
+    nlohmann::ordered_json rj{{"axis", vec(r.axis)}, {"deg", r.deg}};
+    if (r.through) rj["through"] = vec(*r.through);
+    rotations.push_back(rj);
+  }
+  return {{"translate", vec(t.translate)}, {"rotate", rotations}, {"scale", vec(t.scale)}};
+}
+
+/// transformNumbers read back, at most kMaxRotations rotations and each number finite; nothing for
+/// anything else.
+std::optional<ModelTransform> transformFromNumbers(const nlohmann::json& j) {
+  constexpr size_t kMaxRotations = 64;
+  try {
+    auto number = [](const nlohmann::json& v) {
+      const double d = v.get<double>();
+      if (!std::isfinite(d)) throw std::range_error("not finite");
+      return d;
+    };
+    auto vec = [&](const nlohmann::json& v) {
+      if (!v.is_array() || v.size() != 3) throw std::range_error("not 3 numbers");
+      return Vec3(number(v[0]), number(v[1]), number(v[2]));
+    };
+    ModelTransform t;
+    t.translate = vec(j.at("translate"));
+    t.scale = vec(j.at("scale"));
+    const auto& rotations = j.at("rotate");
+    if (!rotations.is_array() || rotations.size() > kMaxRotations) return std::nullopt;
+    for (const auto& r : rotations) {
+      Rotation rotation{vec(r.at("axis")), number(r.at("deg")), std::nullopt};
+      if (r.contains("through")) rotation.through = vec(r.at("through"));
+      t.rotations.push_back(rotation);
+    }
+    return t;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
 /// cameraNumbers read back; nothing for anything else (each number finite: a field never holds NaN).
 std::optional<Camera> cameraFromNumbers(const nlohmann::json& j) {
   try {
@@ -157,6 +199,10 @@ void Autosave::write(const Document& doc, const RecoveryView& view) {
     if (!view.lesson.empty()) j["lesson"] = {{"file", std::filesystem::absolute(view.lesson).string()}, {"step", view.step}};
     if (!view.views.empty()) j["views"] = view.views;
     if (doc.scene().camera != doc.shown().camera) j["edited_camera"] = cameraNumbers(doc.scene().camera);
+    if (doc.scene().objects.size() == doc.shown().objects.size())
+      for (size_t i = 0; i < doc.scene().objects.size(); ++i)
+        if (doc.scene().objects[i].transform != doc.shown().objects[i].transform)
+          j["edited_transforms"].push_back({{"object", i}, {"transform", transformNumbers(doc.scene().objects[i].transform)}});
     writeFileAtomically(file_, j.dump(2) + "\n");
     savedRevision_ = doc.revision();
     writtenView_ = view;
@@ -219,6 +265,11 @@ RecoveryView Autosave::loadView(const Recovery& recovery) {
     }
     if (j.contains("views") && j["views"].is_string()) view.views = j["views"].get<std::string>();
     if (j.contains("edited_camera")) view.editedCamera = cameraFromNumbers(j["edited_camera"]);
+    if (j.contains("edited_transforms") && j["edited_transforms"].is_array())
+      for (const auto& e : j["edited_transforms"]) {
+        if (!e.is_object() || !e.contains("object") || !e["object"].is_number_unsigned() || !e.contains("transform")) continue;
+        if (auto t = transformFromNumbers(e["transform"])) view.editedTransforms.emplace_back(e["object"].get<size_t>(), *t);
+      }
   } catch (const std::exception&) {
     // What can be read of it was read; the scene is load()'s.
   }

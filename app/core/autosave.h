@@ -30,6 +30,9 @@ struct RecoveryView {
   /// Read back only (the writer takes it from the document): the camera in the fields when it
   /// differs from the scene's (an invalid one typed; the views kept the last valid camera).
   std::optional<Camera> editedCamera;
+  /// Likewise the objects' transforms in the fields where they differ (a scale of 0 typed): by the
+  /// object's index in the scene.
+  std::vector<std::pair<size_t, ModelTransform>> editedTransforms;
   bool operator==(const RecoveryView&) const = default;
 };
 

@@ -495,10 +495,11 @@ void Session::showRecoveredView(const RecoveryView& v) {
     // the views of a fresh start
   }
   // The camera in the fields as it was typed; the views keep the scene's, the last valid one.
-  if (v.editedCamera) {
-    state_.doc.scene().camera = *v.editedCamera;
-    state_.doc.endFrame(false);
-  }
+  if (v.editedCamera) state_.doc.scene().camera = *v.editedCamera;
+  // And the objects' transforms as typed (an index beyond the scene is someone else's file: ignored).
+  for (const auto& [index, transform] : v.editedTransforms)
+    if (index < state_.doc.scene().objects.size()) state_.doc.scene().objects[index].transform = transform;
+  if (v.editedCamera || !v.editedTransforms.empty()) state_.doc.endFrame(false);
 }
 
 void Session::recover(size_t i) {

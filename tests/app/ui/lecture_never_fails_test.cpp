@@ -171,6 +171,40 @@ TEST(LectureNeverFails, RecoveryRestoresTheLessonItsStepAndTheTypedCamera) {
   EXPECT_EQ(v.viewer().caughtErrors(), 0u) << v.viewer().lastCaughtError();
 }
 
+// An object's transform typed invalid (a scale of 0: the views keep the last valid one) comes back
+// as typed, in the fields, with the views on the valid one.
+TEST(LectureNeverFails, RecoveryRestoresAnObjectsTransformAsTyped) {
+  test::TempDir dir;
+  fs::path kept;
+  ModelTransform typed;
+  {
+    HeadlessViewer v{*test::egl().context, defaultScene(), 1280, 720};
+    v.viewer().session().enableAutosave(dir.path / "state", 3);
+    v.frames(2);
+    v.state().doc.scene().objects[1].transform.scale = {0, 1.5, 1.5};
+    v.state().doc.scene().objects[1].transform.rotations.push_back({{0, 0, 0}, 30, std::nullopt});
+    v.frames(2);
+    ASSERT_FALSE(v.state().doc.error().empty()) << "a scale of 0 is an invalid transform";
+    typed = v.state().doc.scene().objects[1].transform;
+    kept = v.viewer().session().writeRecoveryNow();
+    ASSERT_FALSE(kept.empty());
+  }
+  const fs::path copy = dir.path / "recovery-copy.json";
+  fs::copy_file(kept, copy);
+  const std::optional<Recovery> r = Autosave::read(copy);
+  ASSERT_TRUE(r);
+  HeadlessViewer v{*test::egl().context, defaultScene(), 1280, 720};
+  v.frames(2);
+  v.viewer().session().offerRecovery(*r);
+  v.frames(3);
+  const auto [x, y] = v.centreOf("recovery.recover");
+  v.click(x, y);
+  v.frames(3);
+  EXPECT_EQ(v.state().doc.scene().objects[1].transform, typed) << "the fields show the transform as typed";
+  EXPECT_EQ(v.state().doc.shown().objects[1].transform, defaultScene().objects[1].transform) << "the views the valid one";
+  EXPECT_EQ(v.viewer().caughtErrors(), 0u) << v.viewer().lastCaughtError();
+}
+
 // A recovery file someone else wrote (or a disk that garbled it): its scene is valid, everything
 // beside it hostile — a lesson outside the bundled ones and one that does not exist, a step of 10^18,
 // the typed camera with strings, NaN and a missing key, views that are no link. Recovering shows the
@@ -186,6 +220,10 @@ TEST(LectureNeverFails, AHostileRecoveryFileRecoversItsSceneAndNothingElseBreaks
       {{"edited_camera", "PRP = (0, 8, 0)"}},
       {{"views", {{"npc", "wire"}}}},
       {{"views", "npc=toon&world=&orbit=nan,nan"}},
+      {{"edited_transforms", {{{"object", 99}, {"transform", {{"translate", {0, 0, 0}}, {"rotate", nlohmann::json::array()}, {"scale", {0, 1, 1}}}}},
+                              {{"object", -1}},
+                              "x",
+                              {{"object", 0}, {"transform", {{"translate", {"a"}}}}}}}},
   };
   Scene scene = defaultScene();
   scene.camera.prp = {3, 2.4, 9};
