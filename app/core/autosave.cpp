@@ -68,6 +68,19 @@ nlohmann::ordered_json cameraNumbers(const Camera& c) {
           {"oblique", {c.oblique.d, c.oblique.phiDeg}}};
 }
 
+/// A field's number read back: finite (a field never holds NaN), else it throws.
+double finiteNumber(const nlohmann::json& v) {
+  const double d = v.get<double>();
+  if (!std::isfinite(d)) throw std::range_error("not finite");
+  return d;
+}
+
+/// Three finite numbers read back, else it throws.
+Vec3 finiteVec3(const nlohmann::json& v) {
+  if (!v.is_array() || v.size() != 3) throw std::range_error("not 3 numbers");
+  return Vec3(finiteNumber(v[0]), finiteNumber(v[1]), finiteNumber(v[2]));
+}
+
 /// A transform's numbers as they are, valid or not (a scale of 0, a rotation about the zero vector).
 nlohmann::ordered_json transformNumbers(const ModelTransform& t) {
   auto vec = [](const Vec3& v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); };
@@ -85,23 +98,14 @@ nlohmann::ordered_json transformNumbers(const ModelTransform& t) {
 std::optional<ModelTransform> transformFromNumbers(const nlohmann::json& j) {
   constexpr size_t kMaxRotations = 64;
   try {
-    auto number = [](const nlohmann::json& v) {
-      const double d = v.get<double>();
-      if (!std::isfinite(d)) throw std::range_error("not finite");
-      return d;
-    };
-    auto vec = [&](const nlohmann::json& v) {
-      if (!v.is_array() || v.size() != 3) throw std::range_error("not 3 numbers");
-      return Vec3(number(v[0]), number(v[1]), number(v[2]));
-    };
     ModelTransform t;
-    t.translate = vec(j.at("translate"));
-    t.scale = vec(j.at("scale"));
+    t.translate = finiteVec3(j.at("translate"));
+    t.scale = finiteVec3(j.at("scale"));
     const auto& rotations = j.at("rotate");
     if (!rotations.is_array() || rotations.size() > kMaxRotations) return std::nullopt;
     for (const auto& r : rotations) {
-      Rotation rotation{vec(r.at("axis")), number(r.at("deg")), std::nullopt};
-      if (r.contains("through")) rotation.through = vec(r.at("through"));
+      Rotation rotation{finiteVec3(r.at("axis")), finiteNumber(r.at("deg")), std::nullopt};
+      if (r.contains("through")) rotation.through = finiteVec3(r.at("through"));
       t.rotations.push_back(rotation);
     }
     return t;
@@ -113,31 +117,22 @@ std::optional<ModelTransform> transformFromNumbers(const nlohmann::json& j) {
 /// cameraNumbers read back; nothing for anything else (each number finite: a field never holds NaN).
 std::optional<Camera> cameraFromNumbers(const nlohmann::json& j) {
   try {
-    auto number = [](const nlohmann::json& v) {
-      const double d = v.get<double>();
-      if (!std::isfinite(d)) throw std::range_error("not finite");
-      return d;
-    };
-    auto vec = [&](const nlohmann::json& v) {
-      if (v.size() != 3) throw std::range_error("not 3 numbers");
-      return Vec3(number(v[0]), number(v[1]), number(v[2]));
-    };
     Camera c;
-    c.vrp = vec(j.at("vrp"));
-    c.prp = vec(j.at("prp"));
-    c.vup = vec(j.at("vup"));
+    c.vrp = finiteVec3(j.at("vrp"));
+    c.prp = finiteVec3(j.at("prp"));
+    c.vup = finiteVec3(j.at("vup"));
     const auto& w = j.at("window");
     if (w.size() != 4) return std::nullopt;
-    c.window = {number(w[0]), number(w[1]), number(w[2]), number(w[3])};
-    c.front = number(j.at("front"));
-    c.back = number(j.at("back"));
+    c.window = {finiteNumber(w[0]), finiteNumber(w[1]), finiteNumber(w[2]), finiteNumber(w[3])};
+    c.front = finiteNumber(j.at("front"));
+    c.back = finiteNumber(j.at("back"));
     const std::string projection = j.at("projection").get<std::string>();
     const auto p = std::find_if(kAllProjections.begin(), kAllProjections.end(), [&](Projection x) { return toString(x) == projection; });
     if (p == kAllProjections.end()) return std::nullopt;
     c.projection = *p;
     const auto& o = j.at("oblique");
     if (o.size() != 2) return std::nullopt;
-    c.oblique = {number(o[0]), number(o[1])};
+    c.oblique = {finiteNumber(o[0]), finiteNumber(o[1])};
     return c;
   } catch (const std::exception&) {
     return std::nullopt;

@@ -38,6 +38,20 @@ struct Presenting {
   void settle() { v.frames(int(s().lessonSeconds * 60) + 3); }
 };
 
+/// Offers the recovery file `file` in `v` (another session's) and clicks Recover, as a user would;
+/// false when the file is no recovery file.
+bool recoverIn(HeadlessViewer& v, const fs::path& file) {
+  const std::optional<Recovery> r = Autosave::read(file);
+  if (!r) return false;
+  v.frames(2);
+  v.viewer().session().offerRecovery(*r);
+  v.frames(3);
+  const auto [x, y] = v.centreOf("recovery.recover");
+  v.click(x, y);
+  v.frames(3);
+  return true;
+}
+
 void expectFinite(const Camera& c) {
   for (const Vec3& v : {c.vrp, c.prp, c.vup})
     EXPECT_TRUE(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
@@ -150,15 +164,8 @@ TEST(LectureNeverFails, RecoveryRestoresTheLessonItsStepAndTheTypedCamera) {
   // Another session finds it (read by its name: this process is still running).
   const fs::path copy = dir.path / "recovery-copy.json";
   fs::copy_file(kept, copy);
-  const std::optional<Recovery> r = Autosave::read(copy);
-  ASSERT_TRUE(r);
   HeadlessViewer v{*test::egl().context, defaultScene(), 1280, 720};
-  v.frames(2);
-  v.viewer().session().offerRecovery(*r);
-  v.frames(3);
-  const auto [x, y] = v.centreOf("recovery.recover");
-  v.click(x, y);
-  v.frames(3);
+  ASSERT_TRUE(recoverIn(v, copy));
   ASSERT_TRUE(v.state().lesson) << v.state().status;
   EXPECT_EQ(v.state().lesson->step(), 8u);
   EXPECT_EQ(v.state().lesson->lesson().file.filename(), "02-view-orientation.de.json");
@@ -191,15 +198,8 @@ TEST(LectureNeverFails, RecoveryRestoresAnObjectsTransformAsTyped) {
   }
   const fs::path copy = dir.path / "recovery-copy.json";
   fs::copy_file(kept, copy);
-  const std::optional<Recovery> r = Autosave::read(copy);
-  ASSERT_TRUE(r);
   HeadlessViewer v{*test::egl().context, defaultScene(), 1280, 720};
-  v.frames(2);
-  v.viewer().session().offerRecovery(*r);
-  v.frames(3);
-  const auto [x, y] = v.centreOf("recovery.recover");
-  v.click(x, y);
-  v.frames(3);
+  ASSERT_TRUE(recoverIn(v, copy));
   EXPECT_EQ(v.state().doc.scene().objects[1].transform, typed) << "the fields show the transform as typed";
   EXPECT_EQ(v.state().doc.shown().objects[1].transform, defaultScene().objects[1].transform) << "the views the valid one";
   EXPECT_EQ(v.viewer().caughtErrors(), 0u) << v.viewer().lastCaughtError();
@@ -242,15 +242,9 @@ TEST(LectureNeverFails, AHostileRecoveryFileRecoversItsSceneAndNothingElseBreaks
     }()));
     for (auto it = extras[i].begin(); it != extras[i].end(); ++it) j[it.key()] = it.value();
     const fs::path file = dir.write("hostile-" + std::to_string(i) + ".json", j.dump());
-    const std::optional<Recovery> r = Autosave::read(file);
-    ASSERT_TRUE(r);
     HeadlessViewer v{*test::egl().context, defaultScene(), 1280, 720};
+    ASSERT_TRUE(recoverIn(v, file));
     v.frames(2);
-    v.viewer().session().offerRecovery(*r);
-    v.frames(3);
-    const auto [x, y] = v.centreOf("recovery.recover");
-    v.click(x, y);
-    v.frames(5);
     EXPECT_EQ(v.state().doc.shown().camera.vrp, Vec3(0.25, 0, 0)) << "the recovered scene is not shown";
     EXPECT_EQ(v.viewer().caughtErrors(), 0u) << v.viewer().lastCaughtError();
     expectFinite(v.state().run().camera);
