@@ -56,7 +56,7 @@ std::vector<SceneFileInfo> listPresetScenes() {
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(dir / "scenes", ec)) {
     if (e.path().extension() != ".json") continue;
-    SceneFileInfo info{e.path(), e.path().stem().string()};
+    SceneFileInfo info{e.path(), e.path().stem().string(), {}};
     // Only the title is read here; the scene is loaded (and checked) when chosen.
     std::ifstream in(e.path());
     const auto j = nlohmann::json::parse(in, nullptr, false);
