@@ -264,17 +264,19 @@ TEST_P(LessonLayout, EveryStepsLabelsNeverOverlapLeaveTheirViewOrStrayFromTheirP
   }
   EXPECT_GE(views, steps) << "every step shows a view";
   EXPECT_GT(labels, steps) << "the views have labels to place";
-  if (file.rfind("05-clipping", 0) == 0) EXPECT_GE(reasons, 1u) << "its last step shows the divide-first strategy";
+  if (file.rfind("05-clipping", 0) == 0) {
+    EXPECT_GE(reasons, 1u) << "its last step shows the divide-first strategy";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Bundled, LessonLayout,
                          ::testing::Combine(::testing::ValuesIn(bundledLessons()), ::testing::Values(0, 1)),
-                         [](const auto& info) {
-                           std::string name = std::get<0>(info.param);
+                         [](const auto& param) {
+                           std::string name = std::get<0>(param.param);
                            name = name.substr(0, name.size() - 5);
                            for (char& c : name)
                              if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return name + (std::get<1>(info.param) == 0 ? "_1280x720x1_6" : "_1024x768x1_25");
+                           return name + (std::get<1>(param.param) == 0 ? "_1280x720x1_6" : "_1024x768x1_25");
                          });
 
 }  // namespace
