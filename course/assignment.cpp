@@ -1,5 +1,6 @@
 #include "course/assignment.h"
 
+#include "course/mistake_models.h"
 #include "io/json_read.h"
 #include "io/limits.h"
 #include "pipeline/error.h"
@@ -40,6 +41,19 @@ struct Reader {
       fail(path, j.dump() + " where a number from " + format(lo) + " to " + format(hi) + " is expected");
     return j.get<double>();
   }
+  std::vector<std::string> mistakeKeys(const Json& j, const std::string& path) const {
+    if (!j.is_array() || j.size() > mistakeModels().size()) fail(path, "a list of mistake keys expected");
+    std::vector<std::string> keys;
+    for (size_t i = 0; i < j.size(); ++i) {
+      const std::string key = text(j[i], path + "/" + std::to_string(i));
+      std::string known;
+      bool found = false;
+      for (const MistakeModel& m : mistakeModels()) found |= m.key == key, known += (known.empty() ? "" : ", ") + std::string(m.key);
+      if (!found) fail(path + "/" + std::to_string(i), "\"" + key + "\" is no mistake model (known: " + known + ")");
+      keys.push_back(key);
+    }
+    return keys;
+  }
 };
 
 bool isPointer(std::string_view p) {
@@ -52,13 +66,19 @@ bool isPointer(std::string_view p) {
 Assignment parseAssignment(std::string_view text, std::string_view source) {
   const Json j = parseCheckedJson(text, source, kDefaultLimits.jsonDepth);
   const Reader r{std::string(source)};
-  r.onlyKeys(j, "", {"vplab_assignment", "title", "scene", "tolerance", "items"});
+  r.onlyKeys(j, "", {"vplab_assignment", "title", "scene", "tolerance", "row_vector_form", "items"});
   if (!j.contains("vplab_assignment") || j["vplab_assignment"] != 1)
     r.fail("/vplab_assignment", "missing or not 1 (the format's version: this file is not a vplab assignment)");
   Assignment a;
   if (j.contains("title")) a.title = r.text(j["title"], "/title");
   if (j.contains("scene")) a.scene = r.text(j["scene"], "/scene");
   if (j.contains("tolerance")) a.tolerance = r.number(j["tolerance"], "/tolerance", 0, 0.5);
+  if (j.contains("row_vector_form")) {
+    const std::string form = r.text(j["row_vector_form"], "/row_vector_form");
+    if (form != "accepted" && form != "wrong")
+      r.fail("/row_vector_form", "\"" + form + "\" where \"accepted\" or \"wrong\" is expected");
+    a.rowVectorFormAccepted = form == "accepted";
+  }
   if (!j.contains("items") || !j["items"].is_array() || j["items"].empty())
     r.fail("/items", "a list of at least one item expected (an assignment that asks for nothing grades nothing)");
   if (j["items"].size() > kMaxItems)
@@ -67,7 +87,7 @@ Assignment parseAssignment(std::string_view text, std::string_view source) {
   for (size_t i = 0; i < j["items"].size(); ++i) {
     const std::string at = "/items/" + std::to_string(i);
     const Json& item = j["items"][i];
-    r.onlyKeys(item, at, {"path", "title", "points", "required"});
+    r.onlyKeys(item, at, {"path", "title", "points", "required", "no_follow_through_after"});
     if (!item.contains("path")) r.fail(at, "missing required key \"path\"");
     AssignmentItem it;
     it.path = r.text(item["path"], at + "/path");
@@ -79,6 +99,7 @@ Assignment parseAssignment(std::string_view text, std::string_view source) {
       if (!item["required"].is_boolean()) r.fail(at + "/required", "true or false expected");
       it.required = item["required"].get<bool>();
     }
+    if (item.contains("no_follow_through_after")) it.noFollowThroughAfter = r.mistakeKeys(item["no_follow_through_after"], at + "/no_follow_through_after");
     a.items.push_back(std::move(it));
   }
   return a;
@@ -89,12 +110,14 @@ std::string assignmentJson(const Assignment& a) {
   for (const AssignmentItem& i : a.items) {
     Json item = {{"path", i.path}, {"title", i.title}, {"points", i.points}};
     if (!i.required) item["required"] = false;
+    if (!i.noFollowThroughAfter.empty()) item["no_follow_through_after"] = i.noFollowThroughAfter;
     items.push_back(item);
   }
   const Json j = {{"vplab_assignment", 1},
                   {"title", a.title},
                   {"scene", a.scene.generic_string()},
                   {"tolerance", a.tolerance},
+                  {"row_vector_form", a.rowVectorFormAccepted ? "accepted" : "wrong"},
                   {"items", items}};
   return j.dump(2) + "\n";
 }

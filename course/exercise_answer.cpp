@@ -22,8 +22,11 @@ std::vector<ExerciseTask> exerciseTasks(const Exercise& e, const ExerciseSolutio
   std::vector<ExerciseTask> tasks;
   auto task = [&](std::string text) -> ExerciseTask& { return tasks.emplace_back(ExerciseTask{std::move(text), {}}); };
   auto item = [](ExerciseTask& t, std::string path, std::string title, double points) {
-    t.items.push_back({std::move(path), std::move(title), points, true});
+    t.items.push_back({std::move(path), std::move(title), points, true, {}});
   };
+  // The items whose subject is clipping in homogeneous coordinates: dividing by w first removes it,
+  // so no follow-through after that mistake (issue 38, course/assignment.h).
+  auto homogeneous = [](ExerciseTask& t) { t.items.back().noFollowThroughAfter = {"divide-first"}; };
   if (shows(ExerciseTopic::orientation)) {
     ExerciseTask& modeling = task(L("Compute $\\mathit{wcFromMc}$ and $P_1$ in WC.", "Berechnen Sie $\\mathit{wcFromMc}$ und $P_1$ in WC."));
     item(modeling, "/objects/0/wc_from_mc", "wcFromMc", 2);
@@ -47,7 +50,9 @@ std::vector<ExerciseTask> exerciseTasks(const Exercise& e, const ExerciseSolutio
                                 "Geben Sie die Randkoordinaten und den Outcode von $P_1$ an; falls innen, seine NPC, "
                                 "$\\mathit{dcFromNpc}$ und seine DC."));
     item(test, polygon + "/boundary/0", L("the boundary coordinates of P1", "die Randkoordinaten von P1"), 1);
+    homogeneous(test);
     item(test, polygon + "/outcodes/0", L("the outcode of P1", "der Outcode von P1"), 1);
+    homogeneous(test);
     if (s.point.outcode == 0) {  // "where it is inside, its NPC and DC" (DC by dcFromNpc, which the grader follows)
       item(test, polygon + "/npc/0", L("P1 in NPC", "P1 in NPC"), 1);
       item(test, "/matrices/dc_from_npc", "dcFromNpc", 1);
@@ -65,10 +70,12 @@ std::vector<ExerciseTask> exerciseTasks(const Exercise& e, const ExerciseSolutio
            L("the polygon after the " + std::string(planeName(plane)) + " plane",
              "das Polygon nach der Ebene " + std::string(kPlanesDe[plane])),
            1);
+    for (AssignmentItem& i : clip.items) i.noFollowThroughAfter = {"divide-first"};
     ExerciseTask& device = task(L("Divide the clipped polygon by $w$ and map it to DC with $\\mathit{dcFromNpc}$.",
                                   "Dividieren Sie das geclippte Polygon durch $w$ und bilden Sie es mit $\\mathit{dcFromNpc}$ auf DC ab."));
     item(device, "/matrices/dc_from_npc", "dcFromNpc", 1);
     item(device, polygon + "/clipped_dc", L("the clipped polygon in DC", "das geclippte Polygon in DC"), 2);
+    homogeneous(device);
   }
   return tasks;
 }

@@ -4,6 +4,8 @@
 #include "pipeline/camera.h"
 #include "pipeline/clipping.h"
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace vplab {
@@ -81,6 +83,15 @@ std::vector<Vec4> clippedBy(const std::vector<Vec4>& in, int plane) {
   return out;
 }
 
+// Whether a vertex of the polygon lies outside the plane: a pass of Sutherland–Hodgman then has work.
+// A vertex that an earlier pass put on a plane lies on it up to rounding (a boundary value of
+// −4e-16): on the plane within 1e-9 · max(1, |w|) is not outside.
+bool needsCut(const std::vector<Vec4>& polygon, int plane) {
+  for (const Vec4& p : polygon)
+    if (boundaryCoordinates(p)[size_t(plane)] < -1e-9 * std::max(1.0, std::abs(p.w))) return true;
+  return false;
+}
+
 bool endsWith(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
@@ -135,8 +146,15 @@ std::optional<Json> followingValue(const std::string& path, const Json& answer, 
     const std::string index = path.substr(poly.size() + 12, path.size() - poly.size() - 12 - 8);
     if (index.size() != 1 || index[0] < '0' || index[0] >= '0' + kPlaneCount) return std::nullopt;
     const int plane = index[0] - '0';
-    const auto previous = plane == 0 ? polygon(reference, poly + "/npc_h")
-                                     : polygon(answer, poly + "/clip_steps/" + std::to_string(plane - 1) + "/polygon");
+    const auto previousIn = [&](const Json& j) {
+      return plane == 0 ? polygon(reference, poly + "/npc_h")
+                        : polygon(j, poly + "/clip_steps/" + std::to_string(plane - 1) + "/polygon");
+    };
+    const auto previous = previousIn(answer), keyPrevious = previousIn(reference);
+    // Folgefehler, not an easier exercise: a pass whose plane cuts the key's polygon earns credit
+    // only when it had a cut to make on the student's own polygon too (a polygon copied into every
+    // pass, already inside, made every later pass's work vanish).
+    if (previous && keyPrevious && needsCut(*keyPrevious, plane) && !needsCut(*previous, plane)) return std::nullopt;
     if (previous) {
       Json out = Json::array();
       for (const Vec4& p : clippedBy(*previous, plane)) out.push_back(json(p));

@@ -7,7 +7,10 @@
 //   P1 in VRC     = vrcFromWc · P1 in WC
 //   P1 in NPC_h   = npcFromVrc · P1 in VRC              its boundary coordinates and outcode from it
 //   P1 in NPC     = P1 in NPC_h / w                      P1 in DC = dcFromNpc · P1 in NPC
-//   each Sutherland–Hodgman pass from the student's previous one (the first from the given polygon)
+//   each Sutherland–Hodgman pass from the student's previous one (the first from the given polygon),
+//     when that pass had the work the key's had: a plane that cuts the key's polygon must cut the
+//     student's too (the German exam's Folgefehler: no credit where the earlier error made the
+//     later work essentially easier, issue 38)
 //   the clipped polygon in DC = dcFromNpc · (the last pass / w)
 //
 // Values given by the sheet (the camera, the polygon in MC, npcFromVrc's inputs) are the reference's.

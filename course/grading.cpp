@@ -232,8 +232,9 @@ struct Walker {
         auto sub = keys;
         sub.push_back(key);
         const std::string sec = section.empty() ? key : section;
-        walk(value, r[key], path + "/" + key, path + "/" + key, section.empty() ? stageOfKey(key, "") : stageOfKey(sec, key),
-             sub, sec);
+        // A key of no stage of its own (a pass's "polygon") is in its parent's stage.
+        const int own = section.empty() ? stageOfKey(key, "") : stageOfKey(sec, key);
+        walk(value, r[key], path + "/" + key, path + "/" + key, own == 0 ? stage : own, sub, sec);
       }
       return;
     }
@@ -334,6 +335,82 @@ std::vector<std::string> predictedKeys(const Json& answer, const Json& reference
 
 namespace {
 
+// ---------------------------------------------------------------- row-vector form (issue 38)
+
+// The answer's 4 × 4 matrices: the view's three and each object's wcFromMc, where given whole.
+std::vector<Json::json_pointer> matricesOf(const Json& answer) {
+  std::vector<Json::json_pointer> out;
+  const auto whole = [&](const Json::json_pointer& p) {
+    if (!answer.contains(p)) return;
+    const Json& m = answer[p];
+    if (!m.is_array() || m.size() != 4) return;
+    for (const Json& row : m) {
+      if (!row.is_array() || row.size() != 4) return;
+      for (const Json& x : row)
+        if (!numberOf(x)) return;
+    }
+    out.push_back(p);
+  };
+  if (answer.contains("matrices") && answer["matrices"].is_object())
+    for (const auto& [key, value] : answer["matrices"].items()) whole(Json::json_pointer("/matrices/" + key));
+  if (answer.contains("objects") && answer["objects"].is_array())
+    for (size_t i = 0; i < answer["objects"].size(); ++i)
+      whole(Json::json_pointer("/objects/" + std::to_string(i) + "/wc_from_mc"));
+  return out;
+}
+
+Json transposed(const Json& m) {
+  Json t = m;
+  for (size_t r = 0; r < 4; ++r)
+    for (size_t c = 0; c < 4; ++c) t[r][c] = m[c][r];
+  return t;
+}
+
+// How the student's matrix at `p` is written: in the column form, the row form (transposed), both
+// (a symmetric matrix) or neither (wrong either way).
+struct Form {
+  bool column = false, row = false;
+};
+Form formOf(const Json& answer, const Json& reference, const Json::json_pointer& p, const Walker& w) {
+  Form f;
+  if (!reference.contains(p)) return f;
+  const Json& s = answer[p];
+  const Json& r = reference[p];
+  const auto agree = [&](const Json& expected) {
+    for (size_t i = 0; i < 4; ++i)
+      for (size_t j = 0; j < 4; ++j)
+        if (!w.agrees(s[i][j], expected[i][j])) return false;
+    return true;
+  };
+  f.column = agree(r);
+  f.row = agree(transposed(r));
+  return f;
+}
+
+// The matrices written in row form only (their transposes agree, they do not).
+std::vector<Json::json_pointer> rowFormMatrices(const Json& answer, const Json& reference, const Walker& w,
+                                                size_t* columnOnly = nullptr) {
+  std::vector<Json::json_pointer> rows;
+  size_t columns = 0;
+  for (const Json::json_pointer& p : matricesOf(answer)) {
+    const Form f = formOf(answer, reference, p, w);
+    if (f.row && !f.column) rows.push_back(p);
+    columns += f.column && !f.row;
+  }
+  if (columnOnly) *columnOnly = columns;
+  return rows;
+}
+
+// The transposed model for this answer: the reference with the matrices the student wrote in row
+// form transposed, the others as they are (one transposed matrix is the mistake, not all).
+std::optional<Json> transposedModelFor(const Json& answer, const Json& reference, const Walker& w) {
+  const std::vector<Json::json_pointer> rows = rowFormMatrices(answer, reference, w);
+  if (rows.empty()) return std::nullopt;
+  Json model = reference;
+  for (const Json::json_pointer& p : rows) model[p] = transposed(reference[p]);
+  return model;
+}
+
 // Whether the student's value agrees with `expected` (within the tolerance or the student's
 // rounding); a polygon at its best cyclic alignment.
 bool agreesWith(const Json& s, const Json& e, const Walker& w) {
@@ -351,7 +428,7 @@ bool agreesWith(const Json& s, const Json& e, const Walker& w) {
 void gradeItems(NumbersGrade& g, const Assignment& assignment, const Json& answer, const GradingReference& r,
                 const Walker& w) {
   for (const AssignmentItem& item : assignment.items) {
-    ItemGrade i{item.path, item.title, item.points, 0, item.required};
+    ItemGrade i{item.path, item.title, item.points, 0, item.required, 0, 0, false, std::nullopt};
     for (const GradedValue& v : g.values)
       if (isWithin(v.path, item.path)) ++i.values, i.wrong += !v.right;
     if (i.right()) {
@@ -377,7 +454,7 @@ GradingReference gradingReference(const Scene& scene) {
   for (const MistakeModel& model : mistakeModels()) {
     try {
       Json dump = mistakeDump(scene, model.id);
-      addSheetValues(dump, model.id == Mistake::transposed);
+      addSheetValues(dump, model.id == Mistake::transposed, model.id == Mistake::divideFirst);
       r.models.emplace_back(model.id, std::move(dump));
     } catch (const Error&) {
       // the variant's camera is invalid: that model cannot be told for this scene
@@ -391,45 +468,39 @@ NumbersGrade gradeNumbers(const Json& answer, std::string_view source, const Sce
   return gradeNumbers(answer, source, gradingReference(scene), tolerance, assignment);
 }
 
-NumbersGrade gradeNumbers(const Json& answer, std::string_view source, const GradingReference& references,
-                          double tolerance, const Assignment* assignment) {
-  if (!(tolerance >= 0 && tolerance < 1)) throw Error("the tolerance must lie in [0, 1), not " + std::to_string(tolerance));
+namespace {
+
+// Which values are consequences of the student's earlier ones (their items follow through), and
+// where the student first departs on their own: recomputed whenever an item's credit changes.
+void markConsequences(NumbersGrade& g) {
+  g.firstStage.reset();
+  g.consequent = 0;
+  g.points = 0;
+  for (GradedValue& v : g.values) {
+    v.consequent = false;
+    for (const ItemGrade& i : g.items)
+      if (i.followsThrough && !v.right && isWithin(v.path, i.path)) v.consequent = true;
+    g.consequent += v.consequent && !v.rounded;
+    if (!v.right && !v.rounded && !v.consequent) g.firstStage = std::min(g.firstStage.value_or(99), v.stage);
+  }
+  for (const ItemGrade& i : g.items) g.points += i.earned;
+}
+
+// The mistake models that predict the student's numbers (up to the student's rounding), the values
+// that follow from the student's earlier ones left aside.
+void matchModels(NumbersGrade& g, const Json& answer, const GradingReference& references, const Walker& w) {
   const Json& reference = references.reference;
-  Walker w{std::string(source), tolerance, {}, {}, {}, {}};
-  w.walk(answer, reference, "", "", 0, {}, "");
-  if (w.values.empty() && !assignment)
-    throw Error(std::string(source) + ": the answer gives no value to check (every field is empty or missing); "
-                "an answer that checks nothing cannot pass: fill in the template (answer.json) or grade with "
-                "--assignment, which names what is required");
-  NumbersGrade g;
-  g.tolerance = tolerance;
-  g.values = std::move(w.values);
-  for (const GradedValue& v : g.values) {
-    if (v.right) continue;
-    ++g.wrong;
-    if (v.rounded) {
-      ++g.rounded;
-      // The most digits printed: JSON drops trailing zeros (0.50 reads back as 0.5).
-      g.roundedDecimals = std::max(g.roundedDecimals, v.decimals);
-    } else {
-      g.firstStage = std::min(g.firstStage.value_or(99), v.stage);
+  g.models.clear();
+  g.fitting.clear();
+  g.mistake.reset();
+  std::optional<Json> transposedModel = transposedModelFor(answer, reference, w);
+  for (const auto& [mistake, fullDump] : references.models) {
+    const Json* dumpOf = &fullDump;
+    if (mistake == Mistake::transposed) {
+      if (!transposedModel) continue;
+      dumpOf = &*transposedModel;
     }
-  }
-  if (assignment) {
-    gradeItems(g, *assignment, answer, references, w);
-    // Values that follow from the student's earlier ones are consequences, not mistakes of their own:
-    // neither a stage's departure nor something for (or against) a mistake model.
-    g.firstStage.reset();
-    for (GradedValue& v : g.values) {
-      for (const ItemGrade& i : g.items)
-        if (i.followsThrough && !v.right && isWithin(v.path, i.path)) v.consequent = true;
-      g.consequent += v.consequent && !v.rounded;
-      if (!v.right && !v.rounded && !v.consequent) g.firstStage = std::min(g.firstStage.value_or(99), v.stage);
-    }
-  }
-  if (g.wrong == g.rounded + g.consequent) return g;  // nothing for the mistake models to explain
-  // The mistake models: which of them predict the student's numbers (up to the student's rounding)?
-  for (const auto& [mistake, dump] : references.models) {
+    const Json& dump = *dumpOf;
     ModelMatch match{mistake};
     bool differs = false;
     Alignments alignments;  // per polygon, computed once per model
@@ -463,6 +534,77 @@ NumbersGrade gradeNumbers(const Json& answer, std::string_view source, const Gra
   if (g.fitting.size() == 1) g.mistake = g.fitting[0];
   std::stable_sort(g.models.begin(), g.models.end(),
                    [](const ModelMatch& a, const ModelMatch& b) { return a.explained > b.explained; });
+}
+
+// Folgefehler ends where the mistake removed the item's subject: an item that lists a fitting
+// mistake in its no_follow_through_after loses the credit it had from following through.
+bool withdrawFollowThrough(NumbersGrade& g, const Assignment& assignment) {
+  bool changed = false;
+  for (size_t k = 0; k < g.items.size() && k < assignment.items.size(); ++k) {
+    ItemGrade& i = g.items[k];
+    if (!i.followsThrough) continue;
+    for (const std::string& key : assignment.items[k].noFollowThroughAfter)
+      for (Mistake m : g.fitting)
+        if (mistakeModel(m).key == key) {
+          i.followsThrough = false;
+          i.withdrawnFor = m;
+          i.earned = 0;
+          changed = true;
+        }
+  }
+  return changed;
+}
+
+}  // namespace
+
+NumbersGrade gradeNumbers(const Json& givenAnswer, std::string_view source, const GradingReference& references,
+                          double tolerance, const Assignment* assignment) {
+  if (!(tolerance >= 0 && tolerance < 1)) throw Error("the tolerance must lie in [0, 1), not " + std::to_string(tolerance));
+  const Json& reference = references.reference;
+  Walker w{std::string(source), tolerance, {}, {}, {}, {}};
+  NumbersGrade g;
+  g.tolerance = tolerance;
+  // Every matrix in the lecture notes' row-vector form: a notation, read transposed (issue 38).
+  Json rowsRead;
+  const Json* answerOf = &givenAnswer;
+  size_t columnOnly = 0;
+  if ((!assignment || assignment->rowVectorFormAccepted) &&
+      !rowFormMatrices(givenAnswer, reference, w, &columnOnly).empty() && columnOnly == 0) {
+    rowsRead = givenAnswer;
+    for (const Json::json_pointer& p : matricesOf(givenAnswer)) rowsRead[p] = transposed(givenAnswer[p]);
+    answerOf = &rowsRead;
+    g.rowVectorForm = true;
+  }
+  const Json& answer = *answerOf;
+  w.walk(answer, reference, "", "", 0, {}, "");
+  if (w.values.empty() && !assignment)
+    throw Error(std::string(source) + ": the answer gives no value to check (every field is empty or missing); "
+                "an answer that checks nothing cannot pass: fill in the template (answer.json) or grade with "
+                "--assignment, which names what is required");
+  g.values = std::move(w.values);
+  for (const GradedValue& v : g.values) {
+    if (v.right) continue;
+    ++g.wrong;
+    if (v.rounded) {
+      ++g.rounded;
+      // The most digits printed: JSON drops trailing zeros (0.50 reads back as 0.5).
+      g.roundedDecimals = std::max(g.roundedDecimals, v.decimals);
+    } else {
+      g.firstStage = std::min(g.firstStage.value_or(99), v.stage);
+    }
+  }
+  if (assignment) {
+    gradeItems(g, *assignment, answer, references, w);
+    // Values that follow from the student's earlier ones are consequences, not mistakes of their own:
+    // neither a stage's departure nor something for (or against) a mistake model.
+    markConsequences(g);
+  }
+  if (g.wrong == g.rounded + g.consequent) return g;  // nothing for the mistake models to explain
+  matchModels(g, answer, references, w);
+  if (assignment && withdrawFollowThrough(g, *assignment)) {
+    markConsequences(g);
+    matchModels(g, answer, references, w);  // the withdrawn values are the mistake's own now
+  }
   return g;
 }
 

@@ -51,6 +51,8 @@ struct ItemGrade {
   bool required = true;
   size_t values = 0, wrong = 0;  // of the item's values the student gave
   bool followsThrough = false;   // wrong, but what the student's own earlier values give: its points earned
+  std::optional<Mistake> withdrawnFor;  // it followed through, but after a mistake that removed its subject
+                                        // (AssignmentItem::noFollowThroughAfter): no points
   bool missing() const { return values == 0; }
   bool right() const { return values > 0 && wrong == 0; }
 };
@@ -68,6 +70,7 @@ struct NumbersGrade {
   std::optional<Mistake> mistake;        // the model matching every value, when exactly one does
   std::vector<Mistake> fitting;          // every model matching every value (several: they cannot be told apart)
   std::vector<ItemGrade> items;          // with an assignment: its items in its order
+  bool rowVectorForm = false;            // every matrix given in the lecture notes' row-vector form: read transposed
   double points = 0, maxPoints = 0;
   bool passed() const {
     if (wrong != 0) return false;

@@ -1,6 +1,7 @@
 #include "course/mistake_models.h"
 
 #include "io/dump.h"
+#include "pipeline/clipping.h"
 #include "pipeline/error.h"
 
 namespace vplab {
@@ -10,9 +11,9 @@ using Json = nlohmann::ordered_json;
 const std::vector<MistakeModel>& mistakeModels() {
   static const std::vector<MistakeModel> models = {
       {Mistake::transposed, "transposed",
-       "the matrices are transposed: the lecture notes' row-vector form (p' = p · M) where the column form (p' = M · p) is asked",
+       "a matrix is transposed: the lecture notes' row-vector form (p' = p · M) among matrices in the column form (p' = M · p)",
        "docs/conventions.md \"Notation\"; the matrix panel shows both forms",
-       "die Matrizen sind transponiert: die Zeilenvektor-Form der Vorlesung (p' = p · M), wo die Spaltenform (p' = M · p) verlangt ist",
+       "eine Matrix ist transponiert: die Zeilenvektor-Form der Vorlesung (p' = p · M) zwischen Matrizen in Spaltenform (p' = M · p)",
        "docs/conventions.md „Notation“; das Matrix-Panel zeigt beide Formen"},
       {Mistake::yNotFlipped, "y-not-flipped", "y is not flipped in the device mapping: y_dc = H·y instead of H·(1 − y)",
        "lecture notes 15.2.5: DC has its origin top-left, y down",
@@ -41,11 +42,27 @@ const std::vector<MistakeModel>& mistakeModels() {
        "lecture notes 14.3.2: a point behind the view plane moves by (−d·cos φ, d·sin φ)",
        "die schiefe Scherung hat das falsche Vorzeichen: richtig ist x + z·d·cos φ, y − z·d·sin φ",
        "Skript 14.3.2: ein Punkt hinter der Sichtebene verschiebt sich um (−d·cos φ, d·sin φ)"},
+      {Mistake::forgotTranslation, "forgot-t-vrp",
+       "T(−VRP) is missing: vrcFromWc rotates about the origin instead of moving VRP there first",
+       "lecture notes 15.2.2 and docs/conventions.md stage 2: vrcFromWc = R · T(−VRP)",
+       "T(−VRP) fehlt: vrcFromWc dreht um den Ursprung, statt zuerst den VRP dorthin zu verschieben",
+       "Skript 15.2.2 und docs/conventions.md Stufe 2: vrcFromWc = R · T(−VRP)"},
+      {Mistake::outcodeReversed, "outcode-reversed",
+       "the outcode's bits are in reverse order: bit 0 is the left plane (x < 0), bit 5 the front plane (z > w)",
+       "lecture notes 15.3.2 and docs/conventions.md stage 4: bits left, right, bottom, top, back, front from bit 0",
+       "die Bits des Outcodes stehen in umgekehrter Reihenfolge: Bit 0 ist die linke Ebene (x < 0), Bit 5 die vordere (z > w)",
+       "Skript 15.3.2 und docs/conventions.md Stufe 4: Bits links, rechts, unten, oben, hinten, vorne ab Bit 0"},
   };
   return models;
 }
 
 const MistakeModel& mistakeModel(Mistake m) { return mistakeModels().at(size_t(m)); }
+
+const MistakeModel* mistakeModelOf(std::string_view key) {
+  for (const MistakeModel& m : mistakeModels())
+    if (m.key == key) return &m;
+  return nullptr;
+}
 
 namespace {
 
@@ -92,6 +109,12 @@ Json mistakeDump(const Scene& scene, Mistake m) {
       s.camera.oblique.phiDeg += 180.0;
       return dumpOf(s);
     }
+    case Mistake::forgotTranslation: {
+      Scene s = scene;
+      s.camera.prp = s.camera.prp - s.camera.vrp;
+      s.camera.vrp = Vec3(0.0);
+      return dumpOf(s);
+    }
     default: break;
   }
   Json dump = referenceDump(scene);
@@ -121,6 +144,16 @@ Json mistakeDump(const Scene& scene, Mistake m) {
       });
       break;
     }
+    case Mistake::outcodeReversed:
+      forEachPolygon(dump, [&](Json& p) {
+        for (Json& code : p["outcodes"]) {
+          const unsigned c = code.get<unsigned>();
+          unsigned r = 0;
+          for (int bit = 0; bit < kPlaneCount; ++bit) r |= ((c >> bit) & 1u) << (kPlaneCount - 1 - bit);
+          code = int(r);
+        }
+      });
+      break;
     default: break;
   }
   return dump;

@@ -41,23 +41,29 @@ Json clipStepsOf(const Json& npcH) {
 
 }  // namespace
 
-void addSheetValues(Json& dump, bool matricesTransposed) {
+void addSheetValues(Json& dump, bool matricesTransposed, bool dividedFirst) {
   const Mat4 dcFromNpc = matrixOf(dump["matrices"]["dc_from_npc"], matricesTransposed);
   for (Json& object : dump["objects"])
     for (Json& polygon : object["polygons"]) {
-      Json boundary = Json::array(), npc = Json::array(), dc = Json::array();
+      Json boundary = Json::array(), npc = Json::array(), dc = Json::array(), divided = Json::array();
+      Json outcodes = Json::array();
       for (const Json& p : polygon["npc_h"]) {
         const Vec4 h = vec4Of(p);
-        const Boundary bc = boundaryCoordinates(h);
-        boundary.push_back(Json(std::vector<double>(bc.begin(), bc.end())));
         const Vec3 n = divideByW(h);
+        // Dividing first, the clipper sees (x/w, y/w, z/w, 1): a point behind the eye (w < 0) flips.
+        const Vec4 clipped = dividedFirst ? Vec4(n, 1.0) : h;
+        const Boundary bc = boundaryCoordinates(clipped);
+        boundary.push_back(Json(std::vector<double>(bc.begin(), bc.end())));
+        outcodes.push_back(int(outcodeOf(bc)));
+        divided.push_back(jsonOf(clipped));
         npc.push_back(jsonOf(n));
         dc.push_back(jsonOf(Vec3(dcFromNpc * Vec4(n, 1.0))));
       }
       polygon["boundary"] = boundary;
+      if (dividedFirst) polygon["outcodes"] = outcodes;
       polygon["npc"] = npc;
       polygon["dc"] = dc;
-      polygon["clip_steps"] = clipStepsOf(polygon["npc_h"]);
+      polygon["clip_steps"] = clipStepsOf(divided);
     }
 }
 

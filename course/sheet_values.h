@@ -19,8 +19,9 @@ namespace vplab {
 
 /// Adds the sheet's values to every polygon of `dump`. `matricesTransposed`: the dump's matrices
 /// are written transposed (the transposed mistake model: its points are right, so DC is mapped with
-/// the matrix as it should be).
-void addSheetValues(nlohmann::ordered_json& dump, bool matricesTransposed = false);
+/// the matrix as it should be). `dividedFirst`: the divide-first mistake model's values: the
+/// boundary coordinates, outcodes and passes of the divided points (x/w, y/w, z/w, 1).
+void addSheetValues(nlohmann::ordered_json& dump, bool matricesTransposed = false, bool dividedFirst = false);
 
 /// The reference answer of a scene: its dump (strategy npc) with the sheet's values.
 nlohmann::ordered_json referenceAnswer(const Scene& scene);

@@ -85,6 +85,13 @@ GradeCase itemCase(const ItemGrade& item, const NumbersGrade& g, Language lang) 
   }
   c.passed = item.right();
   c.message = item.right() ? values(item.values, lang) + std::string(inLanguage(lang, " right: ", " richtig: ")) + points
+              : item.withdrawnFor
+                  ? std::to_string(item.wrong) + ofValues(item.values, lang) +
+                        std::string(inLanguage(lang, " wrong; they follow from your earlier values, but the mistake ",
+                                               " falsch; sie folgen aus Ihren früheren Werten, aber der Fehler ")) +
+                        quoted(mistakeModel(*item.withdrawnFor).key, lang) +
+                        std::string(inLanguage(lang, " removes what this task asks (no follow-through credit): ",
+                                               " nimmt dieser Aufgabe ihren Gegenstand (kein Folgefehler): ")) + points
               : item.followsThrough
                   ? std::to_string(item.wrong) + ofValues(item.values, lang) +
                         std::string(inLanguage(lang, " wrong, but they follow from your earlier values: ",
@@ -163,6 +170,11 @@ std::vector<std::string> diagnosis(const NumbersGrade& g, Language lang) {
                          "): the tolerance asks for |Δ| ≤ " + shortNumber(g.tolerance) +
                          " · max(1, |x|); give at least " + std::to_string(needed) + " decimals.");
   }
+  if (g.rowVectorForm)
+    d.push_back(de ? "Alle Matrizen sind in der Zeilenvektor-Form des Skripts (p' = p · M) geschrieben: als Schreibweise "
+                     "akzeptiert und transponiert bewertet."
+                   : "Every matrix is written in the lecture notes' row-vector form (p' = p · M): accepted as a notation "
+                     "and graded transposed.");
   if (g.firstStage)
     d.push_back((de ? "Die erste Stufe, in der Ihre Zahlen vom Ergebnis abweichen: "
                     : "The first stage where your numbers depart from the reference: ") +
@@ -238,7 +250,7 @@ GradeReport numbersReport(const NumbersGrade& g, const std::string& student, con
                      {"earned", i.earned},
                      {"values", i.values},
                      {"wrong", i.wrong},
-                     {"status", i.missing() ? "missing" : i.right() ? "right" : i.followsThrough ? "follows" : "wrong"}});
+                     {"status", i.missing() ? "missing" : i.right() ? "right" : i.followsThrough ? "follows" : i.withdrawnFor ? "withdrawn" : "wrong"}});
   }
   Json groups = Json::array();
   for (GradeCase& c : groupCases(g, lang, groups)) r.cases.push_back(std::move(c));

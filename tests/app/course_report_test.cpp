@@ -23,13 +23,12 @@ std::string textOf(const Json& answer, const Scene& scene, Language lang = Langu
 
 TEST(GradeReport, AModelThatExplainsEveryWrongValueButChangesRightOnesSaysSo) {
   const Scene scene = asset("behind-the-eye.json");
-  const Json reference = referenceDump(scene);
-  const Json transposed = mistakeDump(scene, Mistake::transposed);
-  // Transposed in vrcFromWc only; npcFromVrc right.
-  const Json answer = {{"matrices", {{"vrc_from_wc", transposed["matrices"]["vrc_from_wc"]},
-                                     {"npc_from_vrc", reference["matrices"]["npc_from_vrc"]}}}};
+  // y not flipped in dcFromNpc, but the clipped polygons in DC right: the model explains the matrix
+  // and would change the polygons.
+  Json answer = referenceDump(scene);
+  answer["matrices"]["dc_from_npc"] = mistakeDump(scene, Mistake::yNotFlipped)["matrices"]["dc_from_npc"];
   const std::string text = textOf(answer, scene);
-  EXPECT_THAT(text, HasSubstr("The mistake model \"transposed\""));
+  EXPECT_THAT(text, HasSubstr("The mistake model \"y-not-flipped\""));
   EXPECT_THAT(text, HasSubstr("explains all"));
   EXPECT_THAT(text, HasSubstr("you got right: you made this mistake in a part of your work"));
   EXPECT_THAT(text, Not(HasSubstr("No mistake model explains all")));
@@ -63,7 +62,9 @@ TEST(GradeReport, TheCountOfWhatIsNotListedIsRight) {
 
 TEST(GradeReport, FeedbackInGerman) {
   const Scene scene = asset("behind-the-eye.json");
-  const Json answer = {{"matrices", {{"vrc_from_wc", mistakeDump(scene, Mistake::transposed)["matrices"]["vrc_from_wc"]}}}};
+  // vrcFromWc in row form, npcFromVrc in column form: the transposed one is the mistake.
+  const Json answer = {{"matrices", {{"vrc_from_wc", mistakeDump(scene, Mistake::transposed)["matrices"]["vrc_from_wc"]},
+                                     {"npc_from_vrc", referenceDump(scene)["matrices"]["npc_from_vrc"]}}}};
   const GradeReport r = numbersReport(gradeNumbers(answer, "a.json", scene), "a.json", "s.json", Language::de);
   const std::string text = reportText(r);
   EXPECT_THAT(text, HasSubstr("NICHT BESTANDEN"));
@@ -71,6 +72,14 @@ TEST(GradeReport, FeedbackInGerman) {
   EXPECT_THAT(text, HasSubstr("Fehlermodell"));
   EXPECT_THAT(r.json["diagnosis"].dump(), HasSubstr("Stufe"));
   EXPECT_THAT(reportJunit(r), HasSubstr("falsch"));
+}
+
+TEST(GradeReport, EveryMatrixInRowFormIsANotationAndTheReportSaysSo) {
+  const Scene scene = asset("behind-the-eye.json");
+  const Json answer = {{"matrices", mistakeDump(scene, Mistake::transposed)["matrices"]}};
+  const GradeReport r = numbersReport(gradeNumbers(answer, "a.json", scene), "a.json", "s.json", Language::de);
+  EXPECT_TRUE(r.passed);
+  EXPECT_THAT(reportText(r), HasSubstr("Zeilenvektor-Form des Skripts"));
 }
 
 TEST(GradeReport, AnAnswerThatCannotBeGradedGetsAJunitErrorNamingTheProblem) {

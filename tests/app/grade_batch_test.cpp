@@ -78,15 +78,16 @@ TEST_F(GradeBatch, AGeneratedClassGivesTheExpectedGradebook) {
   fs::create_directories(dir_ / "class");
   auto write = [&](const std::string& name, const std::string& text) { std::ofstream(dir_ / "class" / name) << text; };
   std::map<std::string, std::string> expected;  // id → "pass", "fail", "error"
-  for (int i = 0; i < 100; ++i) write("right" + std::to_string(i) + ".json", filled(a, blank, reference).dump()), expected["right" + std::to_string(i)] = "pass";
+  for (int i = 0; i < 70; ++i) write("right" + std::to_string(i) + ".json", filled(a, blank, reference).dump()), expected["right" + std::to_string(i)] = "pass";
   for (const MistakeModel& m : mistakeModels()) {
     Json model = mistakeDump(scene, m.id);
-    addSheetValues(model, m.id == Mistake::transposed);
+    addSheetValues(model, m.id == Mistake::transposed, m.id == Mistake::divideFirst);
     const Json answer = filled(a, blank, model);
     for (int i = 0; i < 15; ++i) {
       const std::string id = std::string(m.key) + std::to_string(i);
       write(id + ".json", answer.dump());
-      expected[id] = answer == filled(a, blank, reference) ? "pass" : "fail";  // a model may not show on this sheet
+      // A model may not show on this sheet; every matrix transposed is the row-vector notation (issue 38).
+      expected[id] = answer == filled(a, blank, reference) || m.id == Mistake::transposed ? "pass" : "fail";
     }
   }
   for (int i = 0; i < 30; ++i) write("rounded" + std::to_string(i) + ".json", rounded(filled(a, blank, reference), 1).dump()), expected["rounded" + std::to_string(i)] = "fail";

@@ -152,8 +152,10 @@ TEST(Answers, ZeroForAHalfIsNotRounding) {
 
 TEST(Answers, AMistakeIsNamedThoughTheValuesAreRounded) {
   const Scene scene = asset("behind-the-eye.json");
-  const Json model = mistakeDump(scene, Mistake::transposed);
-  const Json answer = {{"matrices", rounded(model["matrices"], 2)}};
+  // One matrix in row form among the others in column form (all in row form is a notation).
+  Json matrices = referenceDump(scene)["matrices"];
+  matrices["vrc_from_wc"] = mistakeDump(scene, Mistake::transposed)["matrices"]["vrc_from_wc"];
+  const Json answer = {{"matrices", rounded(matrices, 2)}};
   const NumbersGrade g = gradeNumbers(answer, "a.json", scene);
   ASSERT_TRUE(g.mistake) << g.wrong << " wrong, " << g.rounded << " rounded";
   EXPECT_EQ(*g.mistake, Mistake::transposed);

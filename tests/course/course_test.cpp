@@ -189,7 +189,17 @@ Scene asset(const char* name) { return loadScene(std::string(VPLAB_ASSETS) + "/s
 // The scene a model is tested on: one where the mistake shows (a rotation and a point behind the
 // eye; the oblique projection for the shear's sign).
 Scene sceneFor(Mistake m) {
+  if (m == Mistake::forgotTranslation) return asset("clipping-wc-vs-npc.json");  // VRP away from the origin
   return asset(m == Mistake::obliqueShearSign ? "oblique-cabinet.json" : "behind-the-eye.json");
+}
+
+// What a student making the mistake prints: the model's dump; for transposed, one matrix in row
+// form among the others in column form (every matrix in row form is a notation, issue 38).
+Json mistakeAnswer(const Scene& scene, Mistake m) {
+  if (m != Mistake::transposed) return mistakeDump(scene, m);
+  Json answer = referenceDump(scene);
+  answer["matrices"]["vrc_from_wc"] = mistakeDump(scene, m)["matrices"]["vrc_from_wc"];
+  return answer;
 }
 
 TEST(Grading, TheReferenceItselfPasses) {
@@ -205,7 +215,7 @@ TEST(Grading, EveryMistakeModelIsRecognisedAsItselfAndNotAsAnother) {
   for (const MistakeModel& model : mistakeModels()) {
     SCOPED_TRACE(std::string(model.key));
     const Scene scene = sceneFor(model.id);
-    const NumbersGrade g = gradeNumbers(mistakeDump(scene, model.id), "answer.json", scene);
+    const NumbersGrade g = gradeNumbers(mistakeAnswer(scene, model.id), "answer.json", scene);
     EXPECT_FALSE(g.passed());
     ASSERT_TRUE(g.mistake);
     EXPECT_EQ(*g.mistake, model.id);
@@ -217,13 +227,16 @@ TEST(Grading, EveryMistakeModelIsRecognisedAsItselfAndNotAsAnother) {
 
 TEST(Grading, FirstDepartingStage) {
   const Scene scene = asset("behind-the-eye.json");
-  auto stageOf = [&](Mistake m) { return gradeNumbers(mistakeDump(scene, m), "a.json", scene).firstStage.value_or(-1); };
+  auto stageOf = [&](Mistake m) { return gradeNumbers(mistakeAnswer(scene, m), "a.json", scene).firstStage.value_or(-1); };
   EXPECT_EQ(stageOf(Mistake::leftHandedN), 2);
   EXPECT_EQ(stageOf(Mistake::degreesAsRadians), 1);
   EXPECT_EQ(stageOf(Mistake::frontBackSwapped), 3);
   EXPECT_EQ(stageOf(Mistake::divideFirst), 4);
   EXPECT_EQ(stageOf(Mistake::yNotFlipped), 5);
-  EXPECT_EQ(stageOf(Mistake::transposed), 1);  // wc_from_mc comes first
+  EXPECT_EQ(stageOf(Mistake::transposed), 2);  // vrcFromWc in row form
+  EXPECT_EQ(gradeNumbers(mistakeAnswer(sceneFor(Mistake::forgotTranslation), Mistake::forgotTranslation), "a.json",
+                         sceneFor(Mistake::forgotTranslation)).firstStage.value_or(-1), 2);
+  EXPECT_EQ(stageOf(Mistake::outcodeReversed), 4);
 }
 
 TEST(Grading, ASubsetIsGradedOnItsOwn) {
@@ -232,17 +245,24 @@ TEST(Grading, ASubsetIsGradedOnItsOwn) {
   // so this subset is right.
   Json answer = {{"objects", Json::array({{{"polygons", Json::array({{{"npc_h", referenceDump(scene)["objects"][0]["polygons"][0]["npc_h"]}}})}}})}};
   EXPECT_TRUE(gradeNumbers(answer, "a.json", scene).passed());
-  // Only the matrices, transposed: recognised from the matrices alone.
-  Json matrices = {{"matrices", mistakeDump(scene, Mistake::transposed)["matrices"]}};
+  // Only the matrices, every one in the lecture notes' row form: a notation, read transposed.
+  const Json transposedMatrices = mistakeDump(scene, Mistake::transposed)["matrices"];
+  const NumbersGrade rows = gradeNumbers(Json{{"matrices", transposedMatrices}}, "a.json", scene);
+  EXPECT_TRUE(rows.passed());
+  EXPECT_TRUE(rows.rowVectorForm);
+  // One of them in row form among the others in column form: that one is the mistake.
+  Json matrices = {{"matrices", referenceDump(scene)["matrices"]}};
+  matrices["matrices"]["npc_from_vrc"] = transposedMatrices["npc_from_vrc"];
   const NumbersGrade g = gradeNumbers(matrices, "a.json", scene);
   size_t asymmetric = 0;  // the entries a transpose changes
   const Json reference = referenceDump(scene);
-  for (const auto& [key, m] : reference["matrices"].items())
-    for (size_t r = 0; r < 4; ++r)
-      for (size_t c = 0; c < 4; ++c)
-        asymmetric += std::abs(m[r][c].get<double>() - m[c][r].get<double>()) > 1e-3 * std::max(1.0, std::abs(m[r][c].get<double>()));
-  EXPECT_GT(asymmetric, 6u);
+  const Json& m = reference["matrices"]["npc_from_vrc"];
+  for (size_t r = 0; r < 4; ++r)
+    for (size_t c = 0; c < 4; ++c)
+      asymmetric += std::abs(m[r][c].get<double>() - m[c][r].get<double>()) > 1e-3 * std::max(1.0, std::abs(m[r][c].get<double>()));
+  EXPECT_GT(asymmetric, 2u);
   EXPECT_EQ(g.wrong, asymmetric);
+  EXPECT_FALSE(g.rowVectorForm);
   ASSERT_TRUE(g.mistake);
   EXPECT_EQ(*g.mistake, Mistake::transposed);
 }

@@ -24,6 +24,7 @@
 // vertex by vertex. Far fewer scenes would likely miss every such case; each grade runs the
 // pipeline eight times (the reference and the seven models), so many more would make each test
 // case take much longer than its 5 to 10 seconds (Release).
+#include "course/assignment.h"
 #include "course/grading.h"
 #include "course/mistake_models.h"
 #include "io/dump.h"
@@ -226,20 +227,45 @@ TEST(MistakeModels, DivideFirstIsNamedForTheDumpsOwnDivideFirstStrategy) {
   EXPECT_TRUE(t.failures.empty()) << report(t);
 }
 
-TEST(MistakeModels, TransposedIsNamedForTheReferenceWithEveryMatrixTransposed) {
-  auto transpose = [](Json& m) {
-    const Json copy = m;
-    for (size_t r = 0; r < 4; ++r)
-      for (size_t c = 0; c < 4; ++c) m[r][c] = copy[c][r];
-  };
+void transpose(Json& m) {
+  const Json copy = m;
+  for (size_t r = 0; r < 4; ++r)
+    for (size_t c = 0; c < 4; ++c) m[r][c] = copy[c][r];
+}
+
+// One matrix (each scene another) in the lecture notes' row form among the others in column form.
+TEST(MistakeModels, TransposedIsNamedForOneMatrixInRowFormAmongColumnForms) {
+  const char* keys[] = {"vrc_from_wc", "npc_from_vrc", "dc_from_npc"};
   Tally t;
+  size_t i = 0;
   for (const TestScene& ts : firstOf(perspectiveScenes(), kOtherScenes)) {
     Json answer = dumpOf(ts.scene);
-    for (const char* key : {"vrc_from_wc", "npc_from_vrc", "dc_from_npc"}) transpose(answer["matrices"][key]);
-    for (Json& o : answer["objects"]) transpose(o["wc_from_mc"]);
+    transpose(answer["matrices"][keys[i++ % 3]]);
     expectNamedAsPrinted(answer, ts, Mistake::transposed, t);
   }
   EXPECT_TRUE(t.failures.empty()) << report(t);
+}
+
+// Every matrix in row form is the lecture notes' notation (issue 38): read transposed, all right;
+// an assignment that says "wrong" grades the same answer as the mistake.
+TEST(MistakeModels, EveryMatrixInRowFormIsANotationUnlessTheAssignmentSaysOtherwise) {
+  for (const TestScene& ts : firstOf(perspectiveScenes(), 30)) {
+    Json answer = dumpOf(ts.scene);
+    for (const char* key : {"vrc_from_wc", "npc_from_vrc", "dc_from_npc"}) transpose(answer["matrices"][key]);
+    for (Json& o : answer["objects"]) transpose(o["wc_from_mc"]);
+    const NumbersGrade g = gradeNumbers(answer, "a.json", ts.scene);
+    EXPECT_TRUE(g.passed()) << "seed " << ts.seed << ": " << g.wrong << " wrong";
+    EXPECT_TRUE(g.rowVectorForm) << "seed " << ts.seed;
+    Assignment strict;
+    strict.rowVectorFormAccepted = false;
+    strict.items = {{"/matrices/vrc_from_wc", "vrcFromWc", 2, true, {}}, {"/matrices/npc_from_vrc", "npcFromVrc", 2, true, {}}};
+    const Json matrices = {{"matrices", answer["matrices"]}};
+    const NumbersGrade h = gradeNumbers(matrices, "a.json", ts.scene, 1e-3, &strict);
+    EXPECT_FALSE(h.rowVectorForm);
+    EXPECT_EQ(h.points, 0) << "seed " << ts.seed;
+    ASSERT_TRUE(h.mistake) << "seed " << ts.seed;
+    EXPECT_EQ(*h.mistake, Mistake::transposed) << "seed " << ts.seed;
+  }
 }
 
 TEST(MistakeModels, YNotFlippedIsNamedForTheReferenceWithYDcEqualToHTimesY) {
