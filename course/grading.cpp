@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <map>
 
 namespace vplab {
@@ -59,6 +60,15 @@ std::string typeName(const Json& j) {
   return "null";
 }
 
+std::string typeNameDe(const Json& j) {
+  if (j.is_number()) return "eine Zahl";
+  if (j.is_string()) return "ein Text";
+  if (j.is_boolean()) return "true oder false";
+  if (j.is_array()) return "eine Liste";
+  if (j.is_object()) return "ein Objekt";
+  return "null";
+}
+
 std::optional<double> numberOf(const Json& j);
 
 }  // namespace
@@ -83,10 +93,14 @@ std::optional<double> numberOf(const Json& j) {
     if (!whole(num, true) || !whole(den, false) || std::stoll(den) == 0) return std::nullopt;
     return double(std::stoll(num)) / double(std::stoll(den));
   }
+  // A decimal comma, as German students write it ("0,6"): one comma and no point.
+  std::string decimal = t;
+  if (std::count(t.begin(), t.end(), ',') == 1 && t.find('.') == std::string::npos) decimal[t.find(',')] = '.';
+  if (decimal.find_first_not_of("+-0123456789.eE") != std::string::npos) return std::nullopt;
   size_t used = 0;
   try {
-    const double v = std::stod(t, &used);
-    if (used == t.size() && std::isfinite(v)) return v;
+    const double v = std::stod(decimal, &used);
+    if (used == decimal.size() && std::isfinite(v)) return v;
   } catch (const std::exception&) {
   }
   return std::nullopt;
@@ -95,6 +109,12 @@ std::optional<double> numberOf(const Json& j) {
 // How many digits the student printed after the decimal point: from the shortest text that reads
 // back as the number (JSON keeps no trailing zeros), -1 for exponent forms and fractions.
 int decimalsOf(const Json& j) {
+  if (j.is_string() && numberOf(j)) {  // "0,667", "0.667": as printed; fractions are exact
+    const std::string t = j.get<std::string>();
+    if (t.find_first_of("/eE") != std::string::npos) return -1;
+    const size_t mark = t.find_first_of(".,");
+    return mark == std::string::npos ? 0 : int(t.size() - mark - 1);
+  }
   if (!j.is_number_float()) return j.is_number() ? 0 : -1;
   const std::string t = j.dump();
   if (t.find_first_of("eE") != std::string::npos) return -1;
@@ -166,8 +186,27 @@ struct Walker {
   std::vector<const Json*> studentOf;    // per value: the student's leaf
   std::vector<std::vector<std::string>> pathKeys;  // per value: the path into the dump
 
-  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
-    throw Error(source + ": " + (path.empty() ? "/" : path) + ": " + what);
+  std::vector<std::string> warnings, warningsDe;  // unknown keys: said, not fatal
+  std::deque<Json> readAs;  // a student's value read as what it says ("100110" as an outcode)
+
+  // A value the student gave in a form that cannot be graded: that value's error (wrong, named),
+  // not the whole file's (issue 38: one bad value costs one item).
+  void malformed(const Json& s, const std::string& path, const std::string& group, int stage,
+                 std::vector<std::string> keys, std::string what, std::string whatDe) {
+    GradedValue v;
+    v.path = path;
+    v.group = group;
+    v.stage = stage;
+    v.right = false;
+    std::string shown = s.dump();
+    if (shown.size() > 60) shown = shown.substr(0, 57) + "…";
+    v.student = shown;
+    v.problem = std::move(what);
+    v.problemDe = std::move(whatDe);
+    values.push_back(std::move(v));
+    referenceOf.push_back(nullptr);
+    studentOf.push_back(&s);
+    pathKeys.push_back(std::move(keys));
   }
 
   bool same(const Json& s, const Json& r) const {
@@ -186,19 +225,40 @@ struct Walker {
                           withinRounding(s, r.get<double>()));
   }
 
-  void leaf(const Json& s, const Json& r, const std::string& path, const std::string& group, int stage,
+  // An integer the student wrote as text: an outcode's six bits as the solution prints them
+  // ("100010" is 34), or decimal digits.
+  static std::optional<long long> integerOf(const Json& s, const std::vector<std::string>& keys) {
+    if (!s.is_string()) return std::nullopt;
+    const std::string t = s.get<std::string>();
+    const bool outcode = std::find(keys.begin(), keys.end(), "outcodes") != keys.end();
+    if (outcode && t.size() == 6 && t.find_first_not_of("01") == std::string::npos) return std::stoll(t, nullptr, 2);
+    if (!t.empty() && t.size() <= 15 && t.find_first_not_of("0123456789") == std::string::npos) return std::stoll(t);
+    return std::nullopt;
+  }
+
+  void leaf(const Json& given, const Json& r, const std::string& path, const std::string& group, int stage,
             std::vector<std::string> keys) {
-    if (s.is_null()) return;  // not given (the template's empty field)
+    if (given.is_null()) return;  // not given (the template's empty field)
+    const Json* read = &given;
+    const bool integer = r.is_number_integer() || r.is_number_unsigned();
+    if (integer && !given.is_number_integer()) {
+      if (const std::optional<long long> i = integerOf(given, keys)) read = &readAs.emplace_back(*i);
+    }
+    const Json& s = *read;
     if (r.is_number()) {
-      if (!s.is_number() && !(s.is_string() && numberOf(s) && !r.is_number_integer() && !r.is_number_unsigned()))
-        fail(path, typeName(s) + " where a number is expected (reference " + r.dump() + ")" +
-                       (s.is_string() ? "; a fraction is written \"-3/5\"" : ""));
-      if ((r.is_number_integer() || r.is_number_unsigned()) && !s.is_number_integer())
-        fail(path, s.dump() + " where an integer is expected");
+      if (!s.is_number() && !(s.is_string() && numberOf(s) && !integer))
+        return malformed(given, path, group, stage, std::move(keys),
+                         typeName(s) + " where a number is expected" + (s.is_string() ? " (a fraction is written \"-3/5\")" : ""),
+                         typeNameDe(s) + ", wo eine Zahl erwartet wird" + (s.is_string() ? " (ein Bruch wird \"-3/5\" geschrieben)" : ""));
+      if (integer && !s.is_number_integer())
+        return malformed(given, path, group, stage, std::move(keys), "not a whole number where one is expected",
+                         "keine ganze Zahl, wo eine erwartet wird");
     } else if (r.is_string() && !s.is_string()) {
-      fail(path, typeName(s) + " where a string is expected (for example " + r.dump() + ")");
+      return malformed(given, path, group, stage, std::move(keys), typeName(s) + " where a text is expected",
+                       typeNameDe(s) + ", wo ein Text erwartet wird");
     } else if (r.is_boolean() && !s.is_boolean()) {
-      fail(path, typeName(s) + " where true or false is expected");
+      return malformed(given, path, group, stage, std::move(keys), typeName(s) + " where true or false is expected",
+                       typeNameDe(s) + ", wo true oder false erwartet wird");
     }
     GradedValue v;
     v.path = path;
@@ -215,6 +275,12 @@ struct Walker {
     pathKeys.push_back(std::move(keys));
   }
 
+  static bool isMatrix(const Json& j) {
+    for (const Json& row : j)
+      if (!row.is_array() || row.size() != 4) return false;
+    return true;
+  }
+
   static bool isNumberArray(const Json& j) {
     return j.is_array() && !j.empty() && std::all_of(j.begin(), j.end(), [](const Json& e) { return e.is_number(); });
   }
@@ -222,12 +288,18 @@ struct Walker {
   void walk(const Json& s, const Json& r, const std::string& path, const std::string& group, int stage,
             std::vector<std::string> keys, const std::string& section) {
     if (r.is_object()) {
-      if (!s.is_object()) fail(path, typeName(s) + " where an object is expected");
+      if (!s.is_object()) {
+        if (path.empty()) throw Error(source + ": /: " + typeName(s) + " where an answer (a JSON object) is expected");
+        return malformed(s, path, group, stage, keys, typeName(s) + " where an object is expected",
+                         typeNameDe(s) + ", wo ein Objekt erwartet wird");
+      }
       for (const auto& [key, value] : s.items()) {
         if (!r.contains(key)) {
           std::string known;
           for (const auto& [k, v] : r.items()) known += (known.empty() ? "" : ", ") + k;
-          fail(path + "/" + key, "unknown key (the dump has here: " + known + ")");
+          warnings.push_back(path + "/" + key + ": unknown key, not graded (known here: " + known + ")");
+          warningsDe.push_back(path + "/" + key + ": unbekannter Schlüssel, nicht bewertet (bekannt sind hier: " + known + ")");
+          continue;
         }
         auto sub = keys;
         sub.push_back(key);
@@ -240,7 +312,9 @@ struct Walker {
     }
     if (s.is_null()) return;  // not given
     if (r.is_array()) {
-      if (!s.is_array()) fail(path, typeName(s) + " where an array is expected");
+      if (!s.is_array())
+        return malformed(s, path, group, stage, keys, typeName(s) + " where a list is expected",
+                         typeNameDe(s) + ", wo eine Liste erwartet wird");
       const bool numbers = isNumberArray(r);
       // P1 alone (or P1 … Pk) of a per-vertex list: graded as far as given.
       const bool prefix = isPerVertexList(keys.back()) && s.size() <= r.size();
@@ -252,13 +326,17 @@ struct Walker {
         }
         return;
       }
+      const std::string n = std::to_string(s.size()), m = std::to_string(r.size());
+      if (keys.back().find("_from_") != std::string::npos && (s.size() != r.size() || !isMatrix(s)))
+        return malformed(s, path, group, stage, keys, "not a 4 × 4 matrix (4 rows of 4 numbers)",
+                         "keine 4 × 4-Matrix (4 Zeilen mit je 4 Zahlen)");
       if (numbers && s.size() != r.size())
-        fail(path, std::to_string(s.size()) + " numbers where " + std::to_string(r.size()) + " are expected");
-      if (keys.back().find("_from_") != std::string::npos && s.size() != r.size())
-        fail(path, std::to_string(s.size()) + " rows where a 4 × 4 matrix (4 rows of 4 numbers) is expected");
+        return malformed(s, path, group, stage, keys, n + " numbers where " + m + " are expected",
+                         n + (s.size() == 1 ? " Zahl" : " Zahlen") + ", wo " + m + " erwartet werden");
       const bool objects = !r.empty() && r[0].is_object();
       if (objects && s.size() > r.size())
-        fail(path, std::to_string(s.size()) + " entries, but the scene has only " + std::to_string(r.size()));
+        return malformed(s, path, group, stage, keys, n + " entries, but the scene has only " + m,
+                         n + " Einträge, die Szene hat aber nur " + m);
       if (!numbers && !objects && s.size() != r.size() && !prefix) {
         // A list of points or outcodes of another length: wrong, not malformed.
         GradedValue v;
@@ -505,7 +583,7 @@ void matchModels(NumbersGrade& g, const Json& answer, const GradingReference& re
     bool differs = false;
     Alignments alignments;  // per polygon, computed once per model
     for (size_t i = 0; i < g.values.size(); ++i) {
-      if (g.values[i].consequent) continue;
+      if (g.values[i].consequent || g.values[i].malformed()) continue;  // neither for nor against a model
       const Json* predicted = at(dump, predictedKeys(answer, reference, dump, w.pathKeys[i], alignments));
       const Json* ref = w.referenceOf[i];
       if (!ref) {
@@ -561,7 +639,7 @@ NumbersGrade gradeNumbers(const Json& givenAnswer, std::string_view source, cons
                           double tolerance, const Assignment* assignment) {
   if (!(tolerance >= 0 && tolerance < 1)) throw Error("the tolerance must lie in [0, 1), not " + std::to_string(tolerance));
   const Json& reference = references.reference;
-  Walker w{std::string(source), tolerance, {}, {}, {}, {}};
+  Walker w{std::string(source), tolerance, {}, {}, {}, {}, {}, {}, {}};
   NumbersGrade g;
   g.tolerance = tolerance;
   // Every matrix in the lecture notes' row-vector form: a notation, read transposed (issue 38).
@@ -582,6 +660,8 @@ NumbersGrade gradeNumbers(const Json& givenAnswer, std::string_view source, cons
                 "an answer that checks nothing cannot pass: fill in the template (answer.json) or grade with "
                 "--assignment, which names what is required");
   g.values = std::move(w.values);
+  g.warnings = std::move(w.warnings);
+  g.warningsDe = std::move(w.warningsDe);
   for (const GradedValue& v : g.values) {
     if (v.right) continue;
     ++g.wrong;

@@ -36,6 +36,8 @@ struct GradedValue {
   bool consequent = false;  // wrong, but what the student's own earlier values give (ItemGrade::followsThrough)
   int decimals = -1;     // the digits the student printed after the point (-1: not a plain decimal)
   std::string student, reference;  // as JSON text
+  std::string problem, problemDe;  // a value in a form that cannot be graded: why (wrong, 0 points for its item)
+  bool malformed() const { return !problem.empty(); }
 };
 
 struct ModelMatch {
@@ -71,6 +73,7 @@ struct NumbersGrade {
   std::vector<Mistake> fitting;          // every model matching every value (several: they cannot be told apart)
   std::vector<ItemGrade> items;          // with an assignment: its items in its order
   bool rowVectorForm = false;            // every matrix given in the lecture notes' row-vector form: read transposed
+  std::vector<std::string> warnings, warningsDe;  // keys the answer format does not have: not graded
   double points = 0, maxPoints = 0;
   bool passed() const {
     if (wrong != 0) return false;
@@ -88,12 +91,14 @@ std::optional<double> answerNumber(const nlohmann::ordered_json& j);
 /// Parses a student's answer file's text. Throws vplab::Error "SOURCE: line L, column C: …".
 nlohmann::ordered_json parseAnswer(std::string_view text, std::string_view source);
 
-/// Grades the answer against the scene's reference run. Malformed answers (unknown keys, wrong
-/// types, more objects or polygons than the scene has, vectors of the wrong length) throw
-/// vplab::Error "SOURCE: /json/path: what is wrong, what was expected"; so does an answer that gives
-/// no value at all without an assignment (it would pass having checked nothing). With an
-/// assignment, each of its items is graded (a required item not given fails, named) and earns its
-/// points when all its values are right.
+/// Grades the answer against the scene's reference run. A value in a form that cannot be graded (a
+/// wrong type, a vector of the wrong length, a matrix that is not 4 × 4, more objects than the scene
+/// has) is that value's error: wrong, named (GradedValue::problem), its item earns nothing, the rest
+/// is graded (issue 38). Decimal commas ("0,6"), fractions ("-3/5") and an outcode's bits ("100010")
+/// are read as what they say; unknown keys are warned about. An answer that is not a JSON object, or
+/// that gives no value at all without an assignment (it would pass having checked nothing), throws
+/// vplab::Error "SOURCE: /json/path: …". With an assignment, each of its items is graded (a required
+/// item not given fails, named) and earns its points when all its values are right.
 NumbersGrade gradeNumbers(const nlohmann::ordered_json& answer, std::string_view source, const Scene& scene,
                           double tolerance = 1e-3, const Assignment* assignment = nullptr);
 

@@ -65,6 +65,7 @@ std::string values(size_t n, Language lang) {
 // ---------------------------------------------------------------- numbers: cases
 
 std::string valueLine(const GradedValue& v, Language lang) {
+  if (v.malformed()) return v.path + ": " + v.student + " — " + (lang == Language::de ? v.problemDe : v.problem);
   std::string line = v.path + ": " + v.student + std::string(inLanguage(lang, ", expected ", ", erwartet ")) + v.reference;
   if (v.rounded) line += std::string(inLanguage(lang, " (rounded)", " (gerundet)"));
   return line;
@@ -170,6 +171,7 @@ std::vector<std::string> diagnosis(const NumbersGrade& g, Language lang) {
                          "): the tolerance asks for |Δ| ≤ " + shortNumber(g.tolerance) +
                          " · max(1, |x|); give at least " + std::to_string(needed) + " decimals.");
   }
+  for (const std::string& w : de ? g.warningsDe : g.warnings) d.push_back((de ? "Hinweis: " : "Note: ") + w + ".");
   if (g.rowVectorForm)
     d.push_back(de ? "Alle Matrizen sind in der Zeilenvektor-Form des Skripts (p' = p · M) geschrieben: als Schreibweise "
                      "akzeptiert und transponiert bewertet."

@@ -69,9 +69,9 @@ TEST(Answers, AnAnswerThatGivesNothingIsAnErrorNotAPass) {
 TEST(Answers, ARequiredItemNotGivenFailsNamedAndEarnsNothing) {
   const Scene scene = asset("behind-the-eye.json");
   const Json reference = referenceDump(scene);
-  const Assignment a = assignmentOf({{"/camera/n", "N", 1, true},
-                                     {"/matrices/vrc_from_wc", "vrcFromWc", 2, true},
-                                     {"/matrices/npc_from_vrc", "npcFromVrc", 2, false}});
+  const Assignment a = assignmentOf({{"/camera/n", "N", 1, true, {}},
+                                     {"/matrices/vrc_from_wc", "vrcFromWc", 2, true, {}},
+                                     {"/matrices/npc_from_vrc", "npcFromVrc", 2, false, {}}});
   // Only the matrices: right as far as they go, but N is missing.
   const Json answer = {{"matrices", reference["matrices"]}};
   const NumbersGrade g = gradeNumbers(answer, "a.json", scene, 1e-3, &a);
@@ -171,10 +171,40 @@ TEST(Answers, FractionsMayBeWrittenAsStrings) {
   }
   const NumbersGrade g = gradeNumbers(answer, "a.json", scene);
   EXPECT_TRUE(g.passed()) << answer.dump();
-  answer["camera"]["n"][0] = "-3/0";
-  EXPECT_THAT(errorOf([&] { gradeNumbers(answer, "a.json", scene); }), HasSubstr("/camera/n/0: a string where a number"));
-  answer["camera"]["n"][0] = "three fifths";
-  EXPECT_THAT(errorOf([&] { gradeNumbers(answer, "a.json", scene); }), HasSubstr("a fraction is written \"-3/5\""));
+  // Decimal commas, as German students write them (issue 38).
+  Json commas = answer;
+  for (size_t i = 0; i < 3; ++i) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4f", reference["camera"]["n"][i].get<double>());
+    std::string t = text;
+    t[t.find('.')] = ',';
+    commas["camera"]["n"][i] = t;
+  }
+  EXPECT_TRUE(gradeNumbers(commas, "a.json", scene).passed()) << commas.dump();
+  for (const char* bad : {"-3/0", "three fifths", "1,2,3", "0x10"}) {
+    answer["camera"]["n"][0] = bad;
+    const NumbersGrade h = gradeNumbers(answer, "a.json", scene);
+    ASSERT_EQ(h.values.size(), 3u);
+    EXPECT_EQ(h.values[0].problem, "a string where a number is expected (a fraction is written \"-3/5\")") << bad;
+    EXPECT_TRUE(h.values[1].right && h.values[2].right) << "the rest of N is graded";
+  }
+}
+
+// An outcode as the solution prints it: six bits, the front plane's first ("100010" is 34).
+TEST(Answers, AnOutcodeMayBeWrittenAsItsBits) {
+  const Scene scene = asset("behind-the-eye.json");
+  const Json reference = referenceAnswer(scene);
+  const Json& codes = reference["objects"][0]["polygons"][0]["outcodes"];
+  Json bits = Json::array();
+  for (const Json& c : codes) {
+    std::string b;
+    for (int bit = 5; bit >= 0; --bit) b += ((c.get<int>() >> bit) & 1) ? '1' : '0';
+    bits.push_back(b);
+  }
+  const Json answer = {{"objects", Json::array({{{"polygons", Json::array({{{"outcodes", bits}}})}}})}};
+  const NumbersGrade g = gradeNumbers(answer, "a.json", scene);
+  EXPECT_TRUE(g.passed()) << bits.dump();
+  EXPECT_EQ(g.values.size(), codes.size());
 }
 
 TEST(Answers, P1AloneIsGradedAsP1) {

@@ -310,23 +310,42 @@ TEST(Grading, AClippedPolygonMayStartAtAnyVertex) {
   EXPECT_TRUE(gradeNumbers(answer, "a.json", scene).passed());
 }
 
-TEST(Grading, MalformedAnswersNameTheFileAndThePath) {
+// Issue 38: one bad value costs one item. A value in a form that cannot be graded is wrong and named
+// at its path; the rest of the answer is graded; only what is no answer at all is the file's error.
+TEST(Grading, AMalformedValueIsThatValuesErrorAndTheRestIsGraded) {
   const Scene scene = asset("behind-the-eye.json");
-  auto grade = [&](const Json& j) { return errorOf([&] { gradeNumbers(j, "alice.json", scene); }); };
-  EXPECT_EQ(grade(Json{{"matrices", {{"vrc_from_wc", "identity"}}}}),
-            "alice.json: /matrices/vrc_from_wc: a string where an array is expected");
-  EXPECT_EQ(grade(Json{{"camera", {{"vpd", "five"}}}}),
-            "alice.json: /camera/vpd: a string where a number is expected (reference " +
-                referenceDump(scene)["camera"]["vpd"].dump() + "); a fraction is written \"-3/5\"");
-  EXPECT_NE(grade(Json{{"cameras", 1}}).find("alice.json: /cameras: unknown key (the dump has here: camera, device"),
-            std::string::npos);
-  EXPECT_EQ(grade(Json{{"camera", {{"u", {1, 0}}}}}), "alice.json: /camera/u: 2 numbers where 3 are expected");
+  const Json reference = referenceDump(scene);
+  // The problem named for the one malformed value of `j`, after the right N beside it was graded.
+  auto problem = [&](Json j) {
+    j["camera"]["n"] = reference["camera"]["n"];
+    const NumbersGrade g = gradeNumbers(j, "alice.json", scene);
+    std::string out;
+    size_t right = 0;
+    for (const GradedValue& v : g.values) {
+      if (v.malformed()) out += (out.empty() ? "" : "; ") + v.path + ": " + v.problem;
+      right += v.right;
+    }
+    EXPECT_EQ(right, 3u) << "N is graded beside it";
+    return out;
+  };
+  EXPECT_EQ(problem({{"matrices", {{"vrc_from_wc", "identity"}}}}), "/matrices/vrc_from_wc: a string where a list is expected");
+  EXPECT_EQ(problem({{"camera", {{"vpd", "five"}}}}), "/camera/vpd: a string where a number is expected (a fraction is written \"-3/5\")");
+  EXPECT_EQ(problem({{"camera", {{"vpd", {5}}}}}), "/camera/vpd: an array where a number is expected");
+  EXPECT_EQ(problem({{"camera", {{"u", {1, 0}}}}}), "/camera/u: 2 numbers where 3 are expected");
+  EXPECT_EQ(problem({{"matrices", {{"npc_from_vrc", {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}}}}),
+            "/matrices/npc_from_vrc: not a 4 × 4 matrix (4 rows of 4 numbers)");
   Json tooMany = {{"objects", Json::array()}};
   for (int i = 0; i < 50; ++i) tooMany["objects"].push_back(Json::object());
-  EXPECT_NE(grade(tooMany).find("alice.json: /objects: 50 entries, but the scene has only"), std::string::npos);
-  Json badOutcode = {{"objects", Json::array({{{"polygons", Json::array({{{"outcodes", {1.5, 0, 0, 0}}}})}}})}};
-  EXPECT_EQ(grade(badOutcode), "alice.json: /objects/0/polygons/0/outcodes/0: 1.5 where an integer is expected");
-  EXPECT_EQ(grade(Json::array()), "alice.json: /: an array where an object is expected");
+  EXPECT_NE(problem(tooMany).find("/objects: 50 entries, but the scene has only"), std::string::npos);
+  const Json badOutcode = {{"objects", Json::array({{{"polygons", Json::array({{{"outcodes", {1.5}}}})}}})}};
+  EXPECT_EQ(problem(badOutcode), "/objects/0/polygons/0/outcodes/0: not a whole number where one is expected");
+  // An unknown key is warned about and not graded.
+  const NumbersGrade unknown = gradeNumbers(Json{{"note", "see the back"}, {"camera", {{"n", reference["camera"]["n"]}}}}, "a.json", scene);
+  EXPECT_TRUE(unknown.passed());
+  ASSERT_EQ(unknown.warnings.size(), 1u);
+  EXPECT_NE(unknown.warnings[0].find("/note: unknown key"), std::string::npos) << unknown.warnings[0];
+  EXPECT_EQ(errorOf([&] { gradeNumbers(Json::array(), "alice.json", scene); }),
+            "alice.json: /: an array where an answer (a JSON object) is expected");
   EXPECT_EQ(errorOf([] { parseAnswer("{\n  \"camera\": {,\n}", "bob.json"); }).substr(0, 32),
             "bob.json:2:14: JSON syntax error");
   // Hostile answers: nesting deeper than the limit and duplicate keys are refused, naming the place.

@@ -132,7 +132,9 @@ TEST(FollowThrough, DividingFirstOnTheClippingSheetEarnsNoFollowThroughAndIsName
     for (const ItemGrade& i : g.items) {
       EXPECT_FALSE(i.followsThrough) << "seed " << seed << ": " << describe(g);
       EXPECT_EQ(i.earned, i.right() ? i.points : 0) << "seed " << seed << ": " << describe(g);
-      if (i.path.find("clip_steps") != std::string::npos) EXPECT_FALSE(i.right()) << "seed " << seed;
+      if (i.path.find("clip_steps") != std::string::npos) {
+        EXPECT_FALSE(i.right()) << "seed " << seed;
+      }
     }
     bool behind = false;
     for (const P4& v : polygonOf(s.reference.reference[Json::json_pointer(kPolygon + "/npc_h")])) behind |= v[3] < 0;
