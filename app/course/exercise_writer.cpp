@@ -1,3 +1,4 @@
+#include "course/assignment.h"
 #include "app/course/exercise_writer.h"
 
 #include "course/exercise_answer.h"
@@ -10,6 +11,7 @@
 #include "course/rational.h"
 #include "io/scene_io.h"
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -338,7 +340,25 @@ struct Writer {
                                      "front $\\to z = 1$, back $\\to z = 0$; inside when $0 \\le x, y, z \\le w$.",
                                      "Konventionen: Spaltenvektoren; $N = (PRP - VRP)/|PRP - VRP|$; "
                                      "vorne $\\to z = 1$, hinten $\\to z = 0$; innen, wenn $0 \\le x, y, z \\le w$.")});
+    d.push_back({Block::paragraph, answeringText()});
     return d;
+  }
+
+  // The precision the grader expects and how to hand in (issue 38): rounding within it costs nothing.
+  std::string answeringText() const {
+    const double tolerance = Assignment{}.tolerance;  // what exerciseAssignment writes
+    const int decimals = int(std::ceil(std::log10(0.5 / tolerance) - 1e-9));
+    const std::string n = std::to_string(decimals);
+    return L("Answering: give each number exactly (a fraction such as -3/5) or with at least " + n +
+                 " decimals (a decimal comma is fine); rounding to " + n + " decimals costs nothing. Write the "
+                 "matrices for column vectors ($p' = M \\cdot p$), or every one of them for row vectors as in the lecture "
+                 "notes ($p' = p \\cdot M$). Hand in answer.json with your numbers in place of null; an item left null is "
+                 "not answered.",
+             "Abgabe: Geben Sie jede Zahl exakt (als Bruch wie -3/5) oder mit mindestens " + n +
+                 " Nachkommastellen an (ein Dezimalkomma ist erlaubt); Runden auf " + n + " Nachkommastellen kostet "
+                 "nichts. Schreiben Sie die Matrizen für Spaltenvektoren ($p' = M \\cdot p$) oder alle für Zeilenvektoren "
+                 "wie im Skript ($p' = p \\cdot M$). Geben Sie answer.json mit Ihren Zahlen anstelle von null ab; ein "
+                 "Eintrag, der null bleibt, gilt als nicht beantwortet.");
   }
 
   void modeling(Document& d) const {

@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace vplab {
@@ -150,6 +151,42 @@ TEST(SheetMistakes, DividingFirstOnTheMappingAndPipelineSheetsIsNamedWithoutFoll
     }
   // The pipeline sheets of odd seeds put P1 behind the eye (course/exercise.h).
   EXPECT_GE(behind, kSheets / 4) << "sheets with P1 behind the eye, where the outcode shows the mistake";
+}
+
+// ---------------------------------------------------------------- the sheet's precision
+
+// Each number of `j` rounded to `decimals` places; every other one written with a decimal comma.
+Json roundedAsWritten(const Json& j, int decimals, size_t& count) {
+  if (j.is_number_float()) {
+    const double f = std::pow(10.0, decimals);
+    const double r = std::round(j.get<double>() * f) / f;
+    if (count++ % 2 == 0) return r;
+    char text[48];
+    std::snprintf(text, sizeof text, "%.*f", decimals, r);
+    std::string t = text;
+    if (const size_t dot = t.find('.'); dot != std::string::npos) t[dot] = ',';
+    return t;
+  }
+  if (j.is_structured()) {
+    Json out = j;
+    auto in = j.begin();
+    for (auto it = out.begin(); it != out.end(); ++it, ++in) *it = roundedAsWritten(*in, decimals, count);
+    return out;
+  }
+  return j;
+}
+
+// The sheet says "at least 3 decimals; rounding to 3 decimals costs nothing" (exercise_writer.cpp):
+// the key rounded so, half of it with decimal commas, earns every point on every topic's sheets.
+TEST(SheetMistakes, RoundingToTheSheetsPrecisionCostsNothing) {
+  for (ExerciseTopic topic : {ExerciseTopic::orientation, ExerciseTopic::mapping, ExerciseTopic::clipping, ExerciseTopic::pipeline})
+    for (uint64_t seed = 1; seed <= 60; ++seed) {
+      const Sheet s = sheetOf(seed, topic);
+      size_t count = 0;
+      const Json answer = roundedAsWritten(s.key, 3, count);
+      const NumbersGrade g = gradeNumbers(answer, "a.json", s.reference, s.assignment.tolerance, &s.assignment);
+      EXPECT_EQ(g.points, g.maxPoints) << toString(topic) << " seed " << seed << ": " << describe(g);
+    }
 }
 
 }  // namespace
