@@ -66,7 +66,7 @@ bool isPointer(std::string_view p) {
 Assignment parseAssignment(std::string_view text, std::string_view source) {
   const Json j = parseCheckedJson(text, source, kDefaultLimits.jsonDepth);
   const Reader r{std::string(source)};
-  r.onlyKeys(j, "", {"vplab_assignment", "title", "scene", "tolerance", "row_vector_form", "items"});
+  r.onlyKeys(j, "", {"vplab_assignment", "title", "scene", "tolerance", "row_vector_form", "pass_mark", "items"});
   if (!j.contains("vplab_assignment") || j["vplab_assignment"] != 1)
     r.fail("/vplab_assignment", "missing or not 1 (the format's version: this file is not a vplab assignment)");
   Assignment a;
@@ -102,6 +102,11 @@ Assignment parseAssignment(std::string_view text, std::string_view source) {
     if (item.contains("no_follow_through_after")) it.noFollowThroughAfter = r.mistakeKeys(item["no_follow_through_after"], at + "/no_follow_through_after");
     a.items.push_back(std::move(it));
   }
+  if (j.contains("pass_mark")) {
+    double total = 0;
+    for (const AssignmentItem& i : a.items) total += i.points;
+    a.passMark = r.number(j["pass_mark"], "/pass_mark", 0, total);
+  }
   return a;
 }
 
@@ -113,12 +118,13 @@ std::string assignmentJson(const Assignment& a) {
     if (!i.noFollowThroughAfter.empty()) item["no_follow_through_after"] = i.noFollowThroughAfter;
     items.push_back(item);
   }
-  const Json j = {{"vplab_assignment", 1},
+  Json j = {{"vplab_assignment", 1},
                   {"title", a.title},
                   {"scene", a.scene.generic_string()},
                   {"tolerance", a.tolerance},
                   {"row_vector_form", a.rowVectorFormAccepted ? "accepted" : "wrong"},
                   {"items", items}};
+  if (a.passMark) j["pass_mark"] = *a.passMark;
   return j.dump(2) + "\n";
 }
 

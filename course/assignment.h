@@ -9,6 +9,8 @@
 //     "scene": "scene.json",          the scene, relative to the assignment's folder
 //     "tolerance": 0.001,             optional (README "For course staff")
 //     "row_vector_form": "accepted",  optional: "accepted" (the default) or "wrong" (issue 38)
+//     "pass_mark": 7.5,               optional: passed with at least these points; without it, passed
+//                                     when every value given is right and every required item given
 //     "items": [
 //       {"path": "/camera/n", "title": "N", "points": 1},
 //       {"path": "/objects/0/polygons/0/wc/0", "title": "P1 in WC", "points": 1, "required": false},
@@ -32,6 +34,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -51,6 +54,7 @@ struct Assignment {
   std::filesystem::path scene;  // as the file gives it (relative to the assignment's folder)
   double tolerance = 1e-3;
   bool rowVectorFormAccepted = true;
+  std::optional<double> passMark;
   std::vector<AssignmentItem> items;
 };
 

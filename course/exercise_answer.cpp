@@ -93,6 +93,10 @@ Assignment exerciseAssignment(const Exercise& e, const ExerciseSolution& s, Lang
   a.scene = "scene.json";
   for (ExerciseTask& t : exerciseTasks(e, s, lang))
     for (AssignmentItem& i : t.items) a.items.push_back(std::move(i));
+  // Passed with half the points, the common rule of a weekly sheet; a course writes its own.
+  double total = 0;
+  for (const AssignmentItem& i : a.items) total += i.points;
+  a.passMark = total / 2;
   return a;
 }
 

@@ -343,8 +343,9 @@ struct Walker {
         v.path = v.group = path;
         v.stage = stage;
         v.right = false;
-        v.student = std::to_string(s.size()) + " entries";
-        v.reference = std::to_string(r.size()) + " entries";
+        v.student = std::to_string(s.size());
+        v.reference = std::to_string(r.size());
+        v.count = true;
         values.push_back(std::move(v));
         referenceOf.push_back(nullptr);
         studentOf.push_back(&s);
@@ -674,6 +675,7 @@ NumbersGrade gradeNumbers(const Json& givenAnswer, std::string_view source, cons
     }
   }
   if (assignment) {
+    g.passMark = assignment->passMark;
     gradeItems(g, *assignment, answer, references, w);
     // Values that follow from the student's earlier ones are consequences, not mistakes of their own:
     // neither a stage's departure nor something for (or against) a mistake model.

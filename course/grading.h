@@ -37,6 +37,7 @@ struct GradedValue {
   int decimals = -1;     // the digits the student printed after the point (-1: not a plain decimal)
   std::string student, reference;  // as JSON text
   std::string problem, problemDe;  // a value in a form that cannot be graded: why (wrong, 0 points for its item)
+  bool count = false;  // a list of another length: student and reference are the two lengths
   bool malformed() const { return !problem.empty(); }
 };
 
@@ -72,10 +73,12 @@ struct NumbersGrade {
   std::optional<Mistake> mistake;        // the model matching every value, when exactly one does
   std::vector<Mistake> fitting;          // every model matching every value (several: they cannot be told apart)
   std::vector<ItemGrade> items;          // with an assignment: its items in its order
+  std::optional<double> passMark;        // the assignment's: passed with at least these points
   bool rowVectorForm = false;            // every matrix given in the lecture notes' row-vector form: read transposed
   std::vector<std::string> warnings, warningsDe;  // keys the answer format does not have: not graded
   double points = 0, maxPoints = 0;
   bool passed() const {
+    if (passMark) return points >= *passMark - 1e-9;
     if (wrong != 0) return false;
     for (const ItemGrade& i : items)
       if (i.required && !i.right()) return false;

@@ -1,6 +1,8 @@
 #include "app/course/grade_report.h"
 
+
 #include "course/assignment.h"
+#include "course/rational.h"
 
 #include <cmath>
 #include <cstdio>
@@ -25,6 +27,21 @@ std::string shortNumber(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%g", v);
   return buf;
+}
+
+// A number of points as a German or English reader writes it: "7,5" in German.
+std::string pointsNumber(double v, Language lang) {
+  std::string t = shortNumber(v);
+  if (lang == Language::de)
+    if (const size_t dot = t.find('.'); dot != std::string::npos) t[dot] = ',';
+  return t;
+}
+
+// "1 of 2 points", "1 von 1 Punkt", "1 von 2 Punkten" (the dative after "von").
+std::string pointsOf(double earned, double of, Language lang) {
+  const bool one = of == 1;
+  return pointsNumber(earned, lang) + (lang == Language::de ? " von " : " of ") + pointsNumber(of, lang) +
+         (lang == Language::de ? (one ? " Punkt" : " Punkten") : (one ? " point" : " points"));
 }
 
 std::string xmlEscape(const std::string& s) {
@@ -64,9 +81,18 @@ std::string values(size_t n, Language lang) {
 
 // ---------------------------------------------------------------- numbers: cases
 
+// A reference value as the sheet prints it: an exact fraction or 4 decimals ("-3/10", "0.7071"),
+// never floating-point noise ("1.7500000000000004").
+std::string sheetValue(const std::string& json) {
+  const Json j = Json::parse(json, nullptr, false);
+  return j.is_number_float() ? plainNumber(j.get<double>(), 4) : json;
+}
+
 std::string valueLine(const GradedValue& v, Language lang) {
   if (v.malformed()) return v.path + ": " + v.student + " — " + (lang == Language::de ? v.problemDe : v.problem);
-  std::string line = v.path + ": " + v.student + std::string(inLanguage(lang, ", expected ", ", erwartet ")) + v.reference;
+  if (v.count)
+    return v.path + ": " + v.student + std::string(inLanguage(lang, " vertices, expected ", " Ecken, erwartet ")) + v.reference;
+  std::string line = v.path + ": " + v.student + std::string(inLanguage(lang, ", expected ", ", erwartet ")) + sheetValue(v.reference);
   if (v.rounded) line += std::string(inLanguage(lang, " (rounded)", " (gerundet)"));
   return line;
 }
@@ -76,8 +102,7 @@ GradeCase itemCase(const ItemGrade& item, const NumbersGrade& g, Language lang) 
   c.name = item.title == item.path ? item.path : item.title + " (" + item.path + ")";
   c.points = item.earned;
   c.maxPoints = item.points;
-  const std::string points = shortNumber(item.earned) + std::string(inLanguage(lang, " of ", " von ")) +
-                             shortNumber(item.points) + std::string(inLanguage(lang, " points", " Punkten"));
+  const std::string points = pointsOf(item.earned, item.points, lang);
   if (item.missing()) {
     c.passed = !item.required;
     c.message = item.required ? std::string(inLanguage(lang, "not given (required): ", "nicht angegeben (verlangt): ")) + points
@@ -136,7 +161,7 @@ std::vector<GradeCase> groupCases(const NumbersGrade& g, Language lang, Json& gr
     for (const GradedValue& v : g.values)
       if (v.group == name && !v.right)
         wrongValues.push_back({{"path", v.path}, {"student", asJson(v.student)}, {"reference", asJson(v.reference)},
-                               {"rounded", v.rounded}});
+                               {"rounded", v.rounded}, {"problem", v.problem}, {"vertex_count", v.count}});
     groups.push_back({{"path", name}, {"values", total}, {"wrong", wrong}, {"wrong_values", wrongValues}});
     out.push_back(c);
   }
@@ -235,9 +260,10 @@ GradeReport numbersReport(const NumbersGrade& g, const std::string& student, con
   r.scene = scene;
   r.lang = lang;
   r.passed = g.passed();
+  r.passMark = g.passMark;
   r.header.push_back(lang == Language::de
                          ? "Toleranz: |Student − Ergebnis| ≤ " + shortNumber(g.tolerance) +
-                               " · max(1, |Ergebnis|); ganze Zahlen, Namen und Schicksale exakt; ein geclipptes Polygon "
+                               " · max(1, |Ergebnis|); ganze Zahlen, Namen und die Einordnung der Polygone (angenommen, verworfen, geclippt) exakt; ein geclipptes Polygon "
                                "darf an jeder Ecke beginnen und in beide Richtungen laufen"
                          : "tolerance: |student − reference| ≤ " + shortNumber(g.tolerance) +
                                " · max(1, |reference|); integers, names and fates exactly; a clipped polygon may start at "
@@ -424,11 +450,14 @@ std::string reportText(const GradeReport& r) {
   if (!r.cases.empty()) out += "\n";
   for (const std::string& d : r.diagnosis) out += d + "\n";
   if (r.graded)
-    out += (de ? "Punkte: " : "Points: ") + shortNumber(r.points) + (de ? " von " : " of ") + shortNumber(r.maxPoints) + "\n";
+    out += (de ? "Punkte: " : "Points: ") + pointsNumber(r.points, r.lang) + (de ? " von " : " of ") +
+           pointsNumber(r.maxPoints, r.lang) + "\n";
   if (!r.error.empty()) return out + (de ? "NICHT BEWERTET\n" : "NOT GRADED\n");
-  out += r.passed ? (de ? "BESTANDEN\n" : "PASSED\n")
-                  : (de ? "NICHT BESTANDEN: " : "FAILED: ") + std::to_string(failed) + (de ? " von " : " of ") +
-                        std::to_string(r.cases.size()) + (de ? " Prüfungen falsch\n" : " checks wrong\n");
+  const std::string mark = r.passMark ? (de ? " (bestanden ab " : " (the pass mark is ") + pointsOf(*r.passMark, r.maxPoints, r.lang) + ")" : "";
+  if (r.passed) return out + (de ? "BESTANDEN" : "PASSED") + mark + "\n";
+  if (r.passMark) return out + (de ? "NICHT BESTANDEN" : "FAILED") + mark + "\n";
+  out += (de ? "NICHT BESTANDEN: " : "FAILED: ") + std::to_string(failed) + (de ? " von " : " of ") +
+         std::to_string(r.cases.size()) + (de ? " Prüfungen falsch\n" : " checks wrong\n");
   return out;
 }
 

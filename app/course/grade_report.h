@@ -8,6 +8,7 @@
 #include "pipeline/language.h"
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,7 @@ struct GradeReport {
   std::vector<std::string> diagnosis;  // the first departing stage, the mistake found, rounding
   bool graded = false;                 // with an assignment: points below count
   double points = 0, maxPoints = 0;
+  std::optional<double> passMark;      // the assignment's, when it has one: it decides passed
   nlohmann::ordered_json json;         // the machine report
 };
 

@@ -338,7 +338,7 @@ TEST(Answers, AValueWrongOnlyBecauseAnEarlierOneWasEarnsItsPoints) {
     if (item.path == "/objects/0/wc_from_mc") lost = item.points;
   }
   const NumbersGrade g = gradeNumbers(answer, "a.json", e.scene, 1e-3, &a);
-  EXPECT_FALSE(g.passed()) << "the values are still wrong";
+  EXPECT_GT(g.wrong, 0u) << "the values are still wrong";
   EXPECT_EQ(g.points, max - lost);
   size_t followed = 0;
   for (const ItemGrade& i : g.items) followed += i.followsThrough;
