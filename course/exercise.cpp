@@ -194,7 +194,15 @@ bool wellPosed(const Exercise& e) {
   return true;
 }
 
+bool alongZ(const Vec3& direction) { return direction.x == 0 && direction.y == 0; }
+
 }  // namespace
+
+bool identityOrientation(const Camera& camera) {
+  const VrcAxes o = vrcAxes(camera);
+  auto is = [](const Vec3& a, const Vec3& b) { return glm::length(a - b) < 1e-9; };
+  return is(o.u, {1, 0, 0}) && is(o.v, {0, 1, 0}) && is(o.n, {0, 0, 1});
+}
 
 Exercise generateExercise(const ExerciseSpec& spec, std::string_view studentId) {
   // A student's variant draws from the exercise's number and the id (FNV-1a of the id's bytes).
@@ -216,15 +224,22 @@ Exercise generateExercise(const ExerciseSpec& spec, std::string_view studentId) 
   // general one, chosen once, so that retrying a draw that is not well posed does not drift towards
   // easier cases. Clipping and pipeline sheets keep the gentle ones: a polygon reaching behind the eye
   // and cut by two planes is rarely found with a general N among the sheets' small numbers.
-  const size_t orientation = clippingTopic       ? kAnyGentle
-                             : d.pick(4) == 0 ? kGentle + d.pick(std::size(kDirections))
-                                              : d.pick(kOrientations);
+  size_t orientation = clippingTopic       ? kAnyGentle
+                       : d.pick(4) == 0 ? kGentle + d.pick(std::size(kDirections))
+                                        : d.pick(kOrientations);
+  // Issue 38: equally hard variants. PRP − VRP along z with VUP along y would make U, V, N the
+  // identity (nothing to compute): such a gentle orientation is drawn again (only then, so the other
+  // seeds keep their sheets).
+  while (orientation >= kGentle && orientation < kAnyGentle && alongZ(kDirections[orientation - kGentle]))
+    orientation = kGentle + d.pick(std::size(kDirections));
   for (int attempt = 0; attempt < 50000; ++attempt) {
     e.scene.camera = drawCamera(d, spec.projection, orientation);
     if (cameraError(e.scene.camera)) continue;
     e.scene.objects = {drawPolygon(d, e.scene.camera, e.pointBehindEye)};
     e.scene.objects[0].mesh = primitiveMesh(e.scene.objects[0]);
-    if (wellPosed(e)) return e;
+    // An identity orientation is rejected after the draw and the check, so that every other seed's
+    // draws, and so its sheet, stay what they were.
+    if (wellPosed(e) && !identityOrientation(e.scene.camera)) return e;
   }
   throw Error("no well-posed exercise found for seed " + std::to_string(spec.seed) + ", topic " +
               std::string(toString(spec.topic)));

@@ -50,6 +50,10 @@ struct Exercise {
 /// the same tasks and difficulty (P1 behind the eye or not follows `seed`); empty: the class's sheet.
 Exercise generateExercise(const ExerciseSpec& spec, std::string_view studentId = {});
 
+/// Whether the camera's U, V, N are the WC axes x, y, z (an orientation with nothing to compute:
+/// generateExercise never gives one, issue 38).
+bool identityOrientation(const Camera& camera);
+
 /// P1 through the stages (lecture notes 15.2): MC, WC, VRC, homogeneous NPC, its boundary
 /// coordinates and outcode (Hill 7.4), NPC after the division and DC (meaningful when inside).
 struct PointStages {

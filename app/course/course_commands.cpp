@@ -1,12 +1,16 @@
 #include "app/course/course_commands.h"
 #include "app/export/progress_bar.h"
 
+#include "app/course/class_exercise.h"
+#include "app/course/class_grading.h"
 #include "app/course/exercise_writer.h"
 #include "app/course/grade_batch.h"
 #include "app/course/grade_image.h"
 #include "app/course/grade_report.h"
 #include "app/render/headless.h"
 #include "course/assignment.h"
+#include "course/moodle_bank.h"
+#include "course/roster.h"
 #include "pipeline/error.h"
 #include "io/read_file.h"
 #include "io/limits.h"
@@ -41,7 +45,7 @@ struct UsageError : Error {
 
 struct ExerciseArgs {
   std::string seed = "1";
-  std::string topic = "pipeline", projection = "perspective", lang = "en", out, studentId;
+  std::string topic = "pipeline", projection = "perspective", lang = "en", out, studentId, roster, moodle;
 };
 
 struct GradeArgs {
@@ -207,12 +211,40 @@ int gradeImageCommand(const GradeArgs& a) {
 }
 
 struct BatchArgs {
-  std::string assignment, answers, out = "grades", jobs, lang = "en";
+  std::string assignment, exercises, answers, out = "grades", jobs, lang = "en";
 };
 
+/// `grade batch --exercises DIR`: every roster student against their own variant (class_grading.h).
+int gradeClassCommand(const BatchArgs& a) {
+  if (!a.assignment.empty()) throw UsageError("grade batch: --assignment and --exercises exclude each other");
+  ClassOptions o;
+  o.exercises = a.exercises;
+  o.answers = a.answers;
+  o.out = a.out;
+  o.lang = languageOf(a.lang);
+  ClassResult r;
+  try {
+    r = gradeClass(o);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
+  size_t passed = 0, missing = 0, errors = 0, swapped = 0;
+  for (const ClassRow& row : r.rows)
+    passed += row.passed, missing += row.status == "no submission", errors += !row.error.empty(),
+        swapped += !row.otherVariant.empty();
+  std::cout << "vplab grade batch: " << r.rows.size() << " students: " << passed << " passed, "
+            << r.rows.size() - passed - missing - errors << " failed, " << missing << " no submission, " << errors
+            << " could not be graded, " << swapped << " with another student's variant; " << r.unmatched.size()
+            << " files not matched to the roster" << (r.unmatched.empty() ? "" : " (unmatched.txt)") << "\n";
+  for (const std::string& u : r.unmatched) std::cout << "  not matched: " << u << "\n";
+  std::cout << "wrote grades.csv, moodle-grading-worksheet.csv, moodle-feedback-files.zip and reports/ to " << a.out << "\n";
+  return 0;
+}
+
 int gradeBatchCommand(const BatchArgs& a) {
-  if (a.assignment.empty()) throw UsageError("grade batch: --assignment FILE is required");
   if (a.answers.empty()) throw UsageError("grade batch: --answers DIR is required");
+  if (!a.exercises.empty()) return gradeClassCommand(a);
+  if (a.assignment.empty()) throw UsageError("grade batch: --assignment FILE is required (or --exercises DIR for a class)");
   BatchOptions o;
   o.assignment = a.assignment;
   o.answers = a.answers;
@@ -239,6 +271,31 @@ int gradeBatchCommand(const BatchArgs& a) {
   return 0;
 }
 
+void writeBank(const std::string& file, const std::string& xml) {
+  std::ofstream out(file, std::ios::binary);
+  out << xml;
+  if (!out) throw Error(file + ": cannot write the Moodle question bank");
+}
+
+/// `vplab exercise --roster`: one variant per student (app/course/class_exercise.h), and their bank.
+int classExerciseCommand(const ExerciseArgs& a, const ExerciseSpec& spec, Language lang) {
+  if (!a.studentId.empty()) throw UsageError("--student-id and --roster exclude each other (the roster names the students)");
+  std::string text;
+  Roster roster;
+  try {
+    text = readRegularFile(a.roster, kMaxRosterBytes, "roster");
+    roster = parseRoster(text, a.roster);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
+  const std::vector<MoodleQuestion> questions = writeClassExercises(spec, roster, text, lang, a.out, !a.moodle.empty());
+  if (!a.moodle.empty()) writeBank(a.moodle, moodleBankXml(moodleCategory(spec), questions));
+  std::cerr << "vplab exercise: wrote " << roster.students.size() << " variants to " << a.out
+            << " (students/ID: the sheets and answer.json; staff/ID: solutions and assignment.json)"
+            << (a.moodle.empty() ? "" : " and the Moodle question bank " + a.moodle) << "\n";
+  return 0;
+}
+
 int exerciseCommand(const ExerciseArgs& a) {
   if (a.out.empty()) throw UsageError("exercise: --out DIR is required");
   const auto topic = exerciseTopicFromString(a.topic);
@@ -253,8 +310,15 @@ int exerciseCommand(const ExerciseArgs& a) {
         return !std::isalnum(c) && c != '.' && c != '-' && c != '@';
       }))
     throw UsageError("--student-id \"" + a.studentId + "\": at most 64 letters, digits, '.', '-' or '@' expected");
-  const Exercise exercise = generateExercise({std::stoull(a.seed), *topic, *projection}, a.studentId);
-  writeExercise(exercise, a.lang == "de" ? Language::de : Language::en, a.out);
+  const ExerciseSpec spec{std::stoull(a.seed), *topic, *projection};
+  const Language lang = a.lang == "de" ? Language::de : Language::en;
+  if (!a.roster.empty()) return classExerciseCommand(a, spec, lang);
+  const Exercise exercise = generateExercise(spec, a.studentId);
+  writeExercise(exercise, lang, a.out);
+  if (!a.moodle.empty()) {
+    writeBank(a.moodle, moodleBankXml(moodleCategory(spec), {moodleQuestion(exercise, lang, a.out)}));
+    std::cerr << "vplab exercise: wrote the Moodle question bank " << a.moodle << "\n";
+  }
   std::cerr << "vplab exercise: wrote sheet.md, solution.md, sheet.tex, solution.tex, scene.json, answer.json (the template to fill in), solution.json (its key), assignment.json (for vplab grade) and the figures to "
             << a.out << "\n";
   return 0;
@@ -313,6 +377,14 @@ void addCourseCommands(CLI::App& app) {
                        "A student's own variant of the exercise: other numbers, the same tasks and difficulty "
                        "(the same id gives the same bytes)")
       ->type_name("ID");
+  exercise->add_option("--roster", ex->roster,
+                       "A class: one variant per student of ROSTER.csv (an `id` column, or Moodle's grading worksheet) "
+                       "into --out DIR/students/ID and DIR/staff/ID")
+      ->type_name("ROSTER.csv");
+  exercise->add_option("--moodle", ex->moodle,
+                       "Also write a Moodle XML question bank: one cloze question per variant, with the key's values, "
+                       "their tolerance and the mistakes' values")
+      ->type_name("BANK.xml");
   exercise->add_option("--out", ex->out, "The folder to write to (created; required)")
       ->type_name("DIR");
   exercise->allow_extras();
@@ -343,9 +415,15 @@ void addCourseCommands(CLI::App& app) {
   CLI::App* batch = grade->add_subcommand(
       "batch", "Grade a class: every answer file in --answers DIR (one per student, named by the student's id) "
                "against --assignment, in parallel; writes grades.csv, results.json and reports/ into --out DIR");
-  batch->add_option("--assignment", bat->assignment, "The assignment (assignment.json of vplab exercise; required)")
+  batch->add_option("--assignment", bat->assignment, "The assignment (assignment.json of vplab exercise; required without --exercises)")
       ->type_name("FILE");
-  batch->add_option("--answers", bat->answers, "The folder of answer files (required)")
+  batch->add_option("--exercises", bat->exercises,
+                    "A class's exercises (--out DIR of vplab exercise --roster): each student graded against their own "
+                    "variant; also writes moodle-grading-worksheet.csv and moodle-feedback-files.zip")
+      ->type_name("DIR");
+  batch->add_option("--answers", bat->answers,
+                    "The folder of answer files (required): ID.json, or Moodle's \"Download all submissions\" (its zip, "
+                    "or unpacked)")
       ->type_name("DIR");
   batch->add_option("--out", bat->out, "Where to write the gradebook and the reports (default: grades)")
       ->type_name("DIR");
