@@ -249,7 +249,7 @@ ClassResult gradeClass(const ClassOptions& o) {
             sub->second.text ? *sub->second.text : readRegularFile(sub->second.file, kMaxAnswerBytes, "student's answer file");
         const Json answer = parseAnswer(text, row.file);
         const NumbersGrade g = gradeNumbers(answer, row.file, v.reference, v.assignment.tolerance, &v.assignment);
-        report = numbersReport(g, row.file, "scene.json", o.lang);
+        report = numbersReport(g, row.file, "scene.json", o.lang, o.reveal);
         row.status = "graded";
         row.passed = g.passed();
         row.points = g.points;

@@ -22,6 +22,7 @@
 // zip" reads back).
 #pragma once
 
+#include "app/course/grade_report.h"
 #include "course/roster.h"
 #include "pipeline/language.h"
 
@@ -34,6 +35,7 @@ namespace vplab {
 struct ClassOptions {
   std::filesystem::path exercises, answers, out;
   Language lang = Language::en;
+  Reveal reveal = Reveal::values;  // what each report shows of the reference
 };
 
 struct ClassRow {

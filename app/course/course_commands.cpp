@@ -50,11 +50,18 @@ struct ExerciseArgs {
 
 struct GradeArgs {
   std::string scene, student, junit, view = "camera", style = "flat", diff, backend = "auto", assignment, lang = "en";
+  std::string reveal = "values";
   // Numbers as text, converted here, so that a bad value is a usage error (exit 2) like the others;
   // empty: the default (or the assignment's).
   std::string tolerance, maxDiff = "48", meanDiff = "2", maxShare = "0.005", maxShift = "1";
   bool json = false;
 };
+
+Reveal revealOf(const std::string& reveal) {
+  const std::optional<Reveal> r = revealFromString(reveal);
+  if (!r) throw UsageError("--reveal \"" + reveal + "\": values, stages or none expected");
+  return *r;
+}
 
 Language languageOf(const std::string& lang) {
   if (lang != "en" && lang != "de") throw UsageError("--lang \"" + lang + "\": en or de expected");
@@ -140,6 +147,7 @@ int gradeOrReport(const GradeArgs& a, const std::string& kind, const std::string
 int gradeNumbersCommand(const GradeArgs& a) {
   if (a.student.empty()) throw UsageError("grade numbers: --student FILE is required");
   const Language lang = languageOf(a.lang);
+  const Reveal reveal = revealOf(a.reveal);
   std::optional<Assignment> assignment;
   std::string sceneFile = a.scene;
   if (!a.assignment.empty()) {
@@ -163,7 +171,7 @@ int gradeNumbersCommand(const GradeArgs& a) {
     } catch (const Error& e) {
       throw UsageError(e.what());
     }
-    return numbersReport(grade, a.student, sceneName, lang);
+    return numbersReport(grade, a.student, sceneName, lang, reveal);
   });
 }
 
@@ -211,7 +219,7 @@ int gradeImageCommand(const GradeArgs& a) {
 }
 
 struct BatchArgs {
-  std::string assignment, exercises, answers, out = "grades", jobs, lang = "en";
+  std::string assignment, exercises, answers, out = "grades", jobs, lang = "en", reveal = "values";
 };
 
 /// `grade batch --exercises DIR`: every roster student against their own variant (class_grading.h).
@@ -222,6 +230,7 @@ int gradeClassCommand(const BatchArgs& a) {
   o.answers = a.answers;
   o.out = a.out;
   o.lang = languageOf(a.lang);
+  o.reveal = revealOf(a.reveal);
   ClassResult r;
   try {
     r = gradeClass(o);
@@ -250,6 +259,7 @@ int gradeBatchCommand(const BatchArgs& a) {
   o.answers = a.answers;
   o.out = a.out;
   o.lang = languageOf(a.lang);
+  o.reveal = revealOf(a.reveal);
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   o.jobs = a.jobs.empty() ? int(cores) : int(number("--jobs", a.jobs, 1, 256));
   if (!a.jobs.empty() && std::to_string(o.jobs) != a.jobs) throw UsageError("--jobs \"" + a.jobs + "\": a whole number from 1 to 256 expected");
@@ -357,6 +367,10 @@ void addGradeOptions(CLI::App* cmd, GradeArgs& a) {
       ->type_name("FILE");
   cmd->add_option("--lang", a.lang, "The feedback's language: en (default) or de")
       ->type_name("LANG");
+  cmd->add_option("--reveal", a.reveal,
+                  "What the feedback shows of the reference: values (default), stages (the first departing stage and "
+                  "the mistake, no reference value) or none (which values are wrong, and the points)")
+      ->type_name("WHAT");
 }
 
 }  // namespace
@@ -431,6 +445,9 @@ void addCourseCommands(CLI::App& app) {
       ->type_name("N");
   batch->add_option("--lang", bat->lang, "The feedback's language: en (default) or de")
       ->type_name("LANG");
+  batch->add_option("--reveal", bat->reveal,
+                    "What each report shows of the reference: values (default), stages or none (see grade numbers)")
+      ->type_name("WHAT");
   batch->allow_extras();
   batch->callback([bat, batch] { finish(batch, 2, [&] { return gradeBatchCommand(*bat); }); });
 

@@ -119,7 +119,7 @@ BatchResult gradeBatch(const BatchOptions& o, const std::function<void(size_t, s
       try {
         const std::string text = readRegularFile(files[i], kMaxAnswerBytes, "student's answer file");
         const NumbersGrade g = gradeNumbers(parseAnswer(text, row.file), row.file, reference, assignment.tolerance, &assignment);
-        report = numbersReport(g, row.file, sceneFile.filename().string(), o.lang);
+        report = numbersReport(g, row.file, sceneFile.filename().string(), o.lang, o.reveal);
         row.passed = g.passed();
         row.points = g.points;
         for (size_t k = 0; k < g.items.size(); ++k) row.itemPoints[k] = g.items[k].earned;

@@ -6,6 +6,7 @@
 // row, never the end of the batch.
 #pragma once
 
+#include "app/course/grade_report.h"
 #include "course/assignment.h"
 #include "pipeline/language.h"
 
@@ -20,6 +21,7 @@ struct BatchOptions {
   std::filesystem::path assignment, answers, out;
   int jobs = 1;
   Language lang = Language::en;
+  Reveal reveal = Reveal::values;  // what each report shows of the reference
 };
 
 struct BatchRow {

@@ -90,8 +90,10 @@ std::string sheetValue(const std::string& json) {
 
 std::string valueLine(const GradedValue& v, Language lang) {
   if (v.malformed()) return v.path + ": " + v.student + " — " + (lang == Language::de ? v.problemDe : v.problem);
+  if (v.count && v.reference.empty()) return v.path + ": " + v.student + std::string(inLanguage(lang, " vertices", " Ecken"));
   if (v.count)
     return v.path + ": " + v.student + std::string(inLanguage(lang, " vertices, expected ", " Ecken, erwartet ")) + v.reference;
+  if (v.reference.empty()) return v.path + ": " + v.student + (v.rounded ? std::string(inLanguage(lang, " (rounded)", " (gerundet)")) : "");
   std::string line = v.path + ": " + v.student + std::string(inLanguage(lang, ", expected ", ", erwartet ")) + sheetValue(v.reference);
   if (v.rounded) line += std::string(inLanguage(lang, " (rounded)", " (gerundet)"));
   return line;
@@ -160,7 +162,8 @@ std::vector<GradeCase> groupCases(const NumbersGrade& g, Language lang, Json& gr
     Json wrongValues = Json::array();
     for (const GradedValue& v : g.values)
       if (v.group == name && !v.right)
-        wrongValues.push_back({{"path", v.path}, {"student", asJson(v.student)}, {"reference", asJson(v.reference)},
+        wrongValues.push_back({{"path", v.path}, {"student", asJson(v.student)},
+                               {"reference", v.reference.empty() ? Json() : asJson(v.reference)},
                                {"rounded", v.rounded}, {"problem", v.problem}, {"vertex_count", v.count}});
     groups.push_back({{"path", name}, {"values", total}, {"wrong", wrong}, {"wrong_values", wrongValues}});
     out.push_back(c);
@@ -252,7 +255,35 @@ std::vector<std::string> diagnosis(const NumbersGrade& g, Language lang) {
 
 std::string studentIdOf(const std::string& file) { return std::filesystem::path(file).stem().string(); }
 
-GradeReport numbersReport(const NumbersGrade& g, const std::string& student, const std::string& scene, Language lang) {
+std::optional<Reveal> revealFromString(std::string_view s) {
+  if (s == "values") return Reveal::values;
+  if (s == "stages") return Reveal::stages;
+  if (s == "none") return Reveal::none;
+  return std::nullopt;
+}
+
+namespace {
+
+// The grade with what `reveal` hides taken out: the reference values, and with none the stage and
+// the mistake models too.
+NumbersGrade revealed(NumbersGrade g, Reveal reveal) {
+  if (reveal == Reveal::values) return g;
+  for (GradedValue& v : g.values) v.reference.clear();
+  if (reveal == Reveal::none) {
+    g.firstStage.reset();
+    g.mistake.reset();
+    g.fitting.clear();
+    g.models.clear();
+    for (ItemGrade& i : g.items) i.withdrawnFor.reset();
+  }
+  return g;
+}
+
+}  // namespace
+
+GradeReport numbersReport(const NumbersGrade& graded, const std::string& student, const std::string& scene, Language lang,
+                          Reveal reveal) {
+  const NumbersGrade g = revealed(graded, reveal);
   GradeReport r;
   r.kind = "numbers";
   r.student = student;

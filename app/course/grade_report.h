@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace vplab {
@@ -42,8 +43,15 @@ struct GradeReport {
   nlohmann::ordered_json json;         // the machine report
 };
 
+/// What a report shows of the reference (issue 38; a course with resubmission hides the values):
+/// values: the reference values beside the student's wrong ones; stages: which values are wrong, the
+/// first departing stage and the mistake named, no reference value; none: only which values are
+/// wrong and the points.
+enum class Reveal { values, stages, none };
+std::optional<Reveal> revealFromString(std::string_view s);
+
 GradeReport numbersReport(const NumbersGrade& grade, const std::string& student, const std::string& scene,
-                          Language lang = Language::en);
+                          Language lang = Language::en, Reveal reveal = Reveal::values);
 GradeReport imageReport(const ImageGrade& grade, const std::string& student, const std::string& scene,
                         const std::string& differenceFile, Language lang = Language::en);
 /// The report of an answer that could not be graded (malformed, unreadable): `error` names the problem.

@@ -310,6 +310,22 @@ TEST_F(Course, GradeNumbersExitCodesAndReports) {
   EXPECT_THAT(xml, HasSubstr("<testsuite name=\"vplab grade numbers: flipped.json\""));
   EXPECT_THAT(xml, HasSubstr("<failure message=\"2 of 16 values wrong\">"));
 
+  // --reveal: a course with resubmission hides the reference values (issue 38).
+  ProcessResult stages = vplab("grade numbers --scene " + scene + " --student flipped.json --reveal stages");
+  EXPECT_EQ(stages.exitCode, 1);
+  EXPECT_THAT(stages.out, HasSubstr("/matrices/dc_from_npc/1/1: " + Json(h).dump() + "\n"));
+  EXPECT_THAT(stages.out, Not(HasSubstr("expected")));
+  EXPECT_THAT(stages.out, HasSubstr("stage 5, device mapping"));
+  EXPECT_THAT(stages.out, HasSubstr("the mistake model \"y-not-flipped\""));
+  ProcessResult none = vplab("grade numbers --scene " + scene + " --student flipped.json --reveal none --json");
+  EXPECT_EQ(none.exitCode, 1);
+  const Json hidden = Json::parse(none.out);
+  EXPECT_TRUE(hidden["mistake"].is_null());
+  EXPECT_TRUE(hidden["first_departing_stage"].is_null());
+  for (const Json& g : hidden["groups"])
+    for (const Json& v : g["wrong_values"]) EXPECT_TRUE(v["reference"].is_null()) << v.dump();
+  EXPECT_EQ(vplab("grade numbers --scene " + scene + " --student flipped.json --reveal some").exitCode, 2);
+
   r = vplab("grade numbers --scene " + scene + " --student flipped.json --json");
   EXPECT_EQ(r.exitCode, 1);
   const Json report = Json::parse(r.out);
