@@ -200,9 +200,12 @@ int gradeImageCommand(const GradeArgs& a) {
   return gradeOrReport(a, "image", sceneName, [&] {
     // The size from the PNG header first: a hostile file must not make us allocate (or render) gigabytes.
     int width = 0, height = 0, channels = 0;
-    if (stbi_info(a.student.c_str(), &width, &height, &channels) && (width > kMaxGradeSide || height > kMaxGradeSide))
+    // Within the render's pixel budget too (io/limits.h): the reference is rendered at the student's size.
+    if (stbi_info(a.student.c_str(), &width, &height, &channels) &&
+        (width > kMaxGradeSide || height > kMaxGradeSide || std::int64_t(width) * height > kMaxImagePixels))
       throw UsageError(a.student + ": " + std::to_string(width) + " × " + std::to_string(height) + " pixels; at most " +
-                       std::to_string(kMaxGradeSide) + " on each side are graded");
+                       std::to_string(kMaxGradeSide) + " on each side and " + std::to_string(kMaxImagePixels) +
+                       " in all (8K UHD, the render's budget) are graded");
     Image student;
     try {
       student = readPng(a.student);

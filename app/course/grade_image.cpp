@@ -80,30 +80,34 @@ ImageGrade gradeImage(ViewRenderer& renderer, const Scene& scene, const Image& s
   g.comparison = compareImages(compared, g.reference, t.maxDiff);
   g.difference = differenceImage(compared, g.reference, t.maxDiff);
   if (g.passed()) return g;
-  struct Candidate {
-    const char *key, *description, *hint;
-    Image picture;
-  };
-  std::vector<Candidate> candidates;
-  candidates.push_back({"upside-down", "the picture is upside down: y was not flipped (GL's window y points up, DC's down)",
-                        "lecture notes 15.2.5; read-back rows must be flipped", flipped(g.reference, true)});
-  candidates.push_back({"mirrored", "the picture is mirrored left to right: x flipped (U = N × VUP instead of VUP × N, or x_dc = W·(1 − x))",
-                        "lecture notes 15.2.2 (U = VUP × N) and 15.2.5 (x_dc = W·x)", flipped(g.reference, false)});
-  if (view == ViewKind::camera && style == Style::flat) {
-    PipelineOptions options;
-    options.strategy = ClipStrategy::divideFirst;
-    candidates.push_back({"divide-first", "divided by w before clipping: what lies behind the eye wraps around into view",
-                          "Hill 7.4 and the divide-first demo (Clipping panel)",
-                          rasterizeClippedPolygons(runPipeline(s, options), s.background, s.device.width, s.device.height)});
-  }
+  // Each model's picture is made, compared and dropped in turn: one picture beside the student's,
+  // the reference and the difference at a time (an 8K picture is 128 MiB).
   double best = 1e300;
-  for (Candidate& c : candidates) {
+  auto consider = [&](const char* key, const char* description, const char* hint, const char* descriptionDe,
+                      const char* hintDe, const Image& picture) {
     // A model whose picture looks like the reference cannot be told apart from a right answer.
-    if (t.passes(compareImages(c.picture, g.reference, t.maxDiff))) continue;
-    ImageModelResult r{c.key, c.description, c.hint, compareImages(student, c.picture, t.maxDiff), false};
+    if (t.passes(compareImages(picture, g.reference, t.maxDiff))) return;
+    ImageModelResult r{key, description, hint, descriptionDe, hintDe, compareImages(student, picture, t.maxDiff), false};
     r.matches = t.passes(r.comparison);
     if (r.matches && r.comparison.meanChannelDelta < best) best = r.comparison.meanChannelDelta, g.mistake = g.models.size();
     g.models.push_back(std::move(r));
+  };
+  consider("upside-down", "the picture is upside down: y was not flipped (GL's window y points up, DC's down)",
+           "lecture notes 15.2.5; read-back rows must be flipped",
+           "das Bild steht auf dem Kopf: y wurde nicht gespiegelt (y im GL-Fenster zeigt nach oben, in DC nach unten)",
+           "Skript 15.2.5; zurückgelesene Zeilen müssen gespiegelt werden", flipped(g.reference, true));
+  consider("mirrored", "the picture is mirrored left to right: x flipped (U = N × VUP instead of VUP × N, or x_dc = W·(1 − x))",
+           "lecture notes 15.2.2 (U = VUP × N) and 15.2.5 (x_dc = W·x)",
+           "das Bild ist links-rechts gespiegelt: x gespiegelt (U = N × VUP statt VUP × N, oder x_dc = W·(1 − x))",
+           "Skript 15.2.2 (U = VUP × N) und 15.2.5 (x_dc = W·x)", flipped(g.reference, false));
+  if (view == ViewKind::camera && style == Style::flat) {
+    PipelineOptions options;
+    options.strategy = ClipStrategy::divideFirst;
+    consider("divide-first", "divided by w before clipping: what lies behind the eye wraps around into view",
+             "Hill 7.4 and the divide-first demo (Clipping panel)",
+             "vor dem Clipping durch w dividiert: was hinter dem Auge liegt, klappt ins Bild",
+             "Hill 7.4 und die Vorführung im Clipping-Panel (Strategie „erst dividieren“)",
+             rasterizeClippedPolygons(runPipeline(s, options), s.background, s.device.width, s.device.height));
   }
   return g;
 }

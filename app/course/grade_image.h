@@ -25,6 +25,7 @@ struct ImageThresholds {
 
 struct ImageModelResult {
   std::string key, description, hint;
+  std::string descriptionDe, hintDe;  // the same in the lecture's German
   ImageComparison comparison;  // the student against the model's picture
   bool matches = false;
 };

@@ -414,7 +414,8 @@ GradeReport imageReport(const ImageGrade& g, const std::string& student, const s
   if (g.mistake) {
     const ImageModelResult& m = g.models[*g.mistake];
     r.diagnosis.push_back((de ? "Ihr Bild ist das des Fehlermodells " : "Your picture is that of the mistake model ") +
-                          quoted(m.key, lang) + ": " + m.description + (de ? ". Siehe " : ". See ") + m.hint + ".");
+                          quoted(m.key, lang) + ": " + (de ? m.descriptionDe : m.description) + (de ? ". Siehe " : ". See ") +
+                          (de ? m.hintDe : m.hint) + ".");
   } else if (!g.passed() && g.shiftTolerated) {
     r.diagnosis.push_back(de ? "Keines der Fehlermodelle für Bilder (auf dem Kopf, gespiegelt, erst dividieren) passt zu Ihrem Bild."
                              : "None of the image mistake models (upside down, mirrored, divide first) matches your picture.");

@@ -83,20 +83,35 @@ ImageComparison compareImages(const Image& actual, const Image& expected, int ch
     return c;
   }
   c.pixelCount = actual.pixels.size();
-  std::vector<Candidate> differing;
+  // The worst pixels kept in a heap of `worstCount` (its top the least bad kept): memory does not
+  // grow with the differing pixels (an 8K picture wholly different would take 1 GB as a list).
+  std::vector<Candidate> worst;
+  worst.reserve(worstCount + 1);
   uint64_t deltaSum = 0;
+  size_t differing = 0;
   for (size_t i = 0; i < c.pixelCount; ++i) {
     const int delta = pixelDelta(actual.pixels[i], expected.pixels[i]);
     deltaSum += uint64_t(channelDeltaSum(actual.pixels[i], expected.pixels[i]));
     c.maxChannelDelta = std::max(c.maxChannelDelta, delta);
-    if (delta > channelThreshold) differing.push_back({delta, i});
+    if (delta <= channelThreshold) continue;
+    ++differing;
+    if (worstCount == 0) continue;
+    const Candidate candidate{delta, i};
+    if (worst.size() < worstCount) {
+      worst.push_back(candidate);
+      std::push_heap(worst.begin(), worst.end(), worseThan);
+    } else if (worseThan(candidate, worst.front())) {
+      std::pop_heap(worst.begin(), worst.end(), worseThan);
+      worst.back() = candidate;
+      std::push_heap(worst.begin(), worst.end(), worseThan);
+    }
   }
-  c.differingPixels = differing.size();
+  c.differingPixels = differing;
   if (c.pixelCount > 0) {  // an empty image has no share and no mean, not NaN
     c.differingShare = double(c.differingPixels) / double(c.pixelCount);
     c.meanChannelDelta = double(deltaSum) / (4.0 * double(c.pixelCount));
   }
-  c.worst = worstPixels(differing, actual, expected, worstCount);
+  c.worst = worstPixels(worst, actual, expected, worstCount);
   return c;
 }
 

@@ -476,7 +476,17 @@ TEST_F(Course, GradeImageNamesTheImageMistakes) {
   }
   r = vplab("grade image --scene " + scene + " --student huge.png");
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_THAT(r.err, HasSubstr("huge.png: 12000 × 12000 pixels; at most 8192 on each side are graded"));
+  EXPECT_THAT(r.err, HasSubstr("huge.png: 12000 × 12000 pixels; at most 8192 on each side and 33554432 in all"));
+  // 8192 × 8192 is within the side limit but twice the render's pixel budget (issue 38: it took 3 GB).
+  {
+    std::string png = readFile(dir_ / "huge.png");
+    const unsigned char size[8] = {0, 0, 0x20, 0x00, 0, 0, 0x20, 0x00};
+    for (int i = 0; i < 8; ++i) png[size_t(16 + i)] = char(size[i]);
+    std::ofstream(dir_ / "square.png", std::ios::binary) << png;
+  }
+  r = vplab("grade image --scene " + scene + " --student square.png");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("square.png: 8192 × 8192 pixels; at most 8192 on each side and 33554432 in all (8K UHD"));
   r = vplab("grade image --scene " + scene + " --student right.png --view morph");
   EXPECT_EQ(r.exitCode, 2);
 }
