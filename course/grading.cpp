@@ -179,8 +179,10 @@ bool isPerVertexList(const std::string& key) {
 }
 
 struct Walker {
+  Walker(std::string source_, double tolerance_) : source(std::move(source_)), tolerance(tolerance_) {}
+
   std::string source;
-  double tolerance;
+  double tolerance = 0;
   std::vector<GradedValue> values;
   std::vector<const Json*> referenceOf;  // per value: the reference leaf (for the models)
   std::vector<const Json*> studentOf;    // per value: the student's leaf
@@ -640,7 +642,7 @@ NumbersGrade gradeNumbers(const Json& givenAnswer, std::string_view source, cons
                           double tolerance, const Assignment* assignment) {
   if (!(tolerance >= 0 && tolerance < 1)) throw Error("the tolerance must lie in [0, 1), not " + std::to_string(tolerance));
   const Json& reference = references.reference;
-  Walker w{std::string(source), tolerance, {}, {}, {}, {}, {}, {}, {}};
+  Walker w(std::string(source), tolerance);
   NumbersGrade g;
   g.tolerance = tolerance;
   // Every matrix in the lecture notes' row-vector form: a notation, read transposed (issue 38).
