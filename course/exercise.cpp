@@ -156,8 +156,7 @@ bool isSmallRational(const Mat4& m) {
   return true;
 }
 
-bool wellPosed(const Exercise& e) {
-  const ExerciseSolution s = solveExercise(e);
+bool wellPosed(const Exercise& e, const ExerciseSolution& s) {
   const bool clippingTopic = e.spec.topic == ExerciseTopic::clipping || e.spec.topic == ExerciseTopic::pipeline;
   if (e.pointBehindEye ? !(s.point.npcH.w < 0) : s.point.outcode != 0) return false;
   Outcode any = 0;
@@ -239,10 +238,43 @@ Exercise generateExercise(const ExerciseSpec& spec, std::string_view studentId) 
     e.scene.objects[0].mesh = primitiveMesh(e.scene.objects[0]);
     // An identity orientation is rejected after the draw and the check, so that every other seed's
     // draws, and so its sheet, stay what they were.
-    if (wellPosed(e) && !identityOrientation(e.scene.camera)) return e;
+    const ExerciseSolution s = solveExercise(e);
+    if (wellPosed(e, s) && !identityOrientation(e.scene.camera) &&
+        outsideDifficultyBand(spec.topic, exerciseDifficulty(e, s)).empty())
+      return e;
   }
   throw Error("no well-posed exercise found for seed " + std::to_string(spec.seed) + ", topic " +
               std::string(toString(spec.topic)));
+}
+
+ExerciseDifficulty exerciseDifficulty(const Exercise& exercise, const ExerciseSolution& solution) {
+  ExerciseDifficulty d;
+  for (const Vec3& axis : {solution.run.vrc.u, solution.run.vrc.v, solution.run.vrc.n}) {
+    int zeros = 0;
+    for (int i = 0; i < 3; ++i) {
+      zeros += std::abs(axis[i]) < 1e-12;
+      const std::optional<Rational> r = Rational::approximate(axis[i], kGivenDen);
+      d.denominator = std::max(d.denominator, r ? int(r->den()) : int(kGivenDen) + 1);
+    }
+    d.axesOffAxis += zeros < 2;
+  }
+  for (int i = 0; i < 3; ++i) d.vrpNonZero += exercise.scene.camera.vrp[i] != 0;
+  for (const ClipStep& step : solution.steps)
+    d.cuts += std::find(step.created.begin(), step.created.end(), true) != step.created.end();
+  d.clippedVertices = int(solution.clippedNpcH.size());
+  return d;
+}
+
+std::string outsideDifficultyBand(ExerciseTopic topic, const ExerciseDifficulty& d) {
+  const bool clippingTopic = topic == ExerciseTopic::clipping || topic == ExerciseTopic::pipeline;
+  if (d.vrpNonZero == 0) return "VRP at the origin";
+  if (d.axesOffAxis < 2) return std::to_string(d.axesOffAxis) + " of U, V, N off the axes (at least 2)";
+  if (!clippingTopic && (d.denominator < 3 || d.denominator > 9))
+    return "denominator " + std::to_string(d.denominator) + " (3 to 9)";
+  if (clippingTopic && (d.cuts < 2 || d.cuts > 4)) return std::to_string(d.cuts) + " cutting planes (2 to 4)";
+  if (clippingTopic && (d.clippedVertices < 3 || d.clippedVertices > 7))
+    return std::to_string(d.clippedVertices) + " clipped vertices (3 to 7)";
+  return {};
 }
 
 ExerciseSolution solveExercise(const Exercise& exercise) {

@@ -88,4 +88,21 @@ struct ExerciseSolution {
 /// Runs the exercise's scene through the pipeline and collects what the solution shows.
 ExerciseSolution solveExercise(const Exercise& exercise);
 
+/// How hard a variant is, in what a student computes (issue 38: every student's variant of a sheet
+/// within one band, so that no one gets the easy one):
+struct ExerciseDifficulty {
+  int axesOffAxis = 0;    // of U, V, N, how many are not along a WC axis (0: the identity, nothing to compute)
+  int denominator = 1;    // the largest denominator among U's, V's and N's exact components
+  int vrpNonZero = 0;     // VRP's non-zero coordinates (0: T(−VRP) changes nothing, forgetting it is unseen)
+  int cuts = 0;           // Sutherland–Hodgman passes that create vertices
+  int clippedVertices = 0;  // the clipped polygon's vertices
+};
+ExerciseDifficulty exerciseDifficulty(const Exercise& exercise, const ExerciseSolution& solution);
+
+/// The band every variant of a topic lies in: orientation and mapping sheets at least two of U, V,
+/// N off the axes with denominators 3 to 9; clipping and pipeline sheets (the lecture's gentle
+/// orientation) two off the axes, two to four cutting planes and three to seven clipped vertices;
+/// every sheet a VRP away from the origin. Empty when `d` lies in it, else what is out of it.
+std::string outsideDifficultyBand(ExerciseTopic topic, const ExerciseDifficulty& d);
+
 }  // namespace vplab
