@@ -1,6 +1,7 @@
 #include "course/moodle_bank.h"
 
 #include "course/rational.h"
+#include "course/xml_text.h"
 #include "pipeline/error.h"
 
 #include <algorithm>
@@ -61,20 +62,6 @@ const Json* valueAt(const Json& j, const std::string& pointer) {
 std::string mistakeFeedback(const MistakeModel& m, Language lang) {
   return std::string(inLanguage(lang, "Mistake: ", "Fehler: ")) + std::string(m.descriptionIn(lang)) + " (" +
          std::string(m.hintIn(lang)) + ")";
-}
-
-std::string xmlEscape(std::string_view s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 /// Text inside CDATA: "]]>" cannot appear in it, so it is split across two sections.

@@ -3,6 +3,7 @@
 
 #include "course/assignment.h"
 #include "course/rational.h"
+#include "course/xml_text.h"
 
 #include <cmath>
 #include <cstdio>
@@ -42,20 +43,6 @@ std::string pointsOf(double earned, double of, Language lang) {
   const bool one = of == 1;
   return pointsNumber(earned, lang) + (lang == Language::de ? " von " : " of ") + pointsNumber(of, lang) +
          (lang == Language::de ? (one ? " Punkt" : " Punkten") : (one ? " point" : " points"));
-}
-
-std::string xmlEscape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 // A value's text as JSON: numbers and strings as they are, "5 entries" (a list of another length)
