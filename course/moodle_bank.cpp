@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <numeric>
+#include <optional>
 
 namespace vplab {
 
@@ -131,18 +133,61 @@ bool validFigureName(std::string_view name) {
   return true;
 }
 
+/// Points as a fraction (denominator up to 1000).
+Rational pointsFraction(double points) {
+  const std::optional<Rational> r = Rational::approximate(points, 1000, 1e-9);
+  if (!r || r->num() < 0)
+    throw Error("Moodle bank: " + std::to_string(points) + " points: a fraction with a denominator up to 1000 expected");
+  return *r;
+}
+
+int64_t lcm64(int64_t a, int64_t b) {
+  const int64_t l = a / std::gcd(a, b);
+  if (l > INT64_MAX / b) throw Error("Moodle bank: the weights' common factor overflows");
+  return l * b;
+}
+
 }  // namespace
+
+int64_t clozeWeightFactor(const std::vector<std::pair<double, size_t>>& items) {
+  int64_t equal = 1, denominators = 1;
+  bool any = false;
+  for (const auto& [points, count] : items) {
+    const Rational p = pointsFraction(points);
+    if (p.num() == 0 || count == 0) continue;
+    any = true;
+    // a·F / (b·n) an integer: F a multiple of b·n / gcd(a, b·n).
+    const int64_t bn = p.den() * int64_t(count);
+    equal = std::min(lcm64(equal, bn / std::gcd(p.num(), bn)), kMaxEqualWeightFactor + 1);
+    denominators = lcm64(denominators, p.den());
+  }
+  if (!any) return 0;
+  if (equal <= kMaxEqualWeightFactor) return equal;
+  // Every value at least 1: a·F / b ≥ n.
+  int64_t f = denominators;
+  for (const auto& [points, count] : items) {
+    const Rational p = pointsFraction(points);
+    if (p.num() == 0 || count == 0) continue;
+    const int64_t least = (int64_t(count) * p.den() + p.num() - 1) / p.num();
+    f = std::max(f, (least + denominators - 1) / denominators * denominators);
+  }
+  return f;
+}
 
 std::vector<ClozeValue> clozeValues(const Assignment& assignment, const Json& key,
                                     const std::vector<std::pair<Mistake, Json>>& models, Language lang) {
   std::vector<ClozeValue> values;
+  std::vector<std::pair<double, size_t>> counts;  // per item: points, values
   for (const AssignmentItem& item : assignment.items) {
     const Json* at = valueAt(key, item.path);
     if (!at) throw Error("Moodle bank: the answer key has no value at " + item.path + " (" + item.title + ")");
     std::vector<std::pair<std::string, const Json*>> numbers;
     numbersOf(*at, "", numbers);
+    if (pointsFraction(item.points).num() == 0) numbers.clear();  // worth nothing: not asked
+    counts.emplace_back(item.points, numbers.size());
     for (const auto& [sub, number] : numbers) {
       ClozeValue v;
+      v.item = item.path;
       v.path = item.path + sub;
       v.label = labelOf(item.title, sub);
       v.value = number->is_number_integer() ? number->get<double>() : cleanValue(number->get<double>());
@@ -165,7 +210,81 @@ std::vector<ClozeValue> clozeValues(const Assignment& assignment, const Json& ke
       values.push_back(std::move(v));
     }
   }
+  // Each item's points × F over its values, as evenly as integers allow (clozeWeightFactor).
+  const int64_t factor = clozeWeightFactor(counts);
+  int64_t sum = 0;
+  size_t at = 0;
+  for (const auto& [points, count] : counts) {
+    if (count == 0) continue;
+    const Rational p = pointsFraction(points);
+    const int64_t total = p.num() * factor / p.den();  // an integer: F is a multiple of the denominators
+    for (size_t k = 0; k < count; ++k) {
+      const int64_t w = total / int64_t(count) + (int64_t(k) < total % int64_t(count) ? 1 : 0);
+      values[at++].weight = int(w);
+    }
+    sum += total;
+    // Moodle stores the question's mark, the sum of its weights, as a decimal below 100 000.
+    if (sum > 99999) throw Error("Moodle bank: the sub-questions' weights add up to more than Moodle's 99999 marks");
+  }
   return values;
+}
+
+bool isPolygonItem(std::string_view itemPath) {
+  auto endsWith = [&](std::string_view tail) {
+    return itemPath.size() >= tail.size() && itemPath.substr(itemPath.size() - tail.size()) == tail;
+  };
+  return endsWith("/clipped_dc") || (endsWith("/polygon") && itemPath.find("/clip_steps/") != std::string_view::npos);
+}
+
+std::string vertexOrderRule(Language lang) {
+  return std::string(inLanguage(
+      lang,
+      "Order of a polygon's vertices: the order Sutherland–Hodgman writes them. Moodle compares value by value, so "
+      "another first vertex or the other direction counts as wrong. A pass walks the edges of its input polygon "
+      "\\(Q_1 \\ldots Q_n\\) in order, starting with the closing edge from the last vertex to the first, "
+      "\\(Q_n \\to Q_1\\), then \\(Q_1 \\to Q_2\\), \\(Q_2 \\to Q_3\\), …; for each edge \\(S \\to P\\) it writes: "
+      "entering (\\(S\\) outside, \\(P\\) inside) the intersection, then \\(P\\); both inside \\(P\\); leaving "
+      "(\\(S\\) inside, \\(P\\) outside) the intersection; both outside nothing. So the result starts with what "
+      "the closing edge \\(Q_n \\to Q_1\\) writes (entering: its intersection, then \\(Q_1\\); both inside: "
+      "\\(Q_1\\); leaving: its intersection; both outside: nothing, and the first vertex a later edge writes comes "
+      "first), and it goes round in the input's direction. The left plane's input is \\(P_1 \\ldots P_n\\), "
+      "each further plane's the result of the plane before (a plane with no vertex outside leaves it as it is); "
+      "a vertex on the plane counts as inside and is not written twice.",
+      "Reihenfolge der Eckpunkte eines Polygons: die, in der Sutherland–Hodgman sie ausgibt. Moodle vergleicht Wert "
+      "für Wert, ein anderer erster Punkt oder der andere Umlaufsinn zählt als falsch. Ein Durchlauf geht die Kanten "
+      "seines Eingabepolygons \\(Q_1 \\ldots Q_n\\) der Reihe nach durch, beginnend mit der schließenden Kante vom "
+      "letzten zum ersten Punkt, \\(Q_n \\to Q_1\\), dann \\(Q_1 \\to Q_2\\), \\(Q_2 \\to Q_3\\), …; für jede Kante "
+      "\\(S \\to P\\) schreibt er: eintretend (\\(S\\) außen, \\(P\\) innen) den Schnittpunkt, dann \\(P\\); beide "
+      "innen \\(P\\); austretend (\\(S\\) innen, \\(P\\) außen) den Schnittpunkt; beide außen nichts. Das Ergebnis "
+      "beginnt also mit dem, was die schließende Kante \\(Q_n \\to Q_1\\) schreibt (eintretend: ihren Schnittpunkt, "
+      "dann \\(Q_1\\); beide innen: \\(Q_1\\); austretend: ihren Schnittpunkt; beide außen: nichts, und zuerst kommt "
+      "der erste Punkt, den eine spätere Kante schreibt), und läuft im Umlaufsinn der Eingabe. Die Eingabe der linken "
+      "Ebene ist \\(P_1 \\ldots P_n\\), die jeder weiteren das Ergebnis der Ebene davor (eine Ebene ohne Punkt außen "
+      "lässt es, wie es ist); ein Punkt auf der Ebene zählt als innen und wird nicht doppelt geschrieben."));
+}
+
+std::string vertexOrderNote(std::string_view itemPath, Language lang) {
+  if (!isPolygonItem(itemPath)) return "";
+  if (itemPath.substr(itemPath.size() - 11) == "/clipped_dc")
+    return std::string(inLanguage(lang,
+                                  "Vertices in the order of the polygon after the front plane (the same first vertex, "
+                                  "the same direction), each divided by \\(w\\) and mapped to DC.",
+                                  "Eckpunkte in der Reihenfolge des Polygons nach der vorderen Ebene (derselbe erste "
+                                  "Punkt, derselbe Umlaufsinn), jeder durch \\(w\\) dividiert und auf DC abgebildet."));
+  const bool first = itemPath.find("/clip_steps/0/") != std::string_view::npos;
+  return first ? std::string(inLanguage(lang,
+                                        "Vertices in the order this pass writes them (above): first the vertex it "
+                                        "writes first, then on in the direction of \\(P_1, P_2, \\ldots\\).",
+                                        "Eckpunkte in der Reihenfolge, in der dieser Durchlauf sie schreibt (oben): "
+                                        "zuerst der Punkt, den er zuerst schreibt, dann weiter im Umlaufsinn von "
+                                        "\\(P_1, P_2, \\ldots\\)."))
+               : std::string(inLanguage(lang,
+                                        "Vertices in the order this pass writes them (above): first the vertex it "
+                                        "writes first, then on in the direction of its input, the polygon after the "
+                                        "plane before.",
+                                        "Eckpunkte in der Reihenfolge, in der dieser Durchlauf sie schreibt (oben): "
+                                        "zuerst der Punkt, den er zuerst schreibt, dann weiter im Umlaufsinn seiner "
+                                        "Eingabe, des Polygons nach der Ebene davor."));
 }
 
 std::string clozeNumber(double x) {
@@ -214,7 +333,7 @@ std::string toleranceText(double t) {
 
 std::string clozeSubquestion(const ClozeValue& v, Language lang) {
   const std::string tolerance = toleranceText(v.tolerance);
-  std::string s = "{1:NUMERICAL:=" + clozeNumber(v.value) + ":" + tolerance + "#" +
+  std::string s = "{" + std::to_string(v.weight) + ":NUMERICAL:=" + clozeNumber(v.value) + ":" + tolerance + "#" +
                   clozeFeedbackText(inLanguage(lang, "Right.", "Richtig."));
   for (const ClozeDistractor& d : v.mistakes)
     s += "~%0%" + clozeNumber(d.value) + ":" + tolerance + "#" + clozeFeedbackText(d.feedback);
@@ -296,9 +415,17 @@ std::string questionXml(const MoodleQuestion& q) {
   text += std::string("<h4>") + std::string(inLanguage(q.lang, "Answers", "Antworten")) + "</h4>\n<p>" +
           std::string(inLanguage(q.lang, "Exact values or decimals; the tolerance is that of the grader.",
                                  "Exakte Werte oder Dezimalzahlen; die Toleranz ist die des Bewerters.")) +
-          "</p>\n<table>\n";
-  for (const ClozeValue& v : q.values)
+          "</p>\n";
+  if (std::any_of(q.values.begin(), q.values.end(), [](const ClozeValue& v) { return isPolygonItem(v.item); }))
+    text += "<p>" + htmlEscape(vertexOrderRule(q.lang)) + "</p>\n";
+  text += "<table>\n";
+  for (size_t i = 0; i < q.values.size(); ++i) {
+    const ClozeValue& v = q.values[i];
+    if (i == 0 || v.item != q.values[i - 1].item)
+      if (const std::string note = vertexOrderNote(v.item, q.lang); !note.empty())
+        text += "<tr><td colspan=\"2\"><em>" + htmlEscape(note) + "</em></td></tr>\n";
     text += "<tr><td>" + htmlEscape(v.label) + "</td><td>" + clozeSubquestion(v, q.lang) + "</td></tr>\n";
+  }
   text += "</table>\n";
   std::string files;
   for (const MoodleFigure& f : q.figures) {

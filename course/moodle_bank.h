@@ -17,9 +17,10 @@
 //
 // A value's sub-question ("Embedded answers", qtype_multianswer):
 //
-//   {1:NUMERICAL:=0.6:0.001#Right~%0%-0.6:0.001#Mistake: … (where to read)~%0%*#Wrong}
+//   {6:NUMERICAL:=0.6:0.001#Right~%0%-0.6:0.001#Mistake: … (where to read)~%0%*#Wrong}
 //
-// weight 1 per value (a matrix counts its 16 values, as the grader does); `=` the key's value with
+// weighted so that each assignment item counts its points (clozeWeightFactor: a 2-point matrix's
+// 16 values weigh as much together as two 1-point vectors' 3 values each); `=` the key's value with
 // the assignment's tolerance made absolute, T · max(1, |value|) (course/grading.h's rule; integers
 // such as outcodes exactly, tolerance 0; written with the fewest digits that stay within 1 % below
 // it, never above); each mistake model's value (course/mistake_models.h, with
@@ -41,6 +42,7 @@
 #include "course/mistake_models.h"
 #include "pipeline/language.h"
 
+#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -68,6 +70,8 @@ struct ClozeValue {
   double value = 0;
   double tolerance = 0;  // absolute
   std::vector<ClozeDistractor> mistakes;
+  int weight = 1;        // the sub-question's weight, "{weight:NUMERICAL:…}" (clozeValues: its item's share)
+  std::string item;      // the assignment item's path it belongs to (clozeValues), for the vertex order
 };
 
 /// One sheet (a variant) as a cloze question.
@@ -81,17 +85,44 @@ struct MoodleQuestion {
 
 /// The answer key's values (answerKey of course/exercise_answer.h), item by item in the assignment's
 /// order, each with the mistakes `models` (mistake model, its answer with the sheet's values:
-/// GradingReference::models) predict for it beyond the tolerance.
+/// GradingReference::models) predict for it beyond the tolerance, and its weight (clozeWeightFactor):
+/// an item's values weigh its points × the factor together. An item worth 0 points is not asked.
+/// Throws vplab::Error for points that are no fraction with a denominator up to 1000.
 std::vector<ClozeValue> clozeValues(const Assignment& assignment, const nlohmann::ordered_json& key,
                                     const std::vector<std::pair<Mistake, nlohmann::ordered_json>>& models,
                                     Language lang);
+
+/// The factor F of the weights of clozeValues: each item's values weigh points × F together, so the
+/// question's grade shares are the assignment's. Moodle's weights are integers (ANSWER_REGEX_NORM
+/// `[0-9]*`), so F is the least integer for which every value of an item gets the same integer
+/// weight points × F / (its number of values) (the least common multiple over the items of
+/// values / gcd(values, points), points as fractions a/b: b·values / gcd(a, b·values)), as long as
+/// that is at most kMaxEqualWeightFactor. Beyond (a clipping sheet whose polygons have 12, 16, 20,
+/// 28 … values: their LCM grows fast, and Moodle stores a question's total, the sum of its weights,
+/// as a number below 100 000), F is the least multiple of the points' denominators that gives every
+/// value a weight of at least 1, and each item's points × F are spread over its values as evenly as
+/// integers allow (weights differing by at most 1, the larger first): every item still counts
+/// exactly its points. Counts are {item points, number of values}; 0 when no item has points.
+inline constexpr int64_t kMaxEqualWeightFactor = 240;
+int64_t clozeWeightFactor(const std::vector<std::pair<double, size_t>>& items);
+
+/// Whether the item at `itemPath` is a clipped polygon ("…/clip_steps/N/polygon", "…/clipped_dc").
+bool isPolygonItem(std::string_view itemPath);
+/// The order a clipped polygon's vertices are asked in, as the bank states it once above the answers
+/// of a sheet with polygons: Moodle grades value by value, so the student's vertex order must be the
+/// key's, the order Sutherland–Hodgman writes them (pipeline/clipping.h, clipPolygonAgainstPlane;
+/// the grader, course/grading.cpp, accepts any start and direction, a cloze question cannot).
+std::string vertexOrderRule(Language lang);
+/// The same for one polygon item, above its values (which vertex comes first, which way round); empty
+/// for an item that is no clipped polygon.
+std::string vertexOrderNote(std::string_view itemPath, Language lang);
 
 /// A number as Moodle's NUMBER_REGEX reads it (shortest round-trip form; -0 as 0). Throws
 /// vplab::Error for a number that is not finite.
 std::string clozeNumber(double x);
 /// Text for a sub-question's feedback, escaped as above.
 std::string clozeFeedbackText(std::string_view text);
-/// The sub-question of one value: "{1:NUMERICAL:=…}".
+/// The sub-question of one value: "{weight:NUMERICAL:=…}".
 std::string clozeSubquestion(const ClozeValue& value, Language lang);
 
 /// The sheet's Markdown as HTML for Moodle: headings, lists, paragraphs, **bold**; math $…$ as

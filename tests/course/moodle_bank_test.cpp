@@ -13,8 +13,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <climits>
 #include <cmath>
+#include <map>
+#include <numeric>
 #include <regex>
+#include <set>
 
 namespace vplab {
 namespace {
@@ -239,7 +243,7 @@ TEST(MoodleBank, EveryCorrectAnswerIsTheSolutionsValueWithinTheTolerance) {
       const double tol = b.assignment.tolerance * std::max(1.0, std::abs(ref));
       EXPECT_NEAR(right.value, ref, tol) << expected[i].first;
       EXPECT_LE(right.tolerance, tol * (1 + 1e-9)) << expected[i].first;
-      EXPECT_EQ(subs[i].weight, 1);
+      EXPECT_GE(subs[i].weight, 1);  // the item's share (MoodleBank.EachItemWeighsItsPoints)
       // Then the mistakes at 0 %, and last "any other answer" at 0 %.
       EXPECT_EQ(subs[i].alternatives.back().answer, "*");
       for (size_t k = 1; k < subs[i].alternatives.size(); ++k) EXPECT_EQ(subs[i].alternatives[k].fraction, "%0%");
@@ -314,7 +318,7 @@ TEST(MoodleBank, FeedbackEscapesSurviveMoodlesParser) {
 TEST(MoodleBank, RejectsHostileFigureNamesAndEmptyQuestions) {
   MoodleQuestion q;
   q.name = "q";
-  q.values.push_back({"/camera/vpd", "VPD", 5, 0.005, {}});
+  q.values.push_back({"/camera/vpd", "VPD", 5, 0.005, {}, 1, "/camera/vpd"});
   q.figures.push_back({"../x.png", "x"});
   EXPECT_THROW(moodleBankXml("c", {q}), Error);
   q.figures = {{"a\" onload=\"x.png", "x"}};
@@ -330,6 +334,225 @@ TEST(MoodleBank, Base64FollowsRfc4648) {
   EXPECT_EQ(base64("fo"), "Zm8=");
   EXPECT_EQ(base64("foo"), "Zm9v");
   EXPECT_EQ(base64("foobar"), "Zm9vYmFy");
+}
+
+// ------------------------------------------------------------------ weights and the vertex order
+
+/// The variants the weight and order tests read: every topic, every projection, several seeds.
+std::vector<ExerciseSpec> variants() {
+  std::vector<ExerciseSpec> out;
+  for (ExerciseTopic topic : {ExerciseTopic::orientation, ExerciseTopic::mapping, ExerciseTopic::clipping,
+                              ExerciseTopic::pipeline})
+    for (uint64_t seed : {1, 2, 3, 11})
+      out.push_back({seed, topic, seed % 3 == 0 ? Projection::parallel : seed % 3 == 1 ? Projection::perspective
+                                                                                       : Projection::oblique});
+  return out;
+}
+
+/// For each sub-question (in order), the index of the assignment item its value belongs to.
+std::vector<size_t> itemOfEachValue(const Built& b) {
+  std::vector<size_t> out;
+  for (size_t i = 0; i < b.assignment.items.size(); ++i) {
+    const Json flat = Json(b.reference.at(Json::json_pointer(b.assignment.items[i].path))).flatten();
+    for (const auto& [path, v] : flat.items())
+      if (v.is_number()) out.push_back(i);
+  }
+  return out;
+}
+
+TEST(MoodleBank, EachItemWeighsItsPointsAndTheQuestionTheAssignmentsTotal) {
+  size_t questions = 0;
+  for (const ExerciseSpec& spec : variants())
+    for (Language lang : {Language::en, Language::de}) {
+      const Built b = build(spec, lang == Language::en ? "dana" : "emil", lang);
+      const std::string what = std::string(toString(spec.topic)) + " seed " + std::to_string(spec.seed);
+      const std::vector<SubQuestion> subs = subQuestions(cdataText(b.xml, b.xml.find("type=\"cloze\""), b.xml.size()));
+      const std::vector<size_t> itemOf = itemOfEachValue(b);
+      ASSERT_EQ(subs.size(), itemOf.size()) << what;
+      std::vector<long> weight(b.assignment.items.size(), 0), count(b.assignment.items.size(), 0);
+      std::vector<int> least(b.assignment.items.size(), INT_MAX), most(b.assignment.items.size(), 0);
+      long total = 0;
+      double points = 0;
+      for (size_t k = 0; k < subs.size(); ++k) {
+        EXPECT_GE(subs[k].weight, 1) << what;
+        weight[itemOf[k]] += subs[k].weight, ++count[itemOf[k]], total += subs[k].weight;
+        least[itemOf[k]] = std::min(least[itemOf[k]], subs[k].weight);
+        most[itemOf[k]] = std::max(most[itemOf[k]], subs[k].weight);
+      }
+      for (const AssignmentItem& item : b.assignment.items) points += item.points;
+      // The common factor: the question's total weight over the assignment's total points, an integer.
+      const double factor = double(total) / points;
+      EXPECT_EQ(factor, std::round(factor)) << what << ": total weight " << total << " for " << points << " points";
+      EXPECT_LE(total, 99999) << what;  // Moodle's largest mark
+      for (size_t i = 0; i < b.assignment.items.size(); ++i) {
+        const AssignmentItem& item = b.assignment.items[i];
+        ASSERT_GT(count[i], 0) << what << ": " << item.path;
+        // The item's weights over the factor are its points: a 2-point matrix counts 2, a 1-point vector 1.
+        EXPECT_DOUBLE_EQ(double(weight[i]) / factor, item.points)
+            << what << ": " << item.title << " (" << count[i] << " values) weighs " << weight[i] << " of " << total;
+        // Shared out evenly: the values of an item differ by at most 1.
+        EXPECT_LE(most[i] - least[i], 1) << what << ": " << item.title;
+      }
+      ++questions;
+    }
+  EXPECT_EQ(questions, 32u);
+}
+
+TEST(MoodleBank, WeightsAreEqualWithinAnItemWhereASmallFactorAllowsIt) {
+  // The pipeline sheet: 16-value matrices at 2 and 1 points, 3- and 4-value vectors, single numbers.
+  const Built b = build({5, ExerciseTopic::pipeline, Projection::perspective}, "frank");
+  const std::vector<SubQuestion> subs = subQuestions(cdataText(b.xml, b.xml.find("type=\"cloze\""), b.xml.size()));
+  const std::vector<size_t> itemOf = itemOfEachValue(b);
+  ASSERT_EQ(subs.size(), itemOf.size());
+  std::map<size_t, std::set<int>> weights;
+  for (size_t k = 0; k < subs.size(); ++k) weights[itemOf[k]].insert(subs[k].weight);
+  for (const auto& [item, w] : weights) EXPECT_EQ(w.size(), 1u) << b.assignment.items[item].title;
+  // Small: the largest weight, a single number worth 1 point, is the factor itself.
+  int largest = 0;
+  for (const SubQuestion& q : subs) largest = std::max(largest, q.weight);
+  EXPECT_LE(largest, 240);
+}
+
+TEST(MoodleBank, TheWeightFactorIsTheLeastThatSharesEveryItemsPoints) {
+  // The factor: fractions and items worth nothing.
+  EXPECT_EQ(clozeWeightFactor({{2, 16}, {1, 3}, {1, 1}}), 24);  // 16/2 = 8 and 3: each value weighs 3, 8, 24
+  EXPECT_EQ(clozeWeightFactor({{0.5, 3}, {0, 7}, {1, 2}}), 6);  // 3/(1/2) = 6 and 2
+  EXPECT_EQ(clozeWeightFactor({{0, 3}}), 0);
+  // Beyond the cap (polygons of 28, 36, … values): the least factor giving every value a weight of 1.
+  EXPECT_EQ(clozeWeightFactor({{1, 28}, {1, 36}, {1, 32}, {1, 20}, {2, 21}}), 36);
+  EXPECT_THROW(clozeWeightFactor({{std::sqrt(2.0), 3}}), Error);
+}
+
+TEST(MoodleBank, BeyondTheCapEachItemStillWeighsItsPointsSpreadAsEvenlyAsIntegersAllow) {
+  Assignment a;
+  Json key;
+  const std::pair<const char*, std::pair<double, size_t>> items[] = {
+      {"a", {1, 28}}, {"b", {1, 36}}, {"c", {2, 21}}, {"d", {0, 5}}, {"e", {0.5, 4}}};
+  for (const auto& [name, pc] : items) {
+    a.items.push_back({std::string("/") + name, name, pc.first, true, {}});
+    for (size_t k = 0; k < pc.second; ++k) key[name].push_back(double(k) + 0.5);
+  }
+  const std::vector<ClozeValue> values = clozeValues(a, key, {}, Language::en);
+  ASSERT_EQ(values.size(), 28u + 36u + 21u + 4u);  // the item worth nothing is not asked
+  std::map<std::string, std::vector<int>> weights;
+  for (const ClozeValue& v : values) weights[v.item].push_back(v.weight);
+  // F = 36: the least that gives each of b's 36 values a weight of 1 (e's 1/2 point: F even).
+  EXPECT_EQ(std::accumulate(weights["/a"].begin(), weights["/a"].end(), 0), 36);
+  EXPECT_EQ(std::accumulate(weights["/b"].begin(), weights["/b"].end(), 0), 36);
+  EXPECT_EQ(std::accumulate(weights["/c"].begin(), weights["/c"].end(), 0), 72);
+  EXPECT_EQ(std::accumulate(weights["/e"].begin(), weights["/e"].end(), 0), 18);
+  EXPECT_EQ(weights["/a"].front(), 2);  // 36 over 28: eight 2s, then twenty 1s
+  EXPECT_EQ(weights["/a"].back(), 1);
+  EXPECT_EQ(weights.count("/d"), 0u);
+  for (const auto& [item, w] : weights) EXPECT_LE(*std::max_element(w.begin(), w.end()) - *std::min_element(w.begin(), w.end()), 1) << item;
+}
+
+/// The polygon Sutherland–Hodgman writes for `input` against `plane`, by the rule the bank states
+/// (its words, not the clipper's code): the edges from the closing one, Q_n → Q_1, on; entering: the
+/// intersection, then P; both inside: P; leaving: the intersection; a vertex on the plane is inside
+/// and not written twice.
+Json byTheStatedRule(const Json& input, int plane) {
+  auto bc = [&](const Json& q) {
+    const double x = q[0], y = q[1], z = q[2], w = q[3];
+    const double values[] = {x, w - x, y, w - y, z, w - z};
+    return values[plane];
+  };
+  auto cut = [&](const Json& in, const Json& out) {  // from the inside vertex
+    const double t = bc(in) / (bc(in) - bc(out));
+    Json v = Json::array();
+    for (int c = 0; c < 4; ++c) v.push_back(in[c].get<double>() + t * (out[c].get<double>() - in[c].get<double>()));
+    return v;
+  };
+  Json out = Json::array();
+  const size_t n = input.size();
+  for (size_t k = 0; k < n; ++k) {
+    const Json& S = input[(k + n - 1) % n];
+    const Json& P = input[k];
+    const bool sIn = bc(S) >= 0, pIn = bc(P) >= 0;
+    if (!sIn && pIn && bc(P) > 0) out.push_back(cut(P, S));
+    if (pIn) out.push_back(P);
+    if (sIn && !pIn && bc(S) > 0) out.push_back(cut(S, P));
+  }
+  return out;
+}
+
+bool sameVertices(const Json& a, const Json& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    for (size_t c = 0; c < a[i].size(); ++c)
+      if (std::abs(a[i][c].get<double>() - b[i][c].get<double>()) > 1e-6 * std::max(1.0, std::abs(b[i][c].get<double>())))
+        return false;
+  return true;
+}
+
+TEST(MoodleBank, PolygonItemsStateTheVertexOrderAndTheKeyFollowsIt) {
+  size_t polygons = 0;
+  for (const ExerciseSpec& spec : variants())
+    for (Language lang : {Language::en, Language::de}) {
+      const Built b = build(spec, "gina", lang);
+      const std::string what = std::string(toString(spec.topic)) + " seed " + std::to_string(spec.seed);
+      const size_t cloze = b.xml.find("type=\"cloze\"");
+      const std::string text = cdataText(b.xml, cloze, b.xml.size());
+      const std::string rule = lang == Language::en ? "Order of a polygon's vertices: the order Sutherland–Hodgman writes them."
+                                                    : "Reihenfolge der Eckpunkte eines Polygons: die, in der Sutherland–Hodgman sie ausgibt.";
+      const std::string closing = lang == Language::en ? "starting with the closing edge from the last vertex to the first"
+                                                       : "beginnend mit der schließenden Kante vom letzten zum ersten Punkt";
+      bool anyPolygon = false;
+      for (const AssignmentItem& item : b.assignment.items) {
+        const bool polygon = item.path.find("/clip_steps/") != std::string::npos || item.path.ends_with("/clipped_dc");
+        if (!polygon) continue;
+        anyPolygon = true;
+        ++polygons;
+        // Just above the item's first value: which vertex comes first and which way round.
+        const std::string row = "<tr><td>" + asHtml(item.title) + " [1][1]</td>";
+        const size_t at = text.find(row);
+        ASSERT_NE(at, std::string::npos) << what << ": " << item.title;
+        const size_t previous = text.rfind("<tr>", at - 1);
+        ASSERT_NE(previous, std::string::npos);
+        const std::string note = text.substr(previous, at - previous);
+        EXPECT_NE(note.find(lang == Language::en ? "Vertices in the order" : "Eckpunkte in der Reihenfolge"), std::string::npos)
+            << what << ": " << item.title << ": " << note;
+        EXPECT_NE(note.find(item.path.ends_with("/clipped_dc")
+                                ? (lang == Language::en ? "after the front plane (the same first vertex, the same direction)"
+                                                        : "nach der vorderen Ebene (derselbe erste Punkt, derselbe Umlaufsinn)")
+                                : (lang == Language::en ? "first the vertex it writes first, then on in the direction of"
+                                                        : "zuerst der Punkt, den er zuerst schreibt, dann weiter im Umlaufsinn")),
+                  std::string::npos)
+            << what << ": " << note;
+      }
+      const size_t ruleAt = text.find(rule);
+      EXPECT_EQ(ruleAt != std::string::npos, anyPolygon) << what;
+      EXPECT_EQ(text.find(closing) != std::string::npos, anyPolygon) << what;
+      if (!anyPolygon) continue;
+      // The rule comes before the answers it speaks of.
+      EXPECT_LT(ruleAt, text.find(":NUMERICAL:")) << what;
+      // And it is the key's order: each plane's polygon is what the stated rule writes from the one before.
+      const Json& poly = b.reference.at(Json::json_pointer("/objects/0/polygons/0"));
+      Json input = poly.at("npc_h");
+      for (int plane = 0; plane < 6; ++plane) {
+        const Json& key = poly.at("clip_steps").at(size_t(plane)).at("polygon");
+        EXPECT_TRUE(sameVertices(byTheStatedRule(input, plane), key)) << what << " plane " << plane;
+        input = key;
+      }
+      // The clipped polygon in DC: the front plane's, vertex for vertex, divided by w and mapped.
+      const Json& dc = poly.at("clipped_dc");
+      const Json& m = b.reference.at(Json::json_pointer("/matrices/dc_from_npc"));
+      ASSERT_EQ(dc.size(), input.size()) << what;
+      Json mapped = Json::array();
+      for (const Json& q : input) {
+        const double h[] = {q[0].get<double>() / q[3].get<double>(), q[1].get<double>() / q[3].get<double>(),
+                            q[2].get<double>() / q[3].get<double>(), 1};
+        Json v = Json::array();
+        for (int r = 0; r < 3; ++r) {
+          double sum = 0;
+          for (int c = 0; c < 4; ++c) sum += m[r][c].get<double>() * h[c];
+          v.push_back(sum);
+        }
+        mapped.push_back(v);
+      }
+      EXPECT_TRUE(sameVertices(mapped, dc)) << what << ": " << dc.dump() << " vs " << mapped.dump();
+    }
+  EXPECT_EQ(polygons, 4u * 7u * 2u);  // the clipping sheets' six passes and the polygon in DC, both languages
 }
 
 // ------------------------------------------------------------------ equally hard variants (part 3)
