@@ -7,6 +7,7 @@
 
 #include "app/export/svg.h"
 #include "app/render/headless.h"
+#include "app/views/observer.h"
 #include "pipeline/error.h"
 #include "course/rational.h"
 #include "io/scene_io.h"
@@ -542,6 +543,25 @@ ExerciseDocuments exerciseDocuments(const Exercise& exercise, const ExerciseSolu
   return {markdown(sheet), markdown(sol), boldToLatex(latex(sheet, lang)), boldToLatex(latex(sol, lang))};
 }
 
+RenderRequest exerciseFigureRequest(const Exercise& exercise, ViewKind view, Language lang) {
+  // Vector lines (hidden-line style, made on the CPU), printed: the light theme (white ground, the
+  // view volume thin and solid, the window thick and dashed, the polygon thick with its vertices named
+  // P1 … Pn), labels in the sheet's language and large enough to read at the figure's printed width.
+  RenderRequest request;
+  request.view = view;
+  request.style = Style::hiddenLine;
+  request.width = 800;
+  request.height = 600;
+  request.scale = kExerciseFigureScale;
+  DisplaySettings display = displaySettingsFor(exercise.scene, request.style, 4.0 / 3.0);
+  display.world.orbit = viewVolumeOrbit(exercise.scene, 4.0 / 3.0);
+  display.theme = Theme::light;
+  display.language = lang;
+  display.overlays.vertexNames = true;
+  request.display = display;
+  return request;
+}
+
 void writeExercise(const Exercise& exercise, Language lang, const std::filesystem::path& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
@@ -559,27 +579,13 @@ void writeExercise(const Exercise& exercise, Language lang, const std::filesyste
   const nlohmann::ordered_json reference = referenceAnswer(exercise.scene);
   writeText(prettyJson(answerTemplate(assignment, reference)) + "\n", dir / "answer.json");
   writeText(prettyJson(answerKey(assignment, reference)) + "\n", dir / "solution.json");
-  // The figures: the world view for the sheet, the NPC view for the solution, as vector lines
-  // (hidden-line style, made on the CPU) and as the same drawing in PNG for LaTeX.
-  // They print: the light theme (white ground, the view volume thin and solid, the window thick and
-  // dashed, the polygon thick with its vertices named P1 … Pn), labels in the sheet's language and
-  // large enough to read at the figure's printed width.
-  constexpr float kPrintScale = 1.5f;
+  // The figures: the world view for the sheet, the NPC view for the solution, as SVG and as the
+  // same drawing in PNG for LaTeX.
   auto context = createHeadlessContext(Backend::automatic, false);
-  ViewRenderer renderer(*context, kPrintScale);
+  ViewRenderer renderer(*context, kExerciseFigureScale);
   for (const auto& [view, name] : {std::pair{ViewKind::world, "world"}, std::pair{ViewKind::npc, "npc"}}) {
     if (view == ViewKind::npc && exercise.spec.topic == ExerciseTopic::orientation) continue;  // not in its solution
-    RenderRequest request;
-    request.view = view;
-    request.style = Style::hiddenLine;
-    request.width = 800;
-    request.height = 600;
-    request.scale = kPrintScale;
-    DisplaySettings display = displaySettingsFor(exercise.scene, request.style, 4.0 / 3.0);
-    display.theme = Theme::light;
-    display.language = lang;
-    display.overlays.vertexNames = true;
-    request.display = display;
+    const RenderRequest request = exerciseFigureRequest(exercise, view, lang);
     writeSvg(svgOfRequest(exercise.scene, request), dir / (std::string(name) + ".svg"));
     writePng(renderImage(renderer, exercise.scene, request), dir / (std::string(name) + ".png"));
   }

@@ -7,14 +7,14 @@
 // device mapping. Every number is the pipeline's own (course/exercise.h), printed as an exact
 // fraction where it is a small rational (course/rational.h), else rounded to 4 decimals.
 #pragma once
-#include "pipeline/language.h"
+#include "app/views/render_request.h"
 #include "course/exercise.h"
+#include "pipeline/language.h"
 
 #include <filesystem>
 #include <string>
 
 namespace vplab {
-
 
 struct ExerciseDocuments {
   std::string sheetMd, solutionMd, sheetTex, solutionTex;
@@ -23,6 +23,13 @@ struct ExerciseDocuments {
 /// The four documents; the figures they use are world.svg/world.png (the sheet) and npc.svg/npc.png
 /// (the solution) in the same folder.
 ExerciseDocuments exerciseDocuments(const Exercise& exercise, const ExerciseSolution& solution, Language lang);
+
+/// The figures' text, line and marker scale: labels readable at the figure's printed width.
+inline constexpr float kExerciseFigureScale = 1.5f;
+
+/// How a figure of the exercise is drawn: `view` (world: the sheet's; npc: the solution's) at
+/// 800 × 600 in the hidden-line style, the light theme, the sheet's language, the vertices named.
+RenderRequest exerciseFigureRequest(const Exercise& exercise, ViewKind view, Language lang);
 
 /// Writes sheet.md, solution.md, sheet.tex, solution.tex, scene.json (the exercise's scene, for
 /// `vplab dump` and `vplab grade`) and the figures (SVG on the CPU, PNG rendered headless) into

@@ -77,6 +77,42 @@ Orbit defaultWorldOrbit(const Scene& scene, double aspect) {
   return framed(o, points, aspect);
 }
 
+Orbit viewVolumeOrbit(const Scene& scene, double aspect) {
+  const Orbit standard = defaultWorldOrbit(scene, aspect);
+  if (cameraError(scene.camera)) return standard;
+  const std::vector<Vec3> points = worldPoints(scene);
+  const Mat4 wcFromNpc = glm::inverse(npcFromVrc(scene.camera) * vrcFromWc(scene.camera));
+  std::vector<Vec3> volume;
+  for (int i = 0; i < 8; ++i) {
+    const Vec4 p = wcFromNpc * Vec4(i & 1, (i >> 1) & 1, (i >> 2) & 1, 1.0);
+    if (p.w > 0) volume.push_back(Vec3(p) / p.w);
+  }
+  // The share of the view the volume's projection covers (its box, in the view's proportions).
+  auto volumeArea = [&](const Orbit& o) {
+    const Camera c = observerCamera(o, aspect);
+    const Mat4 npcFromWc = npcFromVrc(c) * vrcFromWc(c);
+    Vec2 lo(1e300), hi(-1e300);
+    for (const Vec3& p : volume) {
+      const Vec4 h = npcFromWc * Vec4(p, 1.0);
+      if (h.w <= 0) return 0.0;
+      lo = glm::min(lo, Vec2(h) / h.w), hi = glm::max(hi, Vec2(h) / h.w);
+    }
+    return (hi.x - lo.x) * (hi.y - lo.y);
+  };
+  // Still from the side and above (a view along N would hide the volume's depth): the standard
+  // angles turned by up to 25° either way, the pitch 18° to 40°.
+  Orbit best = standard;
+  double bestArea = volumeArea(standard);
+  for (double yaw : {-25.0, -15.0, 15.0, 25.0})
+    for (double pitch : {18.0, 28.0, 40.0}) {
+      Orbit o = standard;
+      o.yawDeg += yaw, o.pitchDeg = pitch;
+      o = framed(o, points, aspect);
+      if (const double area = volumeArea(o); area > bestArea) best = o, bestArea = area;
+    }
+  return best;
+}
+
 Orbit framed(Orbit o, const std::vector<Vec3>& points, double aspect, double fill) {
   if (points.empty()) return o;
   // Centre the points' projection and scale the distance until they fill the view (a few rounds,

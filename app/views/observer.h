@@ -24,6 +24,10 @@ Camera observerCamera(const Orbit& orbit, double aspect);
 /// An orbit that shows the scene camera's VRP, PRP, view volume and the objects, seen from the side
 /// and above, framed to fill a view of the given aspect ratio.
 Orbit defaultWorldOrbit(const Scene& scene, double aspect = 4.0 / 3.0);
+/// The default world orbit turned (its yaw by up to ±25°, its pitch 18° to 40°) to where the scene
+/// camera's view volume is drawn largest, everything still framed (the exercise sheets' figures,
+/// issue 38: the view volume is the subject).
+Orbit viewVolumeOrbit(const Scene& scene, double aspect = 4.0 / 3.0);
 /// The orbit moved and zoomed (its angles kept) so the points fill `fill` of a view of the given
 /// aspect ratio.
 Orbit framed(Orbit orbit, const std::vector<Vec3>& points, double aspect, double fill = 0.88);
