@@ -11,12 +11,24 @@ namespace vplab {
 
 namespace {
 
-Image flipped(const Image& src, bool vertically) {
-  Image out(src.width, src.height);
-  for (int y = 0; y < src.height; ++y)
-    for (int x = 0; x < src.width; ++x)
-      out.at(x, y) = vertically ? src.at(x, src.height - 1 - y) : src.at(src.width - 1 - x, y);
-  return out;
+// The pictures graded are compared row by row, never copied (issue 38: an 8K picture is 128 MiB):
+// the student's picture moved back by a shift, and the models' pictures that flip the reference,
+// are each made one row at a time into a row buffer.
+
+/// Row y of `student` moved back by `s` (unshifted's row): outside the student's picture, the reference's.
+void unshiftedRow(const Image& student, const Image& reference, ImageShift s, int y, std::vector<Rgba>& out) {
+  out.assign(reference.row(y), reference.row(y) + reference.width);
+  if (y + s.dy < 0 || y + s.dy >= student.height) return;
+  const Rgba* from = student.row(y + s.dy);
+  for (int x = std::max(0, -s.dx); x < std::min(reference.width, student.width - s.dx); ++x) out[size_t(x)] = from[x + s.dx];
+}
+
+/// Row y of the reference flipped upside down (vertically) or left to right.
+const Rgba* flippedRow(const Image& reference, bool vertically, int y, std::vector<Rgba>& buffer) {
+  if (vertically) return reference.row(reference.height - 1 - y);
+  buffer.assign(reference.row(y), reference.row(y) + reference.width);
+  std::reverse(buffer.begin(), buffer.end());
+  return buffer.data();
 }
 
 // The mean channel difference over the pixels both cover at the shift, on a grid of `stride`.
@@ -53,11 +65,12 @@ ImageShift bestShift(const Image& student, const Image& reference) {
 }
 
 Image unshifted(const Image& student, const Image& reference, ImageShift s) {
-  Image out = reference;
-  for (int y = 0; y < reference.height; ++y)
-    for (int x = 0; x < reference.width; ++x)
-      if (x + s.dx >= 0 && x + s.dx < student.width && y + s.dy >= 0 && y + s.dy < student.height)
-        out.at(x, y) = student.at(x + s.dx, y + s.dy);
+  Image out(reference.width, reference.height);
+  std::vector<Rgba> row;
+  for (int y = 0; y < reference.height; ++y) {
+    unshiftedRow(student, reference, s, y, row);
+    std::copy(row.begin(), row.end(), out.row(y));
+  }
   return out;
 }
 
@@ -76,30 +89,49 @@ ImageGrade gradeImage(ViewRenderer& renderer, const Scene& scene, const Image& s
   g.reference = renderImage(renderer, s, request);
   g.shift = bestShift(student, g.reference);
   g.shiftTolerated = std::abs(g.shift.dx) <= t.maxShift && std::abs(g.shift.dy) <= t.maxShift;
-  const Image compared = g.shiftTolerated && !(g.shift == ImageShift{}) ? unshifted(student, g.reference, g.shift) : student;
-  g.comparison = compareImages(compared, g.reference, t.maxDiff);
-  g.difference = differenceImage(compared, g.reference, t.maxDiff);
+  // The student's picture at a tolerated shift against the reference, and the difference picture,
+  // row by row.
+  const ImageShift back = g.shiftTolerated ? g.shift : ImageShift{};
+  const int w = g.reference.width, h = g.reference.height;
+  RowComparer rows(w, h, t.maxDiff);
+  g.difference = Image(w, h);
+  std::vector<Rgba> row;
+  for (int y = 0; y < h; ++y) {
+    unshiftedRow(student, g.reference, back, y, row);
+    rows.add(y, row.data(), g.reference.row(y));
+    differenceRow(row.data(), g.reference.row(y), w, t.maxDiff, g.difference.row(y));
+  }
+  g.comparison = std::move(rows).result();
   if (g.passed()) return g;
-  // Each model's picture is made, compared and dropped in turn: one picture beside the student's,
-  // the reference and the difference at a time (an 8K picture is 128 MiB).
+  // Each model's picture is compared row by row: the flipped references are never made whole, the
+  // divide-first raster is made, compared and dropped in turn.
   double best = 1e300;
   auto consider = [&](const char* key, const char* description, const char* hint, const char* descriptionDe,
-                      const char* hintDe, const Image& picture) {
+                      const char* hintDe, const auto& modelRow) {
     // A model whose picture looks like the reference cannot be told apart from a right answer.
-    if (t.passes(compareImages(picture, g.reference, t.maxDiff))) return;
-    ImageModelResult r{key, description, hint, descriptionDe, hintDe, compareImages(student, picture, t.maxDiff), false};
+    RowComparer asReference(w, h, t.maxDiff), asStudent(w, h, t.maxDiff);
+    for (int y = 0; y < h; ++y) {
+      const Rgba* m = modelRow(y);
+      asReference.add(y, m, g.reference.row(y));
+      asStudent.add(y, student.row(y), m);
+    }
+    if (t.passes(std::move(asReference).result())) return;
+    ImageModelResult r{key, description, hint, descriptionDe, hintDe, std::move(asStudent).result(), false};
     r.matches = t.passes(r.comparison);
     if (r.matches && r.comparison.meanChannelDelta < best) best = r.comparison.meanChannelDelta, g.mistake = g.models.size();
     g.models.push_back(std::move(r));
   };
+  std::vector<Rgba> flip;
   consider("upside-down", "the picture is upside down: y was not flipped (GL's window y points up, DC's down)",
            "lecture notes 15.2.5; read-back rows must be flipped",
            "das Bild steht auf dem Kopf: y wurde nicht gespiegelt (y im GL-Fenster zeigt nach oben, in DC nach unten)",
-           "Skript 15.2.5; zurückgelesene Zeilen müssen gespiegelt werden", flipped(g.reference, true));
+           "Skript 15.2.5; zurückgelesene Zeilen müssen gespiegelt werden",
+           [&](int y) { return flippedRow(g.reference, true, y, flip); });
   consider("mirrored", "the picture is mirrored left to right: x flipped (U = N × VUP instead of VUP × N, or x_dc = W·(1 − x))",
            "lecture notes 15.2.2 (U = VUP × N) and 15.2.5 (x_dc = W·x)",
            "das Bild ist links-rechts gespiegelt: x gespiegelt (U = N × VUP statt VUP × N, oder x_dc = W·(1 − x))",
-           "Skript 15.2.2 (U = VUP × N) und 15.2.5 (x_dc = W·x)", flipped(g.reference, false));
+           "Skript 15.2.2 (U = VUP × N) und 15.2.5 (x_dc = W·x)",
+           [&](int y) { return flippedRow(g.reference, false, y, flip); });
   if (view == ViewKind::camera && style == Style::flat) {
     PipelineOptions options;
     options.strategy = ClipStrategy::divideFirst;
@@ -107,7 +139,8 @@ ImageGrade gradeImage(ViewRenderer& renderer, const Scene& scene, const Image& s
              "Hill 7.4 and the divide-first demo (Clipping panel)",
              "vor dem Clipping durch w dividiert: was hinter dem Auge liegt, klappt ins Bild",
              "Hill 7.4 und die Vorführung im Clipping-Panel (Strategie „erst dividieren“)",
-             rasterizeClippedPolygons(runPipeline(s, options), s.background, s.device.width, s.device.height));
+             [picture = rasterizeClippedPolygons(runPipeline(s, options), s.background, s.device.width,
+                                                 s.device.height)](int y) { return picture.row(y); });
   }
   return g;
 }

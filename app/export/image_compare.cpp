@@ -28,31 +28,6 @@ std::string sizeText(int width, int height) { return std::to_string(width) + " Ã
 
 bool sameSize(const Image& a, const Image& b) { return a.width == b.width && a.height == b.height; }
 
-/// A differing pixel before it is expanded into a PixelDelta: its delta and row-major index.
-struct Candidate {
-  int delta;
-  size_t index;
-};
-
-/// Largest delta first; equal deltas in row-major order, so the report does not depend on the sort.
-bool worseThan(const Candidate& a, const Candidate& b) {
-  return a.delta != b.delta ? a.delta > b.delta : a.index < b.index;
-}
-
-std::vector<PixelDelta> worstPixels(std::vector<Candidate>& candidates, const Image& actual,
-                                    const Image& expected, size_t count) {
-  count = std::min(count, candidates.size());
-  std::partial_sort(candidates.begin(), candidates.begin() + std::ptrdiff_t(count), candidates.end(),
-                    worseThan);
-  std::vector<PixelDelta> worst;
-  for (size_t i = 0; i < count; ++i) {
-    const size_t index = candidates[i].index;
-    const int x = int(index % size_t(actual.width)), y = int(index / size_t(actual.width));
-    worst.push_back({x, y, actual.pixels[index], expected.pixels[index], candidates[i].delta});
-  }
-  return worst;
-}
-
 std::string colorText(const Rgba& c) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "(%d, %d, %d, %d)", c.r, c.g, c.b, c.a);
@@ -70,49 +45,70 @@ double luma(const Rgba& c) { return 0.299 * c.r + 0.587 * c.g + 0.114 * c.b; }
 
 }  // namespace
 
+RowComparer::RowComparer(int width, int height, int channelThreshold, size_t worstCount) : worstCount_(worstCount) {
+  c_.actualWidth = c_.expectedWidth = width;
+  c_.actualHeight = c_.expectedHeight = height;
+  c_.channelThreshold = channelThreshold;
+  c_.pixelCount = size_t(std::max(width, 0)) * size_t(std::max(height, 0));
+  worst_.reserve(worstCount + 1);
+}
+
+/// Largest delta first; equal deltas in row-major order, so the report does not depend on the sort.
+bool RowComparer::worseThan(const Candidate& a, const Candidate& b) {
+  return a.delta != b.delta ? a.delta > b.delta : a.index < b.index;
+}
+
+void RowComparer::add(int y, const Rgba* actual, const Rgba* expected) {
+  // The worst pixels kept in a heap of `worstCount` (its top the least bad kept): memory does not
+  // grow with the differing pixels (an 8K picture wholly different would take 1 GB as a list).
+  const size_t rowStart = size_t(y) * size_t(c_.actualWidth);
+  for (int x = 0; x < c_.actualWidth; ++x) {
+    const int delta = pixelDelta(actual[x], expected[x]);
+    deltaSum_ += uint64_t(channelDeltaSum(actual[x], expected[x]));
+    c_.maxChannelDelta = std::max(c_.maxChannelDelta, delta);
+    if (delta <= c_.channelThreshold) continue;
+    ++c_.differingPixels;
+    if (worstCount_ == 0) continue;
+    const Candidate candidate{delta, rowStart + size_t(x), actual[x], expected[x]};
+    if (worst_.size() < worstCount_) {
+      worst_.push_back(candidate);
+      std::push_heap(worst_.begin(), worst_.end(), worseThan);
+    } else if (worseThan(candidate, worst_.front())) {
+      std::pop_heap(worst_.begin(), worst_.end(), worseThan);
+      worst_.back() = candidate;
+      std::push_heap(worst_.begin(), worst_.end(), worseThan);
+    }
+  }
+}
+
+ImageComparison RowComparer::result() && {
+  if (c_.pixelCount > 0) {  // an empty image has no share and no mean, not NaN
+    c_.differingShare = double(c_.differingPixels) / double(c_.pixelCount);
+    c_.meanChannelDelta = double(deltaSum_) / (4.0 * double(c_.pixelCount));
+  }
+  std::sort(worst_.begin(), worst_.end(), worseThan);
+  for (const Candidate& w : worst_)
+    c_.worst.push_back({int(w.index % size_t(c_.actualWidth)), int(w.index / size_t(c_.actualWidth)), w.actual,
+                        w.expected, w.delta});
+  return std::move(c_);
+}
+
 ImageComparison compareImages(const Image& actual, const Image& expected, int channelThreshold,
                               size_t worstCount) {
-  ImageComparison c;
-  c.actualWidth = actual.width;
-  c.actualHeight = actual.height;
-  c.expectedWidth = expected.width;
-  c.expectedHeight = expected.height;
-  c.channelThreshold = channelThreshold;
   if (!sameSize(actual, expected)) {
+    ImageComparison c;
+    c.actualWidth = actual.width;
+    c.actualHeight = actual.height;
+    c.expectedWidth = expected.width;
+    c.expectedHeight = expected.height;
+    c.channelThreshold = channelThreshold;
     c.sizeMismatch = true;
     return c;
   }
-  c.pixelCount = actual.pixels.size();
-  // The worst pixels kept in a heap of `worstCount` (its top the least bad kept): memory does not
-  // grow with the differing pixels (an 8K picture wholly different would take 1 GB as a list).
-  std::vector<Candidate> worst;
-  worst.reserve(worstCount + 1);
-  uint64_t deltaSum = 0;
-  size_t differing = 0;
-  for (size_t i = 0; i < c.pixelCount; ++i) {
-    const int delta = pixelDelta(actual.pixels[i], expected.pixels[i]);
-    deltaSum += uint64_t(channelDeltaSum(actual.pixels[i], expected.pixels[i]));
-    c.maxChannelDelta = std::max(c.maxChannelDelta, delta);
-    if (delta <= channelThreshold) continue;
-    ++differing;
-    if (worstCount == 0) continue;
-    const Candidate candidate{delta, i};
-    if (worst.size() < worstCount) {
-      worst.push_back(candidate);
-      std::push_heap(worst.begin(), worst.end(), worseThan);
-    } else if (worseThan(candidate, worst.front())) {
-      std::pop_heap(worst.begin(), worst.end(), worseThan);
-      worst.back() = candidate;
-      std::push_heap(worst.begin(), worst.end(), worseThan);
-    }
-  }
-  c.differingPixels = differing;
-  if (c.pixelCount > 0) {  // an empty image has no share and no mean, not NaN
-    c.differingShare = double(c.differingPixels) / double(c.pixelCount);
-    c.meanChannelDelta = double(deltaSum) / (4.0 * double(c.pixelCount));
-  }
-  c.worst = worstPixels(worst, actual, expected, worstCount);
-  return c;
+  RowComparer rows(actual.width, actual.height, channelThreshold, worstCount);
+  for (int y = 0; y < actual.height; ++y)
+    rows.add(y, &actual.pixels[size_t(y) * size_t(actual.width)], &expected.pixels[size_t(y) * size_t(expected.width)]);
+  return std::move(rows).result();
 }
 
 std::string describe(const ImageComparison& c) {
@@ -134,23 +130,30 @@ std::string describe(const ImageComparison& c) {
   return text.str();
 }
 
+void differenceRow(const Rgba* actual, const Rgba* expected, int width, int channelThreshold, Rgba* out) {
+  for (int x = 0; x < width; ++x) {
+    const int delta = pixelDelta(actual[x], expected[x]);
+    if (delta > channelThreshold) {
+      // Magenta from 128 (the smallest delta) to 255 (delta 255): always brighter and more saturated
+      // than the grey below, whose channels stay under 86.
+      const auto level = uint8_t(128 + (127 * delta + 127) / 255);
+      out[x] = {level, 0, level, 255};
+    } else {
+      const auto grey = uint8_t(luma(expected[x]) / 3 + 0.5);
+      out[x] = {grey, grey, grey, 255};
+    }
+  }
+}
+
 Image differenceImage(const Image& actual, const Image& expected, int channelThreshold) {
   if (!sameSize(actual, expected))
     throw Error("cannot draw the difference of images of different sizes: actual " +
                 sizeText(actual.width, actual.height) + ", expected " +
                 sizeText(expected.width, expected.height));
   Image out(expected.width, expected.height);
-  for (size_t i = 0; i < out.pixels.size(); ++i) {
-    const int delta = pixelDelta(actual.pixels[i], expected.pixels[i]);
-    if (delta > channelThreshold) {
-      // Magenta from 128 (the smallest delta) to 255 (delta 255): always brighter and more saturated
-      // than the grey below, whose channels stay under 86.
-      const auto level = uint8_t(128 + (127 * delta + 127) / 255);
-      out.pixels[i] = {level, 0, level, 255};
-    } else {
-      const auto grey = uint8_t(luma(expected.pixels[i]) / 3 + 0.5);
-      out.pixels[i] = {grey, grey, grey, 255};
-    }
+  for (int y = 0; y < out.height; ++y) {
+    const size_t row = size_t(y) * size_t(out.width);
+    differenceRow(&actual.pixels[row], &expected.pixels[row], out.width, channelThreshold, &out.pixels[row]);
   }
   return out;
 }

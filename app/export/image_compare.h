@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,29 @@ struct ImageComparison {
   bool passed() const { return !sizeMismatch && differingPixels == 0; }
 };
 
+/// A comparison made row by row, for pictures too large to copy: `vplab grade image` compares the
+/// student's picture at a shift, and against the models' flipped pictures, one row at a time
+/// instead of making each picture (an 8K picture is 128 MiB). compareImages is this over every row.
+class RowComparer {
+ public:
+  RowComparer(int width, int height, int channelThreshold, size_t worstCount = 10);
+  /// Row y of both pictures, `width` pixels each; each row once, in any order.
+  void add(int y, const Rgba* actual, const Rgba* expected);
+  ImageComparison result() &&;
+
+ private:
+  struct Candidate {
+    int delta;
+    size_t index;
+    Rgba actual, expected;
+  };
+  static bool worseThan(const Candidate& a, const Candidate& b);
+  ImageComparison c_;
+  size_t worstCount_;
+  std::vector<Candidate> worst_;  // a heap, its top the least bad kept
+  uint64_t deltaSum_ = 0;
+};
+
 /// Compares channel by channel: r, g, b and a (alpha counts like any colour channel).
 /// A size mismatch is reported in the result (sizeMismatch), not thrown. Up to `worstCount`
 /// differing pixels are kept in `worst`.
@@ -52,6 +76,9 @@ ImageComparison compareImages(const Image& actual, const Image& expected, int ch
 /// A multi-line report: the counts, the share, max and mean delta and the worst pixels with
 /// coordinates and both colours; or both sizes when they differ.
 std::string describe(const ImageComparison& comparison);
+
+/// One row of the difference picture (differenceImage): `width` pixels into `out`.
+void differenceRow(const Rgba* actual, const Rgba* expected, int width, int channelThreshold, Rgba* out);
 
 /// A picture of where two images of the same size differ: pixels within the threshold as a dimmed
 /// grey version of `expected` (so the scene stays recognisable), differing pixels in magenta, the

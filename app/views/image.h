@@ -22,6 +22,8 @@ struct Image {
   Image(int w, int h, Rgba fill = {}) : width(w), height(h), pixels(size_t(w) * size_t(h), fill) {}
   Rgba& at(int x, int y) { return pixels[size_t(y) * size_t(width) + size_t(x)]; }
   const Rgba& at(int x, int y) const { return pixels[size_t(y) * size_t(width) + size_t(x)]; }
+  Rgba* row(int y) { return &pixels[size_t(y) * size_t(width)]; }
+  const Rgba* row(int y) const { return &pixels[size_t(y) * size_t(width)]; }
   bool empty() const { return pixels.empty(); }
 };
 

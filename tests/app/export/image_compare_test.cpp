@@ -108,6 +108,38 @@ TEST(ImageCompare, EqualDeltasAreListedInRowMajorOrder) {
   }
 }
 
+// Row by row (`vplab grade image`'s strips): the rows given in any order give what the whole
+// images give, the worst pixels with their colours and places included.
+TEST(ImageCompare, RowsInAnyOrderGiveTheWholeComparison) {
+  const Image expected = imageWith({{{1, 0}, {0, 0, 0, 255}}});
+  const Image actual = imageWith({{{0, 0}, {101, 100, 100, 255}},
+                                  {{1, 1}, {100, 150, 100, 255}},
+                                  {{2, 2}, {100, 100, 120, 255}},
+                                  {{3, 0}, {0, 100, 100, 255}},
+                                  {{0, 2}, {100, 100, 100, 250}}});
+  const ImageComparison whole = compareImages(actual, expected, 5, 3);
+  RowComparer rows(4, 3, 5, 3);
+  for (int y : {2, 0, 1}) rows.add(y, actual.row(y), expected.row(y));
+  const ImageComparison byRows = std::move(rows).result();
+  EXPECT_EQ(byRows.differingPixels, whole.differingPixels);
+  EXPECT_EQ(byRows.maxChannelDelta, whole.maxChannelDelta);
+  EXPECT_DOUBLE_EQ(byRows.meanChannelDelta, whole.meanChannelDelta);
+  EXPECT_DOUBLE_EQ(byRows.differingShare, whole.differingShare);
+  ASSERT_EQ(byRows.worst.size(), 3u);
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(byRows.worst[i].x, whole.worst[i].x) << i;
+    EXPECT_EQ(byRows.worst[i].y, whole.worst[i].y) << i;
+    EXPECT_EQ(byRows.worst[i].actual, whole.worst[i].actual) << i;
+    EXPECT_EQ(byRows.worst[i].expected, whole.worst[i].expected) << i;
+  }
+  // The expected values, counted by hand: (1, 0) black against grey (delta 100), (3, 0) 100, (1, 1) 50,
+  // (2, 2) 20; (0, 0) and (0, 2) within the threshold 5.
+  EXPECT_EQ(whole.differingPixels, 4u);
+  EXPECT_EQ(whole.worst[0].x, 1);
+  EXPECT_EQ(whole.worst[1].x, 3);
+  EXPECT_EQ(whole.worst[2].delta, 50);
+}
+
 TEST(ImageCompare, SizeMismatchIsReportedNotCompared) {
   const ImageComparison c = compareImages(Image(320, 240), Image(640, 480), 0);
   EXPECT_TRUE(c.sizeMismatch);
