@@ -253,7 +253,9 @@ ClassResult gradeClass(const ClassOptions& o) {
         row.status = "graded";
         row.passed = g.passed();
         row.points = g.points;
-        if (!row.passed && roster.students.size() <= kMaxVariantCheck) {
+        // Every answer short of full points (not only a failing one: follow-through can pass a copied
+        // variant, e.g. 7 of 9 on the clipping sheet) is checked for another student's values.
+        if (g.points < v.maxPoints && roster.students.size() <= kMaxVariantCheck) {
           size_t own = matchingValues(answer, v), best = own;
           for (size_t k = 0; k < variants.size(); ++k) {
             if (k == i) continue;
