@@ -61,6 +61,15 @@ Variant loadVariant(const std::filesystem::path& staff) {
   return v;
 }
 
+// An answer graded without follow-through: each item earns its points only when right.
+void gradeWithoutFollowThrough(NumbersGrade& g) {
+  g.points = 0;
+  for (ItemGrade& item : g.items) {
+    if (item.followsThrough) item.followsThrough = false, item.earned = 0;
+    g.points += item.earned;
+  }
+}
+
 /// How many of the answer's numbers under the assignment's items equal `reference`'s within the
 /// tolerance (grading.h's rule).
 size_t matchingValues(const Json& answer, const Variant& v) {
@@ -248,28 +257,36 @@ ClassResult gradeClass(const ClassOptions& o) {
         const std::string text =
             sub->second.text ? *sub->second.text : readRegularFile(sub->second.file, kMaxAnswerBytes, "student's answer file");
         const Json answer = parseAnswer(text, row.file);
-        const NumbersGrade g = gradeNumbers(answer, row.file, v.reference, v.assignment.tolerance, &v.assignment);
-        report = numbersReport(g, row.file, "scene.json", o.lang, o.reveal);
-        row.status = "graded";
-        row.passed = g.passed();
-        row.points = g.points;
+        NumbersGrade g = gradeNumbers(answer, row.file, v.reference, v.assignment.tolerance, &v.assignment);
         // Every answer short of full points (not only a failing one: follow-through can pass a copied
         // variant, e.g. 7 of 9 on the clipping sheet) is checked for another student's values.
         if (g.points < v.maxPoints && roster.students.size() <= kMaxVariantCheck) {
-          size_t own = matchingValues(answer, v), best = own;
+          size_t best = matchingValues(answer, v);
           for (size_t k = 0; k < variants.size(); ++k) {
             if (k == i) continue;
             const size_t m = matchingValues(answer, variants[k]);
             if (m > best) best = m, row.otherVariant = roster.students[k].id;
           }
-          if (!row.otherVariant.empty()) report.json["other_variant"] = row.otherVariant;
-          if (!row.otherVariant.empty())
-            report.diagnosis.insert(report.diagnosis.begin(),
-                                    std::string(inLanguage(o.lang, "The answer's values are those of the variant of ",
-                                                           "Die Werte der Antwort sind die der Variante von ")) +
-                                        row.otherVariant +
-                                        std::string(inLanguage(o.lang, ", not of the student's own: graded against the own variant.",
-                                                               ", nicht der eigenen: bewertet gegen die eigene Variante.")));
+        }
+        // Follow-through credits work done right on one's own wrong values; another student's values
+        // were not worked out from this student's data: only the items right for the own variant count.
+        if (!row.otherVariant.empty()) gradeWithoutFollowThrough(g);
+        report = numbersReport(g, row.file, "scene.json", o.lang, o.reveal);
+        row.status = "graded";
+        row.passed = g.passed();
+        row.points = g.points;
+        if (!row.otherVariant.empty()) {
+          report.json["other_variant"] = row.otherVariant;
+          report.diagnosis.insert(
+              report.diagnosis.begin(),
+              std::string(inLanguage(o.lang, "The answer's values are those of the variant of ",
+                                     "Die Werte der Antwort sind die der Variante von ")) +
+                  row.otherVariant +
+                  std::string(inLanguage(o.lang,
+                                         ", not of the student's own: graded against the own variant, without "
+                                         "follow-through (the values were not worked out from the own data).",
+                                         ", nicht der eigenen: bewertet gegen die eigene Variante, ohne Folgefehler "
+                                         "(die Werte sind nicht aus den eigenen Angaben berechnet).")));
         }
       } catch (const std::exception& e) {  // Error, or bad_alloc on a hostile file: this student's row only
         row.status = "could not be graded";
