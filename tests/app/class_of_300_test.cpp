@@ -30,6 +30,7 @@
 // figures are not what this test checks. Under the sanitizers (the ASan CI
 // stage, close to its time limit) the class is 40 instead of 300 (VPLAB_SANITIZED, tests/CMakeLists.txt).
 #include "course/roster.h"
+#include "tests/course/clip_oracle.h"
 #include "tests/support/files.h"
 #include "tests/support/process.h"
 
@@ -54,6 +55,12 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 using Ptr = Json::json_pointer;
+using test::boundary;
+using test::clipPass;
+using test::jsonOf;
+using test::needsCut;
+using test::P4;
+using test::Polygon;
 using test::readFile;
 using test::shellQuoted;
 
@@ -76,54 +83,12 @@ Json rowsOf(const glm::dmat4& m) {
   return out;
 }
 
-using P4 = std::array<double, 4>;
-using Polygon = std::vector<P4>;
-
-double boundary(const P4& p, int k) {  // ≥ 0 inside (0 ≤ x, y, z ≤ w): left, right, bottom, top, back, front
-  switch (k) {
-    case 0: return p[0];
-    case 1: return p[3] - p[0];
-    case 2: return p[1];
-    case 3: return p[3] - p[1];
-    case 4: return p[2];
-    default: return p[3] - p[2];
-  }
-}
 int outcodeOf(const P4& p) {
   int code = 0;
   for (int k = 0; k < 6; ++k) code |= boundary(p, k) < 0 ? 1 << k : 0;
   return code;
 }
-// One Sutherland–Hodgman pass: each edge a → b keeps b if inside, adds the crossing where it leaves or
-// enters (t = BC(a) / (BC(a) − BC(b))).
-Polygon clipPass(const Polygon& in, int k) {
-  Polygon out;
-  for (size_t i = 0; i < in.size(); ++i) {
-    const P4& a = in[(i + in.size() - 1) % in.size()];
-    const P4& b = in[i];
-    const double ba = boundary(a, k), bb = boundary(b, k);
-    if ((ba >= 0) != (bb >= 0)) {
-      const double t = ba / (ba - bb);
-      P4 c;
-      for (size_t j = 0; j < 4; ++j) c[j] = a[j] + t * (b[j] - a[j]);
-      out.push_back(c);
-    }
-    if (bb >= 0) out.push_back(b);
-  }
-  return out;
-}
-bool needsCut(const Polygon& p, int k) {
-  for (const P4& v : p)
-    if (boundary(v, k) < -1e-9 * std::max(1.0, std::abs(v[3]))) return true;
-  return false;
-}
 P4 p4Of(const glm::dvec4& v) { return {v.x, v.y, v.z, v.w}; }
-Json jsonOf(const P4& v) { return Json::array({v[0], v[1], v[2], v[3]}); }
-Json jsonOf(const Polygon& p) {
-  Json out = Json::array();
-  for (const P4& v : p) out.push_back(jsonOf(v));
-  return out;
-}
 
 struct Pipeline {
   glm::dmat4 wcFromMc{1}, vrcFromWc{1}, npcFromVrc{1}, dcFromNpc{1};

@@ -17,6 +17,7 @@
 #include "course/grading.h"
 #include "course/mistake_models.h"
 #include "course/sheet_values.h"
+#include "tests/course/clip_oracle.h"
 #include "tests/course/sheets.h"
 
 #include <gtest/gtest.h>
@@ -31,8 +32,14 @@ namespace vplab {
 namespace {
 
 using Json = nlohmann::ordered_json;
+using test::boundary;
+using test::clipPass;
 using test::describe;
 using test::itemAt;
+using test::jsonOf;
+using test::needsCut;
+using test::P4;
+using test::Polygon;
 using test::kPolygon;
 using test::Sheet;
 using test::sheetOf;
@@ -45,58 +52,12 @@ constexpr uint64_t kSheets = 100;
 constexpr uint64_t kSheets = 300;
 #endif
 
-// ---------------------------------------------------------------- the test's own clipper
-
-using P4 = std::array<double, 4>;
-using Polygon = std::vector<P4>;
-
-// Boundary coordinate of plane k (left, right, bottom, top, back, front): ≥ 0 inside (0 ≤ x, y, z ≤ w).
-double boundary(const P4& p, int k) {
-  switch (k) {
-    case 0: return p[0];
-    case 1: return p[3] - p[0];
-    case 2: return p[1];
-    case 3: return p[3] - p[1];
-    case 4: return p[2];
-    default: return p[3] - p[2];
-  }
-}
-
-// One Sutherland–Hodgman pass: each edge a → b keeps b if inside, adds the crossing where it leaves
-// or enters (t = BC(a) / (BC(a) − BC(b))).
-Polygon clipPass(const Polygon& in, int k) {
-  Polygon out;
-  for (size_t i = 0; i < in.size(); ++i) {
-    const P4& a = in[(i + in.size() - 1) % in.size()];
-    const P4& b = in[i];
-    const double ba = boundary(a, k), bb = boundary(b, k);
-    if ((ba >= 0) != (bb >= 0)) {
-      const double t = ba / (ba - bb);
-      P4 c;
-      for (int j = 0; j < 4; ++j) c[size_t(j)] = a[size_t(j)] + t * (b[size_t(j)] - a[size_t(j)]);
-      out.push_back(c);
-    }
-    if (bb >= 0) out.push_back(b);
-  }
-  return out;
-}
-
-// A vertex an earlier pass put on a plane is on it up to rounding (−4e-16): not outside.
-bool needsCut(const Polygon& p, int k) {
-  for (const P4& v : p)
-    if (boundary(v, k) < -1e-9 * std::max(1.0, std::abs(v[3]))) return true;
-  return false;
-}
+// ---------------------------------------------------------------- the test's own clipper (clip_oracle.h)
 
 Polygon polygonOf(const Json& j) {
   Polygon p;
   for (const Json& v : j) p.push_back({v[0].get<double>(), v[1].get<double>(), v[2].get<double>(), v[3].get<double>()});
   return p;
-}
-Json jsonOf(const Polygon& p) {
-  Json out = Json::array();
-  for (const P4& v : p) out.push_back(Json::array({v[0], v[1], v[2], v[3]}));
-  return out;
 }
 // DC of a homogeneous polygon with the sheet's dcFromNpc (rows as the answer writes them).
 Json dcOf(const Polygon& p, const Json& dcFromNpc) {
