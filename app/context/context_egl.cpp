@@ -90,6 +90,10 @@ class EglContext final : public GlContext {
 
   void makeCurrent() override {
     bindApi();  // EGL keeps a current context per API and thread: the calls below act on this one's
+    // Mesa's EGL skips a context it believes current, but OSMesa shares Mesa's dispatch (libglapi)
+    // and may have taken it since (issue 39: a process that used both drew with OSMesa's context):
+    // released first, the context is bound again for certain.
+    if (eglGetCurrentContext() == context_) eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) fail("eglMakeCurrent");
   }
 
