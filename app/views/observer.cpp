@@ -31,6 +31,19 @@ Camera observerCamera(const Orbit& o, double aspect) {
 
 namespace {
 
+// The view volume's corners in WC: the unit cube taken back from NPC (exact for every projection);
+// none for an invalid camera.
+std::vector<Vec3> viewVolumeCorners(const Camera& camera) {
+  std::vector<Vec3> corners;
+  if (cameraError(camera)) return corners;
+  const Mat4 wcFromNpc = glm::inverse(npcFromVrc(camera) * vrcFromWc(camera));
+  for (int i = 0; i < 8; ++i) {
+    const Vec4 p = wcFromNpc * Vec4(i & 1, (i >> 1) & 1, (i >> 2) & 1, 1.0);
+    if (p.w > 0) corners.push_back(Vec3(p) / p.w);
+  }
+  return corners;
+}
+
 // What the world view must show: VRP, PRP, the objects' boxes and the view volume's corners.
 std::vector<Vec3> worldPoints(const Scene& scene) {
   std::vector<Vec3> points{scene.camera.vrp, scene.camera.prp};
@@ -45,14 +58,8 @@ std::vector<Vec3> worldPoints(const Scene& scene) {
     else
       for (const Vec3& c : bounds(*o.mesh).corners()) points.push_back(transformAffine(m, c));
   }
-  // The view volume's corners: the unit cube taken back from NPC (exact for every projection).
-  if (!cameraError(scene.camera)) {
-    const Mat4 wcFromNpc = glm::inverse(npcFromVrc(scene.camera) * vrcFromWc(scene.camera));
-    for (int i = 0; i < 8; ++i) {
-      const Vec4 p = wcFromNpc * Vec4(i & 1, (i >> 1) & 1, (i >> 2) & 1, 1.0);
-      if (p.w > 0) points.push_back(Vec3(p) / p.w);
-    }
-  }
+  const std::vector<Vec3> volume = viewVolumeCorners(scene.camera);
+  points.insert(points.end(), volume.begin(), volume.end());
   return points;
 }
 
@@ -80,13 +87,7 @@ Orbit defaultWorldOrbit(const Scene& scene, double aspect) {
 Orbit viewVolumeOrbit(const Scene& scene, double aspect) {
   const Orbit standard = defaultWorldOrbit(scene, aspect);
   if (cameraError(scene.camera)) return standard;
-  const std::vector<Vec3> points = worldPoints(scene);
-  const Mat4 wcFromNpc = glm::inverse(npcFromVrc(scene.camera) * vrcFromWc(scene.camera));
-  std::vector<Vec3> volume;
-  for (int i = 0; i < 8; ++i) {
-    const Vec4 p = wcFromNpc * Vec4(i & 1, (i >> 1) & 1, (i >> 2) & 1, 1.0);
-    if (p.w > 0) volume.push_back(Vec3(p) / p.w);
-  }
+  const std::vector<Vec3> points = worldPoints(scene), volume = viewVolumeCorners(scene.camera);
   // The share of the view the volume's projection covers (its box, in the view's proportions).
   auto volumeArea = [&](const Orbit& o) {
     const Camera c = observerCamera(o, aspect);
