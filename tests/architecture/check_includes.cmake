@@ -1,4 +1,4 @@
-# The layers (README "Architecture", tests/architecture/layers.cmake): every directory of the sources
+# The layers (docs/architecture.md, tests/architecture/layers.cmake): every directory of the sources
 # may include only the project's directories its row of the table names, and GL, window and context
 # headers or Dear ImGui only where the row allows them. pipeline/ and app/views/ allow neither: they
 # never draw, open a window or a context, or touch the UI. This script fails when a file includes

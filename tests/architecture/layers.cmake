@@ -1,6 +1,7 @@
-# The layers (README "Architecture"): every directory of the sources and what its files may include,
+# The layers (docs/architecture.md): every directory of the sources and what its files may include,
 # the one table behind the include check (check_includes.cmake) and the layer table of
-# docs/architecture.md (check_includes.cmake -DPRINT=ON prints it; architecture.readme checks that page holds it).
+# docs/architecture.md (check_includes.cmake -DPRINT=ON prints it; architecture.readme checks that page holds
+# it).
 #
 #   layers            the directories, lowest first; "app" is app/'s own files (the command line),
 #                     not its subdirectories
