@@ -4,9 +4,9 @@
 For README.md and docs/*.md:
 
 - every relative link, [text](path), [text](path#anchor), ![alt](path) and <img src="path">, names a
-  file or directory that exists, and an #anchor a heading of that file (GitHub's anchors: the heading's
-  text lowercased, punctuation and symbols dropped but '-' and '_', letters of any script kept, each
-  space a '-', a repeated heading -1, -2, …) or an id="…" / name="…" in it;
+  file or directory of the repository that exists, and an #anchor a heading of that file (GitHub's
+  anchors: the heading's text as shown, lowercased, keeping letters of any script, marks, digits, '_',
+  '-' and spaces, each space a '-'; a repeated heading -1, -2, …) or an id="…" / name="…" in it;
 - every line of a fenced code block that runs `vplab …` (after an optional "$ ") names a subcommand that
   exists (`vplab [SUB…] --help` of the built vplab answers), uses only options that subcommand's --help
   lists, gives an option with a fixed set of values ({a,b} in the help) only those values and a number
@@ -46,15 +46,12 @@ def github_anchor(heading):
     text = re.sub(r"<[^>]+>", "", text)  # inline HTML shows nothing of its tags
     text = text.replace("`", "").replace("**", "").replace("__", "")
     text = re.sub(r"(?<!\w)[*_](\S.*?\S|\S)[*_](?!\w)", r"\1", text)  # *emphasis*, _emphasis_
-    out = []
-    for ch in text.lower():
-        cat = unicodedata.category(ch)
-        if ch in "-_" or ch == " ":
-            out.append(ch)
-        elif cat[0] in "LMN":  # letters (ä, ß, …), marks and digits stay
-            out.append(ch)
-        # punctuation (—, ., :, …), symbols (→, ×, …), other spaces and controls are dropped
-    return "".join(out).replace(" ", "-")
+    # GitHub keeps [\p{L}\p{M}\p{Nd}\p{Nl}\p{Pc}\- ]: letters of any script (ä, ß), marks, digits,
+    # connector punctuation ('_'), '-' and the space; other punctuation (—, ., :, “), symbols (→, ×),
+    # other numbers (², ½), other spaces and controls are dropped.
+    kept = "".join(ch for ch in text.lower()
+                   if ch in "- " or unicodedata.category(ch) in ("Nd", "Nl", "Pc") or unicodedata.category(ch)[0] in "LM")
+    return kept.replace(" ", "-")
 
 
 class Page:
