@@ -7,14 +7,16 @@ For README.md and docs/*.md:
   file or directory of the repository that exists, and an #anchor a heading of that file (GitHub's
   anchors: the heading's text as shown, lowercased, keeping letters of any script, marks, digits, '_',
   '-' and spaces, each space a '-'; a repeated heading -1, -2, …) or an id="…" / name="…" in it;
-- every line of a fenced code block that runs `vplab …` (after an optional "$ ") names a subcommand that
-  exists (`vplab [SUB…] --help` of the built vplab answers), uses only options that subcommand's --help
-  lists, gives an option with a fixed set of values ({a,b} in the help) only those values and a number
-  within the help's range [lo - hi], and, when it is a concrete line (no [ ] of a synopsis), names what
-  an option needs (Needs:), nothing it excludes (Excludes:) and every option the help calls required.
-  Indented lines that go on with [ or -- continue the synopsis line above them, as does a trailing \\.
-  Placeholders (FILE, DIR, N, WxH, …) and … stand for any value. vplab's parser has no dry run (the
-  options of `exercise` and `grade` run in CLI11's callbacks), so the lines are checked against --help.
+- every line of a fenced code block that runs `vplab …` (after an optional "$ "), and every inline code
+  span of the text that does, names a subcommand that exists (`vplab [SUB…] --help` of the built vplab
+  answers), uses only options that subcommand's --help lists, gives an option with a fixed set of values
+  ({a,b} in the help) only those values and a number within the help's range [lo - hi]; a line of a
+  code block that is a concrete command (no [ ] or | of a synopsis) also names what an option needs
+  (Needs:), nothing it excludes (Excludes:) and every option the help calls required (an inline span is
+  a mention: `vplab exercise` needs no --out). Indented lines that go on with [ or -- continue the
+  synopsis line above them, as does a trailing \\. Placeholders (FILE, DIR, N, WxH, …) and … stand for
+  any value. vplab has no dry run (`exercise` and `grade` run in their subcommands' callbacks while
+  CLI11 parses), so the lines are checked against --help, not run.
 - every line of a fenced code block that runs `scripts/…` names an executable script of the tree;
   scripts/run.sh's arguments go to vplab and are checked as `vplab …`'s.
 
@@ -37,6 +39,7 @@ LINK = re.compile(r"\]\(\s*<?([^)\s>]+)>?(?:\s+\"[^\"]*\")?\s*\)")
 IMG_SRC = re.compile(r"<(?:img|a)\b[^>]*?\b(?:src|href)\s*=\s*\"([^\"]+)\"", re.I)
 HTML_ID = re.compile(r"\b(?:id|name)\s*=\s*\"([^\"]+)\"", re.I)
 OPTION = re.compile(r"(?<![\w/.=-])(--?[A-Za-z][\w-]*)")
+INLINE_VPLAB = re.compile(r"(?<!`)`(?:\$ )?(vplab [^`]*)`(?!`)")  # `vplab render --theme light` in the text
 PLACEHOLDER = re.compile(r"[A-Z]")  # FILE, DIR, N, WxH, FILE.png, ROSTER.csv: a value the reader chooses
 
 
@@ -266,37 +269,40 @@ def check_vplab(words, vplab, where, findings, concrete):
 
 
 def commands(page):
-    """(line number, command text) of every vplab or scripts/ line in the page's fenced code."""
+    """(line number, command text, inline?) of every vplab or scripts/ line in the page's fenced code, and of
+    every inline code span of the text that is a vplab command (a mention: `vplab exercise` needs no --out)."""
     out = []
     last = None
     for n, (line, code) in enumerate(zip(page.lines, page.in_code), 1):
+        if not code:
+            out.extend((n, m.group(1).strip(), True) for m in INLINE_VPLAB.finditer(line))
         if not code or FENCE.match(line):
             last = None
             continue
         body = re.split(r"\s#(?:\s|$)", line, maxsplit=1)[0].rstrip()  # a shell comment after the command
         stripped = body.strip()
         if last is not None and line[:1] in (" ", "\t") and (stripped.startswith("[") or stripped.startswith("-")):
-            out[last] = (out[last][0], out[last][1] + " " + stripped)
+            out[last] = (out[last][0], out[last][1] + " " + stripped, False)
             continue
         if last is not None and out[last][1].endswith("\\"):
-            out[last] = (out[last][0], out[last][1][:-1] + " " + stripped)
+            out[last] = (out[last][0], out[last][1][:-1] + " " + stripped, False)
             continue
         last = None
         if stripped.startswith("$ "):
             stripped = stripped[2:].lstrip()
         if stripped == "vplab" or stripped.startswith("vplab ") or stripped.startswith("scripts/"):
-            out.append((n, stripped))
+            out.append((n, stripped, False))
             last = len(out) - 1
     return out
 
 
 def check_commands(root, page, vplab, findings):
     count = 0
-    for n, cmd in commands(page):
+    for n, cmd, inline in commands(page):
         where = "%s:%d" % (os.path.relpath(page.path, root), n)
         words = cmd.split()
         count += 1
-        concrete = "[" not in cmd and "|" not in cmd
+        concrete = not inline and "[" not in cmd and "|" not in cmd
         if words[0] == "vplab":
             check_vplab(words[1:], vplab, where, findings, concrete)
         else:
@@ -318,11 +324,9 @@ def check(root, vplab):
     links = 0
     commands_checked = 0
     for f in files:
-        before = len(findings)
         check_links(root, pages[f], pages, findings)
         links += len(LINK.findall(pages[f].prose())) + len(IMG_SRC.findall(pages[f].prose()))
         commands_checked += check_commands(root, pages[f], vplab, findings)
-        del before
     return findings, len(files), links, commands_checked
 
 
@@ -330,7 +334,7 @@ SAMPLE_README = """# Sample — a title with `code` and “quotes”
 
 See [the page](docs/page.md), [its part](docs/page.md#größe-und-maße), [a lost page](docs/lost.md),
 [a lost part](docs/page.md#no-such-part), [here](#sample--a-title-with-code-and-quotes) and
-![a lost picture](docs/images/lost.png).
+![a lost picture](docs/images/lost.png). `vplab render --theme light` is fine, `vplab render --them dark` not, `vplab exercise` is a mention.
 
 ```sh
 scripts/run.sh --scene assets/x.json
@@ -357,6 +361,7 @@ EXPECTED = [
     ("README.md:3", "docs/lost.md: no such file"),
     ("README.md:4", "#no-such-part"),
     ("README.md:5", "docs/images/lost.png: no such file"),
+    ("README.md:5", "has no option --them"),
     ("README.md:9", "scripts/lost.sh: no such script"),
     ("README.md:11", "nowhere: not one of"),
     ("README.md:12", "has no option --no-such-option"),
