@@ -152,7 +152,7 @@ struct RenderOptions {
   bool glDebug = false;
   bool styleGiven = false;
   std::vector<std::string> tabs;  // --view ui: the panels' tabs to show
-  std::string lesson;             // every step of a lesson (README "Lessons"), into the directory --out
+  std::string lesson;             // a lesson's steps (docs/lecturers.md "Lessons"), into the directory --out
   std::string format = "png";     // of a lesson's stills
   bool animate = false;           // a lesson's moves or the stage morph as an animated GIF
   int fps = 15;
@@ -486,9 +486,9 @@ int runCommandLine(int argc, char** argv) {
                                 ->check(CLI::ExistingFile)
                                 ->excludes(sceneOption);
   CLI::Option* lessonOption =
-      app.add_option("--lesson", viewer.lesson, "A lesson to present (README \"Lessons\"): a file, or a bundled one by its "
-                                                "name (`vplab lessons` lists them); its steps with captions, advanced with "
-                                                "→ / Space / Page Down")
+      app.add_option("--lesson", viewer.lesson, "A lesson to present (docs/lecturers.md \"Lessons\"): a file, or a "
+                                                "bundled one by its name (`vplab lessons` lists them); its steps with "
+                                                "captions, advanced with → / Space / Page Down")
           ->excludes(sceneOption)
           ->excludes(fileOption);
   app.add_option("--step", viewer.step, "The lesson's step to open, from 1 (default 1)")

@@ -7,7 +7,7 @@
 //     "vplab_assignment": 1,
 //     "title": "The viewing pipeline, perspective, sheet 3",
 //     "scene": "scene.json",          the scene, relative to the assignment's folder
-//     "tolerance": 0.001,             optional (README "For course staff")
+//     "tolerance": 0.001,             optional (docs/course-staff.md)
 //     "row_vector_form": "accepted",  optional: "accepted" (the default) or "wrong" (issue 38)
 //     "pass_mark": 7.5,               optional: passed with at least these points; without it, passed
 //                                     when every value given is right and every required item given

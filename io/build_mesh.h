@@ -1,5 +1,5 @@
 // Building a scene object's mesh from what a file asked for: a primitive, or faces read from an OBJ
-// file. A file is input an attacker may have written (README "Reliability"), so every size is checked
+// file. A file is input an attacker may have written (docs/reliability.md), so every size is checked
 // against the limits (io/limits.h) before the memory for it is allocated.
 #pragma once
 

@@ -1,4 +1,4 @@
-// `vplab dump`: a pipeline run as JSON, a contract other tools rely on (README "vplab dump").
+// `vplab dump`: a pipeline run as JSON, a contract other tools rely on (docs/formats.md "vplab dump").
 // Matrices are arrays of 4 rows for column vectors (p' = M · p).
 #pragma once
 

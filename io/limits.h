@@ -1,4 +1,4 @@
-// Resource limits for what a scene or OBJ file may ask for (README "Reliability"). A file is input
+// Resource limits for what a scene or OBJ file may ask for (docs/reliability.md). A file is input
 // an attacker may have written: every size it implies is checked against these limits BEFORE the
 // memory for it is allocated, and exceeding one is an error naming the limit and the value.
 //

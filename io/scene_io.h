@@ -1,4 +1,4 @@
-// Scene files (JSON), a contract other tools rely on (README "Scene format"):
+// Scene files (JSON), a contract other tools rely on (docs/formats.md "Scene format"):
 //
 //   { "title": "…", "caption": "…",                      (optional: a preset's name and idea)
 //     "camera": { "vrp": [x,y,z], "prp": [x,y,z], "vup": [x,y,z],
@@ -41,8 +41,8 @@ namespace vplab {
 Scene loadScene(const std::filesystem::path& file, const Limits& limits = kDefaultLimits);
 
 /// Meshes built elsewhere from the same scene text, one per object in order: the page builds a
-/// large scene's meshes in a Web Worker (README "Large scenes in the page") and reads the text again
-/// on its own thread with them.
+/// large scene's meshes in a Web Worker (docs/measured.md "Large scenes in the page") and reads the text
+/// again on its own thread with them.
 using BuiltMeshes = std::vector<std::shared_ptr<const Mesh>>;
 
 /// The same for JSON text; `source` names it in messages, `baseDir` resolves mesh files. With

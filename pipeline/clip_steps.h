@@ -1,7 +1,7 @@
-// Sutherland–Hodgman one plane at a time, for the clipping step-through (README "Lecture
-// features"): the polygon entering each plane's pass, every vertex's boundary coordinate for that
-// plane (Hill 7.4), the polygon leaving it and which of its vertices the pass created. Uses the
-// very kernel the pipeline clips with, so the last step equals the clipper's output.
+// Sutherland–Hodgman one plane at a time, for the clipping step-through (docs/lecturers.md
+// "The viewer": lecture features): the polygon entering each plane's pass, every vertex's boundary
+// coordinate for that plane (Hill 7.4), the polygon leaving it and which of its vertices the pass
+// created. Uses the very kernel the pipeline clips with, so the last step equals the clipper's output.
 #pragma once
 
 #include "pipeline/pipeline.h"

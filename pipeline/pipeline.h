@@ -159,7 +159,7 @@ struct PipelineRun {
 };
 
 /// The five stages run in steps, so that a page with no threads can run a large scene across frames
-/// (README "Large scenes in the page"): each step does about `budget` units of work (a vertex, a
+/// (docs/measured.md "Large scenes in the page"): each step does about `budget` units of work (a vertex, a
 /// face or an edge each), and the run's results equal runPipeline's bit for bit however it was cut.
 /// `run` must outlive the job (the scene need not: the run holds its meshes); `run` is complete only when step returns true (until then
 /// it is half old, half new: not to be shown). A job dropped before it is done leaves `run` fit to be

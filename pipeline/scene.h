@@ -76,7 +76,7 @@ std::shared_ptr<const Mesh> primitiveMesh(const SceneObject& object);
 /// naming the values; nullopt when it can.
 std::optional<std::string> sceneError(const Scene& scene);
 
-/// The words a viewer shows in `lang` (README "Scene format": a scene speaks the lecture's German
+/// The words a viewer shows in `lang` (docs/formats.md "Scene format": a scene speaks the lecture's German
 /// beside its own language): the German ones when asked for and given, else those as written.
 const std::string& titleIn(const Scene& scene, Language lang);
 const std::string& captionIn(const Scene& scene, Language lang);

@@ -1,5 +1,5 @@
-// The stage morph (README "Lecture features"): one slider t from 0 to 4 moves a vertex through the
-// stages, interpolating between neighbouring ones:
+// The stage morph (docs/lecturers.md "The viewer": lecture features): one slider t from 0 to 4 moves a vertex
+// through the stages, interpolating between neighbouring ones:
 //   t = 0 MC → 1 WC → 2 VRC → 2.5 homogeneous NPC (before the division, drawn as its x, y, z)
 //     → 3 NPC (after the division) → 4 DC
 // The division by w is its own step (2.5 → 3): x, y, z are divided by a w that grows linearly from

@@ -93,7 +93,7 @@ def man_page(exe, found):
               "The bundled lessons in German and English (\\fBvplab lessons\\fR lists them; \\fBvplab --lesson\\fR \\fINAME\\fR presents one).",
               ".TP", ".I $XDG_STATE_HOME/vplab", "Autosaved unsaved changes, offered back after a crash.",
               ".SH EXIT STATUS", "0 on success, 1 on an error (named on standard error), 2 on a usage error.",
-              ".SH SEE ALSO", "The README and CHANGELOG.md of vplab's sources."]
+              ".SH SEE ALSO", "The README, the pages of docs/ and CHANGELOG.md of vplab's sources."]
     return "\n".join(lines) + "\n"
 
 

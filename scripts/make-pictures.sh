@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Renders the README's pictures into docs/images/ with the built vplab (run scripts/setup.sh first).
+# Renders the pictures of the README and of docs/ into docs/images/ with the built vplab (run
+# scripts/setup.sh first).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 vplab="${VPLAB:-$root/build/vplab}"

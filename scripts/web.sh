@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Builds vplab for the web into build-web/ (README "In the browser"): index.html, vplab.js,
-# vplab.wasm and vplab.data (the bundled scenes and meshes). Installs what it needs from Debian's
+# Builds vplab for the web into build-web/ (docs/course-staff.md "The page on a course page"): index.html,
+# vplab.js, vplab.wasm and vplab.data (the bundled scenes and meshes). Installs what it needs from Debian's
 # packages (emscripten, and what the desktop build's setup installs for the headers), as
 # scripts/setup.sh does, and takes Dear ImGui's sources from Debian's source package of the version
 # the desktop links (1.86), with a private sources list: nothing in /etc changes, nothing else is

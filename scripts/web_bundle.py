@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""The web bundle for course pages (README "In the browser"): build-web/vplab-web-VERSION.zip.
+"""The web bundle for course pages (docs/course-staff.md "The page on a course page"):
+build-web/vplab-web-VERSION.zip.
 
 It holds the page's eight files in a folder vplab-web-VERSION/, each with a gzip copy (.gz) and,
 where Debian's `brotli` is installed, a Brotli copy (.br), for servers that send precompressed files,

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The page's texts for its JavaScript (README "German and English"), made at build time.
+"""The page's texts for its JavaScript (docs/lecturers.md "German and English"), made at build time.
 
 app/text/page.inc is the one list of the page's texts in English and German (C++ reads it through
 app/text/catalogue.h). index.html shows texts before the WebAssembly has loaded (loading, a browser

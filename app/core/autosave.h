@@ -1,5 +1,5 @@
-// Autosave and crash recovery (README "The viewer", "No lost work"): a few seconds after the open
-// scene last changed, and at once when the process is asked to end (SIGTERM, SIGINT) with unsaved
+// Autosave and crash recovery (docs/lecturers.md "The viewer": documents and saving): a few seconds after the
+// open scene last changed, and at once when the process is asked to end (SIGTERM, SIGINT) with unsaved
 // changes, the scene is written atomically to the user's state directory
 // ($XDG_STATE_HOME/vplab, by default ~/.local/state/vplab) as recovery-PID.json. A session that
 // ends normally (quit, saved or discarded) removes its file; so a file whose process is gone was

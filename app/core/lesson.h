@@ -1,5 +1,5 @@
-// A lesson (README "Lessons"): the lecture as an ordered set of steps, each a state of the lab with
-// a caption, that a lecturer advances with a key or a clicker and a student walks through alone.
+// A lesson (docs/lecturers.md "Lessons"): the lecture as an ordered set of steps, each a state of the lab
+// with a caption, that a lecturer advances with a key or a clicker and a student walks through alone.
 //
 // A lesson is a JSON file a lecturer writes in an editor, read as strictly as a scene (io/scene_io.h):
 //

@@ -1,4 +1,4 @@
-// Presenting a lesson (README "Lessons"): which step is shown, and the move into it. The viewer
+// Presenting a lesson (docs/lecturers.md "Lessons"): which step is shown, and the move into it. The viewer
 // (app/ui/lesson_presenter.h) asks for the state to show each frame and applies it; this holds no
 // UI and no clock of its own (times are the caller's, in seconds).
 #pragma once

@@ -1,4 +1,4 @@
-// The CPU pipeline on a worker thread (README "The viewer": the window never waits for the
+// The CPU pipeline on a worker thread (docs/lecturers.md "The viewer": the window never waits for the
 // pipeline). A run of the 1M-triangle sphere takes 0.15–0.2 s; in the window's thread every drag of
 // a camera field would pause the lecture for that long. The window asks for a run of the shown
 // scene and goes on drawing the last run's views; the run arrives a few frames later. The latest

@@ -1,5 +1,5 @@
-// The user's preferences that outlive a session (README "German and English"): the language chosen in
-// View ▸ Language. A small JSON file in the XDG configuration directory
+// The user's preferences that outlive a session (docs/lecturers.md "German and English"): the language chosen
+// in View ▸ Language. A small JSON file in the XDG configuration directory
 // ($XDG_CONFIG_HOME/vplab/preferences.json, by default ~/.config/vplab/preferences.json), written
 // atomically; the page keeps the same in localStorage (app/web/page.cpp).
 //

@@ -42,8 +42,8 @@ struct UrlState {
   /// The embed form (`#embed=camera,world&lesson=…`): only these views and a lesson's caption, for a
   /// course page's figure. Empty: the whole lab.
   std::vector<ViewKind> embed;
-  /// A bundled lesson (README "Lessons") by its name ("02-view-orientation", in the page's language,
-  /// or "02-view-orientation.de") and its step from 1 (0: not given, the first). A lesson's step
+  /// A bundled lesson (docs/lecturers.md "Lessons") by its name ("02-view-orientation", in the page's
+  /// language, or "02-view-orientation.de") and its step from 1 (0: not given, the first). A lesson's step
   /// is the whole state: a link to one carries nothing else.
   std::string lesson;
   size_t step = 0;

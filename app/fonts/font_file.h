@@ -1,5 +1,5 @@
 // The one font of vplab's text, the views' labels and the viewer's panels alike, and the glyphs
-// taken from it (README "The viewer"; the page preloads the same file, app/web/CMakeLists.txt).
+// taken from it (docs/lecturers.md "The viewer"; the page preloads the same file, app/web/CMakeLists.txt).
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,5 @@
-// Lessons leave the room (README "Lessons"): `vplab render --lesson FILE --out DIR` writes every step
-// as a picture with its caption (PNG or SVG) and a Markdown index, so that slides and the course page
+// Lessons leave the room (docs/lecturers.md "Lessons"): `vplab render --lesson FILE --out DIR` writes every
+// step as a picture with its caption (PNG or SVG) and a Markdown index, so that slides and the course page
 // come from the same file; `--animate --out x.gif` writes the moves between the steps as an animation,
 // and `render --view morph --animate` the stage morph.
 //

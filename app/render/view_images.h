@@ -1,5 +1,5 @@
-// The views' images (README "The viewer"): one render target per view, drawn again only when what it
-// shows changed (its stamp), either in the frame that needs it or, with a render thread
+// The views' images (docs/lecturers.md "The viewer"): one render target per view, drawn again only when what
+// it shows changed (its stamp), either in the frame that needs it or, with a render thread
 // (app/render/view_worker.h), while the window goes on drawing its panels. Both paths draw through
 // one function, drawViewInto. A view of a million triangles takes seconds on a software renderer: the
 // window draws frames for any input (hover, ImGui settling) and must not draw the view each time.
@@ -56,7 +56,8 @@ struct SlicePacing {
   /// The frame time slices aim at. SwiftShader runs the draw calls after the frame that made them,
   /// and the frame after waits for them, so a slice's cost shows in the next frame's time. (Aiming at
   /// 55-85 ms and growing only after two fast frames in a row gave as long a longest frame on
-  /// large-mesh, and views complete in 25-30 s instead of 12-24: README "Large scenes in the page".)
+  /// large-mesh, and views complete in 25-30 s instead of 12-24: docs/measured.md "Large scenes in the
+  /// page".)
   static constexpr double kAimSeconds = 0.05, kMostSeconds = 0.1;
   /// SwiftShader draws about 400 000 triangles a second (three views of a million in 7 s): 10 000
   /// take it some 25 ms, so even a slow machine's frames keep a view filling in.

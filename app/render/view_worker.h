@@ -1,4 +1,4 @@
-// The views drawn on a render thread (README "The viewer": the window never waits for a view;
+// The views drawn on a render thread (docs/lecturers.md "The viewer": the window never waits for a view;
 // app/render/view_images.h decides what is drawn where). A view of a million triangles takes seconds
 // on a software renderer; meanwhile the window keeps drawing its panels and shows the view's last finished image with a busy mark. The thread has its
 // own GL context sharing the window's textures (GlContext::createShared); the ViewRenderer, whose

@@ -1,5 +1,5 @@
 // The catalogue: every text vplab shows a user (menus, panels, the views' labels, messages, help, the
-// page), in English and in the lecture's German, in one place (README "German and English").
+// page), in English and in the lecture's German, in one place (docs/lecturers.md "German and English").
 //
 // A text is named by its English, as gettext names it by its msgid, so the code reads as the window
 // does: ui::tr(s, "Undo"). The name is looked up while compiling (Text's constructor is consteval):

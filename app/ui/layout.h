@@ -1,7 +1,7 @@
 // Where the viewer's windows go on a display: controls on the left, the world and camera views
 // above, the NPC view and the inspector below. Fits a 1280 × 720 projector and laptop screens; the
 // user may move and resize them, and the layout is computed again when the display changes size.
-// A phone's screen cannot hold that (README "In the browser"): there the compact layout shows one
+// A phone's screen cannot hold that (docs/students.md "In the browser"): there the compact layout shows one
 // view at a time, a switcher at the bottom, and one panel below the view (upright) or beside it.
 #pragma once
 

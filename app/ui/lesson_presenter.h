@@ -1,4 +1,4 @@
-// Presenting a lesson in the viewer (README "Lessons"): the keys a lecturer and a presentation
+// Presenting a lesson in the viewer (docs/lecturers.md "Lessons"): the keys a lecturer and a presentation
 // clicker use, the move into a step applied frame by frame, the caption box, and the step's
 // highlights in the views. The lesson itself and its moves are GL- and UI-free
 // (app/core/lesson_player.h); this applies them to the ViewerState.

@@ -1,4 +1,4 @@
-// The viewer's menus (File, Edit, Help), its keys (README "The viewer": F1 lists them), the help
+// The viewer's menus (File, Edit, Help), its keys (docs/lecturers.md "The viewer": F1 lists them), the help
 // window and File > Export a view. What they do goes to the session (open, save, quit's questions)
 // or into the ViewerState (styles, projection, strategy, a screenshot asked for); nothing here draws
 // a view.

@@ -1,4 +1,4 @@
-// The viewer's panels, one function each (README "The viewer"). They edit the document's scene and
+// The viewer's panels, one function each (docs/lecturers.md "The viewer"). They edit the document's scene and
 // the view settings in place; the viewer records every change for undo.
 #pragma once
 

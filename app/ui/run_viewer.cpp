@@ -251,7 +251,7 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
     const bool quitting = viewer.shouldQuit() || scripted;
     const bool shot = viewer.screenshotRequested() || (quitting && !launch.screenshotOnQuit.empty());
     // A screenshot is of what the user asked to see, and a scripted end shows it too: both wait until
-    // every shown view has its current image (README "The viewer", issue 19).
+    // every shown view has its current image (docs/lecturers.md "The viewer", issue 19).
     if (shot || scripted) {
       if (const std::vector<ViewKind> late = viewer.viewsNotReady(); !late.empty()) {
         if (waitingSince < 0) waitingSince = glfwGetTime();

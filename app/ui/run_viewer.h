@@ -25,7 +25,7 @@ using ViewerDriver = std::function<bool(Viewer&, InputQueue&, GlfwWindow&, doubl
 
 struct ViewerLaunch {
   Scene scene;
-  std::string lesson;               // a lesson file to present (README "Lessons"), or empty
+  std::string lesson;               // a lesson file to present (docs/lecturers.md "Lessons"), or empty
   size_t lessonStep = 0;            // its step to open, from 0
   int width = 1280, height = 720;   // the window, in screen units
   float uiScale = 1.f;              // larger fonts and handles for projectors

@@ -1,4 +1,4 @@
-// The document's life beyond editing (README "The viewer"): opening a scene (read on a worker
+// The document's life beyond editing (docs/lecturers.md "The viewer"): opening a scene (read on a worker
 // thread, with progress and Cancel) or adding an OBJ, saving (never over a scene shipped with
 // vplab), autosave and recovery after a crash, links (app/core/url_state.h), and asking before
 // unsaved changes are lost. The viewer composes the frame; this owns what happens to the file.
@@ -45,11 +45,11 @@ class Session {
   void unlessUnsaved(std::function<void()> action);
   /// A new document (opened, preset, New, recovered): clean unless recovered, no undo history, and
   /// the view settings of a fresh start (a style chosen for the old scene, e.g. hidden-line, may be
-  /// far too slow for the new one; README "The viewer").
+  /// far too slow for the new one; docs/lecturers.md "The viewer").
   void startDocument(Scene scene, bool dirty = false);
 
-  /// Opens a lesson (README "Lessons") at `step` (from 0), asking first when changes would be lost:
-  /// its first step's scene becomes a new document and the caption box shows the step. A lesson
+  /// Opens a lesson (docs/lecturers.md "Lessons") at `step` (from 0), asking first when changes would be
+  /// lost: its first step's scene becomes a new document and the caption box shows the step. A lesson
   /// that cannot be read leaves everything as it was and says why in the status line.
   void openLesson(const std::filesystem::path& file, size_t step = 0);
   /// What a lesson's steps are resolved against: the bundled scenes and a fresh document's views.

@@ -1,4 +1,4 @@
-// Whether the UI's text fits its windows (README "The viewer": nothing is cut off at any UI scale,
+// Whether the UI's text fits its windows (docs/lecturers.md "The viewer": nothing is cut off at any UI scale,
 // on a projector, a laptop or a phone).
 #pragma once
 

@@ -1,4 +1,4 @@
-// The interactive viewer (README "The viewer"): the three views in resizable ImGui windows beside
+// The interactive viewer (docs/lecturers.md "The viewer"): the three views in resizable ImGui windows beside
 // the panels (camera, scene, matrices, vertex probe, clipping, display). It draws one frame at a
 // time into the bound framebuffer, so the same code runs in a GLFW window and headless (`vplab
 // render --view ui`, the UI tests). It owns ImGui's context and composes the frame from its parts:
@@ -64,7 +64,7 @@ class Viewer {
   /// Seconds until the viewer needs its next frame while no input arrives: 0 while something moves
   /// (the stage morph plays, a scene loads, ImGui settles after a change), the text cursor's blink
   /// while a field is edited, the next autosave; a large number when idle. The window's event wait
-  /// uses it as its timeout (README "The viewer": an idle window uses no CPU).
+  /// uses it as its timeout (docs/lecturers.md "The viewer": an idle window uses no CPU).
   double wakeIn() const;
   /// How many times a view was drawn (not reused from its last image): tests check hover frames cost none.
   unsigned viewsDrawn() const { return images_.drawn(); }

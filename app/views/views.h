@@ -1,4 +1,4 @@
-// The views that make the pipeline visible (README "Views"):
+// The views that make the pipeline visible (docs/lecturers.md "The views"):
 //   camera  what the synthetic camera sees, W × H pixels, pixel-aligned with DC
 //   world   an orbiting observer's view of the scene, the camera (VRP, PRP, VUP, U, V, N), the view
 //           plane's window and the frustum; what lies outside the view volume is faded and the

@@ -1,4 +1,4 @@
-// The page's loader worker (app/web/loader_worker.cpp, README "Large scenes in the page"): builds a
+// The page's loader worker (app/web/loader_worker.cpp, docs/measured.md "Large scenes in the page"): builds a
 // scene's meshes off the page's thread. Messages from the page:
 //   {put: PATH, bytes: Uint8Array}                      a file the page was given (/uploads/…)
 //   {id, text: Uint8Array, source, baseDir}             a scene's text to read, its meshes to build

@@ -1,7 +1,7 @@
 // The page's loader: a second, small WebAssembly module (io/ and pipeline/, no GL, no ImGui) that
 // runs in a Web Worker (loader-worker.js) and builds a scene's meshes, so that the page's own
-// thread never waits for a large scene to be read and tessellated (README "Large scenes in the
-// page"; app/core/loader.h, SceneLoader::useRemote). Threads in the page itself would need
+// thread never waits for a large scene to be read and tessellated (docs/measured.md "Large scenes in
+// the page"; app/core/loader.h, SceneLoader::useRemote). Threads in the page itself would need
 // cross-origin isolation headers that a course page cannot count on; a worker needs none.
 //
 // The worker holds the bundled assets (preloaded, as the page's module does) and a copy of every

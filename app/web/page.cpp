@@ -1,5 +1,5 @@
-// The lab as a web page (README "In the browser"): the browser's counterpart of `vplab` (app/cli.cpp)
-// and of the window's event loop (app/ui/run_viewer.cpp). The viewer, its panels, views and GL
+// The lab as a web page (docs/students.md "In the browser"): the browser's counterpart of `vplab`
+// (app/cli.cpp) and of the window's event loop (app/ui/run_viewer.cpp). The viewer, its panels, views and GL
 // backend are the desktop's; what differs is only how frames are driven and where files go.
 //
 // Frames: the browser calls `tick` before each repaint (requestAnimationFrame). Like the window's
@@ -57,7 +57,7 @@ const std::filesystem::path kKeptDir = "/state/kept";
 /// The UI scale the page's size asks for: the canvas's pixels are screen pixels (devicePixelRatio
 /// × CSS pixels), so the scale follows the ratio (text and handles keep their size on a high-DPI
 /// screen), and a phone's small CSS size (its shorter side under 440 CSS px) takes it down a little,
-/// to 0.85 at most, so that a panel holds a line of fields (README "In the browser").
+/// to 0.85 at most, so that a panel holds a line of fields (docs/students.md "In the browser").
 double pageScale() {
   const double ratio = std::clamp(page::devicePixelRatio(), 1.0, 4.0);
   const auto [cssWidth, cssHeight] = page::canvasCssSize();
@@ -101,7 +101,7 @@ struct Page {
         throw Error(text::Text("the browser cannot remember the language (its localStorage is full or disabled)").in(lang));
     });
     // SwiftShader takes about 7 s for the three views of a million triangles: a large scene's views
-    // are drawn across frames (README "Large scenes in the page").
+    // are drawn across frames (docs/measured.md "Large scenes in the page").
     viewer.drawViewsInSlices(kFirstSliceTriangles);
     // Its pipeline run (0.5 s for the million-triangle sphere) in steps of a few ms a frame.
     viewer.runPipelineInSteps(kPipelineSecondsPerFrame);

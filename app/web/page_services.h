@@ -1,6 +1,6 @@
 // The page's services, the browser's side of what the desktop does with files and its window title
-// (README "In the browser"): the file picker and drag and drop (the files land in the in-memory file
-// system under /uploads), downloads (saved scenes and exported views are written under /downloads,
+// (docs/students.md "In the browser"): the file picker and drag and drop (the files land in the in-memory
+// file system under /uploads), downloads (saved scenes and exported views are written under /downloads,
 // handed to the browser and removed), the address's fragment (the link to what is shown), the
 // autosave and the chosen language kept in localStorage, and the warning before a page with unsaved
 // changes is left. The DOM side is in index.html (vplabPage).

@@ -1,4 +1,4 @@
-# The layers (README "Architecture", tests/architecture/layers.cmake): every directory of the sources
+# The layers (docs/architecture.md, tests/architecture/layers.cmake): every directory of the sources
 # may include only the project's directories its row of the table names, and GL, window and context
 # headers or Dear ImGui only where the row allows them. pipeline/ and app/views/ allow neither: they
 # never draw, open a window or a context, or touch the UI. This script fails when a file includes
@@ -10,7 +10,7 @@
 # file is checked without configuring again); only #include lines count, not comments or strings.
 #
 #   cmake -DSOURCE_DIR=<tree> [-DEXCEPTIONS=<file,file,…>] [-DPARTIAL=ON] -P check_includes.cmake
-#   cmake -DPRINT=ON -P check_includes.cmake      prints the table as the README shows it
+#   cmake -DPRINT=ON -P check_includes.cmake      prints the table as docs/architecture.md shows it
 #
 # EXCEPTIONS: files (relative to SOURCE_DIR) that still include such headers and are being moved
 # (tests/CMakeLists.txt says which and until when). A listed file that no longer violates is an
@@ -21,7 +21,7 @@ cmake_minimum_required(VERSION 3.25)
 include(${CMAKE_CURRENT_LIST_DIR}/layers.cmake)
 
 if(PRINT)
-  # The README's layer table, from the table itself.
+  # docs/architecture.md's layer table, from the table itself.
   set(table "| layer | may include | GL / ImGui | what it is |\n|---|---|---|---|\n")
   foreach(dir IN LISTS layers)
     if(dir STREQUAL "app")

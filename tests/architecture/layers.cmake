@@ -1,13 +1,14 @@
-# The layers (README "Architecture"): every directory of the sources and what its files may include,
-# the one table behind the include check (check_includes.cmake) and the README's layer table
-# (check_includes.cmake -DPRINT=ON prints it; architecture.readme checks the README holds it).
+# The layers (docs/architecture.md): every directory of the sources and what its files may include,
+# the one table behind the include check (check_includes.cmake) and the layer table of
+# docs/architecture.md (check_includes.cmake -DPRINT=ON prints it; architecture.readme checks that page holds
+# it).
 #
 #   layers            the directories, lowest first; "app" is app/'s own files (the command line),
 #                     not its subdirectories
 #   uses_<dir>        the project's directories its files may include from (prefixes)
 #   outside_<dir>     the outside headers it may include: gl (GL, GLAD, GLFW, EGL, KHR, OSMesa) and
 #                     imgui (Dear ImGui and its backends); none: neither
-#   about_<dir>       what the layer is, for the README
+#   about_<dir>       what the layer is, for docs/architecture.md
 set(layers pipeline io course app/text app/views app/core app/fonts app/export app/context app/gl app/render app/ui
            app/course app/lessons app bench app/web)
 

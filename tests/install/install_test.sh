@@ -16,7 +16,8 @@ cmake --install "$build" --prefix "$prefix" >/dev/null
 for f in bin/vplab share/vplab/scenes/default.json share/vplab/scenes/mesh-obj.json share/vplab/meshes/house.obj \
          share/vplab/lessons/01-synthetic-camera.en.json share/vplab/lessons/01-synthetic-camera.de.json \
          share/applications/vplab.desktop share/icons/hicolor/256x256/apps/vplab.png share/man/man1/vplab.1.gz \
-         share/bash-completion/completions/vplab share/doc/vplab/CHANGELOG.md; do
+         share/bash-completion/completions/vplab share/doc/vplab/CHANGELOG.md \
+         share/doc/vplab/docs/lecturers.md share/doc/vplab/docs/command-line.md; do
   [ -f "$prefix/$f" ] || fail "cmake --install wrote no $f"
 done
 

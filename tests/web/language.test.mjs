@@ -1,4 +1,4 @@
-// The page in German and English (README "German and English"): a browser whose language is German
+// The page in German and English (docs/lecturers.md "German and English"): a browser whose language is German
 // opens the page in German, its own texts (index.html's, shown before the lab has loaded) as well as
 // the lab's; View ▸ Language's choice wins over the browser's and is kept in localStorage for the
 // next visit.

@@ -1,5 +1,5 @@
-// A large scene in a student's page (issue 24 item 3; README "Large scenes in the page"). The bundled
-// large-mesh scene (a sphere of 524 288 polygons, about a million triangles) is read and tessellated
+// A large scene in a student's page (issue 24 item 3; docs/measured.md "Large scenes in the page"). The
+// bundled large-mesh scene (a sphere of 524 288 polygons, about a million triangles) is read and tessellated
 // in the page's loader worker (loader-worker.js): the page goes on drawing frames meanwhile, shows the
 // desktop's Loading window with its progress bar, and Cancel keeps the open scene. The test holds the
 // worker's module at the server until the test lets it go, so the load is under way for as long as

@@ -1,4 +1,4 @@
-// Lessons in the page (README "Lessons"): a link opens a bundled lesson at a step, the keys a
+// Lessons in the page (docs/lecturers.md "Lessons"): a link opens a bundled lesson at a step, the keys a
 // clicker sends advance it and the address follows the step; the embed form shows only the named
 // views and the caption, as a figure beside a course page's own text.
 import assert from 'node:assert/strict';

@@ -1,5 +1,5 @@
-// The CPU pipeline on a worker thread (app/core/pipeline_worker.h, README "The viewer"): a run is the
-// synchronous runPipeline's, the latest request wins, runs nobody holds are run into again, a failing
+// The CPU pipeline on a worker thread (app/core/pipeline_worker.h, docs/lecturers.md "The viewer"): a run is
+// the synchronous runPipeline's, the latest request wins, runs nobody holds are run into again, a failing
 // run is an error (the viewer drawing on meanwhile: tests/app/ui/pipeline_worker_test.cpp).
 #include "app/core/pipeline_worker.h"
 #include "io/dump.h"

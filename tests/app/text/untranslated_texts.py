@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Texts that reach the window without the catalogue (README "German and English").
+"""Texts that reach the window without the catalogue (docs/lecturers.md "German and English").
 
 Every text a user reads goes through app/text/catalogue.h: ui::tr(s, "…"), text::Text("…"),
 text::fill(lang, "…", …). A text written straight into a Dear ImGui call or one of the panels'

@@ -1,5 +1,5 @@
-// The viewer with the CPU pipeline on a worker thread (app/core/pipeline_worker.h, README "The
-// viewer"): it goes on drawing frames while a large scene's run is under way, then shows what the
+// The viewer with the CPU pipeline on a worker thread (app/core/pipeline_worker.h, docs/lecturers.md
+// "The viewer"): it goes on drawing frames while a large scene's run is under way, then shows what the
 // synchronous viewer shows (the worker alone: tests/app/core/pipeline_worker_test.cpp). And the
 // page's way without threads: the run in steps across frames.
 #include "app/ui/headless_viewer.h"

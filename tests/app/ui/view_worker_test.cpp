@@ -1,5 +1,5 @@
-// The views drawn on a render thread (app/render/view_worker.h, README "The viewer"): while a view of a
-// large mesh is being drawn again, the window keeps producing frames, each short, with a busy mark
+// The views drawn on a render thread (app/render/view_worker.h, docs/lecturers.md "The viewer"): while a view
+// of a large mesh is being drawn again, the window keeps producing frames, each short, with a busy mark
 // on the view, and then shows the same image a synchronous viewer draws.
 #include "app/ui/headless_viewer.h"
 #include "app/gl/texture_io.h"

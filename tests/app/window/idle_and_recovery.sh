@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The real window under Xvfb (run by ctest through xvfb-run, tests/CMakeLists.txt):
 #  1. idle: after the window has settled, vplab uses < 2 % of one core over 10 s (utime + stime
-#     from /proc/PID/stat; README "The viewer");
+#     from /proc/PID/stat; docs/lecturers.md "The viewer");
 #  2. it did draw: F12 writes a screenshot of the window, which must be a real picture, and a key
 #     (P: next projection) is handled, which needs frames drawn after the idle period;
 #  3. an unsaved change is autosaved to $XDG_STATE_HOME/vplab within a few seconds although the

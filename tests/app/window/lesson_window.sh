@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A lesson in the real window under Xvfb (run by ctest through xvfb-run, tests/CMakeLists.txt), as a
-# lecturer presents it (README "Lessons"):
+# lecturer presents it (docs/lecturers.md "Lessons"):
 #  1. `vplab --lesson NAME --step 5` opens the bundled lesson at step 5; F12 shows its picture;
 #  2. → (what a clicker sends) moves to step 6: after the move the window is another picture, and
 #     once the move is over the window is idle again (< 2 % of one core over 3 s);
