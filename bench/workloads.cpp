@@ -350,6 +350,5 @@ Json toJson(const BenchReport& r) {
   return j;
 }
 
-std::string benchReportJson(const BenchReport& report, int indent) { return toJson(report).dump(indent) + "\n"; }
 
 }  // namespace vplab::bench

@@ -166,6 +166,5 @@ BenchReport runPipelineBenchmarks(int repetitions = 5, int segments = kBenchSegm
 
 /// The report as JSON, keys in a fixed order (see toJson in workloads.cpp; times in milliseconds).
 nlohmann::ordered_json toJson(const BenchReport& report);
-std::string benchReportJson(const BenchReport& report, int indent = 2);
 
 }  // namespace vplab::bench

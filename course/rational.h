@@ -21,7 +21,6 @@ class Rational {
 
   int64_t num() const { return num_; }
   int64_t den() const { return den_; }
-  bool isInteger() const { return den_ == 1; }
   double toDouble() const { return double(num_) / double(den_); }
 
   Rational operator-() const;

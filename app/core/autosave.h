@@ -22,6 +22,9 @@
 
 namespace vplab {
 
+/// Seconds after the last change at which the open scene is autosaved (the desktop and the page).
+inline constexpr double kAutosaveDelay = 3.0;
+
 /// What was on screen besides the scene, so that recovery shows exactly that again (issue 37).
 struct RecoveryView {
   std::filesystem::path lesson;  // the lesson presented (empty: none)

@@ -42,7 +42,6 @@ struct GpuMesh {
   /// Chunk k's triangles are elements [indexStart[k], indexStart[k + 1]) of the mesh's triangle
   /// list (3 per triangle), at 0 in its own index buffer. One more entry than chunks.
   std::vector<GLsizei> indexStart{0};
-  GLsizei faceIndexCount() const { return indexStart.back(); }
   std::vector<GpuEdgeChunk> edgeChunks;  // consecutive, from edge 0 on
   GLsizei edgeCount = 0;                  // the mesh's unique edges (all chunks' once complete)
 };

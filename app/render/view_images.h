@@ -83,14 +83,11 @@ class ViewImages {
   /// a view whose image is not ready within the frame shows its last image, busy. `wake` wakes the
   /// window's event wait (called on the render thread).
   void useWorker(std::unique_ptr<GlContext> context, std::function<void()> wake);
-  bool hasWorker() const { return worker_ != nullptr; }
   /// Without a render thread (the page): draws each view in slices across frames, about
   /// `trianglesPerFrame` triangles of all views in a frame to begin with, then paced by the frame
   /// times (SlicePacing); a view shows its last image, busy, until its new one is complete.
   /// 0: each view whole in the frame that asks for it (the default).
   void drawInSlices(size_t trianglesPerFrame);
-  /// Triangles the views may draw in the next frame (drawInSlices), as adapted to the frame times.
-  size_t sliceTriangles() const { return pacing_.triangles; }
 
   /// A new frame: no view asked for yet; the frame may wait a little for the render thread.
   void beginFrame();

@@ -7,6 +7,7 @@
 
 #include "app/context/context_glfw.h"
 #include "app/core/assets.h"
+#include "app/core/autosave.h"
 #include "app/core/preferences.h"
 #include "app/gl/render_target.h"
 #include "app/ui/window_input.h"
@@ -35,7 +36,6 @@ namespace vplab {
 
 namespace {
 
-constexpr double kAutosaveDelay = 3.0;  // seconds after the last change
 constexpr double kLongestWait = 60.0;   // glfwWaitEventsTimeout needs a finite timeout
 constexpr int kSettleFrames = 3;        // ImGui shows the effect of input (hover, popups) over ~2 frames
 

@@ -9,6 +9,7 @@
 // index.html calls the exported functions at the end (vplab_*) with the Page's address, which it
 // gets at start: the page's state lives in one owned struct, not in globals.
 #include "app/context/context_glfw.h"
+#include "app/core/autosave.h"
 #include "app/gl/render_target.h"
 #include "app/ui/text_fit.h"
 #include "app/ui/viewer.h"
@@ -43,7 +44,6 @@ namespace {
 
 constexpr int kSettleFrames = 3;  // as the window's loop: ImGui shows the effect of input over ~2 frames
 constexpr double kLongestWait = 60.0;
-constexpr double kAutosaveDelay = 3.0;  // seconds after the last change, as the desktop's
 constexpr size_t kFirstSliceTriangles = 20000;  // then adapted to the frame times (ViewImages)
 constexpr double kPipelineSecondsPerFrame = 0.03;  // a frame's share of the pipeline's run in steps (ShownRun)
 // The autosave's directory in the in-memory file system, mirrored to this tab's localStorage key
