@@ -3,6 +3,10 @@
 # `cpack -G DEB` writes $VPLAB_BUILD/vplab_VERSION_ARCH.deb (cmake/Package.cmake says what is in it).
 # Install it with `sudo apt-get install ./vplab_VERSION_ARCH.deb`.
 set -euo pipefail
+# Debian's DEB_BUILD_OPTIONS=nocheck: the package is built without the test suites (BUILD_TESTING=OFF).
+if [[ " ${DEB_BUILD_OPTIONS:-} " == *" nocheck "* ]]; then
+  export VPLAB_BUILD_TESTING=OFF
+fi
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 cd "$VPLAB_BUILD"
 cpack -G DEB >/dev/null

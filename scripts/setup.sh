@@ -26,5 +26,7 @@ packages+=(librsvg2-bin)
 
 vplab_install_missing "${packages[@]}"
 
-cmake -S "$VPLAB_ROOT" -B "$VPLAB_BUILD" -DCMAKE_BUILD_TYPE="${VPLAB_BUILD_TYPE:-Release}" >/dev/null
+# VPLAB_BUILD_TESTING=OFF leaves out the test suites and the benchmarks (package.sh, under Debian's nocheck).
+cmake -S "$VPLAB_ROOT" -B "$VPLAB_BUILD" -DCMAKE_BUILD_TYPE="${VPLAB_BUILD_TYPE:-Release}" \
+  -DBUILD_TESTING="${VPLAB_BUILD_TESTING:-ON}" >/dev/null
 cmake --build "$VPLAB_BUILD" -j "$(nproc)"
