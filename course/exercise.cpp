@@ -11,23 +11,6 @@
 
 namespace vplab {
 
-std::string_view toString(ExerciseTopic t) {
-  switch (t) {
-    case ExerciseTopic::orientation: return "orientation";
-    case ExerciseTopic::mapping: return "mapping";
-    case ExerciseTopic::clipping: return "clipping";
-    case ExerciseTopic::pipeline: return "pipeline";
-  }
-  return "?";
-}
-
-std::optional<ExerciseTopic> exerciseTopicFromString(std::string_view s) {
-  for (ExerciseTopic t : {ExerciseTopic::orientation, ExerciseTopic::mapping, ExerciseTopic::clipping,
-                          ExerciseTopic::pipeline})
-    if (s == toString(t)) return t;
-  return std::nullopt;
-}
-
 namespace {
 
 // The same draws on every platform: mt19937_64 is fully specified; `% n` instead of the library's

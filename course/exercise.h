@@ -16,6 +16,7 @@
 // is a fraction with a denominator of at most 1000 (Rational::approximate).
 #pragma once
 #include "pipeline/clip_steps.h"
+#include "pipeline/enum_table.h"
 #include "pipeline/pipeline.h"
 
 #include <cstdint>
@@ -27,8 +28,14 @@
 namespace vplab {
 
 enum class ExerciseTopic { orientation, mapping, clipping, pipeline };
-std::string_view toString(ExerciseTopic t);
-std::optional<ExerciseTopic> exerciseTopicFromString(std::string_view s);
+/// The command line's and assignment.json's "topic".
+inline constexpr EnumTable<ExerciseTopic, 4> kExerciseTopicNames = {{{ExerciseTopic::orientation, "orientation"},
+                                                                     {ExerciseTopic::mapping, "mapping"},
+                                                                     {ExerciseTopic::clipping, "clipping"},
+                                                                     {ExerciseTopic::pipeline, "pipeline"}}};
+inline constexpr auto kAllExerciseTopics = valuesOf(kExerciseTopicNames);
+inline std::string_view toString(ExerciseTopic t) { return nameIn(kExerciseTopicNames, t); }
+inline std::optional<ExerciseTopic> exerciseTopicFromString(std::string_view s) { return valueIn(kExerciseTopicNames, s); }
 
 struct ExerciseSpec {
   uint64_t seed = 1;  // the exercise's number: the same for the whole class

@@ -7,21 +7,6 @@
 
 namespace vplab {
 
-std::string_view toString(Projection p) {
-  switch (p) {
-    case Projection::perspective: return "perspective";
-    case Projection::parallel: return "parallel";
-    case Projection::oblique: return "oblique";
-  }
-  return "?";
-}
-
-std::optional<Projection> projectionFromString(std::string_view s) {
-  for (Projection p : kAllProjections)
-    if (toString(p) == s) return p;
-  return std::nullopt;
-}
-
 namespace {
 
 // The largest |component|. Unlike glm::length it cannot overflow: glm::length squares the

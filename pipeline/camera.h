@@ -5,6 +5,7 @@
 // are z = F and z = B in VRC with B < F (docs/conventions.md, stages 2 and 3).
 #pragma once
 
+#include "pipeline/enum_table.h"
 #include "pipeline/math.h"
 
 #include <array>
@@ -15,11 +16,12 @@
 namespace vplab {
 
 enum class Projection { perspective, parallel, oblique };
-/// Every projection in the enum's order: toString, the P key's cycle.
-inline constexpr std::array kAllProjections = {Projection::perspective, Projection::parallel, Projection::oblique};
-
-std::string_view toString(Projection p);
-std::optional<Projection> projectionFromString(std::string_view s);
+inline constexpr EnumTable<Projection, 3> kProjectionNames = {{
+    {Projection::perspective, "perspective"}, {Projection::parallel, "parallel"}, {Projection::oblique, "oblique"}}};
+/// Every projection in the enum's order: the P key's cycle.
+inline constexpr auto kAllProjections = valuesOf(kProjectionNames);
+inline std::string_view toString(Projection p) { return nameIn(kProjectionNames, p); }
+inline std::optional<Projection> projectionFromString(std::string_view s) { return valueIn(kProjectionNames, s); }
 
 /// The window in the view plane z = 0, in VRC.
 struct ViewWindow {

@@ -13,31 +13,6 @@ namespace vplab {
 
 // ---------------------------------------------------------------- 1 names and accessors
 
-std::string_view toString(ClipStrategy s) {
-  switch (s) {
-    case ClipStrategy::npc: return "npc";
-    case ClipStrategy::wc: return "wc";
-    case ClipStrategy::divideFirst: return "divide-first";
-  }
-  return "?";
-}
-
-std::optional<ClipStrategy> clipStrategyFromString(std::string_view s) {
-  for (ClipStrategy c : kAllClipStrategies)
-    if (toString(c) == s) return c;
-  return std::nullopt;
-}
-
-std::string_view toString(Fate f) {
-  switch (f) {
-    case Fate::accepted: return "accepted";
-    case Fate::rejected: return "rejected";
-    case Fate::clipped: return "clipped";
-    case Fate::clippedAway: return "clipped_away";
-  }
-  return "?";
-}
-
 std::span<const uint32_t> ObjectRun::clippedFace(size_t f) const {
   switch (fate[f]) {
     case Fate::accepted: return mesh->face(f);

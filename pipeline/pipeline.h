@@ -15,6 +15,7 @@
 
 #include "pipeline/clipping.h"
 #include "pipeline/cost_model.h"
+#include "pipeline/enum_table.h"
 #include "pipeline/scene.h"
 
 #include <array>
@@ -29,10 +30,12 @@ namespace vplab {
 /// Where polygons are clipped (lecture notes 15.3.1–15.3.3). divideFirst is wrong on purpose: it divides by w
 /// before clipping, so points behind the eye flip into view (Hill 7.4 and the DGL wiki).
 enum class ClipStrategy { npc, wc, divideFirst };
-/// Every strategy in the enum's order: toString, the command line's choices, the C key's cycle.
-inline constexpr std::array kAllClipStrategies = {ClipStrategy::npc, ClipStrategy::wc, ClipStrategy::divideFirst};
-std::string_view toString(ClipStrategy s);
-std::optional<ClipStrategy> clipStrategyFromString(std::string_view s);
+inline constexpr EnumTable<ClipStrategy, 3> kClipStrategyNames = {{
+    {ClipStrategy::npc, "npc"}, {ClipStrategy::wc, "wc"}, {ClipStrategy::divideFirst, "divide-first"}}};
+/// Every strategy in the enum's order: the command line's choices, the C key's cycle.
+inline constexpr auto kAllClipStrategies = valuesOf(kClipStrategyNames);
+inline std::string_view toString(ClipStrategy s) { return nameIn(kClipStrategyNames, s); }
+inline std::optional<ClipStrategy> clipStrategyFromString(std::string_view s) { return valueIn(kClipStrategyNames, s); }
 inline bool isCorrect(ClipStrategy s) { return s != ClipStrategy::divideFirst; }
 
 struct PipelineOptions {
@@ -48,7 +51,10 @@ enum class Fate : uint8_t {
   clipped,      // cut by Sutherland–Hodgman, something visible remains
   clippedAway,  // cut by Sutherland–Hodgman, nothing remains
 };
-std::string_view toString(Fate f);
+/// The names of the dump's "fate".
+inline constexpr EnumTable<Fate, 4> kFateNames = {{
+    {Fate::accepted, "accepted"}, {Fate::rejected, "rejected"}, {Fate::clipped, "clipped"}, {Fate::clippedAway, "clipped_away"}}};
+inline std::string_view toString(Fate f) { return nameIn(kFateNames, f); }
 
 /// The bounding-box verdict for an object (lecture notes 15.3.4).
 enum class BoxVerdict : uint8_t { notTested, inside, outside, crossing };

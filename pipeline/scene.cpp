@@ -5,25 +5,6 @@
 
 namespace vplab {
 
-std::string_view toString(Shape s) {
-  switch (s) {
-    case Shape::cube: return "cube";
-    case Shape::tetrahedron: return "tetrahedron";
-    case Shape::cylinder: return "cylinder";
-    case Shape::sphere: return "sphere";
-    case Shape::polygon: return "polygon";
-    case Shape::mesh: return "mesh";
-  }
-  return "?";
-}
-
-std::optional<Shape> shapeFromString(std::string_view s) {
-  for (Shape shape : {Shape::cube, Shape::tetrahedron, Shape::cylinder, Shape::sphere,
-                      Shape::polygon, Shape::mesh})
-    if (toString(shape) == s) return shape;
-  return std::nullopt;
-}
-
 std::shared_ptr<const Mesh> primitiveMesh(const SceneObject& o) {
   switch (o.shape) {
     case Shape::cube: return std::make_shared<const Mesh>(cube());

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "pipeline/camera.h"
+#include "pipeline/enum_table.h"
 #include "pipeline/language.h"
 #include "pipeline/device_mapping.h"
 #include "pipeline/mesh.h"
@@ -16,8 +17,12 @@
 namespace vplab {
 
 enum class Shape { cube, tetrahedron, cylinder, sphere, polygon, mesh };
-std::string_view toString(Shape s);
-std::optional<Shape> shapeFromString(std::string_view s);
+/// The scene format's "shape".
+inline constexpr EnumTable<Shape, 6> kShapeNames = {{{Shape::cube, "cube"},         {Shape::tetrahedron, "tetrahedron"},
+                                                     {Shape::cylinder, "cylinder"}, {Shape::sphere, "sphere"},
+                                                     {Shape::polygon, "polygon"},   {Shape::mesh, "mesh"}}};
+inline std::string_view toString(Shape s) { return nameIn(kShapeNames, s); }
+inline std::optional<Shape> shapeFromString(std::string_view s) { return valueIn(kShapeNames, s); }
 
 struct SceneObject {
   std::string name;              // its name in files, lessons and links (the scene format's "name")

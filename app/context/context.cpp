@@ -4,21 +4,6 @@
 
 namespace vplab {
 
-std::string_view toString(Backend b) {
-  switch (b) {
-    case Backend::automatic: return "auto";
-    case Backend::egl: return "egl";
-    case Backend::osmesa: return "osmesa";
-  }
-  return "?";
-}
-
-std::optional<Backend> backendFromString(std::string_view s) {
-  for (Backend b : kAllBackends)
-    if (toString(b) == s) return b;
-  return std::nullopt;
-}
-
 namespace {
 
 void GLAD_API_PTR onDebugMessage(GLenum source, GLenum type, GLuint /*id*/, GLenum severity,

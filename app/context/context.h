@@ -4,6 +4,8 @@
 // each context owns its GladGLContext, so no function pointers are global.
 #pragma once
 
+#include "pipeline/enum_table.h"
+
 #include <array>
 #include <glad/gl.h>
 
@@ -16,10 +18,11 @@
 namespace vplab {
 
 enum class Backend { automatic, egl, osmesa };
-/// Every backend in the enum's order: toString and the command line's choices.
-inline constexpr std::array kAllBackends = {Backend::automatic, Backend::egl, Backend::osmesa};
-std::string_view toString(Backend b);
-std::optional<Backend> backendFromString(std::string_view s);
+inline constexpr EnumTable<Backend, 3> kBackendNames = {{{Backend::automatic, "auto"}, {Backend::egl, "egl"}, {Backend::osmesa, "osmesa"}}};
+/// Every backend in the enum's order: the command line's choices.
+inline constexpr auto kAllBackends = valuesOf(kBackendNames);
+inline std::string_view toString(Backend b) { return nameIn(kBackendNames, b); }
+inline std::optional<Backend> backendFromString(std::string_view s) { return valueIn(kBackendNames, s); }
 
 /// Errors the KHR_debug callback reported (type ERROR or severity HIGH), collected per context.
 struct GlDebugLog {

@@ -20,21 +20,6 @@ double wcPerPixel(const ViewCamera& observer, const Vec3& p, int height) {
 
 }  // namespace
 
-const char* handleName(Handle h) {
-  switch (h) {
-    case Handle::none: return "";
-    case Handle::vrp: return "VRP";
-    case Handle::prp: return "PRP";
-    case Handle::windowLeft: return "xmin";
-    case Handle::windowRight: return "xmax";
-    case Handle::windowBottom: return "ymin";
-    case Handle::windowTop: return "ymax";
-    case Handle::front: return "front F";
-    case Handle::back: return "back B";
-  }
-  return "";
-}
-
 Vec3 handlePosition(const PipelineRun& run, Handle h) {
   const ViewWindow& w = run.camera.window;
   const Mat4& wcFromVrc = run.wcFromVrc;

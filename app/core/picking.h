@@ -4,6 +4,7 @@
 
 #include "app/views/view_camera.h"
 #include "app/views/views.h"
+#include "pipeline/enum_table.h"
 #include "pipeline/pipeline.h"
 
 #include <optional>
@@ -19,13 +20,23 @@ struct Probe {
 
 /// What can be grabbed in the world view to change the camera directly.
 enum class Handle { none, vrp, prp, windowLeft, windowRight, windowBottom, windowTop, front, back };
+/// The handles' labels in the views (also their ids in the UI tests' hook).
+inline constexpr EnumTable<Handle, 9> kHandleNames = {{{Handle::none, ""},
+                                                       {Handle::vrp, "VRP"},
+                                                       {Handle::prp, "PRP"},
+                                                       {Handle::windowLeft, "xmin"},
+                                                       {Handle::windowRight, "xmax"},
+                                                       {Handle::windowBottom, "ymin"},
+                                                       {Handle::windowTop, "ymax"},
+                                                       {Handle::front, "front F"},
+                                                       {Handle::back, "back B"}}};
 
 /// Where the world view's handles are, in WC: VRP, PRP, the window's edge midpoints (view plane)
 /// and the centres of the front and back planes.
 Vec3 handlePosition(const PipelineRun& run, Handle h);
 inline constexpr Handle kHandles[] = {Handle::vrp,         Handle::prp,       Handle::windowLeft, Handle::windowRight,
                                       Handle::windowBottom, Handle::windowTop, Handle::front,      Handle::back};
-const char* handleName(Handle h);
+inline const char* handleName(Handle h) { return nameIn(kHandleNames, h).data(); }  // a literal: NUL-terminated
 
 /// The handle within `radiusPx` of the pixel, nearest first.
 Handle pickHandle(const PipelineRun& run, const ViewCamera& view, int width, int height, Vec2 pixel, double radiusPx);

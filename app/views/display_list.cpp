@@ -4,17 +4,6 @@
 
 namespace vplab::draw {
 
-std::string_view toString(Space s) {
-  switch (s) {
-    case Space::wc: return "WC";
-    case Space::npc: return "NPC";
-    case Space::dc: return "DC";
-    case Space::morph: return "morph";
-    case Space::pixels: return "pixels";
-  }
-  return "?";
-}
-
 size_t PolygonSet::polygonSize(size_t i) const {
   if (clippedNpcOf) return clippedNpcOf->clippedFace(faces[i]).size();
   return ends[i] - (i ? ends[i - 1] : 0);

@@ -12,6 +12,7 @@
 
 #include "app/views/labels.h"
 #include "app/views/view_camera.h"
+#include "pipeline/enum_table.h"
 #include "pipeline/mesh.h"
 #include "pipeline/scene.h"
 
@@ -38,7 +39,9 @@ enum class Space {
   morph,   // the stage morph's space of the moment (pipeline/stage_morph.h)
   pixels,  // the view's own pixels: origin top-left, x right, y down
 };
-std::string_view toString(Space s);
+inline constexpr EnumTable<Space, 5> kSpaceNames = {
+    {{Space::wc, "WC"}, {Space::npc, "NPC"}, {Space::dc, "DC"}, {Space::morph, "morph"}, {Space::pixels, "pixels"}}};
+inline std::string_view toString(Space s) { return nameIn(kSpaceNames, s); }
 
 /// How a view's 3D space reaches its pixels: a synthetic camera of the pipeline itself
 /// (vrcFromWc, npcFromVrc; "WC" meaning the space looked at), then the view's device mapping.

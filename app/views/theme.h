@@ -7,12 +7,18 @@
 
 #include <glm/glm.hpp>
 
+#include "pipeline/enum_table.h"
+
+#include <optional>
 #include <string_view>
 
 namespace vplab {
 
 enum class Theme { dark, light };
-std::string_view toString(Theme t);
+/// The command line's --theme, the scene's "theme".
+inline constexpr EnumTable<Theme, 2> kThemeNames = {{{Theme::dark, "dark"}, {Theme::light, "light"}}};
+inline std::string_view toString(Theme t) { return nameIn(kThemeNames, t); }
+inline std::optional<Theme> themeFromString(std::string_view s) { return valueIn(kThemeNames, s); }
 
 }  // namespace vplab
 

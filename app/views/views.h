@@ -16,6 +16,7 @@
 #include "app/views/labels.h"
 #include "app/views/observer.h"
 #include "app/views/theme.h"
+#include "pipeline/enum_table.h"
 #include "pipeline/language.h"
 #include "pipeline/pipeline.h"
 
@@ -28,23 +29,33 @@
 namespace vplab {
 
 enum class ViewKind { camera, world, npc, all, morph, divideFirst, depth };
-/// Every view kind in the enum's order: the one table behind toString, the command line's choices and
-/// arrays indexed by kind.
-inline constexpr std::array kAllViewKinds = {ViewKind::camera, ViewKind::world,       ViewKind::npc,  ViewKind::all,
-                                             ViewKind::morph,  ViewKind::divideFirst, ViewKind::depth};
+/// The command line's --view, links' views.
+inline constexpr EnumTable<ViewKind, 7> kViewKindNames = {{{ViewKind::camera, "camera"},
+                                                           {ViewKind::world, "world"},
+                                                           {ViewKind::npc, "npc"},
+                                                           {ViewKind::all, "all"},
+                                                           {ViewKind::morph, "morph"},
+                                                           {ViewKind::divideFirst, "divide-first"},
+                                                           {ViewKind::depth, "depth-plot"}}};
+/// Every view kind in the enum's order: the command line's choices and arrays indexed by kind.
+inline constexpr auto kAllViewKinds = valuesOf(kViewKindNames);
 inline constexpr size_t kViewKindCount = kAllViewKinds.size();
-std::string_view toString(ViewKind v);
-std::optional<ViewKind> viewKindFromString(std::string_view s);
+inline std::string_view toString(ViewKind v) { return nameIn(kViewKindNames, v); }
+inline std::optional<ViewKind> viewKindFromString(std::string_view s) { return valueIn(kViewKindNames, s); }
 
 /// flat: each object's colour, unlit. shaded: lit by the scene's lights. wire: every edge.
 /// hiddenLine: visible edges solid, hidden ones dashed (lecture notes figure 16.1). hiddenRemoved: only the
 /// visible edges (lecture notes figure 16.3).
 enum class Style { flat, shaded, wire, hiddenLine, hiddenRemoved };
+inline constexpr EnumTable<Style, 5> kStyleNames = {{{Style::flat, "flat"},
+                                                     {Style::shaded, "shaded"},
+                                                     {Style::wire, "wire"},
+                                                     {Style::hiddenLine, "hidden-line"},
+                                                     {Style::hiddenRemoved, "hidden-removed"}}};
 /// Every style in the enum's order (the keys 1 to 5, the command line's choices).
-inline constexpr std::array kAllStyles = {Style::flat, Style::shaded, Style::wire, Style::hiddenLine, Style::hiddenRemoved};
-std::string_view toString(Style s);
-std::optional<Style> styleFromString(std::string_view s);
-std::optional<Theme> themeFromString(std::string_view s);  // "dark" or "light"
+inline constexpr auto kAllStyles = valuesOf(kStyleNames);
+inline std::string_view toString(Style s) { return nameIn(kStyleNames, s); }
+inline std::optional<Style> styleFromString(std::string_view s) { return valueIn(kStyleNames, s); }
 inline bool isFilled(Style s) { return s == Style::flat || s == Style::shaded; }
 
 struct OverlaySettings {

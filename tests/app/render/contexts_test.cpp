@@ -6,6 +6,7 @@
 #include "app/render/headless.h"
 #include "app/export/image_compare.h"
 #include "tests/support/gl_test_support.h"
+#include "tests/support/enum_table_check.h"
 #include "tests/support/test_util.h"
 
 #include <gmock/gmock.h>
@@ -19,7 +20,7 @@ namespace {
 using ::testing::HasSubstr;
 
 TEST(Contexts, BackendNamesRoundTrip) {
-  for (Backend b : {Backend::automatic, Backend::egl, Backend::osmesa}) EXPECT_EQ(backendFromString(toString(b)), b);
+  test::expectCompleteTable(kBackendNames, 3);  // automatic, egl, osmesa (pipeline/enum_table.h)
   EXPECT_EQ(toString(Backend::automatic), "auto");
   EXPECT_FALSE(backendFromString("vulkan"));
   EXPECT_FALSE(backendFromString(""));

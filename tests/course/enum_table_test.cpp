@@ -1,0 +1,15 @@
+// The course's topics have one complete table (pipeline/enum_table.h; issue 39 item 3).
+#include "course/exercise.h"
+#include "tests/support/enum_table_check.h"
+
+namespace vplab {
+namespace {
+
+TEST(EnumTables, ExerciseTopicsHaveOneRowPerValueInOrder) {
+  test::expectCompleteTable(kExerciseTopicNames, 4);  // orientation, mapping, clipping, pipeline
+  EXPECT_EQ(exerciseTopicFromString("clipping"), ExerciseTopic::clipping);
+  EXPECT_EQ(toString(ExerciseTopic::pipeline), "pipeline");
+}
+
+}  // namespace
+}  // namespace vplab
