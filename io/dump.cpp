@@ -38,26 +38,11 @@ Json statsJson(const PipelineRun& run) {
   const PipelineStats& s = run.stats;
   Json j{{"strategy", std::string(toString(run.options.strategy))},
          {"wrong_on_purpose", !isCorrect(run.options.strategy)},
-         {"bounding_box_test", run.options.boundingBoxTest},
-         {"objects", s.objects},
-         {"vertices", s.vertices},
-         {"vertices_transformed", s.verticesTransformed},
-         {"vertices_classified", s.verticesClassified},
-         {"polygons", s.polygons},
-         {"polygons_trivially_accepted", s.polygonsTriviallyAccepted},
-         {"polygons_trivially_rejected", s.polygonsTriviallyRejected},
-         {"polygons_clipped", s.polygonsClipped},
-         {"polygons_clipped_away", s.polygonsClippedAway},
-         {"vertices_created", s.verticesCreated},
-         {"vertices_output", s.verticesOutput},
-         {"objects_box_tested", s.objectsBoxTested},
-         {"objects_accepted_by_box", s.objectsAcceptedByBox},
-         {"objects_rejected_by_box", s.objectsRejectedByBox},
-         {"polygons_decided_by_box", s.polygonsDecidedByBox}};
-  j["operations"] = {{"multiplications", s.operations.multiplications},
-                     {"additions", s.operations.additions},
-                     {"divisions", s.operations.divisions},
-                     {"comparisons", s.operations.comparisons}};
+         {"bounding_box_test", run.options.boundingBoxTest}};
+  for (const auto& field : kStatsFields) j[std::string(field.key)] = s.*field.member;
+  Json operations = Json::object();
+  for (const auto& field : kOperationFields) operations[std::string(field.key)] = s.operations.*field.member;
+  j["operations"] = operations;
   return j;
 }
 

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 
 namespace vplab {
 
@@ -46,6 +47,42 @@ struct PipelineStats {
   uint64_t edgesClipped = 0;
   OperationCounts operations;
 };
+
+/// The counters the dump and the panel show (not the edges' counts), once, in the dump's order: the member, its key in the dump
+/// (io/dump.cpp) and its name in the Clipping panel (the catalogue's English, app/text/; nullptr: the
+/// panel leaves it out). The dump and the panel both read these two tables.
+template <class Counts>
+struct CountField {
+  uint64_t Counts::*member;
+  std::string_view key;
+  const char* label;
+};
+// clang-format off
+inline constexpr CountField<PipelineStats> kStatsFields[] = {
+    {&PipelineStats::objects,                   "objects",                     nullptr},
+    {&PipelineStats::vertices,                  "vertices",                    nullptr},
+    {&PipelineStats::verticesTransformed,       "vertices_transformed",        "vertices transformed"},
+    {&PipelineStats::verticesClassified,        "vertices_classified",         "vertices classified"},
+    {&PipelineStats::polygons,                  "polygons",                    "polygons"},
+    {&PipelineStats::polygonsTriviallyAccepted, "polygons_trivially_accepted", "  trivially accepted"},
+    {&PipelineStats::polygonsTriviallyRejected, "polygons_trivially_rejected", "  trivially rejected"},
+    {&PipelineStats::polygonsClipped,           "polygons_clipped",            "  clipped"},
+    {&PipelineStats::polygonsClippedAway,       "polygons_clipped_away",       "  clipped away"},
+    {&PipelineStats::verticesCreated,           "vertices_created",            "vertices created"},
+    {&PipelineStats::verticesOutput,            "vertices_output",             "vertices divided and mapped"},
+    {&PipelineStats::objectsBoxTested,          "objects_box_tested",          "objects box-tested"},
+    {&PipelineStats::objectsAcceptedByBox,      "objects_accepted_by_box",     "objects accepted by box"},
+    {&PipelineStats::objectsRejectedByBox,      "objects_rejected_by_box",     "objects rejected by box"},
+    {&PipelineStats::polygonsDecidedByBox,      "polygons_decided_by_box",     "polygons decided by box"},
+};
+/// The operations of the cost model (lecture notes 15.3.3): the dump's "operations", the panel's first rows.
+inline constexpr CountField<OperationCounts> kOperationFields[] = {
+    {&OperationCounts::multiplications, "multiplications", "multiplications"},
+    {&OperationCounts::additions,       "additions",       "additions"},
+    {&OperationCounts::divisions,       "divisions",       "divisions"},
+    {&OperationCounts::comparisons,     "comparisons",     "comparisons"},
+};
+// clang-format on
 
 /// The operation counts for a strategy, from the events in `stats` (docs/conventions.md stage 4; lecture notes 15.3.3).
 OperationCounts npcStrategyCost(const PipelineStats& s);

@@ -4,10 +4,37 @@
 #include "app/ui/widgets.h"
 
 #include <algorithm>
+#include <array>
+#include <type_traits>
+#include <utility>
 
 namespace vplab::ui {
 
 namespace {
+
+// The panel's names of the counters (pipeline/cost_model.h's tables), looked up in the catalogue
+// while compiling as every text is: a counter named there but missing from app/text/ does not compile.
+template <auto& kFields, size_t... I>
+constexpr auto catalogueLabels(std::index_sequence<I...>) {
+  return std::array<text::Text, sizeof...(I)>{text::Text(kFields[I].label)...};
+}
+template <auto& kFields>
+constexpr size_t labelledCount() {
+  size_t n = 0;
+  for (const auto& field : kFields) n += field.label != nullptr;
+  return n;
+}
+template <auto& kFields>
+constexpr auto labelledFields() {  // the rows with a label, in order
+  std::array<std::remove_cvref_t<decltype(kFields[0])>, labelledCount<kFields>()> rows{};
+  size_t n = 0;
+  for (const auto& field : kFields)
+    if (field.label) rows[n++] = field;
+  return rows;
+}
+constexpr auto kPanelStats = labelledFields<kStatsFields>();
+constexpr auto kStatsLabels = catalogueLabels<kPanelStats>(std::make_index_sequence<kPanelStats.size()>());
+constexpr auto kOperationLabels = catalogueLabels<kOperationFields>(std::make_index_sequence<std::size(kOperationFields)>());
 
 void statRow(const ViewerState& s, text::Text name, uint64_t value) {
   ImGui::TableNextRow();
@@ -58,23 +85,9 @@ void clippingPanel(ViewerState& s) {
     ImGui::TableSetupColumn("count", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("00000000").x);
     // The cost first (what the strategies are compared by, lecture notes 15.3.3), then the vertices
     // and polygons it was spent on: at a projector's scale the panel shows a dozen rows.
-    statRow(s, "multiplications", st.operations.multiplications);
-    statRow(s, "comparisons", st.operations.comparisons);
-    statRow(s, "additions", st.operations.additions);
-    statRow(s, "divisions", st.operations.divisions);
-    statRow(s, "vertices transformed", st.verticesTransformed);
-    statRow(s, "vertices classified", st.verticesClassified);
-    statRow(s, "polygons", st.polygons);
-    statRow(s, "  trivially accepted", st.polygonsTriviallyAccepted);
-    statRow(s, "  trivially rejected", st.polygonsTriviallyRejected);
-    statRow(s, "  clipped", st.polygonsClipped);
-    statRow(s, "  clipped away", st.polygonsClippedAway);
-    statRow(s, "  decided by bounding box", st.polygonsDecidedByBox);
-    statRow(s, "vertices created", st.verticesCreated);
-    statRow(s, "vertices divided and mapped", st.verticesOutput);
-    statRow(s, "objects box-tested", st.objectsBoxTested);
-    statRow(s, "objects accepted by box", st.objectsAcceptedByBox);
-    statRow(s, "objects rejected by box", st.objectsRejectedByBox);
+    for (size_t i = 0; i < std::size(kOperationFields); ++i)
+      statRow(s, kOperationLabels[i], st.operations.*kOperationFields[i].member);
+    for (size_t i = 0; i < kPanelStats.size(); ++i) statRow(s, kStatsLabels[i], st.*kPanelStats[i].member);
     ImGui::EndTable();
   }
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
