@@ -29,10 +29,9 @@ namespace vplab {
 
 enum class ExerciseTopic { orientation, mapping, clipping, pipeline };
 /// The command line's and assignment.json's "topic".
-inline constexpr EnumTable<ExerciseTopic, 4> kExerciseTopicNames = {{{ExerciseTopic::orientation, "orientation"},
-                                                                     {ExerciseTopic::mapping, "mapping"},
-                                                                     {ExerciseTopic::clipping, "clipping"},
-                                                                     {ExerciseTopic::pipeline, "pipeline"}}};
+inline constexpr EnumTable<ExerciseTopic, 4> kExerciseTopicNames = {
+    {{ExerciseTopic::orientation, "orientation"}, {ExerciseTopic::mapping, "mapping"},
+     {ExerciseTopic::clipping, "clipping"}, {ExerciseTopic::pipeline, "pipeline"}}};
 inline constexpr auto kAllExerciseTopics = valuesOf(kExerciseTopicNames);
 inline std::string_view toString(ExerciseTopic t) { return nameIn(kExerciseTopicNames, t); }
 inline std::optional<ExerciseTopic> exerciseTopicFromString(std::string_view s) { return valueIn(kExerciseTopicNames, s); }

@@ -21,15 +21,10 @@ struct Probe {
 /// What can be grabbed in the world view to change the camera directly.
 enum class Handle { none, vrp, prp, windowLeft, windowRight, windowBottom, windowTop, front, back };
 /// The handles' labels in the views (also their ids in the UI tests' hook).
-inline constexpr EnumTable<Handle, 9> kHandleNames = {{{Handle::none, ""},
-                                                       {Handle::vrp, "VRP"},
-                                                       {Handle::prp, "PRP"},
-                                                       {Handle::windowLeft, "xmin"},
-                                                       {Handle::windowRight, "xmax"},
-                                                       {Handle::windowBottom, "ymin"},
-                                                       {Handle::windowTop, "ymax"},
-                                                       {Handle::front, "front F"},
-                                                       {Handle::back, "back B"}}};
+inline constexpr EnumTable<Handle, 9> kHandleNames = {
+    {{Handle::none, ""}, {Handle::vrp, "VRP"}, {Handle::prp, "PRP"}, {Handle::windowLeft, "xmin"},
+     {Handle::windowRight, "xmax"}, {Handle::windowBottom, "ymin"}, {Handle::windowTop, "ymax"},
+     {Handle::front, "front F"}, {Handle::back, "back B"}}};
 
 /// Where the world view's handles are, in WC: VRP, PRP, the window's edge midpoints (view plane)
 /// and the centres of the front and back planes.

@@ -30,13 +30,9 @@ namespace vplab {
 
 enum class ViewKind { camera, world, npc, all, morph, divideFirst, depth };
 /// The command line's --view, links' views.
-inline constexpr EnumTable<ViewKind, 7> kViewKindNames = {{{ViewKind::camera, "camera"},
-                                                           {ViewKind::world, "world"},
-                                                           {ViewKind::npc, "npc"},
-                                                           {ViewKind::all, "all"},
-                                                           {ViewKind::morph, "morph"},
-                                                           {ViewKind::divideFirst, "divide-first"},
-                                                           {ViewKind::depth, "depth-plot"}}};
+inline constexpr EnumTable<ViewKind, 7> kViewKindNames = {
+    {{ViewKind::camera, "camera"}, {ViewKind::world, "world"}, {ViewKind::npc, "npc"}, {ViewKind::all, "all"},
+     {ViewKind::morph, "morph"}, {ViewKind::divideFirst, "divide-first"}, {ViewKind::depth, "depth-plot"}}};
 /// Every view kind in the enum's order: the command line's choices and arrays indexed by kind.
 inline constexpr auto kAllViewKinds = valuesOf(kViewKindNames);
 inline constexpr size_t kViewKindCount = kAllViewKinds.size();
@@ -47,9 +43,7 @@ inline std::optional<ViewKind> viewKindFromString(std::string_view s) { return v
 /// hiddenLine: visible edges solid, hidden ones dashed (lecture notes figure 16.1). hiddenRemoved: only the
 /// visible edges (lecture notes figure 16.3).
 enum class Style { flat, shaded, wire, hiddenLine, hiddenRemoved };
-inline constexpr EnumTable<Style, 5> kStyleNames = {{{Style::flat, "flat"},
-                                                     {Style::shaded, "shaded"},
-                                                     {Style::wire, "wire"},
+inline constexpr EnumTable<Style, 5> kStyleNames = {{{Style::flat, "flat"}, {Style::shaded, "shaded"}, {Style::wire, "wire"},
                                                      {Style::hiddenLine, "hidden-line"},
                                                      {Style::hiddenRemoved, "hidden-removed"}}};
 /// Every style in the enum's order (the keys 1 to 5, the command line's choices).
