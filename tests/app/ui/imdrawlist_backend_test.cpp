@@ -20,6 +20,7 @@ class ImDrawListBackend : public ::testing::Test {
   void SetUp() override {
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // as the viewer: nothing written into the working directory
     io.DisplaySize = ImVec2(800, 600);
     unsigned char* pixels;
     int w, h;

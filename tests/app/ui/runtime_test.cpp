@@ -240,6 +240,7 @@ TEST(Loading, AnUnreadableFileIsAnErrorAndTheSceneStays) {
 TEST(InputQueue, APressAndReleaseInOneFrameAreSeenInTwo) {
   ImGuiContext* ctx = ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // as the viewer: nothing written into the working directory
   InputQueue q;
   q.mouseMove(10, 20);
   q.mouseButton(0, true);
