@@ -9,17 +9,15 @@
 // buffers (a large scene's arrays are not allocated anew for every camera).
 #pragma once
 
+#include "app/core/latest_wins.h"
 #include "pipeline/pipeline.h"
 
 #include <array>
-#include <condition_variable>
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 
 namespace vplab {
 
@@ -51,24 +49,17 @@ class PipelineWorker {
   unsigned allocated() const;
 
  private:
-  void loop();
-
-  std::function<void()> wake_;
-  mutable std::mutex mutex_;
-  std::condition_variable changed_;
-  bool stop_ = false;
-  uint64_t nextTicket_ = 1;
   struct Request {
-    uint64_t ticket = 0;
     std::shared_ptr<const Scene> scene;
     PipelineOptions options;
   };
-  std::optional<Request> pending_;
-  std::optional<Finished> finished_;  // not yet taken
+  void loop();
+
+  LatestWins<Request, Finished> queue_;
+  // Under the queue's lock: how many runs were made anew, and the runs the thread made, run into
+  // again once nobody else holds them.
   unsigned allocated_ = 0;
-  // The worker thread's own: the runs it made, run into again once nobody else holds them.
   std::array<std::shared_ptr<PipelineRun>, 3> runs_;
-  std::thread thread_;
 };
 
 }  // namespace vplab

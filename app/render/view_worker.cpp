@@ -9,91 +9,56 @@
 namespace vplab {
 
 ViewWorker::ViewWorker(std::unique_ptr<GlContext> context, std::function<void()> wake)
-    : ctx_(std::move(context)), wake_(std::move(wake)) {
+    : ctx_(std::move(context)), queue_(kViews, std::move(wake)) {
   if (!ctx_) throw Error("the views' render thread needs a GL context");
-  thread_ = std::thread([this] { run(); });
+  queue_.start([this] { run(); });
 }
 
-ViewWorker::~ViewWorker() {
-  {
-    std::lock_guard lock(mutex_);
-    stop_ = true;
-  }
-  changed_.notify_all();
-  thread_.join();
-}
+ViewWorker::~ViewWorker() { queue_.stop(); }
 
 uint64_t ViewWorker::request(ViewRequest r) {
-  std::lock_guard lock(mutex_);
-  ViewSlot& slot = slots_[size_t(r.kind)];
-  slot.pending = std::move(r);
-  slot.pendingTicket = nextTicket_++;
-  changed_.notify_all();
-  return slot.pendingTicket;
+  const size_t view = size_t(r.kind);
+  return queue_.request(view, std::move(r));
 }
 
 std::optional<ViewWorker::Finished> ViewWorker::take(ViewKind kind, uint64_t ticket, double seconds) {
-  std::unique_lock lock(mutex_);
-  ViewSlot& slot = slots_[size_t(kind)];
-  if (seconds > 0)
-    changed_.wait_for(lock, std::chrono::duration<double>(seconds),
-                      [&] { return stop_ || (slot.finished && slot.finished->ticket >= ticket); });
-  if (!slot.finished) return std::nullopt;
-  std::optional<Finished> taken = std::move(slot.finished);
-  slot.finished.reset();
-  if (taken->texture) slot.shownBuffer = slot.finishedBuffer;
-  return taken;
+  Buffers& b = buffers_[size_t(kind)];
+  return queue_.take(size_t(kind), ticket, seconds, [&](const Finished& taken) {
+    b.untaken = false;
+    if (taken.texture) b.shown = b.finished;  // never drawn into until a newer image is taken
+  });
 }
 
-bool ViewWorker::hasFinished(ViewKind kind) const {
-  std::lock_guard lock(mutex_);
-  return slots_[size_t(kind)].finished.has_value();
-}
+bool ViewWorker::hasFinished(ViewKind kind) const { return queue_.hasFinished(size_t(kind)); }
 
-unsigned ViewWorker::drawn() const {
-  std::lock_guard lock(mutex_);
-  return drawn_;
-}
+unsigned ViewWorker::drawn() const { return queue_.published(); }
 
 size_t ViewWorker::freeBuffer(size_t view) const {
-  const ViewSlot& s = slots_[view];
+  const Buffers& s = buffers_[view];
   for (size_t b = 0; b < kBuffers; ++b)
-    if (b != s.shownBuffer && !(s.finished && b == s.finishedBuffer)) return b;
+    if (b != s.shown && !(s.untaken && b == s.finished)) return b;
   return 0;  // unreachable: three buffers, at most two in use
 }
 
-// The render thread: takes the oldest view's latest request, draws it with the lock released and
-// publishes it. glFinish before publishing: the window's context samples the texture only after
-// the drawing is complete (objects shared between contexts are not synchronised otherwise).
+// The render thread: draws the latest request of the view asked longest ago into a buffer neither
+// shown nor waiting to be taken, and publishes it. glFinish before publishing: the window's context
+// samples the texture only after the drawing is complete (objects shared between contexts are not
+// synchronised otherwise).
 void ViewWorker::run() {
   runBelowTheWindow();
   ctx_->makeCurrent();
   {
     ViewRenderer renderer(*ctx_);
     float scale = 1.f;
-    std::vector<ViewTargets> buffers;
-    for (size_t b = 0; b < kBuffers; ++b) buffers.emplace_back(ctx_->gl());
-    std::unique_lock lock(mutex_);
-    for (;;) {
-      changed_.wait(lock, [&] {
-        if (stop_) return true;
-        for (const ViewSlot& s : slots_)
-          if (s.pending) return true;
-        return false;
-      });
-      if (stop_) break;
-      size_t view = 0;
-      uint64_t oldest = UINT64_MAX;
-      for (size_t v = 0; v < kViews; ++v)
-        if (slots_[v].pending && slots_[v].pendingTicket < oldest) oldest = slots_[v].pendingTicket, view = v;
-      ViewRequest r = std::move(*slots_[view].pending);
-      slots_[view].pending.reset();
-      const size_t buffer = freeBuffer(view);
-      lock.unlock();
-      Finished done{oldest, 0, {}};
+    std::vector<ViewTargets> targets;
+    for (size_t b = 0; b < kBuffers; ++b) targets.emplace_back(ctx_->gl());
+    size_t buffer = 0;
+    while (auto job = queue_.next([&](const auto& j) { buffer = freeBuffer(j.slot); })) {
+      const ViewRequest& r = job->request;
+      Finished done{job->ticket, 0, {}};
       try {
         if (r.uiScale != scale) renderer.setScale(scale = r.uiScale);
-        done.texture = drawViewInto(*ctx_, renderer, buffers[buffer], r);
+        done.texture = drawViewInto(*ctx_, renderer, targets[buffer], r);
         ctx_->gl().BindFramebuffer(GL_FRAMEBUFFER, 0);
         ctx_->gl().Finish();
         ctx_->checkErrors("drawing a view on the render thread");
@@ -101,15 +66,11 @@ void ViewWorker::run() {
         done.texture = 0;
         done.error = e.what();
       }
-      lock.lock();
-      ++drawn_;
-      ViewSlot& slot = slots_[view];
-      slot.finished = std::move(done);
-      slot.finishedBuffer = buffer;
-      changed_.notify_all();
-      if (wake_) wake_();
+      queue_.finish(*job, std::move(done), [&] {
+        buffers_[job->slot].finished = buffer;
+        buffers_[job->slot].untaken = true;
+      });
     }
-    lock.unlock();
   }  // the renderer and targets are freed with the context current
   ctx_->releaseCurrent();
 }

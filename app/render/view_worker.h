@@ -7,17 +7,15 @@
 #pragma once
 
 #include "app/context/context.h"
+#include "app/core/latest_wins.h"
 #include "app/render/view_images.h"
 
 #include <array>
-#include <condition_variable>
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 
 namespace vplab {
 
@@ -55,21 +53,15 @@ class ViewWorker {
   size_t freeBuffer(size_t view) const;
 
   std::unique_ptr<GlContext> ctx_;
-  std::function<void()> wake_;
-  mutable std::mutex mutex_;
-  std::condition_variable changed_;
-  bool stop_ = false;
-  uint64_t nextTicket_ = 1;
-  struct ViewSlot {
-    std::optional<ViewRequest> pending;
-    uint64_t pendingTicket = 0;
-    std::optional<Finished> finished;  // not yet taken
-    size_t finishedBuffer = 0;
-    size_t shownBuffer = kBuffers;  // none
+  LatestWins<ViewRequest, Finished> queue_;
+  // Under the queue's lock: which of a view's three image buffers is shown, which holds the image
+  // finished and not yet taken.
+  struct Buffers {
+    size_t shown = kBuffers;  // none
+    size_t finished = 0;
+    bool untaken = false;
   };
-  std::array<ViewSlot, kViews> slots_;
-  unsigned drawn_ = 0;
-  std::thread thread_;
+  std::array<Buffers, kViews> buffers_;
 };
 
 }  // namespace vplab
