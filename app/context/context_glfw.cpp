@@ -60,32 +60,13 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title, bool deb
   // the menu's entry and its icon.
   glfwWindowHintString(GLFW_X11_CLASS_NAME, "vplab");
   glfwWindowHintString(GLFW_X11_INSTANCE_NAME, "vplab");
-  window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
-  if (!window_) {
-    const std::string problem = glfwProblem();
-    glfwTerminate();
-    throw Error("the viewer's window with OpenGL 3.3 core could not be created: " + problem);
-  }
-  glfwMakeContextCurrent(window_);
+  createAndLoad(width, height, title, debug, "glfw",
+                [] { return "the viewer's window with OpenGL 3.3 core could not be created: " + glfwProblem(); });
   glfwSwapInterval(1);
-  try {
-    loadGl(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress), debug, "glfw");
-  } catch (...) {
-    glfwDestroyWindow(window_);
-    glfwTerminate();
-    throw;
-  }
 }
 
-GlfwWindow::~GlfwWindow() {
-  glfwDestroyWindow(window_);
-  glfwTerminate();
-}
-
-void GlfwWindow::makeCurrent() { glfwMakeContextCurrent(window_); }
 std::unique_ptr<GlContext> GlfwWindow::createShared() { return std::make_unique<GlfwSharedContext>(window_, debug()); }
 void GlfwWindow::releaseCurrent() { glfwMakeContextCurrent(nullptr); }
-void GlfwWindow::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 void GlfwWindow::setIcon(int width, int height, const std::uint8_t* rgba) {
   if (width <= 0 || height <= 0 || !rgba) return;
   GLFWimage image{width, height, const_cast<unsigned char*>(rgba)};  // GLFW only reads it

@@ -36,6 +36,11 @@ class GlfwWindow final : public GlContext {
   void framebufferSize(int& width, int& height) const;
 
  private:
+  /// Creates the window with the hints given, makes it current and loads GL (glfw_window.cpp). On
+  /// failure GLFW is terminated and the Error thrown says `noWindow()` when no window was made.
+  void createAndLoad(int width, int height, const std::string& title, bool debug, const char* backend,
+                     std::string (*noWindow)());
+
   GLFWwindow* window_ = nullptr;
 };
 

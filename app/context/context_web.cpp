@@ -34,32 +34,16 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title, bool deb
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
   glfwWindowHint(GLFW_ALPHA_BITS, 0);  // an opaque canvas: the page behind never shows through
   glfwWindowHint(GLFW_DEPTH_BITS, 24);
-  window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
-  if (!window_) {
-    glfwTerminate();
-    throw Error("this browser gives the page no WebGL2 context (vplab needs WebGL2: a current Chrome, Edge, "
-                "Firefox or Safari 15.2 and later, with hardware acceleration or its software fallback on)");
-  }
-  glfwMakeContextCurrent(window_);
-  try {
-    static_cast<void>(debug);  // WebGL has no KHR_debug: errors are read with glGetError (checkErrors)
-    loadGl(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress), false, "webgl2");
-  } catch (...) {
-    glfwDestroyWindow(window_);
-    glfwTerminate();
-    throw;
-  }
+  static_cast<void>(debug);  // WebGL has no KHR_debug: errors are read with glGetError (checkErrors)
+  createAndLoad(width, height, title, false, "webgl2", [] {
+    return std::string("this browser gives the page no WebGL2 context (vplab needs WebGL2: a current Chrome, "
+                       "Edge, Firefox or Safari 15.2 and later, with hardware acceleration or its software "
+                       "fallback on)");
+  });
 }
 
-GlfwWindow::~GlfwWindow() {
-  glfwDestroyWindow(window_);
-  glfwTerminate();
-}
-
-void GlfwWindow::makeCurrent() { glfwMakeContextCurrent(window_); }
 std::unique_ptr<GlContext> GlfwWindow::createShared() { return nullptr; }  // the page draws its views itself
 void GlfwWindow::releaseCurrent() {}
-void GlfwWindow::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 bool GlfwWindow::shouldClose() const { return false; }  // a page is closed by its tab, not by itself
 void GlfwWindow::setShouldClose(bool) {}
 void GlfwWindow::swapBuffers() {}  // the browser presents the canvas when the frame's callback returns
