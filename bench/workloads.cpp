@@ -23,13 +23,8 @@ Scene makeBenchScene(int segments) {
   // The eye 4 units in front of the sphere's centre plane; the front plane F = 0.6 cuts the cap
   // nearest the eye, the right plane and the top plane cut its side (the sphere sits right of and
   // above the window's centre). B = −2 lies behind the sphere.
-  s.camera.vrp = {0, 0, 0};
-  s.camera.prp = {0, 0, 4};
-  s.camera.vup = {0, 1, 0};
-  s.camera.window = {-1.2, 1.2, -0.9, 0.9};
-  s.camera.front = 0.6;
-  s.camera.back = -2;
-  s.camera.projection = Projection::perspective;
+  s.camera = {.vrp = {0, 0, 0}, .prp = {0, 0, 4}, .vup = {0, 1, 0}, .window = {-1.2, 1.2, -0.9, 0.9},
+              .front = 0.6, .back = -2, .projection = Projection::perspective};
   s.device = {1280, 960};
 
   SceneObject o;

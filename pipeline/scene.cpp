@@ -57,13 +57,8 @@ Scene defaultScene() {
   s.titleDe = "Standard-Vorlesungsszene";
   s.captionDe = "Würfel, Tetraeder, Zylinder und Kugel (Skript, Kapitel 16) in Zentralprojektion: das Tetraeder ragt über "
                 "den rechten und unteren Fensterrand, die Kugel über den rechten und oberen, so zeigt jede Ansicht Clipping.";
-  s.camera.vrp = {0, 0, 0};
-  s.camera.prp = {3.0, 2.4, 7.5};
-  s.camera.vup = {0, 1, 0};
-  s.camera.window = {-2.4, 2.4, -1.8, 1.8};
-  s.camera.front = 3.0;
-  s.camera.back = -3.2;
-  s.camera.projection = Projection::perspective;
+  s.camera = {.vrp = {0, 0, 0}, .prp = {3.0, 2.4, 7.5}, .vup = {0, 1, 0}, .window = {-2.4, 2.4, -1.8, 1.8},
+              .front = 3.0, .back = -3.2, .projection = Projection::perspective};
   s.device = {640, 480};
   s.background = {0.11, 0.12, 0.15};
   s.lights = {{{6, 8, 9}, {1, 1, 1}}};
