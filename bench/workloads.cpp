@@ -3,7 +3,7 @@
 #include "bench/workloads.h"
 
 #include "pipeline/device_mapping.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "pipeline/modeling.h"
 #include "pipeline/primitives.h"
 #include "pipeline/view_mapping.h"

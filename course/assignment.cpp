@@ -3,7 +3,7 @@
 #include "course/mistake_models.h"
 #include "io/json_read.h"
 #include "io/limits.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <nlohmann/json.hpp>
 

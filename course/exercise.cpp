@@ -1,6 +1,6 @@
 #include "course/exercise.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "course/rational.h"
 
 #include <algorithm>

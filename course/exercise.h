@@ -16,7 +16,7 @@
 // is a fraction with a denominator of at most 1000 (Rational::approximate).
 #pragma once
 #include "pipeline/clip_steps.h"
-#include "pipeline/enum_table.h"
+#include "base/enum_table.h"
 #include "pipeline/pipeline.h"
 
 #include <cstdint>

@@ -1,7 +1,7 @@
 #include "course/exercise_answer.h"
 
 #include "pipeline/clipping.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <string>
 

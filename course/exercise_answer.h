@@ -6,7 +6,7 @@
 
 #include "course/assignment.h"
 #include "course/exercise.h"
-#include "pipeline/language.h"
+#include "base/language.h"
 
 #include <nlohmann/json.hpp>
 

@@ -7,7 +7,7 @@
 #include "io/json_read.h"
 #include "io/limits.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <algorithm>
 #include <cmath>

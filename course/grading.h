@@ -12,7 +12,7 @@
 // outcodes) may give its first vertices only (P1 alone). `null` marks a value not given (the answer
 // template's empty fields).
 #pragma once
-#include "pipeline/language.h"
+#include "base/language.h"
 #include "course/mistake_models.h"
 
 #include <nlohmann/json.hpp>

@@ -2,7 +2,7 @@
 
 #include "io/dump.h"
 #include "pipeline/clipping.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 
 namespace vplab {
 

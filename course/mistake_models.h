@@ -29,7 +29,7 @@
 // stage or is a relabelling (transposed, y not flipped, front/back: the cube is symmetric under
 // z → w − z, so clipping commutes with it).
 #pragma once
-#include "pipeline/language.h"
+#include "base/language.h"
 #include "pipeline/scene.h"
 
 #include <nlohmann/json.hpp>

@@ -2,7 +2,7 @@
 
 #include "course/rational.h"
 #include "course/xml_text.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <algorithm>
 #include <cctype>

@@ -40,7 +40,7 @@
 
 #include "course/assignment.h"
 #include "course/mistake_models.h"
-#include "pipeline/language.h"
+#include "base/language.h"
 
 #include <cstdint>
 #include <nlohmann/json.hpp>

@@ -1,6 +1,6 @@
 #include "course/rational.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <cmath>
 #include <cstdio>

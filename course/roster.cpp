@@ -1,6 +1,6 @@
 #include "course/roster.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <algorithm>
 #include <cctype>

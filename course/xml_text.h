@@ -1,5 +1,5 @@
 // Text inside XML (the Moodle question bank, course/moodle_bank.h; the JUnit report of `vplab grade`,
-// app/course/grade_report.cpp): one escape for element text and double-quoted attribute values.
+// app/course_kit/grade_report.cpp): one escape for element text and double-quoted attribute values.
 #pragma once
 
 #include <string>

@@ -1,6 +1,6 @@
 #include "course/zip_archive.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <zlib.h>
 

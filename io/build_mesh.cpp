@@ -1,7 +1,7 @@
 #include "io/build_mesh.h"
 
 #include "io/obj_mesh.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "pipeline/primitives.h"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "io/dump.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "io/json_text.h"
 
 #include <sstream>

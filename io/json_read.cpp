@@ -1,6 +1,6 @@
 #include "io/json_read.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <cmath>
 #include <set>

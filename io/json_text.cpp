@@ -1,6 +1,6 @@
 #include "io/json_text.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 namespace vplab {
 

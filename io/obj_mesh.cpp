@@ -1,7 +1,7 @@
 #include "io/obj_mesh.h"
 #include "io/build_mesh.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "io/read_file.h"
 
 // TINYOBJLOADER_USE_DOUBLE comes with the tinyobjloader_double target.

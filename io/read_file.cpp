@@ -1,6 +1,6 @@
 #include "io/read_file.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <fstream>
 

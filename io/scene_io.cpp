@@ -3,7 +3,7 @@
 #include "io/scene_parts.h"
 #include "io/build_mesh.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "io/json_read.h"
 #include "io/json_text.h"
 #include "pipeline/clipping.h"

@@ -1,6 +1,6 @@
 // Parts of the scene format (io/scene_io.h) that other formats write the same way: a lesson's step
 // changes the camera, moves an object and replaces the clip planes with the scene's own keys
-// (app/core/lesson.h).
+// (app/lessons/lesson.h).
 #pragma once
 
 #include "io/json_read.h"

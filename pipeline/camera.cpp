@@ -1,6 +1,6 @@
 #include "pipeline/camera.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "pipeline/view_mapping.h"
 
 #include <algorithm>

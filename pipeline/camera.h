@@ -5,7 +5,7 @@
 // are z = F and z = B in VRC with B < F (docs/conventions.md, stages 2 and 3).
 #pragma once
 
-#include "pipeline/enum_table.h"
+#include "base/enum_table.h"
 #include "pipeline/math.h"
 
 #include <array>
@@ -61,7 +61,7 @@ struct VrcAxes {
 };
 
 /// What makes a camera invalid, as data: cameraError says it in English, naming the camera's values;
-/// the viewer says it in its language from the same data (app/core/camera_text.h).
+/// the viewer says it in its language from the same data (app/inspect/camera_text.h).
 struct CameraProblem {
   enum class Kind {
     vectorsNotFinite,    // VRP, PRP or VUP has a NaN or infinite component

@@ -1,6 +1,6 @@
 #include "pipeline/mesh.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <algorithm>
 #include <string>

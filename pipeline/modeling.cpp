@@ -1,6 +1,6 @@
 #include "pipeline/modeling.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 namespace vplab {
 

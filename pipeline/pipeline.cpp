@@ -3,7 +3,7 @@
 //        edges, bounding box  4 stage 5 of the created vertices  5 the run, in steps (PipelineJob)
 #include "pipeline/pipeline.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "pipeline/view_mapping.h"
 
 #include <algorithm>

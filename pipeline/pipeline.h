@@ -15,7 +15,7 @@
 
 #include "pipeline/clipping.h"
 #include "pipeline/cost_model.h"
-#include "pipeline/enum_table.h"
+#include "base/enum_table.h"
 #include "pipeline/scene.h"
 
 #include <array>

@@ -1,6 +1,6 @@
 #include "pipeline/primitives.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
 #include "pipeline/scene.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "pipeline/primitives.h"
 
 namespace vplab {

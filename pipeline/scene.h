@@ -3,8 +3,8 @@
 #pragma once
 
 #include "pipeline/camera.h"
-#include "pipeline/enum_table.h"
-#include "pipeline/language.h"
+#include "base/enum_table.h"
+#include "base/language.h"
 #include "pipeline/device_mapping.h"
 #include "pipeline/mesh.h"
 #include "pipeline/modeling.h"

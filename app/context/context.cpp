@@ -1,6 +1,6 @@
 #include "app/context/context.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 namespace vplab {
 

@@ -4,7 +4,7 @@
 // each context owns its GladGLContext, so no function pointers are global.
 #pragma once
 
-#include "pipeline/enum_table.h"
+#include "base/enum_table.h"
 
 #include <array>
 #include <glad/gl.h>

@@ -3,7 +3,7 @@
 // loader, so a machine without it gets an error message, not a failure to start.
 #include "app/context/context.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <glad/egl.h>
 

@@ -2,7 +2,7 @@
 // error callback (a process-wide global) is needed.
 #include "app/context/context_glfw.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

@@ -2,7 +2,7 @@
 // into a client buffer; vplab only gives it a 1 × 1 one and draws into framebuffer objects.
 #include "app/context/context.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <GL/osmesa.h>  // after glad/gl.h, which keeps GL/gl.h out
 

@@ -8,7 +8,7 @@
 // course page cannot set) and none of the desktop's headless backends.
 #include "app/context/context_glfw.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

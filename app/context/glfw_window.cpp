@@ -2,7 +2,7 @@
 // once GLFW is set up and its hints are given. Each platform's file gives the hints and what differs.
 #include "app/context/context_glfw.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

@@ -1,6 +1,6 @@
 #include "app/export/gif.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <gif_lib.h>
 #include <fcntl.h>

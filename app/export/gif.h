@@ -1,5 +1,5 @@
 // Animated GIF through giflib (Debian's libgif): a lesson's moves and the stage morph as animations
-// for slides and web pages (app/lessons/lesson_export.h). Each frame gets its own palette of at most
+// for slides and web pages (app/commands/lesson_export.h). Each frame gets its own palette of at most
 // 256 colours (giflib's median-cut quantizer, GifQuantizeBuffer), so the flat colours of the views
 // stay exact and only shading bands.
 #pragma once

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 namespace vplab {
 

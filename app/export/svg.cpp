@@ -12,7 +12,7 @@
 #include "app/views/hidden_lines.h"
 #include "app/views/painted_fill.h"
 #include "app/views/projection.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 
 namespace vplab {
 

@@ -5,7 +5,7 @@
 #include "app/export/svg.h"
 #include "app/fonts/font_atlas.h"
 #include "app/views/render_request.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 
 namespace vplab {
 

@@ -2,7 +2,7 @@
 
 #include "app/fonts/font_file.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <imgui.h>
 

@@ -1,6 +1,6 @@
 #include "app/gl/render_target.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <algorithm>
 

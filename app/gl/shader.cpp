@@ -1,6 +1,6 @@
 #include "app/gl/shader.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <glm/gtc/type_ptr.hpp>
 

@@ -1,6 +1,6 @@
 #include "app/gl/texture_io.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <algorithm>
 #include <vector>

@@ -3,7 +3,7 @@
 #include "app/render/gl_backend.h"
 
 #include "pipeline/clipping.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "pipeline/pipeline.h"
 
 #include <algorithm>

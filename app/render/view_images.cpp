@@ -5,7 +5,7 @@
 #include "app/export/image_compare.h"
 #include "app/gl/texture_io.h"
 #include "app/render/view_worker.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <chrono>
 #include <utility>

@@ -1,6 +1,6 @@
 #include "app/render/view_renderer.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <string>
 

@@ -1,8 +1,8 @@
 // The views' render thread (view_worker.h).
 #include "app/render/view_worker.h"
 
-#include "app/core/background_priority.h"
-#include "pipeline/error.h"
+#include "app/workers/background_priority.h"
+#include "base/error.h"
 
 #include <chrono>
 

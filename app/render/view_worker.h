@@ -7,7 +7,7 @@
 #pragma once
 
 #include "app/context/context.h"
-#include "app/core/latest_wins.h"
+#include "app/workers/latest_wins.h"
 #include "app/render/view_images.h"
 
 #include <array>

@@ -16,11 +16,11 @@
 //   ui_lecture_views.inc             the Lecture tab, the lessons' box, the views' windows
 //   ui_messages.inc                  the viewer's frame and the session: files, dialogs, the status line
 //   views.inc                        the labels and titles the views draw (also in exported pictures)
-//   camera.inc                       what makes a camera invalid (app/core/camera_text.cpp)
+//   camera.inc                       what makes a camera invalid (app/inspect/camera_text.cpp)
 //   page.inc                         the page's own texts (app/web/)
 #pragma once
 
-#include "pipeline/language.h"
+#include "base/language.h"
 
 #include <cstddef>
 #include <initializer_list>

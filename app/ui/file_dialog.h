@@ -4,7 +4,7 @@
 // (app/web/page_services.h). Used to open and save scenes, to export views and to load OBJ meshes.
 #pragma once
 
-#include "pipeline/language.h"
+#include "base/language.h"
 
 #include <filesystem>
 #include <functional>

@@ -1,6 +1,6 @@
 #include "app/ui/headless_viewer.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <imgui.h>
 

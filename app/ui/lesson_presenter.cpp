@@ -2,7 +2,7 @@
 #include "app/ui/lesson_presenter.h"
 
 #include "app/views/caption_text.h"
-#include "app/core/picking.h"
+#include "app/inspect/picking.h"
 #include "app/ui/keys.h"
 #include "app/ui/widgets.h"
 

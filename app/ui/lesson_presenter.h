@@ -1,7 +1,7 @@
 // Presenting a lesson in the viewer (docs/lecturers.md "Lessons"): the keys a lecturer and a presentation
 // clicker use, the move into a step applied frame by frame, the caption box, and the step's
 // highlights in the views. The lesson itself and its moves are GL- and UI-free
-// (app/core/lesson_player.h); this applies them to the ViewerState.
+// (app/lessons/lesson_player.h); this applies them to the ViewerState.
 //
 // Keys while a lesson is open: → Space Page Down the next step, ← Page Up the one before, Home and
 // End the first and the last, a number and Enter that step, Esc the typed number (a second Esc

@@ -10,7 +10,7 @@
 #include "app/ui/keys.h"
 #include "app/ui/widgets.h"
 #include "app/views/render_request.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include <imgui.h>

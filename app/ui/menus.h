@@ -5,7 +5,7 @@
 #pragma once
 
 #include "app/context/context.h"
-#include "app/core/lesson.h"
+#include "app/lessons/lesson.h"
 #include "app/render/view_images.h"
 #include "app/render/view_renderer.h"
 #include "app/ui/session.h"
@@ -36,7 +36,7 @@ class Menus {
 
  private:
   void exportMenu();
-  /// File > Lessons: the bundled lessons (app/core/lesson.h).
+  /// File > Lessons: the bundled lessons (app/lessons/lesson.h).
   void lessonsMenu();
   /// View > Language: English or German, remembered (Session::chooseLanguage).
   void languageMenu();

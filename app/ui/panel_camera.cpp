@@ -1,7 +1,7 @@
 // The camera panel: the synthetic camera's parameters (lecture notes 15.1–15.2) and what follows from them.
 #include "app/ui/panels.h"
-#include "app/core/camera_text.h"
-#include "app/core/picking.h"
+#include "app/inspect/camera_text.h"
+#include "app/inspect/picking.h"
 #include "app/ui/widgets.h"
 
 #include <algorithm>

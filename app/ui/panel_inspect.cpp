@@ -2,7 +2,7 @@
 // (one vertex through every stage: MC, WC, VRC, homogeneous NPC, NPC, DC, its boundary coordinates
 // and outcode; lecture notes 15.2, Hill 7.4).
 #include "app/views/number_text.h"
-#include "app/core/matrix_text.h"
+#include "app/inspect/matrix_text.h"
 #include "app/ui/panels.h"
 #include "app/ui/widgets.h"
 

@@ -4,7 +4,7 @@
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include "app/ui/imdrawlist_backend.h"
 #include "app/ui/panels.h"
-#include "app/core/vanishing_text.h"
+#include "app/inspect/vanishing_text.h"
 #include "app/ui/widgets.h"
 
 #include "app/views/depth_plot.h"

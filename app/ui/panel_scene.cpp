@@ -3,7 +3,7 @@
 #include "app/ui/widgets.h"
 
 #include "pipeline/clipping.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "io/obj_mesh.h"
 #include "io/build_mesh.h"
 
@@ -21,7 +21,7 @@ void addObject(ViewerState& s, Shape shape, std::string file) {
   o.color = {0.75, 0.75, 0.78};
   if (shape == Shape::polygon) o.vertices = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
   o.transform.translate = scene.camera.vrp;  // where the camera looks
-  if (shape == Shape::mesh) {  // read on the viewer's worker thread (app/core/loader.h)
+  if (shape == Shape::mesh) {  // read on the viewer's worker thread (app/document/loader.h)
     s.objectToLoad = std::move(o);
     return;
   }

@@ -6,9 +6,9 @@
 #include "app/ui/run_viewer.h"
 
 #include "app/context/context_glfw.h"
-#include "app/core/assets.h"
-#include "app/core/autosave.h"
-#include "app/core/preferences.h"
+#include "app/document/assets.h"
+#include "app/document/autosave.h"
+#include "app/document/preferences.h"
 #include "app/gl/render_target.h"
 #include "app/ui/window_input.h"
 #include "app/ui/viewer.h"

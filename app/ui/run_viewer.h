@@ -1,7 +1,7 @@
 // The interactive viewer in a GLFW window (`vplab`, `vplab --scene FILE`).
 #pragma once
 
-#include "pipeline/language.h"
+#include "base/language.h"
 #include "pipeline/scene.h"
 
 #include <functional>
@@ -29,7 +29,7 @@ struct ViewerLaunch {
   size_t lessonStep = 0;            // its step to open, from 0
   int width = 1280, height = 720;   // the window, in screen units
   float uiScale = 1.f;              // larger fonts and handles for projectors
-  std::optional<Language> language; // --lang; else the remembered choice, else the locale's (app/core/preferences.h)
+  std::optional<Language> language; // --lang; else the remembered choice, else the locale's (app/document/preferences.h)
   int quitAfterFrames = 0;          // > 0: quit by itself after that many frames (smoke tests)
   std::string screenshotOnQuit;     // a PNG of the whole window written when quitting
   /// How long a screenshot (F12, screenshotOnQuit) and the scripted end (quitAfterFrames) wait for

@@ -1,11 +1,11 @@
 // Index: 1 commands  2 each frame  3 dialogs  4 files and links  5 autosave and recovery  6 preferences
 #include "app/ui/session.h"
 
-#include "app/core/assets.h"
+#include "app/document/assets.h"
 #include "app/ui/lesson_presenter.h"
 #include "app/ui/panels.h"
 #include "app/ui/widgets.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "io/scene_io.h"
 
 #define IMGUI_DEFINE_MATH_OPERATORS

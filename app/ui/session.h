@@ -1,13 +1,13 @@
 // The document's life beyond editing (docs/lecturers.md "The viewer"): opening a scene (read on a worker
 // thread, with progress and Cancel) or adding an OBJ, saving (never over a scene shipped with
-// vplab), autosave and recovery after a crash, links (app/core/url_state.h), and asking before
+// vplab), autosave and recovery after a crash, links (app/document/url_state.h), and asking before
 // unsaved changes are lost. The viewer composes the frame; this owns what happens to the file.
 #pragma once
 
-#include "app/core/autosave.h"
+#include "app/document/autosave.h"
 #include "app/ui/file_dialog.h"
-#include "app/core/loader.h"
-#include "app/core/url_state.h"
+#include "app/document/loader.h"
+#include "app/document/url_state.h"
 #include "app/ui/viewer_state.h"
 
 #include <filesystem>

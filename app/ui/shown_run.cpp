@@ -1,7 +1,7 @@
 // The CPU pipeline's run of the shown scene (shown_run.h).
 #include "app/ui/shown_run.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <chrono>
 

@@ -1,13 +1,13 @@
 // The CPU pipeline's run of the shown scene (docs/lecturers.md "The viewer"). It runs again only when the
 // shown scene (Document::shownRevision) or the options changed: frames drawn for hover and ImGui's settling
 // cost none. Headless (the UI tests, `vplab render --view ui`) it runs in the frame that needs it; in
-// the window on a worker thread (app/core/pipeline_worker.h), so the window never waits for the
+// the window on a worker thread (app/workers/pipeline_worker.h), so the window never waits for the
 // pipeline; in the page, which has no threads, in steps across frames (PipelineJob), a few ms of
 // each frame. A finished run is published whole into the viewer's state with the scene it ran on
 // (ViewerState::ran, ranScene), never copied.
 #pragma once
 
-#include "app/core/pipeline_worker.h"
+#include "app/workers/pipeline_worker.h"
 #include "app/ui/viewer_state.h"
 
 #include <array>

@@ -3,9 +3,9 @@
 // Index: 1 helpers  2 drawing a view  3 the windows  4 interaction
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include "app/ui/layout.h"
-#include "app/core/camera_text.h"
-#include "app/core/lesson_marks.h"
-#include "app/core/picking.h"
+#include "app/inspect/camera_text.h"
+#include "app/lessons/lesson_marks.h"
+#include "app/inspect/picking.h"
 #include "app/ui/view_panes.h"
 #include "app/ui/lesson_presenter.h"
 #include "app/ui/widgets.h"

@@ -8,7 +8,7 @@
 #include "app/ui/lesson_presenter.h"
 #include "app/ui/panels.h"
 #include "app/ui/widgets.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include <imgui.h>

@@ -1,11 +1,11 @@
 // Everything the interactive viewer knows between frames, in one owned struct (no globals).
 #pragma once
 
-#include "app/core/assets.h"
-#include "app/core/document.h"
-#include "app/core/lesson_player.h"
-#include "app/core/picking.h"
-#include "app/core/tabs.h"
+#include "app/document/assets.h"
+#include "app/document/document.h"
+#include "app/lessons/lesson_player.h"
+#include "app/inspect/picking.h"
+#include "app/lessons/tabs.h"
 #include "app/views/views.h"
 #include "pipeline/pipeline.h"
 

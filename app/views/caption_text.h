@@ -1,9 +1,9 @@
-// A lesson step's caption (app/core/lesson.h) as runs of text to lay out: plain words, and inline
+// A lesson step's caption (app/lessons/lesson.h) as runs of text to lay out: plain words, and inline
 // mathematics between $ and $ with sub- and superscripts (z_{npc}, x^{2}) and a few TeX commands
 // written as their Unicode characters (\cdot ·, \times ×, \to →, \le ≤, \ge ≥, \ne ≠, \approx ≈,
 // \infty ∞, \alpha α, \beta β, \phi φ, \theta θ, \lambda λ, \pi π, \sqrt √). The viewer, the SVG
 // pictures and the Markdown index all draw the same runs, laid out once (layOutCaption;
-// app/ui/lesson_presenter.cpp, app/views/caption_strip.h, app/lessons/lesson_export.h).
+// app/ui/lesson_presenter.cpp, app/views/caption_strip.h, app/commands/lesson_export.h).
 #pragma once
 
 #include <functional>

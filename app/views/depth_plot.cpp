@@ -7,7 +7,7 @@
 #include "app/views/number_text.h"
 #include "app/views/theme.h"
 #include "pipeline/device_mapping.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "pipeline/view_mapping.h"
 
 #include <algorithm>

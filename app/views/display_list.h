@@ -12,7 +12,7 @@
 
 #include "app/views/labels.h"
 #include "app/views/view_camera.h"
-#include "pipeline/enum_table.h"
+#include "base/enum_table.h"
 #include "pipeline/mesh.h"
 #include "pipeline/scene.h"
 

@@ -1,6 +1,6 @@
 #include "app/views/image.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>

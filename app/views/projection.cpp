@@ -4,7 +4,7 @@
 #include <string>
 
 #include "pipeline/device_mapping.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 
 namespace vplab::draw {
 

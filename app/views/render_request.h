@@ -1,4 +1,4 @@
-// One picture of a view, however it is asked for: `vplab render` (app/cli.cpp), the viewer's export
+// One picture of a view, however it is asked for: `vplab render` (app/commands/cli.cpp), the viewer's export
 // menu (app/ui/viewer.cpp) and the tests all describe it with a RenderRequest, and two backends draw
 // it: renderImage (app/render/headless.h, a PNG through GL) and svgOfRequest (app/export/svg.h, an SVG).
 // GL-free: the request names what to draw, not how.

@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "pipeline/enum_table.h"
+#include "base/enum_table.h"
 
 #include <optional>
 #include <string_view>

@@ -4,7 +4,7 @@
 
 #include "app/views/labels.h"
 #include "app/views/theme.h"
-#include "pipeline/language.h"
+#include "base/language.h"
 #include "pipeline/pipeline.h"
 
 #include <glm/glm.hpp>

@@ -16,8 +16,8 @@
 #include "app/views/labels.h"
 #include "app/views/observer.h"
 #include "app/views/theme.h"
-#include "pipeline/enum_table.h"
-#include "pipeline/language.h"
+#include "base/enum_table.h"
+#include "base/language.h"
 #include "pipeline/pipeline.h"
 
 #include <array>
@@ -95,7 +95,7 @@ struct Highlights {
     bool operator==(const Step&) const = default;
   };
   std::optional<Step> step;
-  /// A lesson step's highlights (app/core/lesson.h): planes (0–5 the view volume's, left, right,
+  /// A lesson step's highlights (app/lessons/lesson.h): planes (0–5 the view volume's, left, right,
   /// bottom, top, back, front; 6 + k the scene's user clip plane k) and axes of VRC (0 U, 1 V, 2 N).
   std::vector<int> planes;
   std::vector<int> axes;
@@ -112,7 +112,7 @@ struct MorphSettings {
 };
 
 /// How the views show the scene, as the user set it: each view's style and observer, the morph, the
-/// overlays. Kept with the session and carried by a link (app/core/url_state.h).
+/// overlays. Kept with the session and carried by a link (app/document/url_state.h).
 struct DisplaySettings {
   ViewSettings camera{Style::flat, {}};
   ViewSettings world{Style::shaded, {}};

@@ -14,7 +14,7 @@ namespace {
 
 using namespace draw;
 
-// A handle's name: app/core/picking.h names them in English (their ids); the frustum's planes are
+// A handle's name: app/inspect/picking.h names them in English (their ids); the frustum's planes are
 // labelled in the language, as the frustum's own labels.
 std::string handleLabel(const std::string& name, Language lang) {
   for (const text::Text t : {text::Text("front F"), text::Text("back B")})

@@ -1,7 +1,7 @@
 // The page's loader: a second, small WebAssembly module (io/ and pipeline/, no GL, no ImGui) that
 // runs in a Web Worker (loader-worker.js) and builds a scene's meshes, so that the page's own
 // thread never waits for a large scene to be read and tessellated (docs/measured.md "Large scenes in
-// the page"; app/core/loader.h, SceneLoader::useRemote). Threads in the page itself would need
+// the page"; app/document/loader.h, SceneLoader::useRemote). Threads in the page itself would need
 // cross-origin isolation headers that a course page cannot count on; a worker needs none.
 //
 // The worker holds the bundled assets (preloaded, as the page's module does) and a copy of every
@@ -9,7 +9,7 @@
 // same on both sides. It parses the scene's text with every check the desktop makes, and hands back
 // each object's mesh as plain arrays; the page parses the same text again with them.
 #include "io/scene_io.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <emscripten/emscripten.h>
 

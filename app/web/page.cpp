@@ -1,5 +1,5 @@
 // The lab as a web page (docs/students.md "In the browser"): the browser's counterpart of `vplab`
-// (app/cli.cpp) and of the window's event loop (app/ui/run_viewer.cpp). The viewer, its panels, views and GL
+// (app/commands/cli.cpp) and of the window's event loop (app/ui/run_viewer.cpp). The viewer, its panels, views and GL
 // backend are the desktop's; what differs is only how frames are driven and where files go.
 //
 // Frames: the browser calls `tick` before each repaint (requestAnimationFrame). Like the window's
@@ -9,7 +9,7 @@
 // index.html calls the exported functions at the end (vplab_*) with the Page's address, which it
 // gets at start: the page's state lives in one owned struct, not in globals.
 #include "app/context/context_glfw.h"
-#include "app/core/autosave.h"
+#include "app/document/autosave.h"
 #include "app/gl/render_target.h"
 #include "app/ui/text_fit.h"
 #include "app/ui/viewer.h"
@@ -18,7 +18,7 @@
 #include "app/web/page_services.h"
 #include "io/dump.h"
 #include "io/limits.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "io/scene_io.h"
 
 #define GLFW_INCLUDE_NONE
@@ -162,7 +162,7 @@ struct Page {
     }
   }
 
-  /// A link's state (app/core/url_state.h); a fragment that is not understood is said in the status line.
+  /// A link's state (app/document/url_state.h); a fragment that is not understood is said in the status line.
   void showLink(const std::string& fragment, bool atStart) {
     if (fragment.empty() || fragment == shownHash) return;
     // The address is the link until the page writes what it shows (afterFrame): a scene still

@@ -7,7 +7,7 @@
 #pragma once
 
 #include "app/ui/file_dialog.h"
-#include "pipeline/language.h"
+#include "base/language.h"
 
 #include <cstdint>
 #include <filesystem>

@@ -11,7 +11,7 @@ endif()
 file(READ "${README}" readme)
 string(FIND "${readme}" "${table}" at)
 if(at EQUAL -1)
-  message(FATAL_ERROR "${README}: its layer table is not tests/architecture/layers.cmake's. Put this in its place "
-                      "(cmake -DPRINT=ON -P tests/architecture/check_includes.cmake):\n${table}")
+  message(FATAL_ERROR "${README}: its layer table is not cmake/layers.cmake's. Put this in its place "
+                      "(cmake -DPRINT=ON -P cmake/check_includes.cmake):\n${table}")
 endif()
-message(STATUS "${README} shows the layers of tests/architecture/layers.cmake")
+message(STATUS "${README} shows the layers of cmake/layers.cmake")

@@ -1,8 +1,10 @@
 # The architecture test must fail on a violation: check_includes.cmake runs over the small tree in
 # fixture/ (files never compiled) whose files break the layers in each way, with one excepted file
-# and one stale exception, and this script checks that it fails and names each case exactly.
+# and one stale exception, and over fixture_rows/ with two tables whose rows are wrong (one allows
+# what no file includes, one names a layer above it); this script checks that it fails and names each
+# case exactly.
 #
-#   cmake -DCHECK=<check_includes.cmake> -DFIXTURE=<fixture dir> -P self_test.cmake
+#   cmake -DCHECK=<check_includes.cmake> -DFIXTURE=<fixture dir> -P self_test.cmake  (fixture_rows/ beside it)
 cmake_minimum_required(VERSION 3.25)
 
 execute_process(COMMAND ${CMAKE_COMMAND} -DSOURCE_DIR=${FIXTURE} -DPARTIAL=ON
@@ -54,6 +56,27 @@ execute_process(COMMAND ${CMAKE_COMMAND} -DSOURCE_DIR=${FIXTURE} -P ${CHECK}
 string(FIND "${unlisted_out}${unlisted_err}" "app/unlisted/ holds sources but is no layer" unlisted_at)
 if(unlisted_result EQUAL 0 OR unlisted_at EQUAL -1)
   string(APPEND failures "a directory that no layer names is not reported: ${unlisted_out}${unlisted_err}\n")
+endif()
+# Each row is exact: a layer allowed but never included, and an outside library allowed but never
+# included, are errors; a row naming a layer above it is an error before any file is read.
+get_filename_component(here "${FIXTURE}" DIRECTORY)
+execute_process(COMMAND ${CMAKE_COMMAND} -DSOURCE_DIR=${here}/fixture_rows -DLAYERS=${here}/rows_unused.cmake -P ${CHECK}
+                RESULT_VARIABLE unused_result OUTPUT_VARIABLE unused_out ERROR_VARIABLE unused_err)
+foreach(expected "high/ allows mid/, which none of its files includes" "high/ allows gl, which none of its files includes")
+  string(FIND "${unused_out}${unused_err}" "${expected}" at)
+  if(unused_result EQUAL 0 OR at EQUAL -1)
+    string(APPEND failures "an allowance no file uses is not reported (${expected}): ${unused_out}${unused_err}\n")
+  endif()
+endforeach()
+string(FIND "${unused_out}${unused_err}" "mid/ allows" mid_at)
+if(NOT mid_at EQUAL -1)
+  string(APPEND failures "mid/'s row is exact but reported: ${unused_out}${unused_err}\n")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -DSOURCE_DIR=${here}/fixture_rows -DLAYERS=${here}/rows_order.cmake -P ${CHECK}
+                RESULT_VARIABLE order_result OUTPUT_VARIABLE order_out ERROR_VARIABLE order_err)
+string(FIND "${order_out}${order_err}" "low/ may use high/, which is not a layer below it" order_at)
+if(order_result EQUAL 0 OR order_at EQUAL -1)
+  string(APPEND failures "a row naming a layer above it is not reported: ${order_out}${order_err}\n")
 endif()
 if(failures)
   message(FATAL_ERROR "check_includes.cmake does not report the fixture's violations as it should:\n${failures}\nIts output was:\n${text}")

@@ -10,7 +10,7 @@
 #include "course/rational.h"
 #include "course/sheet_values.h"
 #include "io/scene_io.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "tests/support/test_util.h"
 
 #include <gmock/gmock.h>

@@ -1,5 +1,5 @@
 // The tests' own Sutherland–Hodgman clipper in homogeneous NPC (issue 38's answers made independently
-// of the code under test: follow_through_test.cpp, tests/app/class_of_300_test.cpp). Written from the
+// of the code under test: follow_through_test.cpp, tests/app/commands/class_of_300_test.cpp). Written from the
 // lecture notes 15.3 and Blinn & Newell's boundary coordinates, sharing nothing with pipeline/.
 #pragma once
 

@@ -1,6 +1,6 @@
 // Issue 14, the pure part: the rational type, the exercise generator (same seed, same exercise;
 // well posed for every topic and projection), the mistake models and the grading of numbers.
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "course/exercise.h"
 #include "course/grading.h"
 #include "course/mistake_models.h"

@@ -1,4 +1,4 @@
-// The course's topics have one complete table (pipeline/enum_table.h; issue 39 item 3).
+// The course's topics have one complete table (base/enum_table.h; issue 39 item 3).
 #include "course/exercise.h"
 #include "tests/support/enum_table_check.h"
 

@@ -8,7 +8,7 @@
 #include "course/mistake_models.h"
 #include "course/moodle_bank.h"
 #include "course/sheet_values.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

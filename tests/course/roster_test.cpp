@@ -5,7 +5,7 @@
 #include "course/exercise.h"
 #include "course/roster.h"
 #include "course/zip_archive.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "tests/support/test_util.h"
 
 #include <gmock/gmock.h>

@@ -1,9 +1,9 @@
-// Fuzz target: a lesson file (JSON) as `vplab --lesson` reads it (app/core/lesson.h), then every
+// Fuzz target: a lesson file (JSON) as `vplab --lesson` reads it (app/lessons/lesson.h), then every
 // step's scene through the pipeline and every move between two steps, which must show valid cameras
-// only (an invalid one is a finding: the move's promise, app/core/lesson_transition.h).
-#include "app/core/lesson.h"
-#include "app/core/lesson_transition.h"
-#include "pipeline/error.h"
+// only (an invalid one is a finding: the move's promise, app/lessons/lesson_transition.h).
+#include "app/lessons/lesson.h"
+#include "app/lessons/lesson_transition.h"
+#include "base/error.h"
 #include "tests/fuzz/fuzz_run.h"
 
 #include <cstddef>

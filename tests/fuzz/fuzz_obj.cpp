@@ -1,6 +1,6 @@
 // Fuzz target: an OBJ file as a scene's mesh object reads it, then the whole pipeline, with the
 // default lecture scene's camera looking at it.
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "io/obj_mesh.h"
 #include "tests/fuzz/fuzz_run.h"
 

@@ -1,7 +1,7 @@
 #include "tests/fuzz/fuzz_run.h"
 
 #include "io/dump.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "pipeline/mesh.h"
 #include "pipeline/pipeline.h"
 

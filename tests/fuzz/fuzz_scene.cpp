@@ -1,6 +1,6 @@
 // Fuzz target: a scene file (JSON) as `vplab dump --scene` reads it, then the whole pipeline.
 // Mesh files are resolved relative to assets/scenes, so "../meshes/house.obj" is found.
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "io/scene_io.h"
 #include "tests/fuzz/fuzz_run.h"
 

@@ -433,7 +433,7 @@ TEST(SceneIo, UserClipPlanesAreReadAndWritten) {
   EXPECT_THAT(error(seven + "]"), HasSubstr("at most 6 user clip planes"));
 }
 
-// The page's way (app/core/loader.h): a worker parses the scene and builds its meshes; the page
+// The page's way (app/document/loader.h): a worker parses the scene and builds its meshes; the page
 // parses the same text again with them. The scene is the same, its meshes the very ones handed in;
 // a wrong number of meshes, a malformed mesh or one over the limits is an error naming the object.
 TEST(SceneIo, ParsesWithMeshesBuiltElsewhere) {

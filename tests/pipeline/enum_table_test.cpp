@@ -1,4 +1,4 @@
-// The pipeline's enums each have one complete table (pipeline/enum_table.h; issue 39 item 3).
+// The pipeline's enums each have one complete table (base/enum_table.h; issue 39 item 3).
 #include "pipeline/camera.h"
 #include "pipeline/pipeline.h"
 #include "pipeline/scene.h"

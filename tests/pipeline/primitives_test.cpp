@@ -2,7 +2,7 @@
 // counter-clockwise seen from outside), closedness, sizes, and bad segment counts.
 #include "pipeline/primitives.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "tests/support/test_util.h"
 
 #include <gmock/gmock.h>

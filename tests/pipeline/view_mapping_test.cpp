@@ -2,7 +2,7 @@
 // volume land on the known corners of the NPC cube, the depth non-linearity, the oblique presets.
 #include "pipeline/view_mapping.h"
 
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "tests/support/test_util.h"
 
 #include <gmock/gmock.h>

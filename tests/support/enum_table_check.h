@@ -1,10 +1,10 @@
-// Checks one enum's table (pipeline/enum_table.h) against what the enum is: a row for every value,
+// Checks one enum's table (base/enum_table.h) against what the enum is: a row for every value,
 // in the enum's order (values 0, 1, …: so arrays indexed by value and the keys' cycles line up), names
 // unique, and every name read back to its value. `count` is the enum's number of values, written
 // in the test from the enum's declaration, not taken from the table.
 #pragma once
 
-#include "pipeline/enum_table.h"
+#include "base/enum_table.h"
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 #include "app/context/context.h"
 #include "app/views/image.h"
 #include "app/render/view_renderer.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "pipeline/primitives.h"
 
 #include <gtest/gtest.h>

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "app/views/image.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 
 namespace vplab::test {
 

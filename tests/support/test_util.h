@@ -4,7 +4,7 @@
 
 #include "pipeline/camera.h"
 #include "pipeline/clipping.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "pipeline/scene.h"
 
 #include <glm/glm.hpp>

@@ -2,7 +2,7 @@
 // the plot's pixels and rises monotonically, GL's window depth is its mirror, the bars span the
 // objects' VRC z ranges, and the labels stay inside the chart without overlapping.
 #include "app/views/depth_plot.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "pipeline/view_mapping.h"
 #include "tests/views/view_test_support.h"
 

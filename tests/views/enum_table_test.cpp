@@ -1,4 +1,4 @@
-// The views' enums each have one complete table (pipeline/enum_table.h; issue 39 item 3).
+// The views' enums each have one complete table (base/enum_table.h; issue 39 item 3).
 #include "app/views/display_list.h"
 #include "app/views/theme.h"
 #include "app/views/views.h"

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/hand_made_lists.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 
 namespace vplab::draw {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "app/export/svg.h"
 #include "app/fonts/font_atlas.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "tests/support/svg_test_support.h"
 #include "tests/support/hand_made_lists.h"
 

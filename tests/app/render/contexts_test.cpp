@@ -20,7 +20,7 @@ namespace {
 using ::testing::HasSubstr;
 
 TEST(Contexts, BackendNamesRoundTrip) {
-  test::expectCompleteTable(kBackendNames, 3);  // automatic, egl, osmesa (pipeline/enum_table.h)
+  test::expectCompleteTable(kBackendNames, 3);  // automatic, egl, osmesa (base/enum_table.h)
   EXPECT_EQ(toString(Backend::automatic), "auto");
   EXPECT_FALSE(backendFromString("vulkan"));
   EXPECT_FALSE(backendFromString(""));

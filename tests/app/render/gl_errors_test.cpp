@@ -3,7 +3,7 @@
 // error or KHR_debug error message. And the check itself works: a deliberate error is caught,
 // named, and cleared.
 #include "app/render/headless.h"
-#include "app/core/picking.h"
+#include "app/inspect/picking.h"
 #include "io/scene_io.h"
 #include "tests/support/gl_test_support.h"
 

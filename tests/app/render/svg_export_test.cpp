@@ -6,7 +6,7 @@
 #include "app/export/svg.h"
 #include "app/render/headless.h"
 #include "app/export/cpu_raster.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "io/scene_io.h"
 #include "tests/support/gl_test_support.h"
 

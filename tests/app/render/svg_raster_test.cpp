@@ -39,7 +39,7 @@
 #include "app/export/svg.h"
 #include "app/fonts/font_atlas.h"
 #include "app/render/headless.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "io/scene_io.h"
 #include "tests/support/gl_test_support.h"
 #include "tests/support/svg_test_support.h"

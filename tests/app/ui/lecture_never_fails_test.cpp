@@ -3,7 +3,7 @@
 // frame is caught, the last good state shown and the reason said; a modal dialog takes the keys;
 // recovery restores exactly what was on screen, the lesson and its step and the typed camera
 // included. The real window under a random user: tests/app/window/monkey_test.cpp.
-#include "app/core/autosave.h"
+#include "app/document/autosave.h"
 #include "app/ui/headless_viewer.h"
 #include "app/ui/keys.h"
 #include "tests/support/files.h"

@@ -3,7 +3,7 @@
 // do not break the lesson, and the caption box.
 #include "app/ui/lesson_presenter.h"
 
-#include "app/core/assets.h"
+#include "app/document/assets.h"
 #include "app/ui/headless_viewer.h"
 #include "app/ui/keys.h"
 #include "tests/support/gl_test_support.h"

@@ -1,8 +1,8 @@
-// The viewer showing a link as it was written (the link's codec: tests/app/core/url_state_test.cpp).
-#include "app/core/url_state.h"
+// The viewer showing a link as it was written (the link's codec: tests/app/document/url_state_test.cpp).
+#include "app/document/url_state.h"
 
 #include "app/ui/headless_viewer.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "tests/support/gl_test_support.h"
 
 #include <gmock/gmock.h>

@@ -1,9 +1,9 @@
-// The viewer with the CPU pipeline on a worker thread (app/core/pipeline_worker.h, docs/lecturers.md
+// The viewer with the CPU pipeline on a worker thread (app/workers/pipeline_worker.h, docs/lecturers.md
 // "The viewer"): it goes on drawing frames while a large scene's run is under way, then shows what the
-// synchronous viewer shows (the worker alone: tests/app/core/pipeline_worker_test.cpp). And the
+// synchronous viewer shows (the worker alone: tests/app/workers/pipeline_worker_test.cpp). And the
 // page's way without threads: the run in steps across frames.
 #include "app/ui/headless_viewer.h"
-#include "app/core/pipeline_worker.h"
+#include "app/workers/pipeline_worker.h"
 #include "io/dump.h"
 #include "tests/support/gl_test_support.h"
 

@@ -15,12 +15,12 @@
 #include <fstream>
 #include <future>
 
-#include "app/core/atomic_file.h"
-#include "app/core/autosave.h"
+#include "app/document/atomic_file.h"
+#include "app/document/autosave.h"
 #include "app/ui/headless_viewer.h"
 #include "app/ui/input_queue.h"
 #include "app/ui/keys.h"
-#include "pipeline/error.h"
+#include "base/error.h"
 #include "io/scene_io.h"
 #include "tests/support/gl_test_support.h"
 #include "tests/support/files.h"

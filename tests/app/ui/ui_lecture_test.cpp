@@ -293,8 +293,8 @@ TEST(UiCompact, TheDesktopLayoutStaysWhereItFitsOrIsNotAllowed) {
 }  // namespace
 }  // namespace vplab
 
-#include "app/core/picking.h"
-#include "app/core/vanishing_text.h"
+#include "app/inspect/picking.h"
+#include "app/inspect/vanishing_text.h"
 #include "io/scene_io.h"
 
 namespace vplab {

@@ -5,7 +5,7 @@
 // change and the pixels that must (and must not) change with it.
 #include "app/ui/headless_viewer.h"
 #include "app/ui/keys.h"
-#include "app/core/picking.h"
+#include "app/inspect/picking.h"
 #include "tests/support/gl_test_support.h"
 
 #include <gmock/gmock.h>

@@ -10,8 +10,8 @@
 //   VPLAB_MONKEY_SEED=N VPLAB_MONKEY_EVENTS=M xvfb-run -a build/tests/test_monkey
 // (the events are the seed's; the render thread's and the workers' timing is the machine's).
 #include "app/context/context_glfw.h"
-#include "app/core/assets.h"
-#include "app/core/lesson.h"
+#include "app/document/assets.h"
+#include "app/lessons/lesson.h"
 #include "app/text/catalogue.h"
 #include "app/ui/input_queue.h"
 #include "app/ui/keys.h"

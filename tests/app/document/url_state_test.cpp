@@ -1,0 +1,125 @@
+// The link's state (app/document/url_state.h): exact round trips, short numbers, hostile fragments
+// (the viewer showing a link: tests/app/ui/links_test.cpp).
+#include "app/document/url_state.h"
+
+#include "base/error.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+
+namespace vplab {
+namespace {
+
+using ::testing::HasSubstr;
+
+UrlState everything() {
+  UrlState s;
+  s.scene = "perspective";
+  Camera c;
+  c.vrp = {0.1, -0.7684708290995371, 1e-7};
+  c.prp = {3, 2.4, 7.5};
+  c.vup = {0, 1, 1e-300};
+  c.window = {-2.4, 2.4, -1.8, 1.8};
+  c.front = 3;
+  c.back = -3.2;
+  c.projection = Projection::oblique;
+  c.oblique = kCavalier;
+  s.camera = cameraLinkOf(c);
+  s.cameraStyle = Style::wire;
+  s.worldStyle = Style::hiddenLine;
+  s.npcStyle = Style::flat;
+  s.worldOrbit = Orbit{{-0.77, 0.5, 1.78}, 76.80140948635182, 28, 15.5, 40};
+  s.npcOrbit = Orbit{{0.5, 0.5, 0.5}, 38, -24, 3.3, 40};
+  s.strategy = ClipStrategy::divideFirst;
+  return s;
+}
+
+TEST(UrlState, RoundTripsExactly) {
+  const UrlState s = everything();
+  const std::string text = encodeUrlState(s);
+  EXPECT_EQ(decodeUrlState(text), s) << text;
+  EXPECT_EQ(decodeUrlState("#" + text), s);
+  EXPECT_THAT(text, HasSubstr("scene=perspective&vrp=0.1,-0.7684708290995371,1e-07&"));
+}
+
+// Every finite double reads back to itself: 10 000 random bit patterns (NaN and infinity skipped).
+TEST(UrlState, ShortestNumberReadsBackExactly) {
+  std::mt19937_64 random(7);
+  for (int i = 0; i < 10000; ++i) {
+    const uint64_t bits = random();
+    double v = 0;
+    std::memcpy(&v, &bits, sizeof v);
+    if (!std::isfinite(v)) continue;
+    const std::string s = shortestNumber(v);
+    EXPECT_EQ(std::strtod(s.c_str(), nullptr), v) << s;
+  }
+  EXPECT_EQ(shortestNumber(40), "40");
+  EXPECT_EQ(shortestNumber(-3.2), "-3.2");
+  EXPECT_EQ(shortestNumber(-0.0), "0");
+  EXPECT_EQ(shortestNumber(1e20), "1e+20");
+}
+
+// A link's camera parts replace only themselves; whether they make a camera is known over the scene's.
+TEST(UrlState, CameraPartsGoOverTheScenesCamera) {
+  Camera base;
+  base.vrp = {1, 2, 3};
+  base.window = {-2, 2, -1.5, 1.5};
+  const Camera c = decodeUrlState("prp=4,5,6&front=1").camera.over(base);
+  EXPECT_EQ(c.prp, Vec3(4, 5, 6));
+  EXPECT_EQ(c.front, 1);
+  EXPECT_EQ(c.vrp, base.vrp);
+  EXPECT_EQ(c.window, base.window);
+  EXPECT_EQ(c.back, base.back);
+  auto invalid = [&](const char* fragment) {
+    try {
+      decodeUrlState(fragment).camera.over(base);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_THAT(invalid("prp=1,2,3"), HasSubstr("the link's camera is not valid"));  // PRP on VRP
+  EXPECT_THAT(invalid("front=-5&back=5"), HasSubstr("the link's camera is not valid"));
+  EXPECT_EQ(decodeUrlState("").camera.over(base), base);
+}
+
+TEST(UrlState, AnEmptyFragmentGivesNothing) {
+  EXPECT_EQ(decodeUrlState(""), UrlState{});
+  EXPECT_EQ(decodeUrlState("#"), UrlState{});
+  EXPECT_EQ(encodeUrlState(UrlState{}), "");
+}
+
+TEST(UrlState, HostileFragmentsAreNamedErrors) {
+  auto error = [](const std::string& fragment) {
+    try {
+      decodeUrlState(fragment);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_THAT(error("vrp=1,2"), HasSubstr("vrp=\"1,2\" has 2 numbers, 3 expected"));
+  EXPECT_THAT(error("vrp=1,2,3,4"), HasSubstr("more than 3"));
+  EXPECT_THAT(error("front=nan"), HasSubstr("front=\"nan\" is not 1 finite number"));
+  EXPECT_THAT(error("back=-inf"), HasSubstr("not 1 finite number"));
+  EXPECT_THAT(error("back=1e999"), HasSubstr("not 1 finite number"));
+  EXPECT_THAT(error("front=3x"), HasSubstr("not 1 finite number"));
+  EXPECT_THAT(error("projection=fisheye"), HasSubstr("not perspective, parallel or oblique"));
+  EXPECT_THAT(error("camera-style=pretty"), HasSubstr("is not a style"));
+  EXPECT_THAT(error("world=0,0,0,0,95,10,40"), HasSubstr("is no observer"));
+  EXPECT_THAT(error("world=0,0,0,0,0,-1,40"), HasSubstr("is no observer"));
+  EXPECT_THAT(error("strategy=fast"), HasSubstr("not npc, wc or divide-first"));
+  EXPECT_THAT(error("scene=../../etc/passwd"), HasSubstr("not the name of a bundled scene"));
+  EXPECT_THAT(error("zoom=2"), HasSubstr("\"zoom\" is not a key vplab knows"));
+  EXPECT_THAT(error("vrp"), HasSubstr("is not KEY=VALUE"));
+  EXPECT_THAT(error(std::string(5000, 'a')), HasSubstr("5000 characters long"));
+  EXPECT_THAT(error("zoom\x01=2"), HasSubstr("\"zoom?\""));  // control characters are not echoed
+}
+
+}  // namespace
+}  // namespace vplab

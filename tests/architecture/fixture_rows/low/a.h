@@ -1,0 +1,2 @@
+// the lowest layer of the fixture: includes nothing
+#pragma once

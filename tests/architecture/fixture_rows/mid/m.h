@@ -1,0 +1,3 @@
+// uses low/, as its row allows
+#pragma once
+#include "low/a.h"
