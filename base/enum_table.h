@@ -5,7 +5,7 @@
 //   enum class Projection { perspective, parallel, oblique };
 //   inline constexpr EnumTable<Projection, 3> kProjectionNames = {{
 //       {Projection::perspective, "perspective"}, {Projection::parallel, "parallel"}, {Projection::oblique, "oblique"}}};
-//   inline constexpr auto kAllProjections = valuesOf(kProjectionNames);
+//   inline constexpr auto allOf<Projection>() = valuesOf(kProjectionNames);
 //   inline std::string_view toString(Projection p) { return nameIn(kProjectionNames, p); }
 #pragma once
 
@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <optional>
 #include <string_view>
+#include <type_traits>
 
 namespace vplab {
 
@@ -49,6 +50,28 @@ constexpr std::optional<E> valueIn(const EnumTable<E, N>& table, std::string_vie
   for (const EnumName<E>& row : table)
     if (row.name == name) return row.value;
   return std::nullopt;
+}
+
+/// An enum with a table: namesOf(value), declared beside the enum, returns it.
+template <class E>
+concept NamedEnum = std::is_enum_v<E> && requires(E e) { namesOf(e); };
+
+/// The name of `value` (the table's row; "?" for a value without one).
+template <NamedEnum E>
+constexpr std::string_view toString(E value) {
+  return nameIn(namesOf(value), value);
+}
+
+/// The value of E named `name` (exactly, case included), if any.
+template <NamedEnum E>
+constexpr std::optional<E> fromString(std::string_view name) {
+  return valueIn(namesOf(E{}), name);
+}
+
+/// Every value of E, in the enum's order.
+template <NamedEnum E>
+constexpr auto allOf() {
+  return valuesOf(namesOf(E{}));
 }
 
 }  // namespace vplab

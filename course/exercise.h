@@ -32,9 +32,7 @@ enum class ExerciseTopic { orientation, mapping, clipping, pipeline };
 inline constexpr EnumTable<ExerciseTopic, 4> kExerciseTopicNames = {
     {{ExerciseTopic::orientation, "orientation"}, {ExerciseTopic::mapping, "mapping"},
      {ExerciseTopic::clipping, "clipping"}, {ExerciseTopic::pipeline, "pipeline"}}};
-inline constexpr auto kAllExerciseTopics = valuesOf(kExerciseTopicNames);
-inline std::string_view toString(ExerciseTopic t) { return nameIn(kExerciseTopicNames, t); }
-inline std::optional<ExerciseTopic> exerciseTopicFromString(std::string_view s) { return valueIn(kExerciseTopicNames, s); }
+constexpr const auto& namesOf(ExerciseTopic) { return kExerciseTopicNames; }
 
 struct ExerciseSpec {
   uint64_t seed = 1;  // the exercise's number: the same for the whole class

@@ -34,7 +34,7 @@ SceneObject readObject(const Reader& r, const Json& j, const std::string& path, 
   r.object(j, path, {"name", "name_de", "shape", "segments", "vertices", "file", "obj", "color", "visible", "translate", "rotate", "scale"});
   SceneObject o;
   const std::string s = r.string(r.required(j, path, "shape"), path + "/shape");
-  const auto shape = shapeFromString(s);
+  const auto shape = fromString<Shape>(s);
   if (!shape) r.fail(path + "/shape", "\"" + s + "\" is not one of cube, tetrahedron, cylinder, sphere, polygon, mesh");
   o.shape = *shape;
   o.name = j.contains("name") ? r.string(j["name"], path + "/name") : std::string(s) + " " + std::to_string(index);
@@ -148,7 +148,7 @@ Camera readCamera(const JsonReader& r, const nlohmann::ordered_json& j, const st
   if (const Json* v = part("back")) c.back = r.number(*v, path + "/back");
   if (auto it = j.find("projection"); it != j.end()) {
     const std::string s = r.string(*it, path + "/projection");
-    const auto p = projectionFromString(s);
+    const auto p = fromString<Projection>(s);
     if (!p) r.fail(path + "/projection", "\"" + s + "\" is not one of perspective, parallel, oblique");
     c.projection = *p;
   }

@@ -18,10 +18,7 @@ namespace vplab {
 enum class Projection { perspective, parallel, oblique };
 inline constexpr EnumTable<Projection, 3> kProjectionNames = {{
     {Projection::perspective, "perspective"}, {Projection::parallel, "parallel"}, {Projection::oblique, "oblique"}}};
-/// Every projection in the enum's order: the P key's cycle.
-inline constexpr auto kAllProjections = valuesOf(kProjectionNames);
-inline std::string_view toString(Projection p) { return nameIn(kProjectionNames, p); }
-inline std::optional<Projection> projectionFromString(std::string_view s) { return valueIn(kProjectionNames, s); }
+constexpr const auto& namesOf(Projection) { return kProjectionNames; }
 
 /// The window in the view plane z = 0, in VRC.
 struct ViewWindow {

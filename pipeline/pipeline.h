@@ -32,10 +32,7 @@ namespace vplab {
 enum class ClipStrategy { npc, wc, divideFirst };
 inline constexpr EnumTable<ClipStrategy, 3> kClipStrategyNames = {{
     {ClipStrategy::npc, "npc"}, {ClipStrategy::wc, "wc"}, {ClipStrategy::divideFirst, "divide-first"}}};
-/// Every strategy in the enum's order: the command line's choices, the C key's cycle.
-inline constexpr auto kAllClipStrategies = valuesOf(kClipStrategyNames);
-inline std::string_view toString(ClipStrategy s) { return nameIn(kClipStrategyNames, s); }
-inline std::optional<ClipStrategy> clipStrategyFromString(std::string_view s) { return valueIn(kClipStrategyNames, s); }
+constexpr const auto& namesOf(ClipStrategy) { return kClipStrategyNames; }
 inline bool isCorrect(ClipStrategy s) { return s != ClipStrategy::divideFirst; }
 
 struct PipelineOptions {
@@ -54,7 +51,7 @@ enum class Fate : uint8_t {
 /// The names of the dump's "fate".
 inline constexpr EnumTable<Fate, 4> kFateNames = {{
     {Fate::accepted, "accepted"}, {Fate::rejected, "rejected"}, {Fate::clipped, "clipped"}, {Fate::clippedAway, "clipped_away"}}};
-inline std::string_view toString(Fate f) { return nameIn(kFateNames, f); }
+constexpr const auto& namesOf(Fate) { return kFateNames; }
 
 /// The bounding-box verdict for an object (lecture notes 15.3.4).
 enum class BoxVerdict : uint8_t { notTested, inside, outside, crossing };

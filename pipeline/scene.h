@@ -21,8 +21,7 @@ enum class Shape { cube, tetrahedron, cylinder, sphere, polygon, mesh };
 inline constexpr EnumTable<Shape, 6> kShapeNames = {{{Shape::cube, "cube"},         {Shape::tetrahedron, "tetrahedron"},
                                                      {Shape::cylinder, "cylinder"}, {Shape::sphere, "sphere"},
                                                      {Shape::polygon, "polygon"},   {Shape::mesh, "mesh"}}};
-inline std::string_view toString(Shape s) { return nameIn(kShapeNames, s); }
-inline std::optional<Shape> shapeFromString(std::string_view s) { return valueIn(kShapeNames, s); }
+constexpr const auto& namesOf(Shape) { return kShapeNames; }
 
 struct SceneObject {
   std::string name;              // its name in files, lessons and links (the scene format's "name")

@@ -2,12 +2,14 @@
 
 #include "app/document/assets.h"
 #include "app/lessons/lesson.h"
+#include "app/lessons/tabs.h"
 #include "app/document/preferences.h"
 #include "app/text/catalogue.h"
 #include "app/export/progress_bar.h"
 #include "app/commands/lesson_export.h"
 #include "app/commands/bench_command.h"
 #include "app/commands/course_commands.h"
+#include "app/commands/number_argument.h"
 #include "app/export/svg.h"
 #include "app/render/headless.h"
 #include "app/ui/headless_viewer.h"
@@ -54,15 +56,7 @@ CLI::Validator finiteIn(double lo, double hi) {
   range << "a finite number from " << lo << " to " << hi;
   return CLI::Validator(
       [lo, hi, expected = range.str()](std::string& s) -> std::string {
-        double v = 0;
-        size_t used = 0;
-        try {
-          v = std::stod(s, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        if (used == 0 || used != s.size() || !std::isfinite(v) || v < lo || v > hi)
-          return "\"" + s + "\" is not " + expected;
+        if (!numberArgument(s, lo, hi)) return "\"" + s + "\" is not " + expected;
         return {};
       },
       "FLOAT in [" + CLI::detail::to_string(lo) + " - " + CLI::detail::to_string(hi) + "]");
@@ -122,7 +116,7 @@ struct DumpOptions {
 
 int runDump(const DumpOptions& d) {
   PipelineOptions options;
-  options.strategy = *clipStrategyFromString(d.strategy);
+  options.strategy = *fromString<ClipStrategy>(d.strategy);
   options.boundingBoxTest = d.boundingBox;
   const PipelineRun run = runPipeline(sceneFrom(d.scene), options);
   try {
@@ -233,8 +227,8 @@ int renderLesson(const RenderOptions& r) {
   lessonContext.scenesDirectory = assetsDirectory() / "scenes";
   const Lesson lesson = loadLesson(file, lessonContext);
   LessonPictureOptions o;
-  o.view = r.viewGiven ? *viewKindFromString(r.view) : ViewKind::all;
-  o.theme = *themeFromString(r.theme);
+  o.view = r.viewGiven ? *fromString<ViewKind>(r.view) : ViewKind::all;
+  o.theme = *fromString<Theme>(r.theme);
   o.scale = r.uiScale;
   if (!r.size.empty()) std::tie(o.width, o.height) = parseSize(r.size);
 
@@ -247,7 +241,7 @@ int renderLesson(const RenderOptions& r) {
   std::unique_ptr<GlContext> context;
   std::optional<ViewRenderer> renderer;
   if (r.animate || r.format == "png") {
-    context = createHeadlessContext(*backendFromString(r.backend), r.glDebug);
+    context = createHeadlessContext(*fromString<Backend>(r.backend), r.glDebug);
     renderer.emplace(*context, o.scale);
   }
   if (r.animate) {
@@ -269,12 +263,12 @@ int runRender(const RenderOptions& r) {
     if (r.view != "morph") throw Error("--animate is for --lesson or --view morph");
     RenderRequest request;
     request.view = ViewKind::morph;
-    request.style = *styleFromString(r.style);
-    request.theme = *themeFromString(r.theme);
+    request.style = *fromString<Style>(r.style);
+    request.theme = *fromString<Theme>(r.theme);
     if (!r.size.empty()) std::tie(request.width, request.height) = parseSize(r.size);
     const PixelSize size = pixelSizeOf(request, scene);
     checkImageSize(r.view, size.width, size.height);
-    auto context = createHeadlessContext(*backendFromString(r.backend), r.glDebug);
+    auto context = createHeadlessContext(*fromString<Backend>(r.backend), r.glDebug);
     ViewRenderer renderer(*context, r.uiScale);
     StopRequests stop;
     ProgressBar bar("vplab render --animate", "frames");
@@ -292,11 +286,11 @@ int runRender(const RenderOptions& r) {
 
   // The picture asked for, as the viewer's export and the tests describe one (app/views/render_request.h).
   RenderRequest request;
-  if (r.view != "ui") request.view = *viewKindFromString(r.view);
-  request.style = *styleFromString(r.style);
-  request.pipeline.strategy = *clipStrategyFromString(r.strategy);
+  if (r.view != "ui") request.view = *fromString<ViewKind>(r.view);
+  request.style = *fromString<Style>(r.style);
+  request.pipeline.strategy = *fromString<ClipStrategy>(r.strategy);
   request.morphT = r.morphT;
-  request.theme = *themeFromString(r.theme);
+  request.theme = *fromString<Theme>(r.theme);
   request.scale = r.uiScale;
   request.language = r.lang == "de" ? Language::de : Language::en;
   if (!r.size.empty()) std::tie(request.width, request.height) = parseSize(r.size);
@@ -324,7 +318,7 @@ int runRender(const RenderOptions& r) {
 #else
   const bool debug = r.glDebug;
 #endif
-  auto context = createHeadlessContext(*backendFromString(r.backend), debug);
+  auto context = createHeadlessContext(*fromString<Backend>(r.backend), debug);
   if (r.view == "ui") {
     // The whole window, panels included, as `vplab` shows it (1280 × 720 unless --size says).
     HeadlessViewer viewer(*context, scene, request.width > 0 ? request.width : 1280,
@@ -353,7 +347,7 @@ struct ViewerOptions {
   size_t step = 1;  // from 1, as the caption box counts
   int quitAfterFrames = 0;
   std::string screenshot;
-  double waitForViews = 30;
+  double waitForViews = ViewerLaunch{}.waitForViews;  // the window's own default (app/ui/run_viewer.h)
   float uiScale = 1.f;
   std::string lang;  // --lang en|de; empty: the remembered choice, else the locale's
   bool glDebug = false;
@@ -525,7 +519,7 @@ int runCommandLine(int argc, char** argv) {
   dumpCmd->add_option("--strategy", dump.strategy,
                       "Clipping strategy: npc (homogeneous NPC, the default), wc (the six frustum "
                       "planes in WC) or divide-first (wrong on purpose: divides by w before clipping)")
-      ->check(namesOf(kAllClipStrategies));
+      ->check(namesOf(allOf<ClipStrategy>()));
   dumpCmd->add_flag("--bounding-box", dump.boundingBox,
                     "Decide whole objects by their bounding box first (lecture notes 15.3.4)");
   dumpCmd->add_option("--indent", dump.indent, "JSON indentation; -1 prints everything on one line")
@@ -543,7 +537,7 @@ int runCommandLine(int argc, char** argv) {
                         "Clipping lesson's wrong picture; always the divide-first strategy's run), depth-plot "
                         "(NPC z and GL window depth against VRC z, the objects' depth ranges) or ui (the whole "
                         "viewer window with its panels; needs EGL)")
-      ->check(namesOf(kAllViewKinds, {"ui"}));
+      ->check(namesOf(allOf<ViewKind>(), {"ui"}));
   renderCmd->add_option("--morph-t", render.morphT,
                         "With --view morph: 0 MC, 1 WC, 2 VRC, 2.5 homogeneous NPC, 3 NPC, 4 DC, or between")
       ->check(finiteIn(0, 4));
@@ -551,7 +545,7 @@ int runCommandLine(int argc, char** argv) {
                         "flat (object colours, unlit), shaded (lit by the scene's lights), wire (every edge), "
                         "hidden-line (hidden edges dashed, lecture notes figure 16.1) or hidden-removed (hidden "
                         "edges left out, figure 16.3)")
-      ->check(namesOf(kAllStyles));
+      ->check(namesOf(allOf<Style>()));
   renderCmd->add_option("--theme", render.theme,
                         "dark (the screen's) or light (white ground, dark lines told apart by dashes and widths "
                         "as well as colour: for print and a bright lecture hall)")
@@ -578,9 +572,9 @@ int runCommandLine(int argc, char** argv) {
   renderCmd->add_option("--hold", render.hold, "With --animate: seconds each step (each stage) is held (default 3)")
       ->check(finiteIn(0.02, 60));
   renderCmd->add_option("--backend", render.backend, "Headless OpenGL: auto (EGL, then OSMesa), egl or osmesa")
-      ->check(namesOf(kAllBackends));
+      ->check(namesOf(allOf<Backend>()));
   renderCmd->add_option("--strategy", render.strategy, "Clipping strategy of the CPU overlays: npc, wc or divide-first")
-      ->check(namesOf(kAllClipStrategies));
+      ->check(namesOf(allOf<ClipStrategy>()));
   renderCmd->add_flag("--gl-debug", render.glDebug, "Turn on KHR_debug and fail on any OpenGL error");
   renderCmd->add_option("--ui-scale", render.uiScale,
                         "Scale the views' text, lines and markers as the viewer's UI scale does (a projector); "

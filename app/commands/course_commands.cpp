@@ -1,4 +1,5 @@
 #include "app/commands/course_commands.h"
+#include "app/commands/number_argument.h"
 #include "app/export/progress_bar.h"
 
 #include "app/course_kit/class_exercise.h"
@@ -69,16 +70,8 @@ Language languageOf(const std::string& lang) {
 }
 
 double number(const std::string& option, const std::string& text, double lo, double hi) {
-  size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !(v >= lo && v <= hi))
-    throw UsageError(option + " \"" + text + "\": a number from " + format(lo) + " to " + format(hi) + " expected");
-  return v;
+  if (const std::optional<double> v = numberArgument(text, lo, hi)) return *v;
+  throw UsageError(option + " \"" + text + "\": a number from " + format(lo) + " to " + format(hi) + " expected");
 }
 
 /// Arguments CLI11 did not recognise (the subcommands allow extras so that they end here, with exit 2).
@@ -177,12 +170,12 @@ int gradeNumbersCommand(const GradeArgs& a) {
 
 int gradeImageCommand(const GradeArgs& a) {
   if (a.student.empty()) throw UsageError("grade image: --student FILE.png is required");
-  const auto view = viewKindFromString(a.view);
+  const auto view = fromString<ViewKind>(a.view);
   if (!view || *view == ViewKind::morph || *view == ViewKind::all)
     throw UsageError("--view \"" + a.view + "\": camera, world or npc expected");
-  const auto style = styleFromString(a.style);
+  const auto style = fromString<Style>(a.style);
   if (!style) throw UsageError("--style \"" + a.style + "\": flat, shaded, wire, hidden-line or hidden-removed expected");
-  const auto backend = backendFromString(a.backend);
+  const auto backend = fromString<Backend>(a.backend);
   if (!backend) throw UsageError("--backend \"" + a.backend + "\": auto, egl or osmesa expected");
   const Language lang = languageOf(a.lang);
   ImageThresholds t;
@@ -311,9 +304,9 @@ int classExerciseCommand(const ExerciseArgs& a, const ExerciseSpec& spec, Langua
 
 int exerciseCommand(const ExerciseArgs& a) {
   if (a.out.empty()) throw UsageError("exercise: --out DIR is required");
-  const auto topic = exerciseTopicFromString(a.topic);
+  const auto topic = fromString<ExerciseTopic>(a.topic);
   if (!topic) throw UsageError("--topic \"" + a.topic + "\": orientation, mapping, clipping or pipeline expected");
-  const auto projection = projectionFromString(a.projection);
+  const auto projection = fromString<Projection>(a.projection);
   if (!projection) throw UsageError("--projection \"" + a.projection + "\": perspective, parallel or oblique expected");
   if (a.lang != "en" && a.lang != "de") throw UsageError("--lang \"" + a.lang + "\": en or de expected");
   if (a.seed.empty() || a.seed.size() > 18 || a.seed.find_first_not_of("0123456789") != std::string::npos)

@@ -19,10 +19,7 @@ namespace vplab {
 
 enum class Backend { automatic, egl, osmesa };
 inline constexpr EnumTable<Backend, 3> kBackendNames = {{{Backend::automatic, "auto"}, {Backend::egl, "egl"}, {Backend::osmesa, "osmesa"}}};
-/// Every backend in the enum's order: the command line's choices.
-inline constexpr auto kAllBackends = valuesOf(kBackendNames);
-inline std::string_view toString(Backend b) { return nameIn(kBackendNames, b); }
-inline std::optional<Backend> backendFromString(std::string_view s) { return valueIn(kBackendNames, s); }
+constexpr const auto& namesOf(Backend) { return kBackendNames; }
 
 /// Errors the KHR_debug callback reported (type ERROR or severity HIGH), collected per context.
 struct GlDebugLog {

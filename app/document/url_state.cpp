@@ -52,7 +52,7 @@ std::vector<double> numbers(std::string_view key, std::string_view value, size_t
 }
 
 Style style(std::string_view key, std::string_view value) {
-  if (auto s = styleFromString(value)) return *s;
+  if (auto s = fromString<Style>(value)) return *s;
   throw Error("the link's " + std::string(key) + "=" + quoteForError(value) +
               " is not a style (flat, shaded, wire, hidden-line or hidden-removed)");
 }
@@ -155,7 +155,7 @@ UrlState decodeUrlState(std::string_view fragment) {
       while (at <= value.size()) {
         const size_t comma = std::min(value.find(',', at), value.size());
         const std::string_view name = value.substr(at, comma - at);
-        const auto kind = viewKindFromString(name);
+        const auto kind = fromString<ViewKind>(name);
         if (!kind || (*kind != ViewKind::camera && *kind != ViewKind::world && *kind != ViewKind::npc))
           throw Error("the link's embed=" + quoteForError(value) + " names " + quoteForError(name) +
                       ", not one of the views camera, world and npc");
@@ -192,7 +192,7 @@ UrlState decodeUrlState(std::string_view fragment) {
     } else if (key == "back") {
       c.back = numbers(key, value, 1)[0];
     } else if (key == "projection") {
-      const auto p = projectionFromString(value);
+      const auto p = fromString<Projection>(value);
       if (!p) throw Error("the link's projection=" + quoteForError(value) + " is not perspective, parallel or oblique");
       c.projection = *p;
     } else if (key == "oblique") {
@@ -209,7 +209,7 @@ UrlState decodeUrlState(std::string_view fragment) {
     } else if (key == "npc") {
       s.npcOrbit = orbit(key, value);
     } else if (key == "strategy") {
-      const auto st = clipStrategyFromString(value);
+      const auto st = fromString<ClipStrategy>(value);
       if (!st) throw Error("the link's strategy=" + quoteForError(value) + " is not npc, wc or divide-first");
       s.strategy = *st;
     } else {

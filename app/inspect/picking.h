@@ -25,6 +25,7 @@ inline constexpr EnumTable<Handle, 9> kHandleNames = {
     {{Handle::none, ""}, {Handle::vrp, "VRP"}, {Handle::prp, "PRP"}, {Handle::windowLeft, "xmin"},
      {Handle::windowRight, "xmax"}, {Handle::windowBottom, "ymin"}, {Handle::windowTop, "ymax"},
      {Handle::front, "front F"}, {Handle::back, "back B"}}};
+constexpr const auto& namesOf(Handle) { return kHandleNames; }
 
 /// Where the world view's handles are, in WC: VRP, PRP, the window's edge midpoints (view plane)
 /// and the centres of the front and back planes.

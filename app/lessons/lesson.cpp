@@ -105,7 +105,7 @@ void changeViews(const JsonReader& r, const Json& j, const std::string& path, Di
     else r.object(*it, vp, {"style", "orbit"});
     if (auto s = it->find("style"); s != it->end()) {
       constexpr std::array names = {"flat", "shaded", "wire", "hidden-line", "hidden-removed"};
-      view->style = kAllStyles[oneOf(r, *s, vp + "/style", names)];
+      view->style = allOf<Style>()[oneOf(r, *s, vp + "/style", names)];
     }
     if (auto o = it->find("orbit"); o != it->end()) view->orbit = changedOrbit(r, *o, vp + "/orbit", view->orbit);
   }
@@ -277,7 +277,7 @@ LessonStep readStep(const JsonReader& r, const Json& j, const std::string& path,
   if (auto it = j.find("overlays"); it != j.end()) changeOverlays(r, *it, path + "/overlays", s.display.overlays);
   if (auto it = j.find("strategy"); it != j.end()) {
     constexpr std::array names = {"npc", "wc", "divide-first"};
-    s.strategy = kAllClipStrategies[oneOf(r, *it, path + "/strategy", names)];
+    s.strategy = allOf<ClipStrategy>()[oneOf(r, *it, path + "/strategy", names)];
   }
   if (auto it = j.find("bounding_box"); it != j.end()) s.boundingBoxTest = r.boolean(*it, path + "/bounding_box");
   if (auto it = j.find("morph"); it != j.end()) {

@@ -48,8 +48,8 @@ void GlBackend::setClipDistances(int planes) {
 const ViewCamera& GlBackend::View::cameraFor(draw::Space s) const {
   if (s == space) return observer;
   if (s == draw::Space::pixels) return pixels;
-  throw Error("display list: a batch in " + std::string(draw::toString(s)) + " in a view of " +
-              std::string(draw::toString(space)) + " (batches are in the observer's space or in pixels)");
+  throw Error("display list: a batch in " + std::string(toString(s)) + " in a view of " +
+              std::string(toString(space)) + " (batches are in the observer's space or in pixels)");
 }
 
 void GlBackend::draw(const draw::DisplayList& list, gl::RenderTarget& target) {

@@ -235,21 +235,21 @@ GLuint ViewImages::divideFirst(const Scene& scene, const PipelineRun& run, const
 
 std::vector<ViewKind> ViewImages::notReady() const {
   std::vector<ViewKind> kinds;
-  for (ViewKind kind : kAllViewKinds)
+  for (ViewKind kind : allOf<ViewKind>())
     if (slots_[size_t(kind)].asked && slots_[size_t(kind)].busy) kinds.push_back(kind);
   return kinds;
 }
 
 std::vector<ViewKind> ViewImages::asked() const {
   std::vector<ViewKind> kinds;
-  for (ViewKind kind : kAllViewKinds)
+  for (ViewKind kind : allOf<ViewKind>())
     if (slots_[size_t(kind)].asked) kinds.push_back(kind);
   return kinds;
 }
 
 std::optional<double> ViewImages::wakeIn(double busyStep) const {
   std::optional<double> wake;
-  for (ViewKind kind : kAllViewKinds) {
+  for (ViewKind kind : allOf<ViewKind>()) {
     if (!slots_[size_t(kind)].pending) continue;
     if (!worker_) return 0.0;  // drawn in slices: the next one in the next frame
     if (worker_->hasFinished(kind)) return 0.0;

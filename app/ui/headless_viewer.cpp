@@ -85,7 +85,7 @@ void HeadlessViewer::click(double x, double y, int button) {
 }
 
 std::pair<double, double> HeadlessViewer::centreOf(const std::string& id) const {
-  const auto& rects = viewer_.state().rects;
+  const auto& rects = viewer_.rects().rects;
   auto it = rects.find(id);
   if (it == rects.end()) throw Error("no widget \"" + id + "\" was drawn");
   return {it->second.x + it->second.z / 2, it->second.y + it->second.w / 2};

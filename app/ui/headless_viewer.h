@@ -39,7 +39,9 @@ class HeadlessViewer {
 
   Viewer& viewer() { return viewer_; }
   ViewerState& state() { return viewer_.state(); }
-  /// The centre of a rect recorded under `id` (ViewerState::rects). Throws vplab::Error if unknown.
+  /// Where named widgets, handles and views were drawn last frame (app/ui/widgets.h).
+  const ui::RectLog& rects() const { return viewer_.rects(); }
+  /// The centre of a rect recorded under `id` (ui::RectLog, app/ui/widgets.h). Throws vplab::Error if unknown.
   std::pair<double, double> centreOf(const std::string& id) const;
 
  private:

@@ -210,7 +210,7 @@ void lessonCaption(ViewerState& s, const Rect& rect, double now) {
   ImGui::SetNextWindowSize(rect.size);
   ImGui::SetNextWindowBgAlpha(0.94f);
   ImGui::Begin("##lesson", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
-  recordRect(s, "lesson.caption");
+  recordRect("lesson.caption");
 
   // The heading: title, step k of n, the source; the buttons at the right. The box speaks the
   // lesson's language, whatever the viewer's.
@@ -244,20 +244,20 @@ void lessonCaption(ViewerState& s, const Rect& rect, double now) {
     ImGui::TextDisabled("%s", source.c_str());
   }
   ImGui::EndGroup();
-  recordRect(s, "lesson.heading");
+  recordRect("lesson.heading");
   ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowContentRegionMax().x - buttons));
   ImGui::BeginDisabled(player.step() == 0);
   if (ImGui::Button(back)) goToStep(s, player.step() - 1, now);
   ImGui::EndDisabled();
-  recordRect(s, "lesson.back");
+  recordRect("lesson.back");
   ImGui::SameLine();
   ImGui::BeginDisabled(player.step() + 1 >= player.stepCount());
   if (ImGui::Button(next)) goToStep(s, player.step() + 1, now);
   ImGui::EndDisabled();
-  recordRect(s, "lesson.next");
+  recordRect("lesson.next");
   ImGui::SameLine();
   const bool closing = ImGui::Button(close);
-  recordRect(s, "lesson.close");
+  recordRect("lesson.close");
 
   // The caption, its mathematics in the accent colour.
   float height = 0;

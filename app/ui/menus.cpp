@@ -38,24 +38,24 @@ Enum nextOf(const std::array<Enum, N>& all, Enum value) {
 void Menus::menuBar() {
   if (!ImGui::BeginMainMenuBar()) return;
   const bool fileMenu = ImGui::BeginMenu(ui::tr(s_, "File"));
-  ui::recordRect(s_, "menu.file");
+  ui::recordRect("menu.file");
   if (fileMenu) {
     // The browser owns Ctrl+N, Ctrl+O, Ctrl+S, Ctrl+W and F11, F12: the page offers these here only.
-    auto key = [this](text::Text shortcut) { return session_.browser() ? nullptr : ui::tr(s_, shortcut); };
+    auto key = [this](text::Text shortcut) { return session_.files().browser() ? nullptr : ui::tr(s_, shortcut); };
     if (ImGui::MenuItem(ui::tr(s_, "New (default lecture scene)"), key("Ctrl+N"))) session_.newDocument();
-    ui::recordRect(s_, "menu.new");
-    if (session_.browser()) {
-      if (ImGui::MenuItem(ui::tr(s_, "Open a scene or an OBJ mesh…"))) session_.chooseFileToOpen();
-      ui::recordRect(s_, "menu.open");
-      if (ImGui::MenuItem(ui::tr(s_, "Save (download)"))) session_.save();
-      ui::recordRect(s_, "menu.save");
+    ui::recordRect("menu.new");
+    if (session_.files().browser()) {
+      if (ImGui::MenuItem(ui::tr(s_, "Open a scene or an OBJ mesh…"))) session_.files().chooseFileToOpen();
+      ui::recordRect("menu.open");
+      if (ImGui::MenuItem(ui::tr(s_, "Save (download)"))) session_.files().save();
+      ui::recordRect("menu.save");
     } else {
-      if (ImGui::MenuItem(ui::tr(s_, "Open scene…"), ui::tr(s_, "Ctrl+O"))) session_.chooseFileToOpen();
-      if (ImGui::MenuItem(ui::tr(s_, "Save"), ui::tr(s_, "Ctrl+S"))) session_.save();
-      if (ImGui::MenuItem(ui::tr(s_, "Save as…"), ui::tr(s_, "Ctrl+Shift+S"))) session_.saveAs();
+      if (ImGui::MenuItem(ui::tr(s_, "Open scene…"), ui::tr(s_, "Ctrl+O"))) session_.files().chooseFileToOpen();
+      if (ImGui::MenuItem(ui::tr(s_, "Save"), ui::tr(s_, "Ctrl+S"))) session_.files().save();
+      if (ImGui::MenuItem(ui::tr(s_, "Save as…"), ui::tr(s_, "Ctrl+Shift+S"))) session_.files().saveAs();
     }
-    if (ImGui::BeginMenu(ui::tr(s_, "Presets"), !s_.presets.empty())) {
-      for (const SceneFileInfo& p : s_.presets)
+    if (ImGui::BeginMenu(ui::tr(s_, "Presets"), !session_.files().presets().empty())) {
+      for (const SceneFileInfo& p : session_.files().presets())
         if (ImGui::MenuItem((p.titleIn(s_.display.language) + "##" + p.file.filename().string()).c_str())) {
           const std::filesystem::path file = p.file;
           session_.unlessUnsaved([this, file] { session_.openScene(file); });
@@ -65,15 +65,15 @@ void Menus::menuBar() {
     lessonsMenu();
     ImGui::Separator();
     const bool exportOpen = ImGui::BeginMenu(ui::tr(s_, "Export a view"));
-    ui::recordRect(s_, "menu.export");
+    ui::recordRect("menu.export");
     if (exportOpen) {
       exportMenu();
       ImGui::EndMenu();
     }
     if (ImGui::MenuItem(ui::tr(s_, "Screenshot"), key("F12"))) s_.screenshotRequested = true;
-    if (!session_.browser()) {  // a page is closed by its tab
+    if (!session_.files().browser()) {  // a page is closed by its tab
       if (ImGui::MenuItem(ui::tr(s_, "Quit"), ui::tr(s_, "Ctrl+Q"))) s_.quitRequested = true;
-      ui::recordRect(s_, "menu.quit");  // the monkey test clicks anywhere but here
+      ui::recordRect("menu.quit");  // the monkey test clicks anywhere but here
     }
     ImGui::EndMenu();
   }
@@ -83,7 +83,7 @@ void Menus::menuBar() {
     ImGui::EndMenu();
   }
   const bool viewMenu = ImGui::BeginMenu(ui::tr(s_, "View"));
-  ui::recordRect(s_, "menu.view");
+  ui::recordRect("menu.view");
   if (viewMenu) {
     // A preference, kept when another scene is opened: white views for a bright lecture hall and
     // for exported pictures that will be printed.
@@ -94,8 +94,8 @@ void Menus::menuBar() {
     float seconds = float(s_.lessonSeconds);
     ImGui::SetNextItemWidth(ImGui::CalcTextSize("0.00 s").x * 3);
     if (ImGui::SliderFloat(ui::tr(s_, "lesson moves"), &seconds, 0.f, 3.f, "%.1f s")) s_.lessonSeconds = seconds;
-    ui::recordRect(s_, "menu.lessonSeconds");
-    ui::tooltip(s_, "How long the camera and every number take to move from one step of a lesson into the next.");
+    ui::recordRect("menu.lessonSeconds");
+    ui::tooltip(ui::Widgets(s_), "How long the camera and every number take to move from one step of a lesson into the next.");
     languageMenu();
     ImGui::EndMenu();
   }
@@ -110,14 +110,14 @@ void Menus::menuBar() {
 // session writes the choice; --lang overrides it for one run).
 void Menus::languageMenu() {
   const bool open = ImGui::BeginMenu(ui::tr(s_, "Language"));
-  ui::recordRect(s_, "menu.language");
+  ui::recordRect("menu.language");
   if (!open) return;
   for (const auto& [lang, name, id] : {std::tuple{Language::en, text::Text("English"), "menu.language.en"},
                                        std::tuple{Language::de, text::Text("German (Deutsch)"), "menu.language.de"}}) {
     if (ImGui::MenuItem(ui::tr(s_, name), nullptr, s_.display.language == lang)) session_.chooseLanguage(lang);
-    ui::recordRect(s_, id);
+    ui::recordRect(id);
   }
-  ui::tooltip(s_, "The language of the menus, panels and the views' labels; vplab remembers it (--lang chooses it for one run).");
+  ui::tooltip(ui::Widgets(s_), "The language of the menus, panels and the views' labels; vplab remembers it (--lang chooses it for one run).");
   ImGui::EndMenu();
 }
 
@@ -136,13 +136,13 @@ void Menus::lessonsMenu() {
   const std::vector<LessonFileInfo>& mine = bundledLessons(first);
   const std::vector<LessonFileInfo>& others = bundledLessons(second);
   const bool open = ImGui::BeginMenu(ui::tr(s_, "Lessons"), !mine.empty() || !others.empty());
-  ui::recordRect(s_, "menu.lessons");
+  ui::recordRect("menu.lessons");
   if (!open) return;
   auto items = [this](const std::vector<LessonFileInfo>& lessons, const char* prefix) {
     for (const LessonFileInfo& l : lessons) {
       const std::string label = prefix + l.title + "##" + l.file.filename().string();
       if (ImGui::MenuItem(label.c_str())) session_.openLesson(l.file);
-      ui::recordRect(s_, ("menu.lesson." + l.file.stem().string()).c_str());
+      ui::recordRect(("menu.lesson." + l.file.stem().string()).c_str());
     }
   };
   items(mine, "");
@@ -168,32 +168,32 @@ void Menus::shortcuts() {
     if (pressed(keys::kZ) && io.KeyShift) s_.doc.redo();
     else if (pressed(keys::kZ)) s_.doc.undo();
     if (pressed(keys::kY)) s_.doc.redo();
-    if (session_.browser()) return;  // Ctrl+S, Ctrl+O, Ctrl+N, Ctrl+W, Ctrl+Q are the browser's: the File menu has them
+    if (session_.files().browser()) return;  // Ctrl+S, Ctrl+O, Ctrl+N, Ctrl+W, Ctrl+Q are the browser's: the File menu has them
     if (pressed(keys::kS)) {
-      if (io.KeyShift) session_.saveAs();
-      else session_.save();
+      if (io.KeyShift) session_.files().saveAs();
+      else session_.files().save();
     }
     if (pressed(keys::kN)) session_.newDocument();
-    if (pressed(keys::kO)) session_.chooseFileToOpen();
+    if (pressed(keys::kO)) session_.files().chooseFileToOpen();
     if (pressed(keys::kQ)) s_.quitRequested = true;
     return;
   }
-  if (pressed(keys::kF11) && !session_.browser()) s_.lectureMode = !s_.lectureMode;
+  if (pressed(keys::kF11) && !session_.files().browser()) s_.lectureMode = !s_.lectureMode;
   if (pressed(keys::kEscape) && s_.lectureMode) {
     s_.lectureMode = false;
     return;
   }
   if (pressed(keys::kF1)) s_.showHelp = !s_.showHelp;
-  if (pressed(keys::kF12) && !session_.browser()) s_.screenshotRequested = true;
+  if (pressed(keys::kF12) && !session_.files().browser()) s_.screenshotRequested = true;
   if (pressed(keys::kEscape) && !s_.lesson) s_.probe.reset();  // in a lesson: the lesson's (app/ui/lesson_presenter.h)
-  for (size_t i = 0; i < kAllStyles.size() && !s_.lesson; ++i)  // 1 to 5; in a lesson they type a step's number
+  for (size_t i = 0; i < allOf<Style>().size() && !s_.lesson; ++i)  // 1 to 5; in a lesson they type a step's number
     if (pressed(keys::kDigit1 + int(i)))
-      s_.display.camera.style = s_.display.world.style = s_.display.npc.style = kAllStyles[i];
+      s_.display.camera.style = s_.display.world.style = s_.display.npc.style = allOf<Style>()[i];
   if (pressed(keys::kP)) {
     Camera& c = s_.doc.scene().camera;
-    c.projection = nextOf(kAllProjections, c.projection);
+    c.projection = nextOf(allOf<Projection>(), c.projection);
   }
-  if (pressed(keys::kC)) s_.pipeline.strategy = nextOf(kAllClipStrategies, s_.pipeline.strategy);
+  if (pressed(keys::kC)) s_.pipeline.strategy = nextOf(allOf<ClipStrategy>(), s_.pipeline.strategy);
   if (pressed(keys::kB)) s_.pipeline.boundingBoxTest = !s_.pipeline.boundingBoxTest;
   if (pressed(keys::kR)) {
     s_.display.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
@@ -238,9 +238,9 @@ void Menus::exportMenu() {
     const ViewKind kind = e.kind;
     const int w = images_.width(kind), h = images_.height(kind);
     const bool pngChosen = ImGui::MenuItem(ui::tr(s_, e.png), nullptr, false, texture != 0);
-    ui::recordRect(s_, ("export." + std::string(toString(e.kind)) + ".png").c_str());
+    ui::recordRect(("export." + std::string(toString(e.kind)) + ".png").c_str());
     if (pngChosen) {
-      session_.fileDialog().open(ui::tr(s_, e.title), FileChooser::Mode::save, {".png"},
+      session_.files().fileDialog().open(ui::tr(s_, e.title), FileChooser::Mode::save, {".png"},
                    "vplab-" + std::string(toString(e.kind)) + ".png", [this, texture, kind, w, h](const std::filesystem::path& f) {
                      try {
                        // OpenGL ES (the browser's WebGL2) cannot read a texture back, and the page has
@@ -248,23 +248,23 @@ void Menus::exportMenu() {
                        const bool es = gl::dialectOf(ctx_.gl()) == gl::GlslDialect::es300;
                        const bool camera = kind == ViewKind::camera;  // shown at the device's W × H
                        writePng(es ? exportImage(kind, camera ? 0 : w, camera ? 0 : h) : readTexture(ctx_.gl(), texture), f);
-                       session_.setStatus(ui::tr(s_, "exported {1}", {f.string()}), false);
+                       s_.setStatus(ui::tr(s_, "exported {1}", {f.string()}), false);
                      } catch (const Error& err) {
-                       session_.setStatus(err.what(), true);
+                       s_.setStatus(err.what(), true);
                      }
                    });
     }
     const std::optional<std::string> why = svgExportError(e.kind, s_.doc.shown(), s_.display);
     const bool svgChosen = ImGui::MenuItem(ui::tr(s_, e.svg), nullptr, false, !why && texture != 0);
-    ui::recordRect(s_, ("export." + std::string(toString(e.kind)) + ".svg").c_str());
+    ui::recordRect(("export." + std::string(toString(e.kind)) + ".svg").c_str());
     if (svgChosen) {
-      session_.fileDialog().open(ui::tr(s_, e.title), FileChooser::Mode::save, {".svg"},
+      session_.files().fileDialog().open(ui::tr(s_, e.title), FileChooser::Mode::save, {".svg"},
                    "vplab-" + std::string(toString(kind)) + ".svg", [this, kind, w, h](const std::filesystem::path& f) {
                      try {
                        writeSvg(svgOfRequest(s_.doc.shown(), shownViewRequest(s_, kind, w, h, uiScale_)), f);
-                       session_.setStatus(ui::tr(s_, "exported {1}", {f.string()}), false);
+                       s_.setStatus(ui::tr(s_, "exported {1}", {f.string()}), false);
                      } catch (const Error& err) {
-                       session_.setStatus(err.what(), true);
+                       s_.setStatus(err.what(), true);
                      }
                    });
     }

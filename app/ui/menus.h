@@ -8,7 +8,7 @@
 #include "app/lessons/lesson.h"
 #include "app/render/view_images.h"
 #include "app/render/view_renderer.h"
-#include "app/ui/session.h"
+#include "app/session/session.h"
 #include "app/ui/viewer_state.h"
 
 #include <map>

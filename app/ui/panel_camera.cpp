@@ -13,17 +13,17 @@ namespace vplab::ui {
 
 namespace {
 
-void derived(const ViewerState& s) {
-  const VrcAxes& f = s.run().vrc;
-  ImGui::TextDisabled("%s", tr(s, "derived"));
+void derived(const Widgets& w, const RunPart& r) {
+  const VrcAxes& f = r.run().vrc;
+  ImGui::TextDisabled("%s", tr(w, "derived"));
   ImGui::TextWrapped("U = %s", vecText(f.u).c_str());
-  tooltip(s, "U = normalize(VUP × N): the view plane's x axis.");
+  tooltip(w, "U = normalize(VUP × N): the view plane's x axis.");
   ImGui::TextWrapped("V = %s", vecText(f.v).c_str());
-  tooltip(s, "V = N × U: the view plane's y axis, VUP projected into the view plane.");
+  tooltip(w, "V = N × U: the view plane's y axis, VUP projected into the view plane.");
   ImGui::TextWrapped("N = %s", vecText(f.n).c_str());
-  tooltip(s, "N = normalize(PRP − VRP): the view plane normal; the eye lies on +N.");
+  tooltip(w, "N = normalize(PRP − VRP): the view plane normal; the eye lies on +N.");
   ImGui::TextWrapped("VPD = %s   dmin = %s   dmax = %s", num(f.vpd).c_str(), num(f.dmin).c_str(), num(f.dmax).c_str());
-  tooltip(s, "VPD = |PRP − VRP|, the view plane distance. dmin = VPD − F and dmax = VPD − B: the distances "
+  tooltip(w, "VPD = |PRP − VRP|, the view plane distance. dmin = VPD − F and dmax = VPD − B: the distances "
              "of the front and back planes from the eye.");
 }
 
@@ -58,86 +58,88 @@ std::vector<std::string_view> offendingFields(const CameraProblem& p, const Came
 
 }  // namespace
 
-void cameraPanel(ViewerState& s) {
-  Camera& c = s.doc.scene().camera;
+void cameraPanel(Widgets& w, DocumentPart& d, const RunPart& r, LayoutPart& l) {
+  Camera& c = d.doc.scene().camera;
   const std::optional<CameraProblem> problem = cameraProblem(c);
   const std::vector<std::string_view> offending = problem ? offendingFields(*problem, c) : std::vector<std::string_view>{};
   // An offending field gets a red frame, drawn over the field just drawn (its rect, recorded by the widget).
   auto mark = [&](const char* id) {
     if (std::find(offending.begin(), offending.end(), std::string_view(id)) == offending.end()) return;
-    const auto it = s.rects.find(id);
-    if (it == s.rects.end()) return;
+    const RectLog* log = rectLog();
+    if (!log) return;
+    const auto it = log->rects.find(id);
+    if (it == log->rects.end()) return;
     // Inside the field's sides (the panel clips at them) and just outside its top and bottom.
     const ImVec4& r = it->second;
     const float thick = std::max(2.f, ImGui::GetFontSize() / 8), pad = ImGui::GetStyle().ItemSpacing.y * 0.4f;
     ImGui::GetWindowDrawList()->AddRect(ImVec2(r.x + thick * 0.5f, r.y - pad), ImVec2(r.x + r.z - thick * 0.5f, r.y + r.w + pad),
                                         errorColour(), 0, 0, thick);
   };
-  scrollAnchor(s, "camera.points");
-  dragVec3(s, "VRP", "camera.vrp", c.vrp);
+  scrollAnchor(w, "camera.points");
+  dragVec3(w, "VRP", "camera.vrp", c.vrp);
   mark("camera.vrp");
-  tooltip(s, "View reference point: the point looked at, origin of VRC (WC).");
-  dragVec3(s, "PRP", "camera.prp", c.prp);
+  tooltip(w, "View reference point: the point looked at, origin of VRC (WC).");
+  dragVec3(w, "PRP", "camera.prp", c.prp);
   mark("camera.prp");
-  tooltip(s, "Projection reference point: the eye, the centre of projection (WC).");
-  dragVec3(s, "VUP", "camera.vup", c.vup);
+  tooltip(w, "Projection reference point: the eye, the centre of projection (WC).");
+  dragVec3(w, "VUP", "camera.vup", c.vup);
   mark("camera.vup");
-  tooltip(s, "View up vector: which way is up; projected into the view plane it gives V.");
+  tooltip(w, "View up vector: which way is up; projected into the view plane it gives V.");
 
-  scrollAnchor(s, "camera.window");
-  section(tr(s, "window (view plane, VRC)"));
-  ViewWindow& w = c.window;
-  const double aspect = s.doc.scene().device.aspect();
-  bool xChanged = dragDouble(s, "xmin", "camera.xmin", w.xmin);
+  scrollAnchor(w, "camera.window");
+  section(tr(w, "window (view plane, VRC)"));
+  ViewWindow& win = c.window;
+  const double aspect = d.doc.scene().device.aspect();
+  bool xChanged = dragDouble(w, "xmin", "camera.xmin", win.xmin);
   mark("camera.xmin");
-  xChanged |= dragDouble(s, "xmax", "camera.xmax", w.xmax);
+  xChanged |= dragDouble(w, "xmax", "camera.xmax", win.xmax);
   mark("camera.xmax");
-  bool yChanged = dragDouble(s, "ymin", "camera.ymin", w.ymin);
+  bool yChanged = dragDouble(w, "ymin", "camera.ymin", win.ymin);
   mark("camera.ymin");
-  yChanged |= dragDouble(s, "ymax", "camera.ymax", w.ymax);
+  yChanged |= dragDouble(w, "ymax", "camera.ymax", win.ymax);
   mark("camera.ymax");
-  if (checkbox(tr(s, "keep the device's aspect ratio"), &s.keepAspect) && s.keepAspect) xChanged = true;
-  if (s.keepAspect && (xChanged || yChanged)) keepWindowAspect(w, aspect, xChanged);
-  tooltip(s, "The window's width : height stays the device's W : H, so nothing is stretched.");
+  if (checkbox(tr(w, "keep the device's aspect ratio"), &l.keepAspect) && l.keepAspect) xChanged = true;
+  if (l.keepAspect && (xChanged || yChanged)) keepWindowAspect(win, aspect, xChanged);
+  tooltip(w, "The window's width : height stays the device's W : H, so nothing is stretched.");
 
-  scrollAnchor(s, "camera.planes");
-  section(tr(s, "front and back planes (VRC z)"));
-  dragDouble(s, tr(s, "front F"), "camera.front", c.front);
+  scrollAnchor(w, "camera.planes");
+  section(tr(w, "front and back planes (VRC z)"));
+  dragDouble(w, tr(w, "front F"), "camera.front", c.front);
   mark("camera.front");
-  tooltip(s, "F: the front (near) plane z = F in VRC; maps to NPC z = 1. Needs B < F (< VPD in perspective).");
-  dragDouble(s, tr(s, "back B"), "camera.back", c.back);
+  tooltip(w, "F: the front (near) plane z = F in VRC; maps to NPC z = 1. Needs B < F (< VPD in perspective).");
+  dragDouble(w, tr(w, "back B"), "camera.back", c.back);
   mark("camera.back");
-  tooltip(s, "B: the back (far) plane z = B in VRC; maps to NPC z = 0.");
+  tooltip(w, "B: the back (far) plane z = B in VRC; maps to NPC z = 0.");
 
-  section(tr(s, "projection"));
+  section(tr(w, "projection"));
   int p = int(c.projection);
-  radio(tr(s, "perspective"), &p, int(Projection::perspective));
+  radio(tr(w, "perspective"), &p, int(Projection::perspective));
   ImGui::SameLine();
-  radio(tr(s, "parallel"), &p, int(Projection::parallel));
+  radio(tr(w, "parallel"), &p, int(Projection::parallel));
   ImGui::SameLine();
-  radio(tr(s, "oblique"), &p, int(Projection::oblique));
+  radio(tr(w, "oblique"), &p, int(Projection::oblique));
   c.projection = Projection(p);
   if (c.projection == Projection::oblique) {
-    dragDouble(s, "d", "camera.oblique.d", c.oblique.d, 0.01f, 0.0, 4.0);
+    dragDouble(w, "d", "camera.oblique.d", c.oblique.d, 0.01f, 0.0, 4.0);
     mark("camera.oblique.d");
-    tooltip(s, "d = 1 / tan α: how much a unit of depth is shortened (lecture notes 14.3.2).");
-    dragDouble(s, tr(s, "phi (deg)"), "camera.oblique.phi", c.oblique.phiDeg, 0.5f, -180.0, 180.0, "%.1f");
+    tooltip(w, "d = 1 / tan α: how much a unit of depth is shortened (lecture notes 14.3.2).");
+    dragDouble(w, tr(w, "phi (deg)"), "camera.oblique.phi", c.oblique.phiDeg, 0.5f, -180.0, 180.0, "%.1f");
     mark("camera.oblique.phi");
-    tooltip(s, "φ: the angle under which depth is drawn in the view plane.");
-    if (ImGui::Button(tr(s, "cavalier (d = 1, φ = 35°)"))) c.oblique = kCavalier;
-    sameLineIfFits(tr(s, "cabinet (d = 0.5, φ = 50°)"));
-    if (ImGui::Button(tr(s, "cabinet (d = 0.5, φ = 50°)"))) c.oblique = kCabinet;
+    tooltip(w, "φ: the angle under which depth is drawn in the view plane.");
+    if (ImGui::Button(tr(w, "cavalier (d = 1, φ = 35°)"))) c.oblique = kCavalier;
+    sameLineIfFits(tr(w, "cabinet (d = 0.5, φ = 50°)"));
+    if (ImGui::Button(tr(w, "cabinet (d = 0.5, φ = 50°)"))) c.oblique = kCabinet;
   }
   ImGui::Separator();
-  if (!s.doc.error().empty()) {
+  if (!d.doc.error().empty()) {
     // The camera's own problem in the viewer's language; another of the scene as the document says it.
-    errorText(problem ? cameraProblemText(*problem, c, s.display.language) : s.doc.error());
+    errorText(problem ? cameraProblemText(*problem, c, w.language()) : d.doc.error());
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("%s", tr(s, "The views show the last valid camera."));
+    ImGui::TextWrapped("%s", tr(w, "The views show the last valid camera."));
     ImGui::PopStyleColor();
   } else {
-    scrollAnchor(s, "camera.derived");
-    derived(s);
+    scrollAnchor(w, "camera.derived");
+    derived(w, r);
   }
 }
 

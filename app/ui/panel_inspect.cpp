@@ -18,21 +18,21 @@ namespace {
 
 /// A cube plane's name (planeName, English) in the viewer's language; a user plane's as the pipeline
 /// names it.
-std::string planeLabel(const ViewerState& s, int plane) {
+std::string planeLabel(const Widgets& w, int plane) {
   static constexpr text::Text kNames[] = {"left", "right", "bottom", "top", "back", "front"};
   const std::string_view en = planeName(plane);
   for (const text::Text& name : kNames)
-    if (name.english() == en) return tr(s, name);
+    if (name.english() == en) return tr(w, name);
   return std::string(en);
 }
 
-void matrixTable(ViewerState& s, const char* name, const char* id, const Mat4& m, const char* explanation) {
+void matrixTable(Widgets& w, LecturePart& lec, const char* name, const char* id, const Mat4& m, const char* explanation) {
   ImGui::PushID(id);
   ImGui::TextWrapped("%s", name);
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   ImGui::TextWrapped("%s", explanation);
   ImGui::PopStyleColor();
-  const Mat4 shown = s.seedForm ? glm::transpose(m) : m;
+  const Mat4 shown = lec.seedForm ? glm::transpose(m) : m;
   const double scale = largestEntry(m);
   std::string cells[4][4];
   float widest = 0;
@@ -49,17 +49,17 @@ void matrixTable(ViewerState& s, const char* name, const char* id, const Mat4& m
   // A lesson's step may point at the matrix, a row, a column or an entry of it (in the column-vector
   // form; the row-vector form shows it transposed).
   auto marked = [&](int r, int c) {
-    if (s.seedForm) std::swap(r, c);
-    for (const LessonHighlight& h : s.lessonMarks)
+    if (lec.seedForm) std::swap(r, c);
+    for (const LessonHighlight& h : lec.lessonMarks)
       if (h.kind == LessonHighlight::Kind::matrix && h.matrix == id && (h.row < 0 || h.row == r) && (h.column < 0 || h.column == c))
         return true;
     return false;
   };
   bool anyMarked = false;
   for (int k = 0; k < 16; ++k) anyMarked = anyMarked || marked(k / 4, k % 4);
-  if (anyMarked && s.lessonScroll) {
+  if (anyMarked && lec.lessonScroll) {
     ImGui::SetScrollHereY(0.2f);  // the step's matrix comes into sight, once
-    s.lessonScroll = false;
+    lec.lessonScroll = false;
   }
   const ImU32 markColor = ImGui::ColorConvertFloat4ToU32(ImVec4(accentColor().x, accentColor().y, accentColor().z, 0.35f));
   if (ImGui::BeginTable("m", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchSame)) {
@@ -77,70 +77,70 @@ void matrixTable(ViewerState& s, const char* name, const char* id, const Mat4& m
   // The buttons wrap onto the next line when the inspector is narrow (a large UI scale).
   const std::string base = std::string("copy.") + id;
   const std::string ids[] = {base + ".text", base + ".markdown", base + ".latex"};
-  const char* labels[] = {tr(s, "copy text"), tr(s, "copy Markdown"), tr(s, "copy LaTeX")};
+  const char* labels[] = {tr(w, "copy text"), tr(w, "copy Markdown"), tr(w, "copy LaTeX")};
   const MatrixFormat formats[] = {MatrixFormat::plain, MatrixFormat::markdown, MatrixFormat::latex};
   const ImGuiStyle& style = ImGui::GetStyle();
   float x = 0;
   for (int i = 0; i < 3; ++i) {
-    const float w = ImGui::CalcTextSize(labels[i]).x + style.FramePadding.x * 2;
-    if (i > 0 && x + style.ItemSpacing.x + w <= ImGui::GetContentRegionAvail().x) {
+    const float width = ImGui::CalcTextSize(labels[i]).x + style.FramePadding.x * 2;
+    if (i > 0 && x + style.ItemSpacing.x + width <= ImGui::GetContentRegionAvail().x) {
       ImGui::SameLine();
       x += style.ItemSpacing.x;
     } else {
       x = 0;
     }
-    copyButton(s, labels[i], ids[i].c_str(), matrixText(m, name, formats[i], s.seedForm, s.display.language));
-    x += w;
+    copyButton(w, labels[i], ids[i].c_str(), matrixText(m, name, formats[i], lec.seedForm, w.language()));
+    x += width;
   }
-  for (const std::string& i : ids) copiedNotice(s, i.c_str());
+  for (const std::string& i : ids) copiedNotice(w, i.c_str());
   ImGui::PopID();
   ImGui::Spacing();
 }
 
 }  // namespace
 
-void matricesPanel(ViewerState& s) {
-  checkbox(tr(s, "the lecture notes' row-vector form (p' = p · M, transposed)"), &s.seedForm);
-  tooltip(s, "The project computes with column vectors (p' = M · p, as GLM). The lecture notes write points "
+void matricesPanel(Widgets& w, const RunPart& r, const EditPart& e, LecturePart& lec) {
+  checkbox(tr(w, "the lecture notes' row-vector form (p' = p · M, transposed)"), &lec.seedForm);
+  tooltip(w, "The project computes with column vectors (p' = M · p, as GLM). The lecture notes write points "
              "as row vectors; their matrices are the transposes.");
-  const PipelineRun& run = s.run();
+  const PipelineRun& run = r.run();
   Mat4 wcFromMc(1.0);
-  std::string objectName = tr(s, "(no object)");
+  std::string objectName = tr(w, "(no object)");
   if (!run.objects.empty()) {
     int k = 0;
     for (size_t i = 0; i < run.sceneIndex.size(); ++i)
-      if (int(run.sceneIndex[i]) == s.selectedObject) k = int(i);
+      if (int(run.sceneIndex[i]) == e.selectedObject) k = int(i);
     wcFromMc = run.objects[size_t(k)].wcFromMc;
-    objectName = nameIn(run.objects[size_t(k)], s.display.language);
+    objectName = nameIn(run.objects[size_t(k)], w.language());
   }
-  matrixTable(s, ("wcFromMc — " + objectName).c_str(), "wcFromMc", wcFromMc, tr(s, "stage 1, modeling"));
-  matrixTable(s, "vrcFromWc", "vrcFromWc", run.vrcFromWc, tr(s, "stage 2, view orientation"));
-  matrixTable(s, "npcFromVrc", "npcFromVrc", run.npcFromVrc,
-              tr(s, "stage 3, view mapping (then clip, then ÷ w)"));
-  matrixTable(s, "dcFromNpc", "dcFromNpc", run.dcFromNpc, tr(s, "stage 5, device mapping"));
-  matrixTable(s, "dcFromMc", "dcFromMc", run.dcFromNpc * run.npcFromVrc * run.vrcFromWc * wcFromMc,
-              tr(s, "the composite, right to left"));
+  matrixTable(w, lec, ("wcFromMc — " + objectName).c_str(), "wcFromMc", wcFromMc, tr(w, "stage 1, modeling"));
+  matrixTable(w, lec, "vrcFromWc", "vrcFromWc", run.vrcFromWc, tr(w, "stage 2, view orientation"));
+  matrixTable(w, lec, "npcFromVrc", "npcFromVrc", run.npcFromVrc,
+              tr(w, "stage 3, view mapping (then clip, then ÷ w)"));
+  matrixTable(w, lec, "dcFromNpc", "dcFromNpc", run.dcFromNpc, tr(w, "stage 5, device mapping"));
+  matrixTable(w, lec, "dcFromMc", "dcFromMc", run.dcFromNpc * run.npcFromVrc * run.vrcFromWc * wcFromMc,
+              tr(w, "the composite, right to left"));
 }
 
-void probePanel(ViewerState& s) {
-  scrollAnchor(s, "probe");
-  if (!s.probe) {
-    ImGui::TextWrapped("%s", tr(s, "Click a vertex in any view to follow it through the pipeline."));
+void probePanel(Widgets& w, const RunPart& r, EditPart& e) {
+  scrollAnchor(w, "probe");
+  if (!e.probe) {
+    ImGui::TextWrapped("%s", tr(w, "Click a vertex in any view to follow it through the pipeline."));
     return;
   }
-  const PipelineRun& run = s.run();
+  const PipelineRun& run = r.run();
   const ObjectRun* o = nullptr;
   for (size_t i = 0; i < run.sceneIndex.size(); ++i)
-    if (run.sceneIndex[i] == s.probe->object) o = &run.objects[i];
-  if (!o || s.probe->vertex >= o->vertexCount()) {
-    ImGui::TextWrapped("%s", tr(s, "The probed vertex is not in the scene any more."));
+    if (run.sceneIndex[i] == e.probe->object) o = &run.objects[i];
+  if (!o || e.probe->vertex >= o->vertexCount()) {
+    ImGui::TextWrapped("%s", tr(w, "The probed vertex is not in the scene any more."));
     return;
   }
-  const uint32_t v = s.probe->vertex;
+  const uint32_t v = e.probe->vertex;
   const Vec4 h = o->npcH[v];
-  ImGui::TextUnformatted(tr(s, "{1}, vertex {2}", {nameIn(*o, s.display.language), std::to_string(v)}).c_str());
+  ImGui::TextUnformatted(tr(w, "{1}, vertex {2}", {nameIn(*o, w.language()), std::to_string(v)}).c_str());
   ImGui::SameLine();
-  if (ImGui::SmallButton(tr(s, "clear"))) s.probe.reset();
+  if (ImGui::SmallButton(tr(w, "clear"))) e.probe.reset();
   // Each space's name, then its coordinates beside it, wrapped at the window's edge between
   // coordinates, never inside a number (ImGui breaks a line after a '.': "6." over "109").
   auto row = [](const char* space, const std::string& value) {
@@ -158,27 +158,27 @@ void probePanel(ViewerState& s) {
   row("MC", vecText(o->mesh->positions[v]));
   row("WC", vecText(o->wc(v)));
   row("VRC", vecText(o->vrc(v)));
-  row(tr(s, "NPC (homogeneous)"), vecText(h));
+  row(tr(w, "NPC (homogeneous)"), vecText(h));
   if (h.w > 0) {
     const Vec3 npc = Vec3(h) / h.w;
     row("NPC (÷ w)", vecText(npc));
     row("DC", vecText(Vec3(run.dcFromNpc * Vec4(npc, 1.0))));
   } else {
-    row("NPC (÷ w)", tr(s, "w ≤ 0: behind the eye, no image point"));
+    row("NPC (÷ w)", tr(w, "w ≤ 0: behind the eye, no image point"));
     row("DC", "—");
   }
   // Blinn's boundary coordinates of the homogeneous point, whatever the strategy (Hill 7.4); the
   // outcode they give first, in binary and as the lecture says it (34), then each coordinate.
   const Boundary bc = boundaryCoordinates(h);
   const Outcode code = outcodeOf(bc);
-  section(tr(s, "boundary coordinates (inside when ≥ 0)"));
+  section(tr(w, "boundary coordinates (inside when ≥ 0)"));
   std::string bits, names;
   for (int i = kPlaneCount - 1; i >= 0; --i) bits += (code >> i & 1) ? '1' : '0';
   bits += " = " + std::to_string(code & ((1u << kPlaneCount) - 1));
   for (int i = 0; i < kPlaneCount; ++i)
-    if (code >> i & 1) names += (names.empty() ? "" : ", ") + planeLabel(s, i);
+    if (code >> i & 1) names += (names.empty() ? "" : ", ") + planeLabel(w, i);
   const std::string outcode =
-      code ? tr(s, "outcode {1}  outside: {2}", {bits, names}) : tr(s, "outcode {1}  inside", {bits});
+      code ? tr(w, "outcode {1}  outside: {2}", {bits, names}) : tr(w, "outcode {1}  inside", {bits});
   ImGui::TextWrapped("%s", outcode.c_str());
   const double bcScale = magnitudeOf({bc[0], bc[1], bc[2], bc[3], bc[4], bc[5], h.w});
   // One line per plane (wrapping in a narrow inspector): the form, its value, the plane.
@@ -188,7 +188,7 @@ void probePanel(ViewerState& s) {
     const std::string value = num(bc[i], bcScale, 5);
     sameLineIfFits(value.c_str(), false);
     ImGui::TextColored(bc[i] < 0 ? outsideColor() : insideColor(), "%s", value.c_str());
-    const std::string plane = planeLabel(s, i) + " (" + std::string(planeInequality(i)) + ")";
+    const std::string plane = planeLabel(w, i) + " (" + std::string(planeInequality(i)) + ")";
     sameLineIfFits(plane.c_str(), false);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("%s", plane.c_str());

@@ -2,22 +2,30 @@
 // the view settings in place; the viewer records every change for undo.
 #pragma once
 
-#include "app/ui/file_dialog.h"
-#include "app/ui/viewer_state.h"
+#include "app/session/file_chooser.h"
+#include "app/ui/widgets.h"
 
 namespace vplab::ui {
 
-void cameraPanel(ViewerState& s);
-void scenePanel(ViewerState& s, FileChooser& dialog);
-void clippingPanel(ViewerState& s);
-void displayPanel(ViewerState& s);
-void matricesPanel(ViewerState& s);
-void probePanel(ViewerState& s);
-void lecturePanel(ViewerState& s);
-void depthPanel(ViewerState& s);
+// Each panel is handed the widgets it draws with (the language, what the widgets remember:
+// app/ui/widgets.h) and the parts of the state it reads (const) and edits (app/session/viewer_model.h).
 
-/// Adds an object of `shape` where the camera looks, selected (the scene panel's "+ cube" …). A mesh
-/// (an OBJ `file`) is read on the viewer's worker thread: it joins the scene when loaded.
-void addObject(ViewerState& s, Shape shape, std::string file = {});
+/// The synthetic camera: VRP, PRP, VUP, the window, F and B, the projection; U, V, N derived.
+void cameraPanel(Widgets& w, DocumentPart& d, const RunPart& r, LayoutPart& l);
+/// The objects, their modeling transforms, user clip planes; OBJ meshes through `dialog`.
+void scenePanel(Widgets& w, DocumentPart& d, EditPart& e, StatusPart& status, FileChooser& dialog);
+/// The clipping strategy, the bounding-box test and the counts of the run.
+void clippingPanel(Widgets& w, ViewsPart& v, const RunPart& r);
+/// The views' styles and overlays, antialiasing, the observers.
+void displayPanel(Widgets& w, ViewsPart& v, const DocumentPart& d, LayoutPart& l);
+/// The matrices of the five stages (the lecture notes' row-vector form on request).
+void matricesPanel(Widgets& w, const RunPart& r, const EditPart& e, LecturePart& lec);
+/// The probed vertex through the stages, with its outcode.
+void probePanel(Widgets& w, const RunPart& r, EditPart& e);
+/// The stage morph, the clipping step-through, vanishing points, lecture mode.
+void lecturePanel(Widgets& w, ViewsPart& v, const DocumentPart& d, const RunPart& r, const EditPart& e, LecturePart& lec,
+                  LayoutPart& l);
+/// The depth plot: NPC z against VRC z, and what depth buffers resolve.
+void depthPanel(Widgets& w, const RunPart& r, const LayoutPart& l);
 
 }  // namespace vplab::ui

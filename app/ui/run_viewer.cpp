@@ -147,33 +147,32 @@ int runViewerWindow(ViewerLaunch launch) {
   std::string preferencesProblem;
   const Preferences preferences = readPreferences(preferencesFile, &preferencesProblem);
   if (!preferencesProblem.empty()) std::cerr << "vplab: " << preferencesProblem << "\n";
-  viewer.state().display.language = startLanguage(launch.language, preferences);
+  Session::Start start{.language = startLanguage(launch.language, preferences)};
   if (!preferencesFile.empty())
-    viewer.session().rememberLanguageWith([preferencesFile, preferences](Language lang) {
+    start.rememberLanguage = [preferencesFile, preferences](Language lang) {
       Preferences p = preferences;
       p.language = lang;
       writePreferences(preferencesFile, p);
-    });
+    };
   GlfwBackend backend(window.handle());
   // glfwPostEmptyEvent is thread-safe: a finished run or view image wakes the event wait.
-  viewer.usePipelineWorker([] { glfwPostEmptyEvent(); });
+  viewer.run().useWorker([] { glfwPostEmptyEvent(); });
   try {
-    viewer.useViewWorker(window.createShared(), [] { glfwPostEmptyEvent(); });
+    viewer.images().useWorker(window.createShared(), [] { glfwPostEmptyEvent(); });
   } catch (const std::exception& e) {
     std::cerr << "vplab: the views are drawn in the window's thread (" << e.what() << ")\n";
   }
   WindowInput input(window.handle());
   EndSignals signals;
-  const std::filesystem::path stateDir = Autosave::defaultDirectory();
-  if (!stateDir.empty()) {
-    std::vector<Recovery> recoveries = Autosave::findAll(stateDir);
-    for (const Recovery& r : recoveries)
+  start.autosaveDirectory = Autosave::defaultDirectory();
+  if (!start.autosaveDirectory.empty()) {
+    start.recoveries = Autosave::findAll(start.autosaveDirectory);
+    for (const Recovery& r : start.recoveries)
       std::cerr << "vplab: " << r.file.string() << " holds unsaved changes of "
                 << (r.scenePath.empty() ? std::string("the default lecture scene") : r.scenePath.string())
                 << " from a session that did not end normally; the viewer offers to recover them\n";
-    viewer.session().offerRecoveries(std::move(recoveries));
-    viewer.session().enableAutosave(stateDir, kAutosaveDelay);
   }
+  viewer.session().start(std::move(start));
   if (!launch.lesson.empty()) viewer.session().openLesson(launch.lesson, launch.lessonStep);
   try {
     const int status = loop(window, viewer, input, signals, launch);
@@ -184,7 +183,7 @@ int runViewerWindow(ViewerLaunch launch) {
   } catch (const std::exception& e) {
     // The window was open: no headless fallback now (it would write files nobody asked for). Keep
     // the work, say what happened, and end with a status that says it was no normal end.
-    const std::filesystem::path kept = viewer.session().writeRecoveryNow();
+    const std::filesystem::path kept = viewer.session().recovery().writeRecoveryNow();
     std::cerr << "vplab: the viewer ended unexpectedly: " << e.what();
     if (!kept.empty()) std::cerr << "; the unsaved changes are kept in " << kept.string() << " and offered at the next start";
     std::cerr << "\n";
@@ -221,7 +220,7 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
     if (wait <= 0) glfwPollEvents();
     else glfwWaitEventsTimeout(std::min(wait, kLongestWait));
     if (const int sig = signals.received()) {
-      const std::filesystem::path kept = viewer.session().writeRecoveryNow();
+      const std::filesystem::path kept = viewer.session().recovery().writeRecoveryNow();
       std::cerr << "vplab: ended by " << (sig == SIGTERM ? "SIGTERM" : sig == SIGINT ? "SIGINT" : "SIGHUP");
       if (!kept.empty()) std::cerr << "; the unsaved changes are kept in " << kept.string() << " and offered at the next start";
       std::cerr << "\n";
@@ -263,7 +262,7 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
         waitingSince = -1;
         if (quitting) {
           std::cerr << "vplab: " << why << (shot ? "; no screenshot written" : "") << "\n";
-          viewer.session().endSession();
+          viewer.session().recovery().endSession();
           report();
           return 1;
         }
@@ -287,7 +286,7 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
     if (viewer.title() != shownTitle) window.setTitle(shownTitle = viewer.title());
     if (quitting) break;
   }
-  viewer.session().endSession();
+  viewer.session().recovery().endSession();
   report();
   return 0;
 }

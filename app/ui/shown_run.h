@@ -23,8 +23,10 @@ class ShownRun {
   /// Runs `state`'s shown scene with its options into state.ran.
   explicit ShownRun(ViewerState& state) : state_(state) {}
 
-  /// Runs the pipeline on a worker thread from now on; `wake` wakes the window's event wait (called
-  /// on the worker).
+  /// Runs the pipeline on a worker thread from now on: the frame that changed the scene waits a few ms
+  /// for its run (a small scene's arrives in it), later frames show the last run until the new one is
+  /// finished. `wake` wakes the window's event wait (called on the worker). Without it (headless, the
+  /// UI tests) the pipeline runs in the frame that needs it.
   void useWorker(std::function<void()> wake);
   /// Runs the pipeline in steps from now on, spending about `secondsPerFrame` of each frame on it (a
   /// small scene's run still completes in the frame that asks for it).

@@ -1,12 +1,13 @@
 // The views in their windows (view_panes.h).
 //
-// Index: 1 helpers  2 drawing a view  3 the windows  4 interaction
+// Index: 1 helpers  2 drawing a view  3 the windows (the mouse in them: view_mouse.cpp)
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include "app/ui/layout.h"
 #include "app/inspect/camera_text.h"
 #include "app/lessons/lesson_marks.h"
 #include "app/inspect/picking.h"
 #include "app/ui/view_panes.h"
+#include "app/ui/view_mouse.h"
 #include "app/ui/lesson_presenter.h"
 #include "app/ui/widgets.h"
 
@@ -26,7 +27,6 @@ namespace vplab {
 
 namespace {
 
-constexpr double kPickRadiusPx = 9;
 constexpr ImGuiWindowFlags kViewFlags = ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoScrollbar;
 
 ImTextureID textureId(GLuint texture) { return reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)); }
@@ -71,12 +71,6 @@ Vec2 mouseIn(ImVec2 itemMin, ImVec2 scale) {
   return {(m.x - itemMin.x) * scale.x, (m.y - itemMin.y) * scale.y};
 }
 
-// A click: the left button released where it went down.
-bool clicked() {
-  if (!ImGui::IsMouseReleased(ImGuiMouseButton_Left)) return false;
-  const ImVec2 d = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.f);
-  return d.x * d.x + d.y * d.y < 4.f;
-}
 
 }  // namespace
 
@@ -152,7 +146,7 @@ void ViewPanes::lastValidNote() {
   draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(min.x + pad, top + pad), IM_COL32(255, 110, 100, 255),
                 note.c_str(), nullptr, wrap);
   draw->PopClipRect();
-  ui::recordRect(s_, "view.lastValidNote");
+  ui::recordRect("view.lastValidNote");
 }
 
 std::optional<Vec3> ViewPanes::probePositionOf(ViewKind view) const {
@@ -222,12 +216,13 @@ void ViewPanes::worldWindow(const ui::Layout& layout, ImGuiWindowFlags flags, Im
       const GLuint texture = drawView(ViewKind::world, size);
       const ViewCamera observer = viewCameraOf(observerCamera(s_.display.world.orbit, s_.worldAspect));
       const bool hovered = viewImage("world", texture, size);
-      ui::recordRect(s_, "view.world");
+      ui::recordRect("view.world");
       busyMark(ViewKind::world);
       lastValidNote();
       const ImVec2 origin = ImGui::GetItemRectMin();
-      worldInteraction(hovered, observer, cachedWidth(ViewKind::world), cachedHeight(ViewKind::world), mouseIn(origin, fbScale));
-      recordHandles(origin, observer, fbScale);
+      const int w = cachedWidth(ViewKind::world), h = cachedHeight(ViewKind::world);
+      mouse_.world(hovered, observer, w, h, mouseIn(origin, fbScale));
+      mouse_.recordHandles(origin, observer, w, h, fbScale);
     }
   }
   ImGui::End();
@@ -244,8 +239,8 @@ void ViewPanes::npcWindow(const ui::Layout& layout, ImGuiWindowFlags flags, ImVe
       const bool hovered = viewImage("npc", texture, size);
       busyMark(ViewKind::npc);
       lastValidNote();
-      ui::recordRect(s_, "view.npc");
-      orbitInteraction(hovered, ViewKind::npc, s_.display.npc.orbit, observer, cachedWidth(ViewKind::npc), cachedHeight(ViewKind::npc),
+      ui::recordRect("view.npc");
+      mouse_.orbit(hovered, ViewKind::npc, s_.display.npc.orbit, observer, cachedWidth(ViewKind::npc), cachedHeight(ViewKind::npc),
                        mouseIn(ImGui::GetItemRectMin(), fbScale));
     }
   }
@@ -287,7 +282,7 @@ void ViewPanes::cameraWindowContents() {
       ImGui::Image(textureId(divided), size, ImVec2(0, 1), ImVec2(1, 0));
     else  // the strategy's run failed (its error is in the status line): no picture of it
       ImGui::Dummy(size);
-    ui::recordRect(s_, "view.divideFirst");
+    ui::recordRect("view.divideFirst");
     caption(at, size.x, IM_COL32(255, 120, 110, 255),
             {ui::tr(s_, "divide first, then clip (wrong)"), ui::tr(s_, "divide first (wrong)"), ui::tr(s_, "(wrong)")});
     ImGui::SameLine();
@@ -298,14 +293,14 @@ void ViewPanes::cameraWindowContents() {
   const bool hovered = viewImage("camera", texture, size);
   busyMark(ViewKind::camera);
   lastValidNote();
-  ui::recordRect(s_, "view.camera");
+  ui::recordRect("view.camera");
   if (demo) {
     caption(at, size.x, IM_COL32(140, 230, 140, 255),
             {ui::tr(s_, "clip, then divide (right)"), ui::tr(s_, "clip first (right)"), ui::tr(s_, "(right)")});
     ui::errorText(reason);
-    ui::recordRect(s_, "view.divideFirst.reason");
+    ui::recordRect("view.divideFirst.reason");
   }
-  if (!hovered || !clicked()) return;
+  if (!hovered || !ui::viewClicked()) return;
   const Vec2 mouse = mouseIn(ImGui::GetItemRectMin(), ImVec2(1, 1));
   if (ImGui::GetIO().KeyShift) {
     // Shift+click: the front-most clipped polygon under the mouse, for the step-through.
@@ -332,8 +327,8 @@ void ViewPanes::morphWindow() {
       const bool hovered = viewImage("morph", texture, size);
       busyMark(ViewKind::morph);
       lastValidNote();
-      ui::recordRect(s_, "view.morph");
-      morphInteraction(hovered);
+      ui::recordRect("view.morph");
+      mouse_.morph(hovered);
     }
   }
   ImGui::End();
@@ -377,14 +372,14 @@ void ViewPanes::lectureWindow() {
       const ImVec2 fb = io.DisplayFramebufferScale;
       const Vec2 mouse = mouseIn(ImGui::GetItemRectMin(), fb);
       if (kind == ViewKind::world)
-        orbitInteraction(hovered, kind, s_.display.world.orbit,
+        mouse_.orbit(hovered, kind, s_.display.world.orbit,
                          viewCameraOf(observerCamera(s_.display.world.orbit, s_.worldAspect)), cachedWidth(ViewKind::world),
                          cachedHeight(ViewKind::world), mouse);
       if (kind == ViewKind::npc)
-        orbitInteraction(hovered, kind, s_.display.npc.orbit,
+        mouse_.orbit(hovered, kind, s_.display.npc.orbit,
                          viewCameraOf(observerCamera(s_.display.npc.orbit, double(cachedWidth(ViewKind::npc)) / cachedHeight(ViewKind::npc))),
                          cachedWidth(ViewKind::npc), cachedHeight(ViewKind::npc), mouse);
-      if (kind == ViewKind::morph) morphInteraction(hovered);
+      if (kind == ViewKind::morph) mouse_.morph(hovered);
     }
     const Scene& scene = s_.doc.scene();
     // The title and caption on a dark panel (drawn behind them afterwards, in a lower channel), so
@@ -401,7 +396,7 @@ void ViewPanes::lectureWindow() {
       dl->AddRectFilled(ImGui::GetItemRectMin() - ImVec2(pad, pad * 0.6f), ImGui::GetItemRectMax() + ImVec2(pad, pad * 0.6f),
                         IM_COL32(10, 11, 15, 200), 4.f * uiScale_);
       dl->ChannelsMerge();
-      ui::recordRect(s_, "lecture.caption");
+      ui::recordRect("lecture.caption");
     };
     const std::string& title = titleIn(scene, s_.display.language);
     const std::string& sceneCaption = captionIn(scene, s_.display.language);
@@ -420,67 +415,6 @@ void ViewPanes::lectureWindow() {
   ImGui::End();
   ImGui::PopStyleVar(2);
   ctx_.gl().BindFramebuffer(GL_FRAMEBUFFER, 0);
-}
-
-// ---------------------------------------------------------------- 4 interaction
-
-// Left-drag orbits, right- or middle-drag pans, the wheel zooms; a click without motion probes.
-void ViewPanes::orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const ViewCamera& observer, int w, int h,
-                              Vec2 mouse) {
-  ImGuiIO& io = ImGui::GetIO();
-  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && s_.drag.kind == Drag::Kind::none)
-    s_.drag = {Drag::Kind::orbit, view, Handle::none};
-  if (hovered && (ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsMouseClicked(ImGuiMouseButton_Middle)))
-    s_.drag = {Drag::Kind::pan, view, Handle::none};
-  // The frame of the press moves nothing: a touch lands far from where the last one lifted, and
-  // MouseDelta holds that jump, not a drag.
-  const bool pressedNow = ImGui::IsMouseClicked(ImGuiMouseButton_Left) || ImGui::IsMouseClicked(ImGuiMouseButton_Right) ||
-                          ImGui::IsMouseClicked(ImGuiMouseButton_Middle);
-  if (s_.drag.view == view && !pressedNow) {
-    if (s_.drag.kind == Drag::Kind::orbit) orbitBy(orbit, io.MouseDelta.x * 0.4, io.MouseDelta.y * 0.4);
-    if (s_.drag.kind == Drag::Kind::pan) panBy(orbit, io.MouseDelta.x / h, io.MouseDelta.y / h);
-  }
-  if (hovered && io.MouseWheel != 0) zoomBy(orbit, std::pow(0.88, io.MouseWheel));
-  if (hovered && clicked() && view != ViewKind::morph) s_.probe = pickVertex(s_.run(), view, observer, w, h, mouse, kPickRadiusPx);
-}
-
-void ViewPanes::morphInteraction(bool hovered) {
-  // The morph's observer frames the scene by itself: only its angles are dragged.
-  ImGuiIO& io = ImGui::GetIO();
-  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) s_.drag = {Drag::Kind::orbit, ViewKind::morph, Handle::none};
-  if (s_.drag.view == ViewKind::morph && s_.drag.kind == Drag::Kind::orbit && !ImGui::IsMouseClicked(ImGuiMouseButton_Left))
-    orbitBy(s_.display.morphing.orbit, io.MouseDelta.x * 0.4, io.MouseDelta.y * 0.4);
-}
-
-// Where the world view's handles are, in screen units (ViewerState::rects "handle.vrp", "handle.prp",
-// "handle.xmin", …, "handle.front-f"): the UI tests and the browser tests grab them there.
-void ViewPanes::recordHandles(ImVec2 origin, const ViewCamera& observer, ImVec2 fbScale) {
-  const int w = cachedWidth(ViewKind::world), h = cachedHeight(ViewKind::world);
-  const float r = float(kPickRadiusPx) / fbScale.x;
-  for (Handle handle : kHandles) {
-    const Projected p = projectToPixels(observer, handlePosition(s_.run(), handle), w, h);
-    if (!p.visible) continue;
-    std::string id = std::string("handle.") + handleName(handle);
-    for (char& c : id) c = c == ' ' ? '-' : char(std::tolower(static_cast<unsigned char>(c)));
-    const float x = origin.x + float(p.pixel.x) / fbScale.x, y = origin.y + float(p.pixel.y) / fbScale.y;
-    s_.rects[id] = ImVec4(x - r, y - r, 2 * r, 2 * r);
-  }
-}
-
-void ViewPanes::worldInteraction(bool hovered, const ViewCamera& observer, int w, int h, Vec2 mouse) {
-  s_.hovered = hovered && s_.drag.kind == Drag::Kind::none
-                   ? pickHandle(s_.run(), observer, w, h, mouse, kPickRadiusPx + 3)
-                   : Handle::none;
-  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && s_.hovered != Handle::none)
-    s_.drag = {Drag::Kind::handle, ViewKind::world, s_.hovered};
-  if (s_.drag.kind == Drag::Kind::handle) {
-    const ImVec2 d = ImGui::GetIO().MouseDelta;
-    if ((d.x != 0 || d.y != 0) && !ImGui::IsMouseClicked(ImGuiMouseButton_Left))  // as orbitInteraction
-      dragHandle(s_.doc.scene().camera, s_.run(), s_.drag.handle, observer, h, Vec2(d.x, d.y),
-                 s_.keepAspect ? std::optional(s_.doc.scene().device.aspect()) : std::nullopt);
-    return;
-  }
-  orbitInteraction(hovered, ViewKind::world, s_.display.world.orbit, observer, w, h, mouse);
 }
 
 }  // namespace vplab

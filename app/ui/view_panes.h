@@ -2,13 +2,14 @@
 // drag the scene camera's handles in the world view; click a vertex to probe it; Shift+click a
 // polygon in the camera view to step through its clipping. Also the stage morph window and lecture
 // mode's full-window view. The images come from ViewImages (app/render/view_images.h), drawn from the
-// published run (app/ui/shown_run.h); what the mouse does goes into the ViewerState.
+// published run (app/ui/shown_run.h); what the mouse does in them is app/ui/view_mouse.h.
 #pragma once
 
 #include "app/context/context.h"
 #include "app/render/view_images.h"
 #include "app/ui/layout.h"
 #include "app/ui/shown_run.h"
+#include "app/ui/view_mouse.h"
 #include "app/ui/viewer_state.h"
 
 #include <imgui.h>
@@ -20,7 +21,7 @@ namespace vplab {
 class ViewPanes {
  public:
   ViewPanes(GlContext& context, ViewerState& state, ViewImages& images, const ShownRun& run)
-      : ctx_(context), s_(state), images_(images), run_(run) {}
+      : ctx_(context), s_(state), images_(images), run_(run), mouse_(state) {}
 
   /// A new frame at UI scale `uiScale`; `relayout`: the windows go back to the computed layout.
   void beginFrame(float uiScale, bool relayout) {
@@ -49,10 +50,6 @@ class ViewPanes {
   void cameraWindowContents();
   void worldWindow(const ui::Layout& layout, ImGuiWindowFlags flags, ImVec2 fbScale);
   void npcWindow(const ui::Layout& layout, ImGuiWindowFlags flags, ImVec2 fbScale);
-  void orbitInteraction(bool hovered, ViewKind view, Orbit& orbit, const ViewCamera& observer, int w, int h, Vec2 mouse);
-  void recordHandles(ImVec2 origin, const ViewCamera& observer, ImVec2 fbScale);
-  void worldInteraction(bool hovered, const ViewCamera& observer, int w, int h, Vec2 mouse);
-  void morphInteraction(bool hovered);
   /// The pixel size of the image of `kind` asked for last (for picking in it).
   int cachedWidth(ViewKind kind) const { return images_.width(kind); }
   int cachedHeight(ViewKind kind) const { return images_.height(kind); }
@@ -61,6 +58,7 @@ class ViewPanes {
   ViewerState& s_;
   ViewImages& images_;
   const ShownRun& run_;
+  ViewMouse mouse_;
   float uiScale_ = 1.f;
   bool relayout_ = true;
 };

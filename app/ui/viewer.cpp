@@ -4,6 +4,7 @@
 
 #include "app/fonts/font_file.h"
 #include "app/gl/shader.h"
+#include "app/ui/file_dialog.h"
 #include "app/ui/layout.h"
 #include "app/ui/lesson_presenter.h"
 #include "app/ui/panels.h"
@@ -59,11 +60,15 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
       s_(std::move(scene)),
       run_(s_),
       panes_(context, s_, images_, run_),
-      session_(s_,
-               [this] {
-                 updateRun();
-                 requestFrames(2);
-               }),
+      session_(s_, std::make_unique<FileDialog>(),
+               {.changed =
+                    [this] {
+                      updateRun();
+                      requestFrames(2);
+                    },
+                .goToStep = [this](size_t step) { ui::goToStep(s_, step, imgui_->Time); }}),
+      dialogs_(s_, session_),
+      windows_(s_, session_),
       menus_(context, s_, session_, images_, renderer_),
       uiScale_(uiScale) {
   IMGUI_CHECKVERSION();
@@ -71,6 +76,7 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
   ImGui::SetCurrentContext(imgui_);  // CreateContext makes it current only when none is
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // the layout is computed, not stored in the working directory
+  io.UserData = &rects_;     // where the widgets record their rects (ui::recordRect)
   io.ConfigWindowsMoveFromTitleBarOnly = true;
   setUpFonts(uiScale);
   setUpStyle(uiScale, s_.display.theme);
@@ -84,7 +90,6 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
   s_.display.camera.style = Style::shaded;
   s_.antialias = !context.softwareRenderer();
   s_.uiScale = uiScale;
-  s_.presets = listPresetScenes();
   s_.display.world.orbit = defaultWorldOrbit(s_.doc.shown(), s_.worldAspect);
   updateRun();
 }
@@ -125,13 +130,11 @@ void Viewer::screenshotFailed(const std::string& why) {
   setStatus(ui::tr(s_, "no screenshot: {1}", {why}), true);
 }
 
-void Viewer::setStatus(std::string message, bool error) { session_.setStatus(std::move(message), error); }
+void Viewer::setStatus(std::string message, bool error) { s_.setStatus(std::move(message), error); }
 
 // ---------------------------------------------------------------- 2 the frame
 
 void Viewer::updateRun() { run_.update(); }
-
-void Viewer::usePipelineWorker(std::function<void()> wake) { run_.useWorker(std::move(wake)); }
 
 std::vector<ViewKind> Viewer::viewsNotReady() const {
   // While a run is under way every view shows the last one: none is of the current state.
@@ -157,6 +160,7 @@ double Viewer::wakeIn() const {
   // ImGui 1.86 blinks the text cursor (on 0.8 s, off 0.4 s): a few frames a second while typing.
   if (imgui_->IO.WantTextInput) wake = std::min(wake, 0.2);
   if (const std::optional<double> session = session_.wakeIn(imgui_->Time)) wake = std::min(wake, *session);
+  if (const std::optional<double> dialogs = dialogs_.wakeIn()) wake = std::min(wake, *dialogs);
   return wake;
 }
 
@@ -204,7 +208,7 @@ void Viewer::drawFrame(GLuint framebuffer, int width, int height) {
   if (s_.uiScale != uiScale_ || s_.display.theme != styledTheme_) applyUiScale(s_.uiScale);
   if (settleFrames_ > 0) --settleFrames_;
   images_.beginFrame();
-  s_.visibleRects.clear();  // filled again by this frame's widgets
+  rects_.visible.clear();  // filled again by this frame's widgets
   run_.beginFrame();
   if (session_.beginFrame()) requestFrames(2);
   const Scene atFrameStart = s_.doc.scene();
@@ -217,7 +221,7 @@ void Viewer::drawFrame(GLuint framebuffer, int width, int height) {
   }
   const double now = ImGui::GetTime();
   // A modal dialog (recovery, unsaved changes, the file chooser) takes the keys: nothing behind it moves.
-  const bool modal = session_.dialogOpen();
+  const bool modal = dialogs_.open();
   if (!modal) ui::lessonKeys(s_, now);
   ui::lessonFrame(s_, now);
   // A lesson's caption box takes the bottom of the layout (not in lecture mode: there it lies over the view).
@@ -250,17 +254,17 @@ void Viewer::drawFrame(GLuint framebuffer, int width, int height) {
     ui::lessonCaption(s_, ui::currentLayout(s_, uiScale_).caption, now);
   } else {
     menus_.menuBar();
-    controlsWindow();
+    windows_.controls(uiScale_, relayout_);
     s_.doc.endFrame(true);  // validate what the panels changed; recorded at the end of the frame
     updateRun();
     panes_.viewWindows();
-    inspectWindow();
-    compactSwitcher();
+    windows_.inspect(uiScale_, relayout_);
+    windows_.compactSwitcher(uiScale_);
     panes_.morphWindow();
     ui::lessonCaption(s_, ui::currentLayout(s_, uiScale_).caption, now);
   }
   menus_.helpWindow();
-  session_.drawDialogs(uiScale_);
+  dialogs_.draw(uiScale_);
   relayout_ = false;
   images_.endFrame();
   if (const auto error = images_.takeError()) {  // a view's image failed on the render thread: said, counted
@@ -296,110 +300,12 @@ void Viewer::drawFrame(GLuint framebuffer, int width, int height) {
 
 // ---------------------------------------------------------------- 3 layout and windows
 
-void Viewer::controlsWindow() {
-  const ui::Layout l = ui::currentLayout(s_, uiScale_);
-  if (l.compact && s_.compactPanel != ViewerState::controlsPanel) return;
-  ui::placeNext(l, l.controls, relayout_);
-  ImGui::Begin(ui::tr(s_, "Controls###Controls"), nullptr, ui::layoutFlags(l, ImGuiWindowFlags_NoCollapse));
-  const Scene& scene = s_.doc.scene();
-  // In a lesson the caption box says what to look at: the scene's own caption would leave the panel
-  // no room at a projector's scale.
-  if (!s_.lesson && (!scene.title.empty() || !scene.caption.empty())) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ui::accentColor());
-    const std::string& title = titleIn(scene, s_.display.language);
-    ImGui::TextWrapped("%s", title.empty() ? ui::tr(s_, "Scene") : title.c_str());
-    ImGui::PopStyleColor();
-    if (const std::string& caption = captionIn(scene, s_.display.language); !caption.empty())
-      ImGui::TextWrapped("%s", caption.c_str());
-    ImGui::Spacing();
-  }
-  // The tabs stay in place while their panel scrolls; the status line stays below.
-  if (s_.showStepThrough) s_.controlsTab = ViewerState::lectureTab;
-  ui::tabRow(s_, "controls", {"Camera", "Scene", "Clipping", "Display", "Lecture"}, s_.controlsTab);
-  const float wrap = ImGui::GetContentRegionAvail().x;
-  float footer = 0;
-  for (const std::string* text : {&s_.status, &s_.runError})
-    if (!text->empty())
-      footer += ImGui::CalcTextSize(text->c_str(), nullptr, false, wrap).y + ImGui::GetStyle().ItemSpacing.y * 2 + 1;
-  if (ImGui::BeginChild("panel", ImVec2(0, -footer))) {
-    switch (s_.controlsTab) {
-      case ViewerState::cameraTab: ui::cameraPanel(s_); break;
-      case ViewerState::sceneTab: ui::scenePanel(s_, session_.fileDialog()); break;
-      case ViewerState::clippingTab: ui::clippingPanel(s_); break;
-      case ViewerState::displayTab: ui::displayPanel(s_); break;
-      default: ui::lecturePanel(s_); break;
-    }
-  }
-  ImGui::EndChild();
-  if (!s_.status.empty()) {
-    ImGui::Separator();
-    if (s_.statusIsError) ui::errorText(s_.status);
-    else ImGui::TextWrapped("%s", s_.status.c_str());
-  }
-  if (!s_.runError.empty()) ui::errorText(s_.runError);
-  ImGui::End();
-}
 
-void Viewer::inspectWindow() {
-  const ui::Layout l = ui::currentLayout(s_, uiScale_);
-  if (l.compact && s_.compactPanel != ViewerState::inspectPanel) return;
-  ui::placeNext(l, l.inspect, relayout_);
-  ImGui::Begin(ui::tr(s_, "Inspect###Inspect"), nullptr, ui::layoutFlags(l, ImGuiWindowFlags_NoCollapse));
-  // A new probe (a vertex clicked in a view) brings the probe forward; the tabs stay in place while
-  // the panel scrolls.
-  if (s_.probe && s_.probe != s_.probeShown) s_.inspectTab = ViewerState::probeTab;
-  s_.probeShown = s_.probe;
-  ui::tabRow(s_, "inspect", {"Vertex probe", "Matrices", "Depth"}, s_.inspectTab);
-  if (ImGui::BeginChild("panel")) {
-    switch (s_.inspectTab) {
-      case ViewerState::probeTab: ui::probePanel(s_); break;
-      case ViewerState::matricesTab: ui::matricesPanel(s_); break;
-      default: ui::depthPanel(s_); break;
-    }
-  }
-  ImGui::EndChild();
-  ImGui::End();
-}
 
-/// The compact layout's switcher (a phone): the three views, one at a time, and the two panels, each
-/// opened and closed again by its button. A probe brings the inspector forward, as on the desktop.
-void Viewer::compactSwitcher() {
-  const ui::Layout l = ui::currentLayout(s_, uiScale_);
-  s_.compactShown = l.compact;
-  if (!l.compact) return;
-  if (s_.probe && s_.probe != s_.probeShown && s_.compactPanel == ViewerState::noPanel) s_.compactPanel = ViewerState::inspectPanel;
-  ImGui::SetNextWindowPos(l.switcher.pos);
-  ImGui::SetNextWindowSize(l.switcher.size);
-  const ImGuiStyle& style = ImGui::GetStyle();
-  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(style.FramePadding.x * 1.5f, style.FramePadding.y * 2));
-  ImGui::Begin("##switcher", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
-  auto choice = [&](const char* name, const char* id, bool selected) {
-    ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(selected ? ImGuiCol_TabActive : ImGuiCol_Tab));
-    const bool pressed = ImGui::Button(name);
-    ImGui::PopStyleColor();
-    ui::recordRect(s_, id);
-    ImGui::SameLine();
-    return pressed;
-  };
-  for (const auto& [kind, name, id] : {std::tuple{ViewKind::world, text::Text("World"), "switch.world"},
-                                       std::tuple{ViewKind::camera, text::Text("Camera"), "switch.camera"},
-                                       std::tuple{ViewKind::npc, text::Text("NPC"), "switch.npc"}})
-    if (choice(ui::tr(s_, name), id, s_.compactView == kind)) s_.compactView = kind;
-  ImGui::SeparatorEx(ImGuiSeparatorFlags_Vertical);
-  ImGui::SameLine();
-  for (const auto& [panel, name, id] : {std::tuple{int(ViewerState::controlsPanel), text::Text("Controls"), "switch.controls"},
-                                        std::tuple{int(ViewerState::inspectPanel), text::Text("Inspect"), "switch.inspect"}})
-    if (choice(ui::tr(s_, name), id, s_.compactPanel == panel)) s_.compactPanel = s_.compactPanel == panel ? ViewerState::noPanel : panel;
-  ImGui::End();
-  ImGui::PopStyleVar();
-}
 
 // ---------------------------------------------------------------- 4 export
 
 Image Viewer::exportImage(ViewKind kind, int width, int height) { return menus_.exportImage(kind, width, height); }
-
-void Viewer::forgetViewImages() { images_.forget(); }
 
 void Viewer::recreateGlObjects() {
   makeCurrent();

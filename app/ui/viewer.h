@@ -5,18 +5,23 @@
 //   ShownRun   the pipeline's run of the shown scene (app/ui/shown_run.h)
 //   ViewImages the views' images, here or on the render thread (app/render/view_images.h)
 //   ViewPanes  the views in their windows and the mouse in them (app/ui/view_panes.h)
-//   Session    files, autosave, recovery, links (app/ui/session.h)
+//   Session    files, autosave, recovery, links, lessons opened, without ImGui (app/session/session.h),
+//              and its dialogs (app/ui/session_dialogs.h)
 //   Menus      the menus, keys, help and export (app/ui/menus.h)
+//   PanelWindows  the controls and inspector windows and their panels (app/ui/panel_windows.h)
 // and the panels (app/ui/panels.h), all over one ViewerState (app/ui/viewer_state.h).
 #pragma once
 
 #include "app/context/context.h"
 #include "app/gl/render_target.h"
 #include "app/ui/menus.h"
-#include "app/ui/session.h"
+#include "app/ui/panel_windows.h"
+#include "app/session/session.h"
+#include "app/ui/session_dialogs.h"
 #include "app/ui/shown_run.h"
 #include "app/ui/view_panes.h"
 #include "app/ui/viewer_state.h"
+#include "app/ui/widgets.h"
 #include "app/render/view_images.h"
 #include "app/render/view_renderer.h"
 
@@ -45,16 +50,24 @@ class Viewer {
   void frame(GLuint framebuffer, int width, int height);
   /// How many errors frame() caught (a frame's exception, a GL error, a view's image that failed on
   /// the render thread), and the last one's message: none is expected, so the monkey test fails on any.
-  unsigned caughtErrors() const { return caught_.count; }
-  const std::string& lastCaughtError() const { return caught_.last; }
+  struct Caught {
+    unsigned count = 0;
+    std::string last;
+    unsigned inARow = 0;  // frames that failed one after the other (the first asks for a frame to show why)
+  };
+  const Caught& caught() const { return caught_; }
 
-  /// The document's file, autosave, recovery and links (app/ui/session.h).
+  /// The document's file, autosave, recovery and links (app/session/session.h).
   Session& session() { return session_; }
   const Session& session() const { return session_; }
   /// Makes this viewer's ImGui context the current one (input is fed to the current context).
   void makeCurrent();
   ViewerState& state() { return s_; }
   const ViewerState& state() const { return s_; }
+  /// Whether a modal dialog (a question of the session, the file chooser) takes the keys.
+  bool dialogOpen() const { return dialogs_.open(); }
+  /// Where named widgets, handles and views were drawn last frame (the tests' hook, app/ui/widgets.h).
+  const ui::RectLog& rects() const { return rects_; }
   /// The window's close button or Ctrl+Q: quits at once when nothing is unsaved, else asks.
   void requestQuit() { s_.quitRequested = true; }
   bool shouldQuit() const { return s_.quitConfirmed; }
@@ -66,45 +79,22 @@ class Viewer {
   /// while a field is edited, the next autosave; a large number when idle. The window's event wait
   /// uses it as its timeout (docs/lecturers.md "The viewer": an idle window uses no CPU).
   double wakeIn() const;
-  /// How many times a view was drawn (not reused from its last image): tests check hover frames cost none.
-  unsigned viewsDrawn() const { return images_.drawn(); }
-  /// The views asked for in the last frame, what each was drawn from, and the metrics their labels
-  /// are measured with (for the tests of where the labels went: tests/app/ui/lesson_layout_test.cpp).
-  std::vector<ViewKind> viewsShown() const { return images_.asked(); }
-  const ViewRequest* viewRequest(ViewKind kind) const { return images_.lastRequest(kind); }
+  /// The views' images (app/render/view_images.h): drawn here, on a render thread (useWorker) or in
+  /// slices across frames (drawInSlices, the page); what each was drawn from, how many were drawn.
+  ViewImages& images() { return images_; }
+  const ViewImages& images() const { return images_; }
+  /// The pipeline's run of the shown scene (app/ui/shown_run.h): in the frame, on a worker thread
+  /// (useWorker, the window) or in steps across frames (runInSteps, the page).
+  ShownRun& run() { return run_; }
+  const ShownRun& run() const { return run_; }
+  /// The metrics the views' labels are measured with (the tests of where the labels went).
   const TextMetrics& viewTextMetrics() const { return renderer_.textMetrics(); }
-  /// Draws the views on a render thread with `context` (GlContext::createShared of the window's):
-  /// a view whose image is not ready within the frame shows its last image with a busy mark.
-  /// `wake` wakes the window's event wait (called on the render thread). Without it (headless, the
-  /// UI tests) each view is drawn in the frame that needs it.
-  void useViewWorker(std::unique_ptr<GlContext> context, std::function<void()> wake) {
-    images_.useWorker(std::move(context), std::move(wake));
-  }
-  /// Runs the CPU pipeline on a worker thread: the frame that changed the scene waits a few ms for
-  /// its run (a small scene's arrives in it), later frames show the last run until the new one is
-  /// finished. `wake` wakes the window's event wait (called on the worker). Without it (headless,
-  /// the UI tests) the pipeline runs in the frame that needs it.
-  void usePipelineWorker(std::function<void()> wake);
-  /// Without threads (the page): the pipeline runs in steps, about `secondsPerFrame` of each frame
-  /// (PipelineJob), so no frame waits for a large scene's run.
-  void runPipelineInSteps(double secondsPerFrame) { run_.runInSteps(secondsPerFrame); }
-  /// Whether a run of the pipeline is under way on the worker or in steps (the views show the last one).
-  bool runPending() const { return run_.pending(); }
-  /// How far the run in steps is (0 to 1), while one is under way.
-  std::optional<double> runProgress() const { return run_.progress(); }
-  /// Whether `kind` shows an older image while its current one is being drawn.
-  bool viewBusy(ViewKind kind) const { return images_.busy(kind); }
-  /// Without a render thread (the page): the views are drawn across frames in slices of about this
-  /// many triangles to begin with (ViewImages::drawInSlices), so no frame waits for a million of them.
-  void drawViewsInSlices(size_t trianglesPerFrame) { images_.drawInSlices(trianglesPerFrame); }
   /// Asks for `n` more frames (something changed that ImGui shows only after it laid it out again).
   void requestFrames(int n) { settleFrames_ = std::max(settleFrames_, n); }
 
   /// The view as File > Export draws it (the shown settings) at width × height pixels, with this
   /// viewer's GL backend; the bound framebuffer stays bound.
   Image exportImage(ViewKind kind, int width, int height);
-  /// Every view is drawn again in the next frame (the browser's frame-time benchmark).
-  void forgetViewImages();
   /// The context lost every GL object and is usable again (a WebGL context lost and restored): the
   /// views' backend, their render targets and ImGui's renderer (its shaders and font texture) are
   /// made again. The document, its undo history, the views' observers and settings stay: they hold
@@ -126,9 +116,6 @@ class Viewer {
   void drawFrame(GLuint framebuffer, int width, int height);
   /// After a frame ended in `what`: ImGui's frame closed, the last good state back, the reason said.
   void recoverFrom(const std::string& what);
-  void controlsWindow();
-  void inspectWindow();
-  void compactSwitcher();
   /// The pipeline's run of the shown scene, when it changed (app/ui/shown_run.h).
   void updateRun();
   void setStatus(std::string message, bool error);
@@ -142,6 +129,9 @@ class Viewer {
   ShownRun run_;
   ViewPanes panes_;
   Session session_;
+  SessionDialogs dialogs_;
+  PanelWindows windows_;
+  ui::RectLog rects_;
   Menus menus_;
   float uiScale_;
   Theme styledTheme_ = Theme::dark;  // the ImGui colours set up (StyleColorsDark or Light)
@@ -158,11 +148,7 @@ class Viewer {
     PipelineOptions pipeline;
   };
   std::optional<LastGood> lastGood_;
-  struct Caught {
-    unsigned count = 0;
-    unsigned inARow = 0;
-    std::string last;
-  } caught_;
+  Caught caught_;
 };
 
 }  // namespace vplab

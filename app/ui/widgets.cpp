@@ -11,23 +11,27 @@
 
 namespace vplab::ui {
 
-void recordRect(ViewerState& s, const char* id) {
+RectLog* rectLog() { return static_cast<RectLog*>(ImGui::GetIO().UserData); }
+
+void recordRect(const char* id) {
+  RectLog* log = rectLog();
+  if (!log) return;  // a context without a viewer (a test of one widget)
   const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-  s.rects[id] = ImVec4(a.x, a.y, b.x - a.x, b.y - a.y);
+  log->rects[id] = ImVec4(a.x, a.y, b.x - a.x, b.y - a.y);
   // The draw list's clip rect is the window's visible area, within its parents' (child windows,
   // tables' cells): what of the item can be seen.
   const ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 c0 = draw->GetClipRectMin(), c1 = draw->GetClipRectMax();
   const ImVec2 v0(std::max(a.x, c0.x), std::max(a.y, c0.y)), v1(std::min(b.x, c1.x), std::min(b.y, c1.y));
-  s.visibleRects[id] = ImVec4(v0.x, v0.y, std::max(0.f, v1.x - v0.x), std::max(0.f, v1.y - v0.y));
+  log->visible[id] = ImVec4(v0.x, v0.y, std::max(0.f, v1.x - v0.x), std::max(0.f, v1.y - v0.y));
 }
 
-void scrollAnchor(ViewerState& s, const char* id) {
-  if (s.lessonScrollTo != id) return;
+void scrollAnchor(Widgets& w, const char* id) {
+  if (w.scrollTo != id) return;
   // Over a few frames: a tab just brought forward has not measured its content yet, and ImGui
   // clamps the scroll to the last frame's content.
   ImGui::SetScrollHereY(0.f);
-  if (--s.lessonScrollFrames <= 0) s.lessonScrollTo.clear();
+  if (--w.scrollFrames <= 0) w.scrollTo.clear();
 }
 
 namespace {
@@ -35,14 +39,14 @@ namespace {
 // ImGui's drag fields become text fields on Ctrl+click or double-click, and then write the value
 // parsed from the text at every keystroke: typing "10" would apply F = 1 first (another camera, maybe
 // an invalid one, and an undo step). The field works on a copy instead; while its text is being
-// typed, the copy is kept in s.typing and applied once, when the field loses focus (Enter, Tab or a
+// typed, the copy is kept in w.memory.typing and applied once, when the field loses focus (Enter, Tab or a
 // click elsewhere); Esc drops it. Dragging writes through at once, as before.
 template <int N>
-bool editInPlace(ViewerState& s, double* value, const std::function<bool(double*)>& widget) {
+bool editInPlace(Widgets& w, double* value, const std::function<bool(double*)>& widget) {
   std::array<double, N> copy;
   std::copy_n(value, N, copy.begin());
   const ImGuiID group = ImGui::GetID("##typing");  // this field's identity (within the panel's ID stack)
-  if (s.typing.id == group) std::copy_n(s.typing.values.begin(), N, copy.begin());
+  if (w.memory.typing.id == group) std::copy_n(w.memory.typing.values.begin(), N, copy.begin());
   ImGui::BeginGroup();
   const bool changed = widget(copy.data());
   ImGui::EndGroup();
@@ -50,19 +54,19 @@ bool editInPlace(ViewerState& s, double* value, const std::function<bool(double*
   const bool typing = ImGui::IsItemActive() && g.TempInputId != 0 && g.TempInputId == g.ActiveId;
   if (typing) {
     // Ctrl+click from one component's text straight into another's: the first is finished.
-    const bool otherField = s.typing.id == group && s.typing.field != g.ActiveId;
-    if (changed || s.typing.id != group || otherField) {
-      s.typing.id = group;
-      s.typing.field = g.ActiveId;
-      std::copy_n(copy.begin(), N, s.typing.values.begin());
+    const bool otherField = w.memory.typing.id == group && w.memory.typing.field != g.ActiveId;
+    if (changed || w.memory.typing.id != group || otherField) {
+      w.memory.typing.id = group;
+      w.memory.typing.field = g.ActiveId;
+      std::copy_n(copy.begin(), N, w.memory.typing.values.begin());
     }
     if (!otherField) return false;
     const bool differs = !std::equal(copy.begin(), copy.end(), value);
     std::copy_n(copy.begin(), N, value);
     return differs;
   }
-  if (s.typing.id == group) {  // the text field closed: commit, unless Esc cancelled it
-    s.typing.id = 0;
+  if (w.memory.typing.id == group) {  // the text field closed: commit, unless Esc cancelled it
+    w.memory.typing.id = 0;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) return false;
     const bool differs = !std::equal(copy.begin(), copy.end(), value);
     std::copy_n(copy.begin(), N, value);
@@ -80,32 +84,32 @@ void fitLabel(const char* label) {
   ImGui::SetNextItemWidth(std::max(ImGui::GetFontSize() * 4, ImGui::GetContentRegionAvail().x - labelWidth - spacing));
 }
 
-bool dragVec3(ViewerState& s, const char* label, const char* id, Vec3& v, float speed) {
+bool dragVec3(Widgets& w, const char* label, const char* id, Vec3& v, float speed) {
   fitLabel(label);
   ImGui::PushID(id);
-  const bool changed = editInPlace<3>(s, &v.x, [&](double* p) {
+  const bool changed = editInPlace<3>(w, &v.x, [&](double* p) {
     return ImGui::DragScalarN(label, ImGuiDataType_Double, p, 3, speed, nullptr, nullptr, "%.3f");
   });
   ImGui::PopID();
-  recordRect(s, id);
+  recordRect(id);
   return changed;
 }
 
-bool dragDouble(ViewerState& s, const char* label, const char* id, double& v, float speed, double min, double max,
+bool dragDouble(Widgets& w, const char* label, const char* id, double& v, float speed, double min, double max,
                 const char* format) {
   const bool bounded = min < max;
   fitLabel(label);
   ImGui::PushID(id);
-  const bool changed = editInPlace<1>(s, &v, [&](double* p) {
+  const bool changed = editInPlace<1>(w, &v, [&](double* p) {
     return ImGui::DragScalar(label, ImGuiDataType_Double, p, speed, bounded ? &min : nullptr, bounded ? &max : nullptr,
                              format);
   });
   ImGui::PopID();
-  recordRect(s, id);
+  recordRect(id);
   return changed;
 }
 
-void tabRow(ViewerState& s, const char* id, std::initializer_list<text::Text> names, int& current) {
+void tabRow(Widgets& w, const char* id, std::initializer_list<text::Text> names, int& current) {
   const ImGuiStyle& style = ImGui::GetStyle();
   ImGui::PushID(id);
   ImGui::PushStyleVar(ImGuiStyleVar_FrameRounding, style.TabRounding);
@@ -113,9 +117,9 @@ void tabRow(ViewerState& s, const char* id, std::initializer_list<text::Text> na
   float x = 0;
   int i = 0;
   for (const text::Text tab : names) {
-    const char* name = tr(s, tab);
-    const float w = ImGui::CalcTextSize(name).x + style.FramePadding.x * 2;
-    if (i > 0 && x + style.ItemInnerSpacing.x + w <= ImGui::GetContentRegionAvail().x) {
+    const char* name = tr(w, tab);
+    const float width = ImGui::CalcTextSize(name).x + style.FramePadding.x * 2;
+    if (i > 0 && x + style.ItemInnerSpacing.x + width <= ImGui::GetContentRegionAvail().x) {
       ImGui::SameLine();
       x += style.ItemInnerSpacing.x;
     } else {
@@ -129,8 +133,8 @@ void tabRow(ViewerState& s, const char* id, std::initializer_list<text::Text> na
     if (ImGui::Button(name)) current = i;
     ImGui::PopID();
     ImGui::PopStyleColor(3);
-    recordRect(s, (std::string("tab.") + id + "." + std::string(tab.english())).c_str());
-    x += w;
+    recordRect((std::string("tab.") + id + "." + std::string(tab.english())).c_str());
+    x += width;
     ++i;
   }
   ImGui::PopStyleVar(2);
@@ -188,21 +192,21 @@ void sameLineIfFits(const char* next, bool button) {
 }
 
 
-void tooltip(const ViewerState& s, text::Text t) {
+void tooltip(const Widgets& w, text::Text t) {
   if (!ImGui::IsItemHovered()) return;
   ImGui::BeginTooltip();
   ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28);
-  ImGui::TextUnformatted(t.in(s.display.language));
+  ImGui::TextUnformatted(t.in(w.language()));
   // In English the lecture notes' German follows: the terms the students read in the notes.
-  if (s.display.language == Language::en) ImGui::TextDisabled("%s", t.in(Language::de));
+  if (w.language() == Language::en) ImGui::TextDisabled("%s", t.in(Language::de));
   ImGui::PopTextWrapPos();
   ImGui::EndTooltip();
 }
 
-void help(const ViewerState& s, text::Text t) {
+void help(const Widgets& w, text::Text t) {
   ImGui::SameLine();
   ImGui::TextDisabled("(?)");
-  tooltip(s, t);
+  tooltip(w, t);
 }
 
 ImU32 errorColour() { return ImGui::ColorConvertFloat4ToU32(ImVec4(1.f, 0.38f, 0.35f, 1.f)); }
@@ -231,26 +235,26 @@ namespace {
 constexpr double kCopiedShownSeconds = 2.0;
 }
 
-bool copyButton(ViewerState& s, const char* label, const char* id, const std::string& text) {
+bool copyButton(Widgets& w, const char* label, const char* id, const std::string& text) {
   const bool pressed = ImGui::SmallButton(label);
-  recordRect(s, id);
+  recordRect(id);
   if (pressed) {
     ImGui::SetClipboardText(text.c_str());
-    s.copied = {id, ImGui::GetTime()};
+    w.memory.copied = {id, ImGui::GetTime()};
     // The window draws only on input: keep frames coming until the notice has gone again.
-    s.animateUntil = std::max(s.animateUntil, s.copied.at + kCopiedShownSeconds + 0.05);
+    w.animateUntil = std::max(w.animateUntil, w.memory.copied.at + kCopiedShownSeconds + 0.05);
   }
   return pressed;
 }
 
-void copiedNotice(ViewerState& s, const char* id) {
-  if (s.copied.id != id) return;
-  if (ImGui::GetTime() - s.copied.at > kCopiedShownSeconds) {
-    s.copied = {};
+void copiedNotice(Widgets& w, const char* id) {
+  if (w.memory.copied.id != id) return;
+  if (ImGui::GetTime() - w.memory.copied.at > kCopiedShownSeconds) {
+    w.memory.copied = {};
     return;
   }
   ImGui::SameLine();
-  ImGui::TextColored(insideColor(), "%s", tr(s, "copied"));
+  ImGui::TextColored(insideColor(), "%s", tr(w, "copied"));
 }
 
 namespace {

@@ -41,7 +41,7 @@ enum class Space {
 };
 inline constexpr EnumTable<Space, 5> kSpaceNames = {
     {{Space::wc, "WC"}, {Space::npc, "NPC"}, {Space::dc, "DC"}, {Space::morph, "morph"}, {Space::pixels, "pixels"}}};
-inline std::string_view toString(Space s) { return nameIn(kSpaceNames, s); }
+constexpr const auto& namesOf(Space) { return kSpaceNames; }
 
 /// How a view's 3D space reaches its pixels: a synthetic camera of the pipeline itself
 /// (vrcFromWc, npcFromVrc; "WC" meaning the space looked at), then the view's device mapping.

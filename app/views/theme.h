@@ -17,8 +17,7 @@ namespace vplab {
 enum class Theme { dark, light };
 /// The command line's --theme, the scene's "theme".
 inline constexpr EnumTable<Theme, 2> kThemeNames = {{{Theme::dark, "dark"}, {Theme::light, "light"}}};
-inline std::string_view toString(Theme t) { return nameIn(kThemeNames, t); }
-inline std::optional<Theme> themeFromString(std::string_view s) { return valueIn(kThemeNames, s); }
+constexpr const auto& namesOf(Theme) { return kThemeNames; }
 
 }  // namespace vplab
 

@@ -33,11 +33,8 @@ enum class ViewKind { camera, world, npc, all, morph, divideFirst, depth };
 inline constexpr EnumTable<ViewKind, 7> kViewKindNames = {
     {{ViewKind::camera, "camera"}, {ViewKind::world, "world"}, {ViewKind::npc, "npc"}, {ViewKind::all, "all"},
      {ViewKind::morph, "morph"}, {ViewKind::divideFirst, "divide-first"}, {ViewKind::depth, "depth-plot"}}};
-/// Every view kind in the enum's order: the command line's choices and arrays indexed by kind.
-inline constexpr auto kAllViewKinds = valuesOf(kViewKindNames);
-inline constexpr size_t kViewKindCount = kAllViewKinds.size();
-inline std::string_view toString(ViewKind v) { return nameIn(kViewKindNames, v); }
-inline std::optional<ViewKind> viewKindFromString(std::string_view s) { return valueIn(kViewKindNames, s); }
+inline constexpr size_t kViewKindCount = std::size(kViewKindNames);
+constexpr const auto& namesOf(ViewKind) { return kViewKindNames; }
 
 /// flat: each object's colour, unlit. shaded: lit by the scene's lights. wire: every edge.
 /// hiddenLine: visible edges solid, hidden ones dashed (lecture notes figure 16.1). hiddenRemoved: only the
@@ -46,10 +43,7 @@ enum class Style { flat, shaded, wire, hiddenLine, hiddenRemoved };
 inline constexpr EnumTable<Style, 5> kStyleNames = {{{Style::flat, "flat"}, {Style::shaded, "shaded"}, {Style::wire, "wire"},
                                                      {Style::hiddenLine, "hidden-line"},
                                                      {Style::hiddenRemoved, "hidden-removed"}}};
-/// Every style in the enum's order (the keys 1 to 5, the command line's choices).
-inline constexpr auto kAllStyles = valuesOf(kStyleNames);
-inline std::string_view toString(Style s) { return nameIn(kStyleNames, s); }
-inline std::optional<Style> styleFromString(std::string_view s) { return valueIn(kStyleNames, s); }
+constexpr const auto& namesOf(Style) { return kStyleNames; }
 inline bool isFilled(Style s) { return s == Style::flat || s == Style::shaded; }
 
 struct OverlaySettings {

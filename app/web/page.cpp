@@ -89,32 +89,34 @@ struct Page {
   Page() {
     auto chooser = std::make_unique<page::BrowserFiles>();
     files = chooser.get();
-    viewer.session().useFileChooser(std::move(chooser), /*browser=*/true);
+    viewer.session().files().useFileChooser(std::move(chooser), /*browser=*/true);
     viewer.state().compactAllowed = true;  // a phone's screen: one view at a time (app/ui/layout.h)
+    // SwiftShader takes about 7 s for the three views of a million triangles: a large scene's views
+    // are drawn across frames (docs/measured.md "Large scenes in the page").
+    viewer.images().drawInSlices(kFirstSliceTriangles);
+    // Its pipeline run (0.5 s for the million-triangle sphere) in steps of a few ms a frame.
+    viewer.run().runInSteps(kPipelineSecondsPerFrame);
+    // ... and its meshes built in the loader worker (loader-worker.js): the page answers meanwhile,
+    // with the desktop's progress window and Cancel.
+    viewer.session().loader().useRemote(page::buildInWorker);
     // The language: View ▸ Language's last choice, else the browser's (index.html decides it, for its
     // own texts too); a choice in the menu is kept in localStorage, as the desktop keeps it in its
     // preferences file (app/ui/run_viewer.cpp). Set before a link is shown: a lesson named without
     // its language opens in this one.
-    viewer.state().display.language = page::language();
-    viewer.session().rememberLanguageWith([](Language lang) {
+    auto rememberLanguage = [](Language lang) {
       if (!page::rememberLanguage(lang))
         throw Error(text::Text("the browser cannot remember the language (its localStorage is full or disabled)").in(lang));
-    });
-    // SwiftShader takes about 7 s for the three views of a million triangles: a large scene's views
-    // are drawn across frames (docs/measured.md "Large scenes in the page").
-    viewer.drawViewsInSlices(kFirstSliceTriangles);
-    // Its pipeline run (0.5 s for the million-triangle sphere) in steps of a few ms a frame.
-    viewer.runPipelineInSteps(kPipelineSecondsPerFrame);
-    // ... and its meshes built in the loader worker (loader-worker.js): the page answers meanwhile,
-    // with the desktop's progress window and Cancel.
-    viewer.session().loader().useRemote(page::buildInWorker);
+    };
+    viewer.session().start({.language = page::language(),
+                            .rememberLanguage = rememberLanguage,
+                            .recoveries = keptRecoveries(),
+                            .autosaveDirectory = kStateDir});
     showLink(page::locationHash(), /*atStart=*/true);
-    startAutosave();
   }
 
-  /// Unsaved changes of tabs that are gone (closed, crashed, this one before a reload) are offered
-  /// back, all of them (the recovery dialog); from now on this tab's are autosaved under its own key.
-  void startAutosave() {
+  /// Unsaved changes of tabs that are gone (closed, crashed, this one before a reload), all of them,
+  /// newest first, to be offered back (the recovery dialog); this tab's are autosaved under its own key.
+  std::vector<Recovery> keptRecoveries() {
     std::error_code ec;
     std::filesystem::create_directories(kKeptDir, ec);
     std::vector<Recovery> offered;
@@ -130,8 +132,7 @@ struct Page {
     }
     // Newest first, as the desktop's (saved_at is "YYYY-MM-DD HH:MM:SS": its text sorts as its time).
     std::stable_sort(offered.begin(), offered.end(), [](const Recovery& a, const Recovery& b) { return a.savedAt > b.savedAt; });
-    viewer.session().offerRecoveries(std::move(offered));
-    viewer.session().enableAutosave(kStateDir, kAutosaveDelay);
+    return offered;
   }
 
   /// localStorage follows the autosave file: written when it was, removed when the session has
@@ -145,7 +146,7 @@ struct Page {
       page::dropKeptScene(k.second);
       return true;
     });
-    const Autosave* autosave = viewer.session().autosave();
+    const Autosave* autosave = viewer.session().recovery().autosave();
     if (!autosave) return;
     std::ifstream in(autosave->file(), std::ios::binary);
     if (in) {
@@ -170,7 +171,7 @@ struct Page {
     // followed again is a change the page hears of.
     shownHash = fragment;
     try {
-      viewer.session().showUrlState(decodeUrlState(fragment), atStart);
+      viewer.session().links().showUrlState(decodeUrlState(fragment), atStart);
     } catch (const Error& e) {
       viewer.state().status = e.what();
       viewer.state().statusIsError = true;
@@ -226,7 +227,7 @@ struct Page {
   void afterFrame() {
     mirrorAutosave();
     if (viewer.title() != shownTitle) page::setPageTitle(shownTitle = viewer.title());
-    const std::string hash = encodeUrlState(viewer.session().urlState());
+    const std::string hash = encodeUrlState(viewer.session().links().urlState());
     if (hash != shownHash) page::replaceLocationHash(shownHash = hash);
     const bool unsaved = viewer.state().doc.dirty();
     if (unsaved != shownUnsaved) page::setUnsavedChanges(shownUnsaved = unsaved);
@@ -237,7 +238,7 @@ struct Page {
   /// back, and unsaved changes are kept in localStorage at once, for a reload if it never is.
   void loseGraphics() {
     graphicsLost = true;
-    viewer.session().writeRecoveryNow();
+    viewer.session().recovery().writeRecoveryNow();
     mirrorAutosave();
   }
 
@@ -258,7 +259,7 @@ struct Page {
     const Camera& c = s.doc.scene().camera;
     nlohmann::json j;
     j["frames"] = frames;
-    j["viewsDrawn"] = viewer.viewsDrawn();
+    j["viewsDrawn"] = viewer.images().drawn();
     j["viewsBusy"] = viewer.viewsNotReady().size();  // still being drawn (or the run they show)
     j["title"] = viewer.title();
     j["scene"] = s.doc.path().string();
@@ -267,8 +268,8 @@ struct Page {
     j["language"] = std::string(text::languageCode(s.display.language));
     j["labels"] = {{"menu.file", ui::tr(s, "File")}};  // the File menu's title as the menu bar shows it
     j["statusIsError"] = s.statusIsError;
-    j["caughtErrors"] = viewer.caughtErrors();  // errors a frame caught (none is expected: the monkey test fails on any)
-    j["lastCaughtError"] = viewer.lastCaughtError();
+    j["caughtErrors"] = viewer.caught().count;  // errors a frame caught (none is expected: the monkey test fails on any)
+    j["lastCaughtError"] = viewer.caught().last;
     j["hash"] = shownHash;
     j["camera"] = {{"vrp", {c.vrp.x, c.vrp.y, c.vrp.z}},
                    {"prp", {c.prp.x, c.prp.y, c.prp.z}},
@@ -286,7 +287,7 @@ struct Page {
     j["embed"] = nlohmann::json::array();
     for (ViewKind v : s.embedViews) j["embed"].push_back(std::string(toString(v)));
     nlohmann::json rects = nlohmann::json::object();
-    for (const auto& [id, r] : s.rects) rects[id] = {r.x, r.y, r.z, r.w};
+    for (const auto& [id, r] : viewer.rects().rects) rects[id] = {r.x, r.y, r.z, r.w};
     j["rects"] = std::move(rects);
     int w = 0, h = 0;
     glfwGetFramebufferSize(window.handle(), &w, &h);
@@ -298,11 +299,11 @@ struct Page {
     j["compactPanel"] = s.compactPanel == ViewerState::controlsPanel ? "controls"
                         : s.compactPanel == ViewerState::inspectPanel ? "inspect" : "";
     j["loading"] = viewer.session().loader().busy();
-    if (const std::optional<double> p = viewer.runProgress()) j["runProgress"] = *p;
+    if (const std::optional<double> p = viewer.run().progress()) j["runProgress"] = *p;
     j["run"] = {{"polygons", s.run().stats.polygons}, {"vertices", s.run().stats.vertices}};
     j["graphicsLost"] = graphicsLost;
-    j["recoveryOffered"] = viewer.session().recoveryOffered();
-    j["recoveriesOffered"] = viewer.session().recoveriesOffered();
+    j["recoveryOffered"] = !viewer.session().recovery().recoveries().empty();
+    j["recoveriesOffered"] = viewer.session().recovery().recoveries().size();
     return j.dump();
   }
 };
@@ -348,13 +349,13 @@ extern "C" {
 
 /// The user picked `file` (copied to /uploads) in the picker the viewer opened; a drop when it opened none.
 EMSCRIPTEN_KEEPALIVE void vplab_file_chosen(Page* p, const char* file) {
-  if (!p->files->chosen(file)) p->viewer.session().openFile(file);
+  if (!p->files->chosen(file)) p->viewer.session().files().openFile(file);
   p->input.changed = true;
 }
 
 /// A file dropped on the page (copied to /uploads).
 EMSCRIPTEN_KEEPALIVE void vplab_file_dropped(Page* p, const char* file) {
-  p->viewer.session().openFile(file);
+  p->viewer.session().files().openFile(file);
   p->input.changed = true;
 }
 
@@ -491,7 +492,7 @@ EMSCRIPTEN_KEEPALIVE const char* vplab_export_png(Page* p, const char* view, int
   p->reply.clear();
   try {
     const vplab::ViewerState& s = p->viewer.state();
-    const auto kind = vplab::viewKindFromString(view);
+    const auto kind = vplab::fromString<ViewKind>(view);
     if (!kind) throw vplab::Error(vplab::ui::tr(s, "no view \"{1}\"", {view}));
     if (p->graphicsLost) throw vplab::Error(vplab::ui::tr(s, "the graphics context is lost: nothing can be drawn until the browser gives it back"));
     if (width < 1 || height < 1 || width > 8192 || height > 8192)
@@ -532,13 +533,13 @@ EMSCRIPTEN_KEEPALIVE double vplab_bench_frames(Page* p, int frames) {
   if (p->graphicsLost) return -1;
   int w = 0, h = 0;
   p->window.framebufferSize(w, h);
-  p->viewer.drawViewsInSlices(0);  // each frame draws the three views whole: what is measured
+  p->viewer.images().drawInSlices(0);  // each frame draws the three views whole: what is measured
   const double start = emscripten_get_now();
   for (int i = 0; i < frames; ++i) {
-    p->viewer.forgetViewImages();
+    p->viewer.images().forget();
     p->drawFrame(w, h);
   }
-  p->viewer.drawViewsInSlices(vplab::kFirstSliceTriangles);
+  p->viewer.images().drawInSlices(vplab::kFirstSliceTriangles);
   unsigned char pixel[4];
   p->window.gl().BindFramebuffer(GL_FRAMEBUFFER, 0);
   p->window.gl().ReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);

@@ -6,7 +6,7 @@
 // changes is left. The DOM side is in index.html (vplabPage).
 #pragma once
 
-#include "app/ui/file_dialog.h"
+#include "app/session/file_chooser.h"
 #include "base/language.h"
 
 #include <cstdint>

@@ -7,7 +7,7 @@ namespace {
 
 TEST(EnumTables, ExerciseTopicsHaveOneRowPerValueInOrder) {
   test::expectCompleteTable(kExerciseTopicNames, 4);  // orientation, mapping, clipping, pipeline
-  EXPECT_EQ(exerciseTopicFromString("clipping"), ExerciseTopic::clipping);
+  EXPECT_EQ(fromString<ExerciseTopic>("clipping"), ExerciseTopic::clipping);
   EXPECT_EQ(toString(ExerciseTopic::pipeline), "pipeline");
 }
 

@@ -22,9 +22,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 TEST(Camera, ProjectionNames) {
   for (Projection p : {Projection::perspective, Projection::parallel, Projection::oblique})
-    EXPECT_EQ(projectionFromString(toString(p)), p);
-  EXPECT_EQ(projectionFromString("Perspective"), std::nullopt);
-  EXPECT_EQ(projectionFromString(""), std::nullopt);
+    EXPECT_EQ(fromString<Projection>(toString(p)), p);
+  EXPECT_EQ(fromString<Projection>("Perspective"), std::nullopt);
+  EXPECT_EQ(fromString<Projection>(""), std::nullopt);
 }
 
 // U, V, N orthonormal and right-handed, the eye on +N at distance VPD, V in the plane of VUP and N

@@ -18,10 +18,10 @@ TEST(EnumTables, NamesAreTheFormatsOwn) {
   // The names files and links already hold: a renamed row would break every saved scene and link.
   EXPECT_EQ(toString(ClipStrategy::divideFirst), "divide-first");
   EXPECT_EQ(toString(Fate::clippedAway), "clipped_away");
-  EXPECT_EQ(projectionFromString("oblique"), Projection::oblique);
-  EXPECT_EQ(shapeFromString("tetrahedron"), Shape::tetrahedron);
-  EXPECT_EQ(clipStrategyFromString("Divide-First"), std::nullopt);
-  static_assert(kAllClipStrategies.size() == 3 && kAllClipStrategies[2] == ClipStrategy::divideFirst);
+  EXPECT_EQ(fromString<Projection>("oblique"), Projection::oblique);
+  EXPECT_EQ(fromString<Shape>("tetrahedron"), Shape::tetrahedron);
+  EXPECT_EQ(fromString<ClipStrategy>("Divide-First"), std::nullopt);
+  static_assert(allOf<ClipStrategy>().size() == 3 && allOf<ClipStrategy>()[2] == ClipStrategy::divideFirst);
 }
 
 }  // namespace

@@ -660,13 +660,13 @@ TEST(Pipeline, HiddenObjectsAndObjectsWithoutMeshAreSkipped) {
 
 TEST(Pipeline, Names) {
   for (ClipStrategy s : {ClipStrategy::npc, ClipStrategy::wc, ClipStrategy::divideFirst})
-    EXPECT_EQ(clipStrategyFromString(toString(s)), s);
+    EXPECT_EQ(fromString<ClipStrategy>(toString(s)), s);
   EXPECT_EQ(toString(ClipStrategy::divideFirst), "divide-first");
-  EXPECT_EQ(clipStrategyFromString("NPC"), std::nullopt);
+  EXPECT_EQ(fromString<ClipStrategy>("NPC"), std::nullopt);
   EXPECT_TRUE(isCorrect(ClipStrategy::npc) && isCorrect(ClipStrategy::wc) && !isCorrect(ClipStrategy::divideFirst));
   EXPECT_EQ(toString(Fate::clippedAway), "clipped_away");
   for (Shape s : {Shape::cube, Shape::tetrahedron, Shape::cylinder, Shape::sphere, Shape::polygon, Shape::mesh})
-    EXPECT_EQ(shapeFromString(toString(s)), s);
+    EXPECT_EQ(fromString<Shape>(toString(s)), s);
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // Checks one enum's table (base/enum_table.h) against what the enum is: a row for every value,
 // in the enum's order (values 0, 1, …: so arrays indexed by value and the keys' cycles line up), names
-// unique, and every name read back to its value. `count` is the enum's number of values, written
+// unique, every name read back to its value, and namesOf(E) handing over this table. `count` is the enum's number of values, written
 // in the test from the enum's declaration, not taken from the table.
 #pragma once
 
@@ -24,7 +24,12 @@ void expectCompleteTable(const EnumTable<E, N>& table, std::size_t count) {
     const std::optional<E> back = valueIn(table, table[i].name);
     ASSERT_TRUE(back.has_value()) << table[i].name;
     EXPECT_EQ(*back, E(i)) << table[i].name;
+    // toString, fromString<E> and allOf<E> read this very table (namesOf(E) hands it over).
+    EXPECT_EQ(toString(E(i)), table[i].name);
+    EXPECT_EQ(fromString<E>(table[i].name), std::optional<E>(E(i)));
+    EXPECT_EQ(allOf<E>()[i], E(i));
   }
+  EXPECT_EQ(&namesOf(E{}), &table) << "namesOf hands over another table";
   EXPECT_EQ(nameIn(table, E(N)), "?") << "a value past the table has no name";
   EXPECT_FALSE(valueIn(table, std::string_view("no such name")).has_value());
   if (N > 0 && !table[0].name.empty()) {  // case matters: "NPC" is not "npc"

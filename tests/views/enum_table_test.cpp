@@ -16,11 +16,11 @@ TEST(EnumTables, ViewEnumsHaveOneRowPerValueInOrder) {
 
 TEST(EnumTables, ViewNamesAreTheCommandLinesOwn) {
   EXPECT_EQ(toString(ViewKind::depth), "depth-plot");
-  EXPECT_EQ(styleFromString("hidden-removed"), Style::hiddenRemoved);
-  EXPECT_EQ(themeFromString("light"), Theme::light);
-  EXPECT_EQ(themeFromString("Light"), std::nullopt);
-  EXPECT_EQ(draw::toString(draw::Space::dc), "DC");
-  static_assert(kViewKindCount == 7 && kAllStyles.size() == 5);
+  EXPECT_EQ(fromString<Style>("hidden-removed"), Style::hiddenRemoved);
+  EXPECT_EQ(fromString<Theme>("light"), Theme::light);
+  EXPECT_EQ(fromString<Theme>("Light"), std::nullopt);
+  EXPECT_EQ(toString(draw::Space::dc), "DC");
+  static_assert(kViewKindCount == 7 && allOf<Style>().size() == 5);
 }
 
 }  // namespace

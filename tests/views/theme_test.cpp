@@ -110,9 +110,9 @@ TEST(Theme, VertexNamesAndLabelsInTheSheetsLanguage) {
 }
 
 TEST(Theme, ThemesByName) {
-  EXPECT_EQ(themeFromString("light"), Theme::light);
-  EXPECT_EQ(themeFromString("dark"), Theme::dark);
-  EXPECT_EQ(themeFromString("sepia"), std::nullopt);
+  EXPECT_EQ(fromString<Theme>("light"), Theme::light);
+  EXPECT_EQ(fromString<Theme>("dark"), Theme::dark);
+  EXPECT_EQ(fromString<Theme>("sepia"), std::nullopt);
   EXPECT_EQ(toString(Theme::light), "light");
 }
 

@@ -101,11 +101,11 @@ TEST(Views, LineWidthsAndPointSizesGrowWithTheTextScale) {
 
 TEST(Views, NamesRoundTrip) {
   for (ViewKind v : {ViewKind::camera, ViewKind::world, ViewKind::npc, ViewKind::all, ViewKind::morph})
-    EXPECT_EQ(viewKindFromString(toString(v)), v);
-  for (Style s : kStyles) EXPECT_EQ(styleFromString(toString(s)), s);
-  EXPECT_EQ(styleFromString("hidden-line"), Style::hiddenLine);
-  EXPECT_FALSE(viewKindFromString("cam"));
-  EXPECT_FALSE(styleFromString("hiddenLine"));
+    EXPECT_EQ(fromString<ViewKind>(toString(v)), v);
+  for (Style s : kStyles) EXPECT_EQ(fromString<Style>(toString(s)), s);
+  EXPECT_EQ(fromString<Style>("hidden-line"), Style::hiddenLine);
+  EXPECT_FALSE(fromString<ViewKind>("cam"));
+  EXPECT_FALSE(fromString<Style>("hiddenLine"));
 }
 
 }  // namespace

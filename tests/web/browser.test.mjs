@@ -191,7 +191,7 @@ describe('vplab in the browser', { concurrency: 1 }, () => {
     const colours = distinctColours(screenshot);
     assert.ok(colours >= 32, `the page's screenshot has only ${colours} colours: the canvas is blank or nearly`);
     for (const id of ['view.camera', 'view.world', 'view.npc', 'camera.vrp', 'menu.file']) {
-      assert.ok(state.rects?.[id], `state().rects has no "${id}": the UI is not drawn as the contract says`);
+      assert.ok(state.rects?.[id], `rects().rects has no "${id}": the UI is not drawn as the contract says`);
       // Where the page says the view or the field is, the screen shows one: a picture, or text on a frame.
       const r = await cssRect(page, state, id);
       const part = await page.screenshot({ type: 'png', clip: { x: r.x, y: r.y, width: r.w, height: r.h } });

@@ -334,7 +334,7 @@ export async function exportPng(page, view, width, height) {
 export async function cssRect(page, state, id) {
   const rect = state.rects?.[id];
   if (!Array.isArray(rect) || rect.length !== 4) {
-    throw new Error(`vplab.state().rects has no rect "${id}" (it has: ${Object.keys(state.rects ?? {}).join(', ') || 'none'})`);
+    throw new Error(`vplab.rects().rects has no rect "${id}" (it has: ${Object.keys(state.rects ?? {}).join(', ') || 'none'})`);
   }
   const canvas = await page.$eval('#canvas', (element) => {
     const box = element.getBoundingClientRect();

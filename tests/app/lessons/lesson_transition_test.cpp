@@ -28,7 +28,7 @@ Camera randomCamera(std::mt19937& rng) {
     if (unit(rng) > 0.8) c.vup = c.prp - c.vrp + Vec3(1e-3, 0, 0);  // nearly along N
     const double x = coord(rng) / 4, y = coord(rng) / 4;
     c.window = {x, x + size(rng), y, y + size(rng)};
-    c.projection = kAllProjections[size_t(projection(rng))];
+    c.projection = allOf<Projection>()[size_t(projection(rng))];
     c.front = coord(rng);
     c.back = c.front - size(rng);
     c.oblique = {size(rng) / 5, coord(rng) * 9};

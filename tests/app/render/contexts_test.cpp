@@ -22,8 +22,8 @@ using ::testing::HasSubstr;
 TEST(Contexts, BackendNamesRoundTrip) {
   test::expectCompleteTable(kBackendNames, 3);  // automatic, egl, osmesa (base/enum_table.h)
   EXPECT_EQ(toString(Backend::automatic), "auto");
-  EXPECT_FALSE(backendFromString("vulkan"));
-  EXPECT_FALSE(backendFromString(""));
+  EXPECT_FALSE(fromString<Backend>("vulkan"));
+  EXPECT_FALSE(fromString<Backend>(""));
 }
 
 void expectCoreContext33(GlContext& context, std::string_view backend) {

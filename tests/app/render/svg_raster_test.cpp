@@ -257,7 +257,7 @@ TEST(SvgMatchesGlCli, RenderToSvgAndPngShowTheSamePicture) {
     const std::string svgText((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     Image svg = test::rasteriseSvg(svgText, "cli-" + what), png = readPng(pngFile);
     const Scene s = loadScene(scene);
-    RenderRequest request{ViewKind::all, *styleFromString(style), 320, 240};
+    RenderRequest request{ViewKind::all, *fromString<Style>(style), 320, 240};
     request.scale = scale;
     maskLabels(svg, s, request);
     maskLabels(png, s, request);

@@ -4,7 +4,7 @@
 Every text a user reads goes through app/text/catalogue.h: ui::tr(s, "…"), text::Text("…"),
 text::fill(lang, "…", …). A text written straight into a Dear ImGui call or one of the panels'
 helpers (ui::checkbox, ui::section, …) would stay English in German: this finds each such string
-literal in app/ui/ and app/web/ and fails naming file and line. A literal counts as a text when,
+literal in app/ui/, app/web/ and app/session/ (and the status line's setStatus) and fails naming file and line. A literal counts as a text when,
 without its "##id" and its printf conversions, it has a word of two letters or more that is not one
 of the lecture's symbols below (the same in both languages).
 
@@ -21,11 +21,11 @@ IMGUI = ("Text|TextWrapped|TextUnformatted|TextDisabled|TextColored|BulletText|B
          "RadioButton|MenuItem|BeginMenu|Begin|Selectable|CollapsingHeader|TreeNode|SliderFloat|SliderInt|"
          "DragFloat|DragInt|DragScalarN|InputText|InputDouble|InputFloat|Combo|SetTooltip|OpenPopup|"
          "BeginPopupModal|IsPopupOpen|LabelText|TableSetupColumn|BeginTabItem|ColorEdit3|ColorEdit4")
-HELPERS = "checkbox|radio|section|sameLineIfFits|fitLabel|errorText|dragVec3|dragDouble|copyButton"
+HELPERS = "checkbox|radio|section|sameLineIfFits|fitLabel|errorText|dragVec3|dragDouble|copyButton|setStatus"
 CALL = re.compile(r"(?:ImGui::(?:%s)|\bui::(?:%s)|(?<![\w:.])(?:%s))\(" % (IMGUI, HELPERS, HELPERS))
 LITERAL = re.compile(r'"((?:[^"\\\n]|\\.)*)"')
 # A literal handed to the catalogue: ui::tr(s, "…"), Text("…"), text::fill(lang, "…"), key("…") (a Text).
-THROUGH_CATALOGUE = re.compile(r'(\btr\(\s*[\w.]+,\s*|(?<!ImGui::)\bText\(\s*|\bfill\(\s*[\w.]+,\s*|\bkey\(\s*)$')
+THROUGH_CATALOGUE = re.compile(r'(\btr\(\s*[\w.]+,\s*|(?<!ImGui::)\bText\(\s*|\bfill\(\s*[\w.()]+,\s*|\bkey\(\s*)$')
 # The lecture's symbols and formulas, the same in German and English.
 SYMBOLS = {"VPD", "dmin", "dmax", "xmin", "xmax", "ymin", "ymax", "NPC", "WC", "DC", "MC", "VRC", "VRP", "PRP", "VUP",
            "Esc"}
@@ -111,7 +111,8 @@ def main(argv):
     if len(argv) != 2 or not os.path.isdir(argv[1]):
         print("usage: untranslated_texts.py SOURCE_DIR | --self-test")
         return 2
-    files = sorted(glob.glob(os.path.join(argv[1], "app/ui/*.cpp")) + glob.glob(os.path.join(argv[1], "app/web/*.cpp")))
+    files = sorted(glob.glob(os.path.join(argv[1], "app/ui/*.cpp")) + glob.glob(os.path.join(argv[1], "app/web/*.cpp")) +
+                   glob.glob(os.path.join(argv[1], "app/session/*.cpp")))
     if not files:
         print("untranslated_texts.py: no sources under %s" % argv[1])
         return 2

@@ -44,7 +44,7 @@ bool recoverIn(HeadlessViewer& v, const fs::path& file) {
   const std::optional<Recovery> r = Autosave::read(file);
   if (!r) return false;
   v.frames(2);
-  v.viewer().session().offerRecovery(*r);
+  v.viewer().session().recovery().offerRecoveries({*r});
   v.frames(3);
   const auto [x, y] = v.centreOf("recovery.recover");
   v.click(x, y);
@@ -70,7 +70,7 @@ TEST(LectureNeverFails, AnInvalidCameraInAFreeStepThenBackIsACutIntoTheStep) {
   ASSERT_THAT(p.s().doc.error(), HasSubstr("VUP")) << "PRP (0, 8, 0) makes N parallel to VUP";
   p.v.key(keys::kLeft);
   p.settle();
-  EXPECT_EQ(p.v.viewer().caughtErrors(), 0u) << p.v.viewer().lastCaughtError();
+  EXPECT_EQ(p.v.viewer().caught().count, 0u) << p.v.viewer().caught().last;
   EXPECT_EQ(p.s().lesson->step(), 7u);
   EXPECT_EQ(p.s().doc.scene().camera, p.step(7).scene.camera);
   EXPECT_TRUE(p.s().doc.error().empty()) << p.s().doc.error();
@@ -80,7 +80,7 @@ TEST(LectureNeverFails, AnInvalidCameraInAFreeStepThenBackIsACutIntoTheStep) {
   p.settle();
   p.v.key(keys::kRight);
   p.settle();
-  EXPECT_EQ(p.v.viewer().caughtErrors(), 0u) << p.v.viewer().lastCaughtError();
+  EXPECT_EQ(p.v.viewer().caught().count, 0u) << p.v.viewer().caught().last;
   EXPECT_EQ(p.s().lesson->step(), std::min<size_t>(9, p.s().lesson->stepCount() - 1));
 }
 
@@ -92,12 +92,12 @@ TEST(LectureNeverFails, AnErrorInAFrameIsCaughtSaidAndTheNextFramesDraw) {
   const size_t step = p.s().lesson->step();
   p.s().lessonTyped = "x";  // std::stoul throws on Enter
   p.v.key(keys::kEnter);
-  EXPECT_EQ(p.v.viewer().caughtErrors(), 1u);
+  EXPECT_EQ(p.v.viewer().caught().count, 1u);
   EXPECT_TRUE(p.s().statusIsError);
   EXPECT_THAT(p.s().status, HasSubstr("ein Fehler wurde abgefangen")) << p.s().status;
   p.s().lessonTyped.clear();
   p.v.frames(3);
-  EXPECT_EQ(p.v.viewer().caughtErrors(), 1u) << "the frames after it draw without error";
+  EXPECT_EQ(p.v.viewer().caught().count, 1u) << "the frames after it draw without error";
   EXPECT_EQ(p.s().lesson->step(), step);
   p.v.key(keys::kRight);
   p.settle();
@@ -112,11 +112,11 @@ TEST(LectureNeverFails, AGlErrorInAFrameIsCaughtAndSaid) {
   v.frames(2);
   test::egl().context->gl().Enable(0xFFFF);  // GL_INVALID_ENUM, found when the frame checks
   v.frame();
-  EXPECT_EQ(v.viewer().caughtErrors(), 1u);
-  EXPECT_THAT(v.viewer().lastCaughtError(), HasSubstr("GL_INVALID_ENUM"));
+  EXPECT_EQ(v.viewer().caught().count, 1u);
+  EXPECT_THAT(v.viewer().caught().last, HasSubstr("GL_INVALID_ENUM"));
   EXPECT_THAT(v.state().status, HasSubstr("GL_INVALID_ENUM"));
   v.frames(2);
-  EXPECT_EQ(v.viewer().caughtErrors(), 1u);
+  EXPECT_EQ(v.viewer().caught().count, 1u);
 }
 
 // The recovery dialog is modal: keys pressed behind it (a clicker's → and Page Down) move nothing.
@@ -131,9 +131,9 @@ TEST(LectureNeverFails, AModalDialogTakesTheKeys) {
   ASSERT_TRUE(a.writeNow(doc));
   const std::optional<Recovery> r = Autosave::read(a.file());
   ASSERT_TRUE(r);
-  p.v.viewer().session().offerRecovery(*r);
+  p.v.viewer().session().recovery().offerRecoveries({*r});
   p.v.frames(2);
-  ASSERT_TRUE(p.v.viewer().session().dialogOpen());
+  ASSERT_TRUE(p.v.viewer().dialogOpen());
   for (int key : {keys::kRight, keys::kPageDown, keys::kSpace, keys::kEnd, keys::kP}) p.v.key(key);
   p.settle();
   EXPECT_EQ(p.s().lesson->step(), 3u) << "a key behind the dialog moved the lesson";
@@ -148,14 +148,14 @@ TEST(LectureNeverFails, RecoveryRestoresTheLessonItsStepAndTheTypedCamera) {
   Camera typed, shown;
   {
     Presenting p(8);
-    p.v.viewer().session().enableAutosave(dir.path / "state", 3);
+    p.v.viewer().session().recovery().enableAutosave(dir.path / "state", 3);
     p.s().display.npc.style = Style::wire;
     p.s().doc.scene().camera.prp = {0, 8, 0};
     p.v.frames(2);
     ASSERT_FALSE(p.s().doc.error().empty());
     typed = p.s().doc.scene().camera;
     shown = p.s().doc.shown().camera;
-    kept = p.v.viewer().session().writeRecoveryNow();
+    kept = p.v.viewer().session().recovery().writeRecoveryNow();
     ASSERT_FALSE(kept.empty()) << "an invalid camera typed is an unsaved change";
     const nlohmann::json j = nlohmann::json::parse(test::readFile(kept));
     EXPECT_EQ(j["lesson"]["step"], 8);
@@ -175,7 +175,7 @@ TEST(LectureNeverFails, RecoveryRestoresTheLessonItsStepAndTheTypedCamera) {
   EXPECT_TRUE(v.state().doc.dirty());
   v.frames(30);
   EXPECT_EQ(v.state().doc.scene().camera, typed) << "the lesson's step is not applied over the recovered state";
-  EXPECT_EQ(v.viewer().caughtErrors(), 0u) << v.viewer().lastCaughtError();
+  EXPECT_EQ(v.viewer().caught().count, 0u) << v.viewer().caught().last;
 }
 
 // An object's transform typed invalid (a scale of 0: the views keep the last valid one) comes back
@@ -186,14 +186,14 @@ TEST(LectureNeverFails, RecoveryRestoresAnObjectsTransformAsTyped) {
   ModelTransform typed;
   {
     HeadlessViewer v{*test::egl().context, defaultScene(), 1280, 720};
-    v.viewer().session().enableAutosave(dir.path / "state", 3);
+    v.viewer().session().recovery().enableAutosave(dir.path / "state", 3);
     v.frames(2);
     v.state().doc.scene().objects[1].transform.scale = {0, 1.5, 1.5};
     v.state().doc.scene().objects[1].transform.rotations.push_back({{0, 0, 0}, 30, std::nullopt});
     v.frames(2);
     ASSERT_FALSE(v.state().doc.error().empty()) << "a scale of 0 is an invalid transform";
     typed = v.state().doc.scene().objects[1].transform;
-    kept = v.viewer().session().writeRecoveryNow();
+    kept = v.viewer().session().recovery().writeRecoveryNow();
     ASSERT_FALSE(kept.empty());
   }
   const fs::path copy = dir.path / "recovery-copy.json";
@@ -202,7 +202,7 @@ TEST(LectureNeverFails, RecoveryRestoresAnObjectsTransformAsTyped) {
   ASSERT_TRUE(recoverIn(v, copy));
   EXPECT_EQ(v.state().doc.scene().objects[1].transform, typed) << "the fields show the transform as typed";
   EXPECT_EQ(v.state().doc.shown().objects[1].transform, defaultScene().objects[1].transform) << "the views the valid one";
-  EXPECT_EQ(v.viewer().caughtErrors(), 0u) << v.viewer().lastCaughtError();
+  EXPECT_EQ(v.viewer().caught().count, 0u) << v.viewer().caught().last;
 }
 
 // A recovery file someone else wrote (or a disk that garbled it): its scene is valid, everything
@@ -233,10 +233,10 @@ TEST(LectureNeverFails, AHostileRecoveryFileRecoversItsSceneAndNothingElseBreaks
       const fs::path valid = dir.path / ("valid-" + std::to_string(i) + ".json");
       {
         HeadlessViewer writer{*test::egl().context, scene, 640, 480};
-        writer.viewer().session().enableAutosave(dir.path / ("state-" + std::to_string(i)), 3);
+        writer.viewer().session().recovery().enableAutosave(dir.path / ("state-" + std::to_string(i)), 3);
         writer.state().doc.scene().camera.vrp = {0.25, 0, 0};
         writer.frames(2);
-        fs::copy_file(writer.viewer().session().writeRecoveryNow(), valid);
+        fs::copy_file(writer.viewer().session().recovery().writeRecoveryNow(), valid);
       }
       return valid;
     }()));
@@ -246,7 +246,7 @@ TEST(LectureNeverFails, AHostileRecoveryFileRecoversItsSceneAndNothingElseBreaks
     ASSERT_TRUE(recoverIn(v, file));
     v.frames(2);
     EXPECT_EQ(v.state().doc.shown().camera.vrp, Vec3(0.25, 0, 0)) << "the recovered scene is not shown";
-    EXPECT_EQ(v.viewer().caughtErrors(), 0u) << v.viewer().lastCaughtError();
+    EXPECT_EQ(v.viewer().caught().count, 0u) << v.viewer().caught().last;
     expectFinite(v.state().run().camera);
     if (v.state().lesson) {
       EXPECT_LT(v.state().lesson->step(), v.state().lesson->stepCount());

@@ -49,7 +49,7 @@ Language languageOf(const std::string& file) {
 
 /// The display list a view was last drawn from, built again.
 draw::DisplayList listOf(const Viewer& viewer, ViewKind kind) {
-  const ViewRequest* r = viewer.viewRequest(kind);
+  const ViewRequest* r = viewer.images().lastRequest(kind);
   const ViewInput in{*r->scene, *r->run, r->settings, r->highlights, r->width, r->height, viewer.viewTextMetrics()};
   switch (kind) {
     case ViewKind::camera:
@@ -168,12 +168,12 @@ double coverage(const draw::DisplayList& list, const std::vector<Vec3>& points) 
 /// object (WC, the world view), from the frame's highlights and run, not from the lesson's framing.
 std::optional<std::pair<ViewKind, std::vector<Vec3>>> stepObject(const Viewer& viewer, const LessonState& state) {
   if (state.stepThrough) {
-    const ViewRequest* r = viewer.viewRequest(ViewKind::npc);
+    const ViewRequest* r = viewer.images().lastRequest(ViewKind::npc);
     if (!r || !r->highlights.step) return std::nullopt;
     return std::make_pair(ViewKind::npc, r->highlights.step->polygonNpc);
   }
   if (state.probe) {
-    const ViewRequest* r = viewer.viewRequest(ViewKind::world);
+    const ViewRequest* r = viewer.images().lastRequest(ViewKind::world);
     if (!r) return std::nullopt;
     for (size_t i = 0; i < r->run->sceneIndex.size(); ++i) {
       if (r->run->sceneIndex[i] != state.probe->object) continue;
@@ -240,21 +240,21 @@ TEST_P(LessonLayout, EveryStepsLabelsNeverOverlapLeaveTheirViewOrStrayFromTheirP
     }
     // The caption box's buttons are whole and the heading stays left of them.
     {
-      const auto& rects = v.state().rects;
-      const auto& shown = v.state().visibleRects;
+      const auto& rects = v.rects().rects;
+      const auto& shown = v.rects().visible;
       for (const char* id : {"lesson.back", "lesson.next", "lesson.close"})
         EXPECT_GE(shown.at(id).z, rects.at(id).z - 1) << file << " step " << step + 1 << " at " << sizeName << ": " << id << " is cut off";
       EXPECT_LE(rects.at("lesson.heading").x + rects.at("lesson.heading").z, rects.at("lesson.back").x)
           << file << " step " << step + 1 << " at " << sizeName << ": the heading runs under the buttons";
     }
     // The divide-first reason under the camera view is read whole (it stopped mid-sentence at 1024 × 768).
-    if (auto it = v.state().visibleRects.find("view.divideFirst.reason"); it != v.state().visibleRects.end()) {
-      const ImVec4 whole = v.state().rects.at("view.divideFirst.reason");
+    if (auto it = v.rects().visible.find("view.divideFirst.reason"); it != v.rects().visible.end()) {
+      const ImVec4 whole = v.rects().rects.at("view.divideFirst.reason");
       EXPECT_GE(it->second.w, whole.w - 1) << file << " step " << step + 1 << ": the divide-first reason is cut off";
       ++reasons;
     }
-    for (ViewKind kind : v.viewer().viewsShown()) {
-      if (!v.viewer().viewRequest(kind)) continue;
+    for (ViewKind kind : v.viewer().images().asked()) {
+      if (!v.viewer().images().lastRequest(kind)) continue;
       const draw::DisplayList list = listOf(v.viewer(), kind);
       ++views;
       labels += list.labels().size();

@@ -36,8 +36,8 @@ TEST(LessonPresenter, OpensAtTheFirstStepWithItsStateAndCaption) {
   EXPECT_EQ(p.s().doc.scene().camera, p.step(0).scene.camera);
   EXPECT_EQ(p.s().display.world.orbit, p.step(0).display.world.orbit);
   EXPECT_FALSE(p.s().doc.dirty()) << "a lesson's step is what its file says: nothing is unsaved";
-  EXPECT_TRUE(p.s().rects.count("lesson.caption"));
-  EXPECT_TRUE(p.s().rects.count("lesson.next"));
+  EXPECT_TRUE(p.v.rects().rects.count("lesson.caption"));
+  EXPECT_TRUE(p.v.rects().rects.count("lesson.next"));
 }
 
 TEST(LessonPresenter, TheNextStepIsReachedThroughValidCamerasAndThenExactly) {

@@ -23,22 +23,22 @@ using ::testing::HasSubstr;
 TEST(UrlState, AViewerShowsALinkAsItWasWritten) {
   HeadlessViewer a(*test::egl().context, defaultScene(), 1280, 720);
   a.frames(2);
-  EXPECT_EQ(a.viewer().session().urlState().scene, "default") << "the built-in scene is the bundled default.json";
-  a.viewer().session().showUrlState(decodeUrlState("scene=perspective&camera-style=wire&strategy=wc"), true);
+  EXPECT_EQ(a.viewer().session().links().urlState().scene, "default") << "the built-in scene is the bundled default.json";
+  a.viewer().session().links().showUrlState(decodeUrlState("scene=perspective&camera-style=wire&strategy=wc"), true);
   a.frames(2);
   Camera& c = a.state().doc.scene().camera;
   c.prp += Vec3(0.25, -0.5, 0.125);
   a.state().display.world.orbit.yawDeg = 12.5;
   a.frames(2);
-  const std::string link = encodeUrlState(a.viewer().session().urlState());
+  const std::string link = encodeUrlState(a.viewer().session().links().urlState());
   EXPECT_THAT(link, HasSubstr("scene=perspective&"));
   EXPECT_THAT(link, HasSubstr("camera-style=wire"));
   EXPECT_THAT(link, HasSubstr("strategy=wc"));
 
   HeadlessViewer b(*test::egl().context, defaultScene(), 1280, 720);
-  b.viewer().session().showUrlState(decodeUrlState(link), true);
+  b.viewer().session().links().showUrlState(decodeUrlState(link), true);
   b.frames(2);
-  EXPECT_EQ(b.viewer().session().urlState(), a.viewer().session().urlState());
+  EXPECT_EQ(b.viewer().session().links().urlState(), a.viewer().session().links().urlState());
   EXPECT_EQ(b.state().doc.path().filename(), "perspective.json");
   EXPECT_FALSE(b.state().doc.dirty()) << "a link opens a document, it is not an edit";
   EXPECT_EQ(b.image().pixels, a.image().pixels) << "the same link draws the same window";
@@ -47,7 +47,7 @@ TEST(UrlState, AViewerShowsALinkAsItWasWritten) {
 TEST(UrlState, ALinkToTheOpenSceneKeepsItsDocument) {
   HeadlessViewer v(*test::egl().context, defaultScene(), 1280, 720);
   v.frames(2);
-  v.viewer().session().showUrlState(decodeUrlState("scene=default&prp=1,2,9"), true);
+  v.viewer().session().links().showUrlState(decodeUrlState("scene=default&prp=1,2,9"), true);
   v.frames(2);
   EXPECT_EQ(v.state().doc.path(), "") << "the built-in scene stays the built-in one, not default.json";
   EXPECT_EQ(v.state().doc.scene().camera.prp, Vec3(1, 2, 9));
@@ -57,15 +57,15 @@ TEST(UrlState, ACameraAloneIsAnEditAndAnUnknownSceneIsAnError) {
   HeadlessViewer v(*test::egl().context, defaultScene(), 1280, 720);
   v.frames(2);
   const Camera before = v.state().doc.scene().camera;
-  v.viewer().session().showUrlState(decodeUrlState("prp=1,2,9"), false);
+  v.viewer().session().links().showUrlState(decodeUrlState("prp=1,2,9"), false);
   v.frames(2);
   EXPECT_EQ(v.state().doc.scene().camera.prp, Vec3(1, 2, 9));
   EXPECT_EQ(v.state().doc.scene().camera.window, before.window) << "what the link does not give stays the scene's";
   EXPECT_EQ(v.state().doc.scene().camera.front, before.front);
   EXPECT_TRUE(v.state().doc.dirty()) << "a camera alone is an edit of the open scene";
-  EXPECT_THROW(v.viewer().session().showUrlState(decodeUrlState("prp=0,0,0"), false), Error) << "PRP on VRP";
+  EXPECT_THROW(v.viewer().session().links().showUrlState(decodeUrlState("prp=0,0,0"), false), Error) << "PRP on VRP";
   EXPECT_EQ(v.state().doc.scene().camera.prp, Vec3(1, 2, 9)) << "an invalid link changes nothing";
-  EXPECT_THROW(v.viewer().session().showUrlState(decodeUrlState("scene=no-such-scene"), false), Error);
+  EXPECT_THROW(v.viewer().session().links().showUrlState(decodeUrlState("scene=no-such-scene"), false), Error);
 }
 
 }  // namespace

@@ -26,7 +26,7 @@ TEST(PipelineWorker, TheViewerDrawsOnWhileALargeSceneRunsThenShowsTheNewRun) {
   const Scene scene = test::sphereScene(512);
 #endif
   HeadlessViewer sync(context, scene, 1280, 720), async(context, scene, 1280, 720);
-  async.viewer().usePipelineWorker({});
+  async.viewer().run().useWorker({});
   sync.frames(3);
   async.frames(3);
   const PipelineRun* before = &async.state().run();
@@ -35,14 +35,14 @@ TEST(PipelineWorker, TheViewerDrawsOnWhileALargeSceneRunsThenShowsTheNewRun) {
   async.frame();
   const double changing = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("the frame that changed the camera: %.1f ms with the worker\n", changing * 1e3);
-  EXPECT_TRUE(async.viewer().runPending()) << "the large scene's run arrived within the frame";
+  EXPECT_TRUE(async.viewer().run().pending()) << "the large scene's run arrived within the frame";
   EXPECT_EQ(&async.state().run(), before) << "the frame shows the last run meanwhile";
   EXPECT_FALSE(async.viewer().viewsNotReady().empty()) << "no screenshot of the last run's views";
-  for (int i = 0; i < 600 && async.viewer().runPending(); ++i) {
+  for (int i = 0; i < 600 && async.viewer().run().pending(); ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
     async.frame();
   }
-  ASSERT_FALSE(async.viewer().runPending());
+  ASSERT_FALSE(async.viewer().run().pending());
   EXPECT_TRUE(async.viewer().viewsNotReady().empty());
   sync.frames(3);
   async.frames(2);
@@ -66,33 +66,33 @@ TEST(PipelineSteps, TheViewerRunsALargeSceneAcrossFramesThenShowsWhatTheSynchron
   GlContext& context = *test::egl().context;
   const Scene scene = test::sphereScene(256);
   HeadlessViewer sync(context, scene, 1280, 720), stepped(context, scene, 1280, 720);
-  stepped.viewer().runPipelineInSteps(1e-9);
+  stepped.viewer().run().runInSteps(1e-9);
   sync.frames(3);
-  for (int i = 0; i < 100 && stepped.viewer().runPending(); ++i) stepped.frame();
-  ASSERT_FALSE(stepped.viewer().runPending());
+  for (int i = 0; i < 100 && stepped.viewer().run().pending(); ++i) stepped.frame();
+  ASSERT_FALSE(stepped.viewer().run().pending());
   EXPECT_EQ(dumpJson(stepped.state().run()), dumpJson(sync.state().run()));
 
   const PipelineRun* before = &stepped.state().run();
   for (HeadlessViewer* v : {&sync, &stepped}) v->state().doc.scene().camera.prp.x += 0.5;
   stepped.frame();
-  ASSERT_TRUE(stepped.viewer().runPending());
-  const double first = stepped.viewer().runProgress().value_or(-1);
+  ASSERT_TRUE(stepped.viewer().run().pending());
+  const double first = stepped.viewer().run().progress().value_or(-1);
   EXPECT_GT(first, 0.0);
   EXPECT_LT(first, 1.0);
   EXPECT_EQ(&stepped.state().run(), before) << "a half-done run is never shown";
   EXPECT_FALSE(stepped.viewer().viewsNotReady().empty());
   stepped.frame();
-  EXPECT_GT(stepped.viewer().runProgress().value_or(-1), first);
+  EXPECT_GT(stepped.viewer().run().progress().value_or(-1), first);
   // Changed again half way: the newest camera wins.
   for (HeadlessViewer* v : {&sync, &stepped}) v->state().doc.scene().camera.prp.x += 0.75;
   int frames = 0;
-  for (; frames < 100 && stepped.viewer().runPending(); ++frames) {
+  for (; frames < 100 && stepped.viewer().run().pending(); ++frames) {
     EXPECT_EQ(&stepped.state().run(), before);
     stepped.frame();
   }
   EXPECT_GT(frames, 2) << "the run went across frames";
-  ASSERT_FALSE(stepped.viewer().runPending());
-  EXPECT_FALSE(stepped.viewer().runProgress());
+  ASSERT_FALSE(stepped.viewer().run().pending());
+  EXPECT_FALSE(stepped.viewer().run().progress());
   sync.frames(3);
   stepped.frames(3);
   EXPECT_EQ(stepped.state().run().camera.prp, sync.state().run().camera.prp);

@@ -23,6 +23,7 @@
 #include "base/error.h"
 #include "io/scene_io.h"
 #include "tests/support/gl_test_support.h"
+#include "tests/support/crash.h"
 #include "tests/support/files.h"
 
 namespace vplab {
@@ -122,20 +123,20 @@ TEST(Idle, TheViewerAsksForFramesOnlyWhileSomethingMoves) {
 // triangles takes seconds on llvmpipe); anything the views show draws them again.
 TEST(Idle, FramesWithoutChangesReuseTheViewsImages) {
   auto v = makeViewer();
-  const unsigned settled = v->viewer().viewsDrawn();
+  const unsigned settled = v->viewer().images().drawn();
   const auto [cx, cy] = v->centreOf("view.camera");
   v->mouseMove(cx, cy);  // hovering over a view
   v->frames(3);
   v->mouseMove(100, 300);  // and over the panels
   v->frames(3);
-  EXPECT_EQ(v->viewer().viewsDrawn(), settled);
+  EXPECT_EQ(v->viewer().images().drawn(), settled);
   const Image before = v->image();
   v->key(keys::kDigit1 + 2);  // wireframe in every view
-  EXPECT_GE(v->viewer().viewsDrawn(), settled + 3) << "camera, world and NPC views drawn again";
+  EXPECT_GE(v->viewer().images().drawn(), settled + 3) << "camera, world and NPC views drawn again";
   EXPECT_GT(test::differingPixels(before, v->image()), 1000u);
-  const unsigned styled = v->viewer().viewsDrawn();
+  const unsigned styled = v->viewer().images().drawn();
   v->key(keys::kP);  // the camera changes
-  EXPECT_GE(v->viewer().viewsDrawn(), styled + 3);
+  EXPECT_GE(v->viewer().images().drawn(), styled + 3);
 }
 
 // ---------------------------------------------------------------- loading on a worker thread (item 11)
@@ -162,7 +163,7 @@ TEST(Loading, FramesGoOnWhileASceneLoadsAndItArrivesClean) {
   v->frames(20);  // each returns while the worker is still reading
   EXPECT_TRUE(v->viewer().session().loader().busy());
   EXPECT_TRUE(v->state().doc.path().empty()) << "the open scene stays until the new one is there";
-  EXPECT_THAT(v->state().rects, ::testing::Contains(::testing::Key("load.cancel"))) << "no progress window";
+  EXPECT_THAT(v->rects().rects, ::testing::Contains(::testing::Key("load.cancel"))) << "no progress window";
   gated.open();
   framesWhileLoading(*v);
   EXPECT_EQ(v->state().doc.path(), preset("parallel.json"));
@@ -292,12 +293,12 @@ TEST(Save, ABundledSceneIsNeverOverwrittenSaveAsksForACopy) {
   v->key(keys::kP);
   ASSERT_TRUE(v->state().doc.dirty());
   v->key(keys::kS, /*ctrl=*/true);
-  EXPECT_TRUE(v->viewer().session().fileDialog().isOpen());
+  EXPECT_TRUE(v->viewer().session().files().fileDialog().isOpen());
   EXPECT_TRUE(v->state().doc.dirty());
   EXPECT_EQ(readFile(file), original);
-  EXPECT_TRUE(v->viewer().session().isBundled(file));
-  EXPECT_TRUE(v->viewer().session().isBundled({}));  // the built-in default scene
-  EXPECT_FALSE(v->viewer().session().isBundled(fs::temp_directory_path() / "mine.json"));
+  EXPECT_TRUE(v->viewer().session().files().isBundled(file));
+  EXPECT_TRUE(v->viewer().session().files().isBundled({}));  // the built-in default scene
+  EXPECT_FALSE(v->viewer().session().files().isBundled(fs::temp_directory_path() / "mine.json"));
 }
 
 // ---------------------------------------------------------------- autosave and recovery
@@ -305,8 +306,8 @@ TEST(Save, ABundledSceneIsNeverOverwrittenSaveAsksForACopy) {
 TEST(Autosave, WritesAfterTheDelayAndRemovesTheFileWhenSaved) {
   TempDir dir;
   auto v = makeViewer();
-  v->viewer().session().enableAutosave(dir.path / "state", 0.1);  // 6 frames of 1/60 s
-  const fs::path file = v->viewer().session().autosave()->file();
+  v->viewer().session().recovery().enableAutosave(dir.path / "state", 0.1);  // 6 frames of 1/60 s
+  const fs::path file = v->viewer().session().recovery().autosave()->file();
   v->frames(10);
   EXPECT_FALSE(fs::exists(file)) << "nothing changed, nothing to save";
   v->key(keys::kP);
@@ -326,27 +327,15 @@ TEST(Autosave, ARecoveryFileOfAnEndedProcessIsOfferedAndRecovered) {
   TempDir dir;
   const fs::path state = dir.path / "state";
   // A session in a child process autosaves an edited scene and ends without cleaning up (a crash).
-  const pid_t child = ::fork();
-  if (child == 0) {
-    Scene s = loadScene(preset("perspective.json"));
-    Document doc(s);
-    doc.scene().camera.front = 0.75;
-    doc.endFrame(false);
-    Autosave a(state, 0);
-    a.writeNow(doc);
-    ::_exit(a.error().empty() ? 0 : 1);
-  }
-  int status = 0;
-  ASSERT_EQ(::waitpid(child, &status, 0), child);
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  ASSERT_FALSE(test::crashWithUnsavedFront(state, preset("perspective.json"), 0.75).empty());
 
   const std::optional<Recovery> r = Autosave::find(state);
   ASSERT_TRUE(r.has_value());
   EXPECT_EQ(r->scenePath, preset("perspective.json"));
 
   auto v = makeViewer();
-  v->viewer().session().enableAutosave(state, 3);
-  v->viewer().session().offerRecovery(*r);
+  v->viewer().session().recovery().enableAutosave(state, 3);
+  v->viewer().session().recovery().offerRecoveries({*r});
   v->frames(3);
   clickId(*v, "recovery.recover");
   v->frames(2);
@@ -355,7 +344,7 @@ TEST(Autosave, ARecoveryFileOfAnEndedProcessIsOfferedAndRecovered) {
   EXPECT_TRUE(v->state().doc.dirty()) << "recovered changes are still unsaved";
   EXPECT_FALSE(v->state().doc.canUndo());
   EXPECT_FALSE(fs::exists(r->file)) << "the old session's file is taken over";
-  EXPECT_TRUE(fs::exists(v->viewer().session().autosave()->file())) << "this session keeps the changes at once";
+  EXPECT_TRUE(fs::exists(v->viewer().session().recovery().autosave()->file())) << "this session keeps the changes at once";
 }
 
 namespace {
@@ -363,18 +352,7 @@ namespace {
 /// A child process that autosaves `preset` with its front plane at `front` and ends without
 /// cleaning up (a crash); returns its recovery file.
 fs::path crashWithUnsavedFront(const fs::path& state, const char* presetName, double front) {
-  const pid_t child = ::fork();
-  if (child == 0) {
-    Document doc(loadScene(preset(presetName)));
-    doc.scene().camera.front = front;
-    doc.endFrame(false);
-    Autosave a(state, 0);
-    a.writeNow(doc);
-    ::_exit(a.error().empty() ? 0 : 1);
-  }
-  int status = 0;
-  if (::waitpid(child, &status, 0) != child || !WIFEXITED(status) || WEXITSTATUS(status) != 0) return {};
-  return state / ("recovery-" + std::to_string(child) + ".json");
+  return test::crashWithUnsavedFront(state, preset(presetName), front);
 }
 
 }  // namespace
@@ -395,13 +373,13 @@ TEST(Autosave, EverySessionLeftWithUnsavedChangesIsOfferedAndTheOthersStayKept) 
   EXPECT_EQ(all[1].file, older);
 
   auto v = makeViewer();
-  v->viewer().session().enableAutosave(state, 3);
-  v->viewer().session().offerRecoveries(all);
+  v->viewer().session().recovery().enableAutosave(state, 3);
+  v->viewer().session().recovery().offerRecoveries(all);
   v->frames(3);
-  EXPECT_EQ(v->viewer().session().recoveriesOffered(), 2u);
+  EXPECT_EQ(v->viewer().session().recovery().recoveries().size(), 2u);
   clickId(*v, "recovery.recover.1");  // the older one
   v->frames(2);
-  EXPECT_FALSE(v->viewer().session().recoveryOffered());
+  EXPECT_TRUE(v->viewer().session().recovery().recoveries().empty());
   EXPECT_EQ(v->state().doc.scene().camera.front, 0.75);
   EXPECT_EQ(v->state().doc.path(), preset("perspective.json"));
   EXPECT_FALSE(fs::exists(older)) << "the recovered one is taken over";
@@ -414,16 +392,16 @@ TEST(Autosave, EverySessionLeftWithUnsavedChangesIsOfferedAndTheOthersStayKept) 
   // Discarding one of several leaves the dialog open with the rest.
   const fs::path third = crashWithUnsavedFront(state, "perspective.json", 0.25);
   auto w = makeViewer();
-  w->viewer().session().offerRecoveries(Autosave::findAll(state));
+  w->viewer().session().recovery().offerRecoveries(Autosave::findAll(state));
   w->frames(3);
-  ASSERT_EQ(w->viewer().session().recoveriesOffered(), 2u);
+  ASSERT_EQ(w->viewer().session().recovery().recoveries().size(), 2u);
   clickId(*w, "recovery.discard");
   w->frames(2);
-  EXPECT_EQ(w->viewer().session().recoveriesOffered(), 1u);
+  EXPECT_EQ(w->viewer().session().recovery().recoveries().size(), 1u);
   EXPECT_EQ(Autosave::findAll(state).size(), 1u);
   clickId(*w, "recovery.discard");
   w->frames(2);
-  EXPECT_FALSE(w->viewer().session().recoveryOffered());
+  EXPECT_TRUE(w->viewer().session().recovery().recoveries().empty());
   EXPECT_TRUE(Autosave::findAll(state).empty());
   EXPECT_FALSE(w->state().doc.dirty()) << "discarding recovers nothing";
 }
@@ -433,16 +411,16 @@ TEST(Autosave, AfterManyCrashesTheDialogListsTheNewestAndTheRestComeUpAsTheyGo) 
   const fs::path state = dir.path / "state";
   for (int i = 0; i < 8; ++i) ASSERT_FALSE(crashWithUnsavedFront(state, "perspective.json", 0.1 * (i + 1)).empty());
   auto v = makeViewer();
-  v->viewer().session().offerRecoveries(Autosave::findAll(state));
+  v->viewer().session().recovery().offerRecoveries(Autosave::findAll(state));
   v->frames(3);
-  EXPECT_EQ(v->viewer().session().recoveriesOffered(), 8u);
-  EXPECT_TRUE(v->state().rects.count("recovery.recover.5")) << "the six newest are listed";
-  EXPECT_FALSE(v->state().rects.count("recovery.recover.6")) << "a list of every crash would not fit a screen";
+  EXPECT_EQ(v->viewer().session().recovery().recoveries().size(), 8u);
+  EXPECT_TRUE(v->rects().rects.count("recovery.recover.5")) << "the six newest are listed";
+  EXPECT_FALSE(v->rects().rects.count("recovery.recover.6")) << "a list of every crash would not fit a screen";
   clickId(*v, "recovery.discard");
   v->frames(2);
-  EXPECT_EQ(v->viewer().session().recoveriesOffered(), 7u);
-  EXPECT_TRUE(v->state().rects.count("recovery.recover.5"));
-  EXPECT_FALSE(v->state().rects.count("recovery.recover.6"));
+  EXPECT_EQ(v->viewer().session().recovery().recoveries().size(), 7u);
+  EXPECT_TRUE(v->rects().rects.count("recovery.recover.5"));
+  EXPECT_FALSE(v->rects().rects.count("recovery.recover.6"));
   EXPECT_EQ(Autosave::findAll(state).size(), 7u);
 }
 
@@ -455,12 +433,12 @@ TEST(Graphics, EveryGlObjectMadeAgainGivesThePictureBackAndKeepsTheDocument) {
   ASSERT_TRUE(v->state().doc.canUndo());
   const Camera edited = v->state().doc.scene().camera;
   const Image before = v->image();
-  const unsigned drawn = v->viewer().viewsDrawn();
+  const unsigned drawn = v->viewer().images().drawn();
 
   // What the page does when WebGL gives its context back: every GL object is made again.
   v->viewer().recreateGlObjects();
   v->frames(4);  // the frame's GL error check passes: nothing of the old objects is left to fail
-  EXPECT_GT(v->viewer().viewsDrawn(), drawn) << "the views were not drawn again into new targets";
+  EXPECT_GT(v->viewer().images().drawn(), drawn) << "the views were not drawn again into new targets";
   const Image after = v->image();
   ASSERT_EQ(after.width, before.width);
   ASSERT_EQ(after.height, before.height);
@@ -481,7 +459,7 @@ TEST(Autosave, AFailureIsShownNotSwallowed) {
   const fs::path notADirectory = dir.path / "file";
   std::ofstream(notADirectory) << "x";
   auto v = makeViewer();
-  v->viewer().session().enableAutosave(notADirectory / "vplab", 0);
+  v->viewer().session().recovery().enableAutosave(notADirectory / "vplab", 0);
   v->key(keys::kP);
   v->frames(2);
   EXPECT_TRUE(v->state().statusIsError);
@@ -518,7 +496,7 @@ TEST(Browser, SaveIsANewDownloadEveryTimeAndTheBrowsersShortcutsAreLeftToIt) {
   DownloadingChooser& c = *chooser;
   c.dir = tmp.path;
   c.toOpen = preset("parallel.json");
-  v->viewer().session().useFileChooser(std::move(chooser), /*browser=*/true);
+  v->viewer().session().files().useFileChooser(std::move(chooser), /*browser=*/true);
   v->frames(2);
   v->key(keys::kS, /*ctrl=*/true);  // the browser's own "save page": the viewer does nothing
   v->key(keys::kO, /*ctrl=*/true);
@@ -563,12 +541,12 @@ namespace {
 TEST(Language, ViewLanguageSwitchesTheViewerAndIsRemembered) {
   auto v = makeViewer();
   std::vector<Language> remembered;
-  v->viewer().session().rememberLanguageWith([&](Language lang) { remembered.push_back(lang); });
+  v->viewer().session().start({.rememberLanguage = [&](Language lang) { remembered.push_back(lang); }});
   v->frames(2);
   EXPECT_EQ(v->viewer().title(), "vplab — default lecture scene");
   const Image english = v->image();
   // A tab is as wide as its name: "Display", then "Darstellung".
-  const float displayTab = v->state().rects.at("tab.controls.Display").z;
+  const float displayTab = v->rects().rects.at("tab.controls.Display").z;
 
   clickId(*v, "menu.view");
   v->frames(2);
@@ -578,7 +556,7 @@ TEST(Language, ViewLanguageSwitchesTheViewerAndIsRemembered) {
   v->frames(3);
   EXPECT_EQ(v->state().display.language, Language::de);
   EXPECT_EQ(remembered, std::vector<Language>{Language::de});
-  EXPECT_GT(v->state().rects.at("tab.controls.Display").z, displayTab * 1.3f);
+  EXPECT_GT(v->rects().rects.at("tab.controls.Display").z, displayTab * 1.3f);
   EXPECT_EQ(v->viewer().title(), "vplab — Standardszene der Vorlesung");
   EXPECT_FALSE(v->state().doc.dirty()) << "a preference is no change of the scene";
   EXPECT_FALSE(v->state().doc.canUndo());
@@ -589,7 +567,8 @@ TEST(Language, ViewLanguageSwitchesTheViewerAndIsRemembered) {
   EXPECT_EQ(v->state().controlsTab, ViewerState::displayTab);
   EXPECT_GT(test::differingPixels(english, v->image()), 2000u) << "the German window looks like the English one";
 
-  v->viewer().session().rememberLanguageWith([](Language) { throw Error("/ro/preferences.json: read-only file system"); });
+  v->viewer().session().start({.language = v->state().display.language,
+                               .rememberLanguage = [](Language) { throw Error("/ro/preferences.json: read-only file system"); }});
   clickId(*v, "menu.view");
   v->frames(2);
   clickId(*v, "menu.language");
@@ -600,7 +579,7 @@ TEST(Language, ViewLanguageSwitchesTheViewerAndIsRemembered) {
   EXPECT_TRUE(v->state().statusIsError);
   EXPECT_THAT(v->state().status, HasSubstr("/ro/preferences.json"));
   v->frames(2);
-  EXPECT_EQ(v->state().rects.at("tab.controls.Display").z, displayTab);
+  EXPECT_EQ(v->rects().rects.at("tab.controls.Display").z, displayTab);
 }
 
 // A new document keeps the language (a preference, not a setting of the scene).

@@ -74,7 +74,7 @@ TEST(UiLecture, DivideFirstComparisonIsUpright) {
   v->key(keys::kC);
   ASSERT_EQ(v->state().pipeline.strategy, ClipStrategy::divideFirst);
   v->frames(2);
-  const ImVec4 r = v->state().rects.at("view.divideFirst");
+  const ImVec4 r = v->rects().rects.at("view.divideFirst");
   const Image shown = cropRect(v->image(), r);
   const Device& d = v->state().doc.shown().device;
   const Image cpu = rasterizeClippedPolygons(v->state().run(), v->state().doc.shown().background, d.width, d.height);
@@ -194,7 +194,7 @@ TEST(UiLecture, NoTextIsCutOffAtAnyScale) {
       std::snprintf(prefix, sizeof prefix, "ui-%s-%.1f-%s", code, scale, s.what);
       std::vector<std::string> problems = clippedTextOfEveryPage(*v, prefix);
       if (std::string(s.what) == "Depth") {  // the plot at least ten lines high at every scale
-        EXPECT_GE(v->state().rects.at("depth.plot").w, 10 * ImGui::GetTextLineHeight());
+        EXPECT_GE(v->rects().rects.at("depth.plot").w, 10 * ImGui::GetTextLineHeight());
       }
       char name[128];
       std::snprintf(name, sizeof name, "ui-%s-%.1f-%s.png", code, scale, s.what);
@@ -341,7 +341,7 @@ TEST(UiLecture, CopyingALatexMatrixSaysSoAndPastesAsDisplayMath) {
   const auto [x, y] = v->centreOf("copy.wcFromMc.latex");
   v->click(x, y);
   v->frames(1);
-  EXPECT_EQ(v->state().copied.id, "copy.wcFromMc.latex");
+  EXPECT_EQ(v->state().widgets.copied.id, "copy.wcFromMc.latex");
   const char* clip = ImGui::GetClipboardText();
   const std::string text = clip ? clip : "";
   EXPECT_NE(text.find("\\[\n\\begin{bmatrix}"), std::string::npos) << text;
@@ -355,7 +355,7 @@ TEST(UiLecture, ClickingAVertexShowsTheProbeAndShiftClickTheStepThrough) {
   ASSERT_EQ(v->state().inspectTab, ViewerState::matricesTab);
   // A vertex of the run, where the camera view draws it.
   const PipelineRun& run = v->state().run();
-  const ImVec4 r = v->state().rects.at("view.camera");
+  const ImVec4 r = v->rects().rects.at("view.camera");
   const Device& d = run.device;
   std::optional<std::pair<double, double>> at;
   for (size_t k = 0; k < run.objects.size() && !at; ++k)
@@ -445,7 +445,7 @@ TEST(UiLecture, LectureCaptionHasABackground) {
   v->key(keys::kF11);
   v->frames(2);
   ASSERT_TRUE(v->state().lectureMode);
-  const Image caption = cropRect(v->image(), v->state().rects.at("lecture.caption"));
+  const Image caption = cropRect(v->image(), v->rects().rects.at("lecture.caption"));
   ASSERT_GT(caption.pixels.size(), 1000u);
   double luminance = 0;
   for (const Rgba& p : caption.pixels) luminance += 0.2126 * p.r + 0.7152 * p.g + 0.0722 * p.b;
@@ -489,10 +489,10 @@ TEST(UiLecture, DepthPlotLegendIsOffTheCurvesAndTheBarsAreNamed) {
   const auto [x, y] = v->centreOf("tab.inspect.Depth");
   v->click(x, y);
   v->frames(2);
-  const ImVec4 legend = v->state().rects.at("depth.legend"), plot = v->state().rects.at("depth.plot");
+  const ImVec4 legend = v->rects().rects.at("depth.legend"), plot = v->rects().rects.at("depth.plot");
   EXPECT_LE(legend.y + legend.w, plot.y + 1) << "the legend overlaps the plot";
   for (const ObjectRun& o : v->state().run().objects)
-    EXPECT_EQ(v->state().rects.count("depth.bar." + o.name), 1u) << o.name;
+    EXPECT_EQ(v->rects().rects.count("depth.bar." + o.name), 1u) << o.name;
 }
 
 // The step-through lists the coordinates of the vertices a pass creates: the tetrahedron of the
@@ -512,7 +512,7 @@ TEST(UiLecture, StepThroughListsTheNewVertices) {
   for (int step = 1; step <= 6 && !listed; ++step) {
     const auto [x, y] = v->centreOf("step.next");
     v->click(x, y);
-    for (const auto& [id, rect] : v->state().rects) listed |= id.rfind("step.new.", 0) == 0 && rect.z > 0;
+    for (const auto& [id, rect] : v->rects().rects) listed |= id.rfind("step.new.", 0) == 0 && rect.z > 0;
   }
   EXPECT_TRUE(listed);
   // At the last pass "next" is greyed: a click changes nothing.
@@ -602,16 +602,16 @@ TEST(UiLecture, InspectTabsStayWhileThePanelScrolls) {
   const auto [x, y] = v->centreOf("tab.inspect.Matrices");
   v->click(x, y);
   v->frames(2);
-  const ImVec4 before = v->state().rects.at("tab.inspect.Matrices");
-  const ImVec4 firstCopy = v->state().rects.at("copy.wcFromMc.text");
+  const ImVec4 before = v->rects().rects.at("tab.inspect.Matrices");
+  const ImVec4 firstCopy = v->rects().rects.at("copy.wcFromMc.text");
   v->mouseMove(firstCopy.x + 5, firstCopy.y + 5);
   for (int i = 0; i < 6; ++i) {  // the wheel over the panel
     v->wheel(-3);
     v->frames(1);
   }
   v->frames(1);
-  EXPECT_LT(v->state().rects.at("copy.wcFromMc.text").y, firstCopy.y - 20) << "the panel did not scroll";
-  EXPECT_EQ(v->state().rects.at("tab.inspect.Matrices").y, before.y);
+  EXPECT_LT(v->rects().rects.at("copy.wcFromMc.text").y, firstCopy.y - 20) << "the panel did not scroll";
+  EXPECT_EQ(v->rects().rects.at("tab.inspect.Matrices").y, before.y);
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // The viewer's logic without a display: HeadlessViewer (app/ui/headless_viewer.h) draws the whole
 // window off-screen on the EGL context and takes synthetic mouse and keyboard input, so the tests
-// use the viewer as a user does: through the recorded widget rects (ViewerState::rects), the views'
+// use the viewer as a user does: through the recorded widget rects (ui::RectLog, app/ui/widgets.h), the views'
 // own projections and the key codes of app/ui/keys.h. Each test checks the state the input must
 // change and the pixels that must (and must not) change with it.
 #include "app/ui/headless_viewer.h"
@@ -37,7 +37,7 @@ struct PixelRect {
 };
 
 PixelRect rectOf(HeadlessViewer& v, const std::string& id) {
-  const auto& rects = v.state().rects;
+  const auto& rects = v.rects().rects;
   const auto it = rects.find(id);
   EXPECT_NE(it, rects.end()) << "no widget " << id;
   if (it == rects.end()) return {};
@@ -104,7 +104,7 @@ size_t errorTextPixels(const Image& image) {
 
 /// Where a vertex of the run is drawn in the camera view's rect (the device's DC scaled to fit).
 std::pair<double, double> screenOfDc(HeadlessViewer& v, const Vec3& dc) {
-  const ImVec4 r = v.state().rects.at("view.camera");
+  const ImVec4 r = v.rects().rects.at("view.camera");
   const Device& d = v.state().run().device;
   return {r.x + dc.x * r.z / d.width, r.y + dc.y * r.w / d.height};
 }
@@ -113,7 +113,7 @@ std::pair<double, double> screenOfDc(HeadlessViewer& v, const Vec3& dc) {
 /// pixels on screen, so a click on one picks it and nothing else.
 std::vector<Probe> isolatedVertices(HeadlessViewer& v, double gap) {
   const PipelineRun& run = v.state().run();
-  const ImVec4 r = v.state().rects.at("view.camera");
+  const ImVec4 r = v.rects().rects.at("view.camera");
   std::vector<std::pair<Probe, std::pair<double, double>>> all;
   for (size_t k = 0; k < run.objects.size(); ++k) {
     for (uint32_t i = 0; i < run.objects[k].vertexCount(); ++i) {
@@ -134,7 +134,7 @@ std::vector<Probe> isolatedVertices(HeadlessViewer& v, double gap) {
 
 /// The world view's observer as the viewer uses it for picking and dragging (its rect's size).
 ViewCamera worldObserver(HeadlessViewer& v, int* w, int* h) {
-  const ImVec4 r = v.state().rects.at("view.world");
+  const ImVec4 r = v.rects().rects.at("view.world");
   *w = int(r.z);
   *h = int(r.w);
   return viewCameraOf(observerCamera(v.state().display.world.orbit, double(*w) / *h));
@@ -146,7 +146,7 @@ std::pair<double, double> screenInWorldView(HeadlessViewer& v, const Vec3& wc) {
   const ViewCamera observer = worldObserver(v, &w, &h);
   const Projected p = projectToPixels(observer, wc, w, h);
   EXPECT_TRUE(p.visible);
-  const ImVec4 r = v.state().rects.at("view.world");
+  const ImVec4 r = v.rects().rects.at("view.world");
   return {r.x + p.pixel.x, r.y + p.pixel.y};
 }
 
@@ -164,7 +164,7 @@ TEST(Ui, WidgetsAndViewsAreRecorded) {
     EXPECT_LE(r.y + r.h, kHeight) << id;
   }
   // The camera view keeps the device's aspect ratio (4 : 3), within a pixel.
-  const ImVec4 c = v->state().rects.at("view.camera");
+  const ImVec4 c = v->rects().rects.at("view.camera");
   EXPECT_NEAR(c.z / c.w, defaultScene().device.aspect(), 4.0 / c.w);
 }
 
@@ -176,7 +176,7 @@ TEST(Ui, DraggingTheVrpFieldMovesVrpAndChangesTheViews) {
   const Vec3 before = v->state().doc.scene().camera.vrp;
   const Image cameraBefore = region(*v, rectOf(*v, "view.camera"));
   const Image worldBefore = region(*v, rectOf(*v, "view.world"));
-  const ImVec4 r = v->state().rects.at("camera.vrp");
+  const ImVec4 r = v->rects().rects.at("camera.vrp");
   const double x = r.x + 20, y = r.y + r.w / 2;  // inside the first (x) of the three fields
   v->drag(x, y, x + 50, y);
   v->frames(2);
@@ -243,7 +243,7 @@ TEST(Ui, ClickingAVertexInTheCameraViewProbesIt) {
 TEST(Ui, ClickingEmptySpaceProbesNothing) {
   auto v = makeViewer();
   // The camera view's top-left corner (background, no vertex within the pick radius there).
-  const ImVec4 r = v->state().rects.at("view.camera");
+  const ImVec4 r = v->rects().rects.at("view.camera");
   for (const Probe& p : isolatedVertices(*v, 0)) {
     const auto [sx, sy] = screenOfDc(*v, *probePosition(v->state().run(), p, ViewKind::camera));
     ASSERT_GT(std::hypot(sx - (r.x + 3), sy - (r.y + 3)), 20) << "a vertex near the corner";
@@ -265,14 +265,14 @@ TEST(Ui, DraggingThePrpHandleChangesPrpAndUndoRedoWork) {
   {
     int w = 0, h = 0;
     const ViewCamera observer = worldObserver(*v, &w, &h);
-    const ImVec4 r = v->state().rects.at("view.world");
+    const ImVec4 r = v->rects().rects.at("view.world");
     ASSERT_EQ(pickHandle(v->state().run(), observer, w, h, Vec2(x - r.x, y - r.y), 12), Handle::prp);
   }
-  {  // The browser tests grab the handle at its recorded rect (ViewerState::rects "handle.prp").
-    const ImVec4 r = v->state().rects.at("handle.prp");
+  {  // The browser tests grab the handle at its recorded rect (ui::RectLog "handle.prp").
+    const ImVec4 r = v->rects().rects.at("handle.prp");
     EXPECT_NEAR(r.x + r.z / 2, x, 1e-3);
     EXPECT_NEAR(r.y + r.w / 2, y, 1e-3);
-    EXPECT_TRUE(v->state().rects.count("handle.vrp") && v->state().rects.count("handle.xmin"));
+    EXPECT_TRUE(v->rects().rects.count("handle.vrp") && v->rects().rects.count("handle.xmin"));
   }
   const double dx = 40, dy = 25;
   v->drag(x, y, x + dx, y + dy);
@@ -378,7 +378,7 @@ TEST(Ui, PrpOnVrpShowsAnErrorAndKeepsTheLastValidCamera) {
 /// drag field into a text field with its text selected, typed characters replace it (ImGui applies
 /// them as they are typed). With `finish`, a click on empty space in the controls ends the edit.
 void typeInto(HeadlessViewer& v, const char* id, const char* label, int field, const char* text, bool finish) {
-  const ImVec4 r = v.state().rects.at(id);
+  const ImVec4 r = v.rects().rects.at(id);
   const ImGuiStyle& style = ImGui::GetStyle();
   const float fields = r.z - ImGui::CalcTextSize(label).x - style.ItemInnerSpacing.x;  // the label is on the right
   const double x = r.x + fields * (field + 0.5) / 3, y = r.y + r.w / 2;
@@ -451,7 +451,7 @@ TEST(Ui, TwoViewersCoexist) {
   a.frames(1);
   EXPECT_EQ(test::differingPixels(a.image(), b.image()), 0u) << "the same scene at the same size";
   // Input to b changes b only.
-  const ImVec4 r = b.state().rects.at("view.world");
+  const ImVec4 r = b.rects().rects.at("view.world");
   const double x = r.x + 30, y = r.y + r.w - 30;  // the bottom-left corner: no handle there
   b.drag(x, y, x + 60, y);
   a.frames(1);
@@ -468,7 +468,7 @@ TEST(Ui, OrbitingTheWorldViewChangesTheObserverOnly) {
   const Camera camera = v->state().doc.scene().camera;
   const Image worldBefore = region(*v, rectOf(*v, "view.world"));
   const Image cameraBefore = region(*v, rectOf(*v, "view.camera"));
-  const ImVec4 r = v->state().rects.at("view.world");
+  const ImVec4 r = v->rects().rects.at("view.world");
   const double x = r.x + 30, y = r.y + r.w - 30;  // the bottom-left corner: no handle there
   {
     int w = 0, h = 0;

@@ -19,7 +19,7 @@ namespace {
 constexpr int kWidth = 1280, kHeight = 720;
 bool anyBusy(const Viewer& v) {
   for (ViewKind k : {ViewKind::world, ViewKind::camera, ViewKind::npc})
-    if (v.viewBusy(k)) return true;
+    if (v.images().busy(k)) return true;
   return false;
 }
 
@@ -77,9 +77,9 @@ TEST(ViewWorker, TheWindowKeepsDrawingWhileAViewIsRedrawnThenShowsItsNewImage) {
   const Image expected = sync.image();
 
   HeadlessViewer async(context, scene, kWidth, kHeight);
-  async.viewer().useViewWorker(context.createShared(), {});
+  async.viewer().images().useWorker(context.createShared(), {});
   untilIdle(async, 120);
-  const unsigned drawnBefore = async.viewer().viewsDrawn();
+  const unsigned drawnBefore = async.viewer().images().drawn();
   setStyle(async, Style::hiddenLine);
   Frames f = untilIdle(async, 120);
   // The views take `blocking` seconds; meanwhile the window draws frames of a few ms (it waits up
@@ -94,7 +94,7 @@ TEST(ViewWorker, TheWindowKeepsDrawingWhileAViewIsRedrawnThenShowsItsNewImage) {
   EXPECT_GE(f.busy, 5) << "the views finished too fast to show the window drawing meanwhile";
   EXPECT_LT(f.median(), 0.05);
   EXPECT_LT(f.longest, blocking * 0.75) << "a frame waited for a view";
-  EXPECT_GT(async.viewer().viewsDrawn(), drawnBefore);
+  EXPECT_GT(async.viewer().images().drawn(), drawnBefore);
   async.frames(2);  // the busy mark gone, ImGui settled
   const Image shown = async.image();
 

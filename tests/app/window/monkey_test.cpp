@@ -72,7 +72,7 @@ class Monkey {
     ++windowFrames_;
     // A quit is in reach when a menu or dialog is open (menus are ImGui popups) or one was asked for.
     quitInReach_ = viewer.state().quitRequested || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId);
-    if (viewer.caughtErrors() > 0) return fail("the viewer caught an error: " + viewer.lastCaughtError());
+    if (viewer.caught().count > 0) return fail("the viewer caught an error: " + viewer.caught().last);
     // The first frames compile the shaders and build the font atlas (llvmpipe, no shader cache): the
     // user has not acted yet, and a lecturer sees them before the class does.
     if (windowFrames_ > kWarmUpFrames) {
@@ -119,7 +119,7 @@ class Monkey {
 
   /// A point anywhere in the window, or inside a widget the viewer recorded last frame.
   std::pair<double, double> somewhere(const Viewer& viewer, int w, int h, bool widget) {
-    const auto& rects = viewer.state().rects;
+    const auto& rects = viewer.rects().rects;
     if (widget && !rects.empty()) {
       auto it = rects.begin();
       std::advance(it, pick(int(rects.size())));
@@ -130,8 +130,8 @@ class Monkey {
   }
   /// Quitting is the user's right, not a failure: the monkey never clicks File ▸ Quit.
   bool onQuit(const Viewer& viewer, double x, double y) const {
-    const auto it = viewer.state().rects.find("menu.quit");
-    if (it == viewer.state().rects.end()) return false;
+    const auto it = viewer.rects().rects.find("menu.quit");
+    if (it == viewer.rects().rects.end()) return false;
     const ImVec4& r = it->second;
     return x >= r.x - 2 && x <= r.x + r.z + 2 && y >= r.y - 2 && y <= r.y + r.w + 2;
   }
