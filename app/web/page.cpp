@@ -492,7 +492,7 @@ EMSCRIPTEN_KEEPALIVE const char* vplab_export_png(Page* p, const char* view, int
   p->reply.clear();
   try {
     const vplab::ViewerState& s = p->viewer.state();
-    const auto kind = vplab::fromString<ViewKind>(view);
+    const auto kind = vplab::fromString<vplab::ViewKind>(view);
     if (!kind) throw vplab::Error(vplab::ui::tr(s, "no view \"{1}\"", {view}));
     if (p->graphicsLost) throw vplab::Error(vplab::ui::tr(s, "the graphics context is lost: nothing can be drawn until the browser gives it back"));
     if (width < 1 || height < 1 || width > 8192 || height > 8192)
