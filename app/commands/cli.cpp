@@ -44,7 +44,7 @@ Scene sceneFrom(const std::string& path) { return path.empty() ? defaultScene() 
 /// CLI::IsMember over every value of an enum, by its name (the enum's one table and toString), and
 /// any further names.
 template <typename Enum, size_t N>
-CLI::IsMember namesOf(const std::array<Enum, N>& all, std::vector<std::string> more = {}) {
+CLI::IsMember choicesOf(const std::array<Enum, N>& all, std::vector<std::string> more = {}) {
   std::vector<std::string> names;
   for (Enum e : all) names.emplace_back(toString(e));
   names.insert(names.end(), more.begin(), more.end());
@@ -519,7 +519,7 @@ int runCommandLine(int argc, char** argv) {
   dumpCmd->add_option("--strategy", dump.strategy,
                       "Clipping strategy: npc (homogeneous NPC, the default), wc (the six frustum "
                       "planes in WC) or divide-first (wrong on purpose: divides by w before clipping)")
-      ->check(namesOf(allOf<ClipStrategy>()));
+      ->check(choicesOf(allOf<ClipStrategy>()));
   dumpCmd->add_flag("--bounding-box", dump.boundingBox,
                     "Decide whole objects by their bounding box first (lecture notes 15.3.4)");
   dumpCmd->add_option("--indent", dump.indent, "JSON indentation; -1 prints everything on one line")
@@ -537,7 +537,7 @@ int runCommandLine(int argc, char** argv) {
                         "Clipping lesson's wrong picture; always the divide-first strategy's run), depth-plot "
                         "(NPC z and GL window depth against VRC z, the objects' depth ranges) or ui (the whole "
                         "viewer window with its panels; needs EGL)")
-      ->check(namesOf(allOf<ViewKind>(), {"ui"}));
+      ->check(choicesOf(allOf<ViewKind>(), {"ui"}));
   renderCmd->add_option("--morph-t", render.morphT,
                         "With --view morph: 0 MC, 1 WC, 2 VRC, 2.5 homogeneous NPC, 3 NPC, 4 DC, or between")
       ->check(finiteIn(0, 4));
@@ -545,7 +545,7 @@ int runCommandLine(int argc, char** argv) {
                         "flat (object colours, unlit), shaded (lit by the scene's lights), wire (every edge), "
                         "hidden-line (hidden edges dashed, lecture notes figure 16.1) or hidden-removed (hidden "
                         "edges left out, figure 16.3)")
-      ->check(namesOf(allOf<Style>()));
+      ->check(choicesOf(allOf<Style>()));
   renderCmd->add_option("--theme", render.theme,
                         "dark (the screen's) or light (white ground, dark lines told apart by dashes and widths "
                         "as well as colour: for print and a bright lecture hall)")
@@ -572,9 +572,9 @@ int runCommandLine(int argc, char** argv) {
   renderCmd->add_option("--hold", render.hold, "With --animate: seconds each step (each stage) is held (default 3)")
       ->check(finiteIn(0.02, 60));
   renderCmd->add_option("--backend", render.backend, "Headless OpenGL: auto (EGL, then OSMesa), egl or osmesa")
-      ->check(namesOf(allOf<Backend>()));
+      ->check(choicesOf(allOf<Backend>()));
   renderCmd->add_option("--strategy", render.strategy, "Clipping strategy of the CPU overlays: npc, wc or divide-first")
-      ->check(namesOf(allOf<ClipStrategy>()));
+      ->check(choicesOf(allOf<ClipStrategy>()));
   renderCmd->add_flag("--gl-debug", render.glDebug, "Turn on KHR_debug and fail on any OpenGL error");
   renderCmd->add_option("--ui-scale", render.uiScale,
                         "Scale the views' text, lines and markers as the viewer's UI scale does (a projector); "

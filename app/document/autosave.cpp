@@ -126,9 +126,8 @@ std::optional<Camera> cameraFromNumbers(const nlohmann::json& j) {
     c.window = {finiteNumber(w[0]), finiteNumber(w[1]), finiteNumber(w[2]), finiteNumber(w[3])};
     c.front = finiteNumber(j.at("front"));
     c.back = finiteNumber(j.at("back"));
-    const std::string projection = j.at("projection").get<std::string>();
-    const auto p = std::find_if(allOf<Projection>().begin(), allOf<Projection>().end(), [&](Projection x) { return toString(x) == projection; });
-    if (p == allOf<Projection>().end()) return std::nullopt;
+    const std::optional<Projection> p = fromString<Projection>(j.at("projection").get<std::string>());
+    if (!p) return std::nullopt;
     c.projection = *p;
     const auto& o = j.at("oblique");
     if (o.size() != 2) return std::nullopt;

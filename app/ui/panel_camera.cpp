@@ -70,10 +70,10 @@ void cameraPanel(Widgets& w, DocumentPart& d, const RunPart& r, LayoutPart& l) {
     const auto it = log->rects.find(id);
     if (it == log->rects.end()) return;
     // Inside the field's sides (the panel clips at them) and just outside its top and bottom.
-    const ImVec4& r = it->second;
+    const ImVec4& field = it->second;
     const float thick = std::max(2.f, ImGui::GetFontSize() / 8), pad = ImGui::GetStyle().ItemSpacing.y * 0.4f;
-    ImGui::GetWindowDrawList()->AddRect(ImVec2(r.x + thick * 0.5f, r.y - pad), ImVec2(r.x + r.z - thick * 0.5f, r.y + r.w + pad),
-                                        errorColour(), 0, 0, thick);
+    ImGui::GetWindowDrawList()->AddRect(ImVec2(field.x + thick * 0.5f, field.y - pad),
+                                        ImVec2(field.x + field.z - thick * 0.5f, field.y + field.w + pad), errorColour(), 0, 0, thick);
   };
   scrollAnchor(w, "camera.points");
   dragVec3(w, "VRP", "camera.vrp", c.vrp);
