@@ -13,7 +13,7 @@
 #   outside_<dir>     the outside headers it may include: gl (GL, GLAD, GLFW, EGL, KHR, OSMesa) and
 #                     imgui (Dear ImGui and its backends); none: neither
 #   about_<dir>       what the layer holds, for docs/architecture.md
-set(layers base pipeline io course app/text app/views app/workers app/document app/inspect app/lessons app/session app/fonts
+set(layers base pipeline io course app/text app/views app/workers app/document app/inspect app/lessons app/practice app/session app/fonts
            app/export app/context app/gl app/render app/ui app/course_kit bench app/commands app/web)
 
 set(uses_base base/)
@@ -44,7 +44,7 @@ set(uses_app/workers pipeline/ app/workers/)
 set(outside_app/workers none)
 set(about_app/workers "threads where the latest request wins: the skeleton, their low priority, the pipeline's worker")
 
-set(uses_app/document base/ pipeline/ io/ app/text/ app/views/ app/document/)
+set(uses_app/document base/ pipeline/ io/ course/ app/text/ app/views/ app/document/)
 set(outside_app/document none)
 set(about_app/document "the scene being edited and its files: undo, loading, atomic saving, autosave and recovery, preferences, the installed assets, the page's address")
 
@@ -56,7 +56,11 @@ set(uses_app/lessons base/ pipeline/ io/ app/views/ app/document/ app/inspect/ a
 set(outside_app/lessons none)
 set(about_app/lessons "a lesson without GL: its file, its steps, how it frames the views, its marks, its player and the camera's transitions")
 
-set(uses_app/session base/ pipeline/ io/ app/text/ app/views/ app/document/ app/inspect/ app/lessons/ app/session/)
+set(uses_app/practice base/ pipeline/ io/ course/ app/views/ app/practice/)
+set(outside_app/practice none)
+set(about_app/practice "an exercise practised beside the views: its tasks and the student's fields, Check through course/'s grader, the student's numbers as marks in the views")
+
+set(uses_app/session base/ pipeline/ io/ app/text/ app/views/ app/document/ app/inspect/ app/lessons/ app/practice/ app/session/)
 set(outside_app/session none)
 set(about_app/session "the viewer's state in parts and the document's life without ImGui: open, save, autosave and recovery, links, lessons opened, the questions the dialogs ask")
 
@@ -80,7 +84,7 @@ set(uses_app/render base/ pipeline/ app/views/ app/workers/ app/fonts/ app/expor
 set(outside_app/render imgui)
 set(about_app/render "the GL backend of the display lists, the views' images and their render thread")
 
-set(uses_app/ui base/ pipeline/ io/ app/text/ app/views/ app/workers/ app/document/ app/inspect/ app/lessons/ app/session/ app/fonts/
+set(uses_app/ui base/ pipeline/ io/ course/ app/text/ app/views/ app/workers/ app/document/ app/inspect/ app/lessons/ app/practice/ app/session/ app/fonts/
     app/export/ app/context/ app/gl/ app/render/ app/ui/)
 set(outside_app/ui gl imgui)
 set(about_app/ui "the viewer: the frame, its session, menus, panels, the views' panes")
@@ -93,11 +97,11 @@ set(uses_bench base/ pipeline/ bench/)
 set(outside_bench none)
 set(about_bench "the benchmark workloads (`vplab bench` is a command) and the Google Benchmark target")
 
-set(uses_app/commands base/ io/ course/ app/text/ app/views/ app/document/ app/lessons/ app/fonts/ app/export/ app/render/
+set(uses_app/commands base/ io/ course/ app/text/ app/views/ app/document/ app/lessons/ app/practice/ app/fonts/ app/export/ app/render/
     app/ui/ app/course_kit/ bench/ app/commands/)
 set(outside_app/commands none)
 set(about_app/commands "the command line: every subcommand (the window, render, dump, bench, exercise, grade, a lesson's pictures) and main")
 
-set(uses_app/web base/ io/ app/document/ app/session/ app/context/ app/gl/ app/ui/ app/web/)
+set(uses_app/web base/ io/ course/ app/document/ app/session/ app/context/ app/gl/ app/ui/ app/web/)
 set(outside_app/web gl imgui)
 set(about_app/web "the page: the browser's frame loop and services")

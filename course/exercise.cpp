@@ -96,7 +96,13 @@ SceneObject drawPolygon(Draw& d, const Camera& camera, bool behindEye) {
     o.vertices.clear();
     const Vec3 p1{d.half(-1, 1), d.half(-1, 1), 0};
     o.vertices.push_back(p1);
-    for (size_t i = 1; i < n; ++i) o.vertices.push_back(p1 + Vec3(d.half(-4, 4), d.half(-4, 4), 0));
+    for (size_t i = 1; i < n; ++i) {
+      // y is drawn before x: the order GCC gave the unsequenced arguments of Vec3(d.half(), d.half(), 0)
+      // that this once was, so that every sheet written stays what it was, and the page (Clang) draws
+      // the same (issue 40).
+      const double y = d.half(-4, 4), x = d.half(-4, 4);
+      o.vertices.push_back(p1 + Vec3(x, y, 0));
+    }
     bool convex = true;
     double area = 0;
     for (size_t i = 0; i < n; ++i) {
@@ -115,7 +121,9 @@ SceneObject drawPolygon(Draw& d, const Camera& camera, bool behindEye) {
   if (d.pick(4) != 0) o.transform.rotations.push_back(d.of(rotations));
   // Where P1 should land in WC: near VRP, or beyond the eye along N (behind the eye).
   const Vec3 axis = camera.prp - camera.vrp;
-  Vec3 target = camera.vrp + Vec3(d.half(-1.5, 1.5), d.half(-1.5, 1.5), d.half(-1.5, 1.5));
+  // z, y, x: the order of the draws as GCC made them (see above).
+  const double dz = d.half(-1.5, 1.5), dy = d.half(-1.5, 1.5), dx = d.half(-1.5, 1.5);
+  Vec3 target = camera.vrp + Vec3(dx, dy, dz);
   if (behindEye) target += axis * d.of({1.5, 2.0});
   const Vec3 placed = transformAffine(wcFromMc(o.transform), o.vertices[0]);  // R · S · P1 (no translation yet)
   const Vec3 t = target - placed;

@@ -38,6 +38,7 @@ struct ExerciseSpec {
   uint64_t seed = 1;  // the exercise's number: the same for the whole class
   ExerciseTopic topic = ExerciseTopic::pipeline;
   Projection projection = Projection::perspective;
+  bool operator==(const ExerciseSpec&) const = default;
 };
 
 struct Exercise {

@@ -20,7 +20,7 @@ if [ "${VPLAB_SANITIZERS:-1}" != 0 ]; then
   cd "$VPLAB_ROOT"
   echo "test.sh: the test suite under ASan + UBSan (build-asan/)" >&2
   cmake --preset asan >/dev/null
-  cmake --build build-asan -j "$(nproc)" --target vplab test_pipeline test_io test_course test_text test_views test_workers test_document test_inspect test_lessons test_session test_export test_render test_ui test_course_kit test_cli test_monkey  # not the benchmarks
+  cmake --build build-asan -j "$(nproc)" --target vplab test_pipeline test_io test_course test_text test_views test_workers test_document test_inspect test_lessons test_practice test_session test_export test_render test_ui test_course_kit test_cli test_monkey  # not the benchmarks
   ctest --preset asan -j "$(nproc)"
   echo "test.sh: every fuzz target for ${FUZZ_SECONDS:-30} s over its corpus (build-fuzz/)" >&2
   scripts/fuzz.sh "${FUZZ_SECONDS:-30}"

@@ -2,6 +2,8 @@
 
 #include "app/document/assets.h"
 #include "app/lessons/lesson.h"
+#include "app/practice/practice.h"
+#include "app/practice/practice_marks.h"
 #include "app/lessons/tabs.h"
 #include "app/document/preferences.h"
 #include "app/text/catalogue.h"
@@ -17,6 +19,7 @@
 #include "io/dump.h"
 #include "base/error.h"
 #include "io/limits.h"
+#include "io/read_file.h"
 #include "io/scene_io.h"
 
 #include <CLI/CLI.hpp>
@@ -152,7 +155,21 @@ struct RenderOptions {
   int fps = 15;
   double hold = 3;                // seconds each step's still (each stage of the morph) is shown
   bool viewGiven = false;
+  std::string exercise;           // an exercise's folder: its scene, and with --answer the student's numbers drawn
+  std::string answer;             // a student's answer.json to the exercise
 };
+
+/// `render --exercise DIR [--answer FILE]`: the exercise with the answer's values in its fields.
+std::optional<Practice> renderedPractice(const RenderOptions& r) {
+  if (r.exercise.empty()) return std::nullopt;
+  Practice p = openPracticeFolder(r.exercise, Reveal::stages, r.lang == "de" ? Language::de : Language::en);
+  if (!r.answer.empty()) {
+    for (ItemFields& f : p.fields) std::fill(f.texts.begin(), f.texts.end(), std::string());
+    fillFields(p.fields, parseAnswer(readRegularFile(r.answer, kDefaultLimits.sceneFileBytes, "answer"), r.answer));
+    ++p.edits;
+  }
+  return p;
+}
 
 /// ".png" of "Shot.PNG": what --out's name says it is.
 std::string lowerExtension(const std::string& file) {
@@ -258,7 +275,8 @@ int renderLesson(const RenderOptions& r) {
 
 int runRender(const RenderOptions& r) {
   if (!r.lesson.empty()) return renderLesson(r);
-  const Scene scene = sceneFrom(r.scene);
+  const std::optional<Practice> practice = renderedPractice(r);
+  const Scene scene = practice ? practice->exercise.scene : sceneFrom(r.scene);
   if (r.animate) {
     if (r.view != "morph") throw Error("--animate is for --lesson or --view morph");
     RenderRequest request;
@@ -294,6 +312,7 @@ int runRender(const RenderOptions& r) {
   request.scale = r.uiScale;
   request.language = r.lang == "de" ? Language::de : Language::en;
   if (!r.size.empty()) std::tie(request.width, request.height) = parseSize(r.size);
+  if (practice) request.highlights.student = practiceMarks(*practice, std::nullopt);
   // Non-finite results are an error here as in the dump (coordinates so large that a product
   // overflows), said before the views derive their observers from them.
   if (auto e = nonFiniteError(runPipeline(scene, pipelineOptionsOf(request))))
@@ -332,6 +351,15 @@ int runRender(const RenderOptions& r) {
     viewer.state().display.theme = request.theme;
     viewer.state().display.language = request.language;
     for (const std::string& tab : r.tabs) selectTab(viewer.state(), tab);
+    if (practice) {
+      // The exercise as the student left it, checked: its Tasks beside the views.
+      viewer.frames(2);
+      if (!viewer.viewer().session().exercises().openFolder(r.exercise, practice->reveal)) throw Error(viewer.state().status);
+      viewer.state().practice->fields = practice->fields;
+      ++viewer.state().practice->edits;
+      if (!r.answer.empty()) viewer.viewer().session().exercises().check();
+      for (int i = 0; i < 600 && !viewer.viewer().viewsNotReady().empty(); ++i) viewer.frame();
+    }
     viewer.frames(3);
     writePng(viewer.image(), out);
     return 0;
@@ -353,6 +381,8 @@ struct ViewerOptions {
   bool glDebug = false;
   bool reportFrames = false;
   std::string noDisplayDir;  // --no-display-dir: where the fallback writes; empty: it writes nothing
+  std::string exercise;      // --exercise DIR: an exercise's folder to practise
+  std::string reveal = "stages";
 };
 
 // The window could not be opened at start (no display, no OpenGL): say so, and only when asked
@@ -407,6 +437,14 @@ int runViewer(const ViewerOptions& v) {
                   std::to_string(lesson.steps.size()) + " steps");
     launch.lesson = file.string();
     launch.lessonStep = v.step - 1;
+  }
+  if (!v.exercise.empty()) {
+    const std::optional<Reveal> reveal = fromString<Reveal>(v.reveal);
+    if (!reveal) throw Error("--reveal \"" + v.reveal + "\": values, stages or none expected");
+    // Read here first, so that a folder that is no exercise ends with its error before a window opens.
+    launch.scene = openPracticeFolder(v.exercise, *reveal, Language::en).exercise.scene;
+    launch.exercise = v.exercise;
+    launch.reveal = *reveal;
   }
   launch.quitAfterFrames = v.quitAfterFrames;
   launch.screenshotOnQuit = v.screenshot;
@@ -488,6 +526,18 @@ int runCommandLine(int argc, char** argv) {
   app.add_option("--step", viewer.step, "The lesson's step to open, from 1 (default 1)")
       ->check(CLI::Range(1, 100000))
       ->needs(lessonOption);
+  CLI::Option* exerciseOption =
+      app.add_option("--exercise", viewer.exercise,
+                     "An exercise's folder (written by `vplab exercise --out DIR`) to practise: its tasks beside the "
+                     "views, the student's numbers checked and drawn in them (docs/students.md \"Practising\")")
+          ->check(CLI::ExistingDirectory)
+          ->excludes(sceneOption)
+          ->excludes(fileOption)
+          ->excludes(lessonOption);
+  app.add_option("--reveal", viewer.reveal,
+                 "With --exercise: what Check shows of the reference: stages (default: which values are wrong, the "
+                 "first departing stage and the mistake named), values (the reference values too) or none")
+      ->needs(exerciseOption);
   app.add_option("--quit-after-frames", viewer.quitAfterFrames,
                  "Quit by itself after N frames (for smoke tests and scripted screenshots)")
       ->check(CLI::Range(1, 100000000));
@@ -527,8 +577,18 @@ int runCommandLine(int argc, char** argv) {
 
   RenderOptions render;
   CLI::App* renderCmd = app.add_subcommand("render", "Render a view headless (EGL or OSMesa) to a PNG file");
-  renderCmd->add_option("--scene", render.scene, "Scene file (JSON); default: the built-in lecture scene")
+  CLI::Option* renderScene = renderCmd->add_option("--scene", render.scene, "Scene file (JSON); default: the built-in lecture scene")
       ->check(CLI::ExistingFile);
+  CLI::Option* renderExercise =
+      renderCmd->add_option("--exercise", render.exercise,
+                            "An exercise's folder (vplab exercise --out DIR): its scene; with --view ui its Tasks beside the views")
+          ->check(CLI::ExistingDirectory)
+          ->excludes(renderScene);
+  renderCmd->add_option("--answer", render.answer,
+                        "With --exercise: a student's answer.json, its numbers drawn in the views in the student's colour "
+                        "(and with --view ui typed into the Tasks and checked)")
+      ->check(CLI::ExistingFile)
+      ->needs(renderExercise);
   renderCmd->add_option("--view", render.view,
                         "camera (what the synthetic camera sees, W × H, pixel-aligned with DC), world (an "
                         "observer's view of scene, camera and view volume), npc (the unit cube after view "

@@ -7,7 +7,8 @@
 #include "app/course_kit/exercise_writer.h"
 #include "app/course_kit/grade_batch.h"
 #include "app/course_kit/grade_image.h"
-#include "app/course_kit/grade_report.h"
+#include "app/course_kit/image_report.h"
+#include "course/exercise_file.h"
 #include "app/render/headless.h"
 #include "course/assignment.h"
 #include "course/moodle_bank.h"
@@ -59,7 +60,7 @@ struct GradeArgs {
 };
 
 Reveal revealOf(const std::string& reveal) {
-  const std::optional<Reveal> r = revealFromString(reveal);
+  const std::optional<Reveal> r = fromString<Reveal>(reveal);
   if (!r) throw UsageError("--reveal \"" + reveal + "\": values, stages or none expected");
   return *r;
 }
@@ -309,14 +310,12 @@ int exerciseCommand(const ExerciseArgs& a) {
   const auto projection = fromString<Projection>(a.projection);
   if (!projection) throw UsageError("--projection \"" + a.projection + "\": perspective, parallel or oblique expected");
   if (a.lang != "en" && a.lang != "de") throw UsageError("--lang \"" + a.lang + "\": en or de expected");
-  if (a.seed.empty() || a.seed.size() > 18 || a.seed.find_first_not_of("0123456789") != std::string::npos)
-    throw UsageError("--seed \"" + a.seed + "\": a whole number from 0 to 999999999999999999 expected");
+  const std::optional<uint64_t> seed = exerciseSeedFrom(a.seed);
+  if (!seed) throw UsageError("--seed \"" + a.seed + "\": a whole number from 0 to 999999999999999999 expected");
   // The id is printed on the sheet (Markdown and LaTeX): letters, digits, '.', '-' and '@' only.
-  if (a.studentId.size() > 64 || std::any_of(a.studentId.begin(), a.studentId.end(), [](unsigned char c) {
-        return !std::isalnum(c) && c != '.' && c != '-' && c != '@';
-      }))
+  if (!a.studentId.empty() && !validStudentId(a.studentId))
     throw UsageError("--student-id \"" + a.studentId + "\": at most 64 letters, digits, '.', '-' or '@' expected");
-  const ExerciseSpec spec{std::stoull(a.seed), *topic, *projection};
+  const ExerciseSpec spec{*seed, *topic, *projection};
   const Language lang = a.lang == "de" ? Language::de : Language::en;
   if (!a.roster.empty()) return classExerciseCommand(a, spec, lang);
   const Exercise exercise = generateExercise(spec, a.studentId);
@@ -325,7 +324,7 @@ int exerciseCommand(const ExerciseArgs& a) {
     writeBank(a.moodle, moodleBankXml(moodleCategory(spec), {moodleQuestion(exercise, lang, a.out)}));
     std::cerr << "vplab exercise: wrote the Moodle question bank " << a.moodle << "\n";
   }
-  std::cerr << "vplab exercise: wrote sheet.md, solution.md, sheet.tex, solution.tex, scene.json, answer.json (the template to fill in), solution.json (its key), assignment.json (for vplab grade) and the figures to "
+  std::cerr << "vplab exercise: wrote sheet.md, solution.md, sheet.tex, solution.tex, scene.json, exercise.json, answer.json (the template to fill in), solution.json (its key), assignment.json (for vplab grade) and the figures to "
             << a.out << "\n";
   return 0;
 }

@@ -39,8 +39,9 @@ void compileSheet(const std::filesystem::path& dir) {
 }  // namespace
 
 const std::vector<std::string>& studentFiles() {
-  static const std::vector<std::string> files = {"sheet.md", "sheet.tex", "answer.json", "scene.json", "world.svg",
-                                                 "world.png"};
+  // exercise.json: the folder opens in the viewer (`vplab --exercise DIR`, issue 40).
+  static const std::vector<std::string> files = {"sheet.md", "sheet.tex", "answer.json", "scene.json", "exercise.json",
+                                                 "world.svg", "world.png"};
   return files;
 }
 

@@ -1,6 +1,6 @@
 #include "app/course_kit/class_grading.h"
 
-#include "app/course_kit/grade_report.h"
+#include "course/grade_report.h"
 #include "course/assignment.h"
 #include "course/grading.h"
 #include "course/zip_archive.h"

@@ -22,7 +22,7 @@
 // zip" reads back).
 #pragma once
 
-#include "app/course_kit/grade_report.h"
+#include "course/grade_report.h"
 #include "course/roster.h"
 #include "base/language.h"
 

@@ -2,6 +2,7 @@
 #include "app/course_kit/exercise_writer.h"
 
 #include "course/exercise_answer.h"
+#include "course/exercise_file.h"
 #include "course/sheet_values.h"
 #include "io/json_text.h"
 
@@ -573,6 +574,8 @@ void writeExercise(const Exercise& exercise, Language lang, const std::filesyste
   writeText(docs.sheetTex, dir / "sheet.tex");
   writeText(docs.solutionTex, dir / "solution.tex");
   writeText(sceneToJson(exercise.scene), dir / "scene.json");
+  // Which exercise this is, for the viewer (`vplab --exercise DIR`, issue 40).
+  writeText(exerciseFileJson({exercise.spec, exercise.studentId, lang}), dir / "exercise.json");
   // What the sheet asks for: the grader's assignment and the template a student fills in.
   const Assignment assignment = exerciseAssignment(exercise, solution, lang);
   writeText(assignmentJson(assignment), dir / "assignment.json");

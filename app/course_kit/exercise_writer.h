@@ -32,7 +32,7 @@ inline constexpr float kExerciseFigureScale = 1.5f;
 RenderRequest exerciseFigureRequest(const Exercise& exercise, ViewKind view, Language lang);
 
 /// Writes sheet.md, solution.md, sheet.tex, solution.tex, scene.json (the exercise's scene, for
-/// `vplab dump` and `vplab grade`) and the figures (SVG on the CPU, PNG rendered headless) into
+/// `vplab dump` and `vplab grade`), exercise.json (which exercise it is, for `vplab --exercise DIR`) and the figures (SVG on the CPU, PNG rendered headless) into
 /// `dir` (created). The same exercise gives the same bytes. Throws vplab::Error.
 void writeExercise(const Exercise& exercise, Language lang, const std::filesystem::path& dir);
 

@@ -1,6 +1,6 @@
 #include "app/course_kit/grade_batch.h"
 
-#include "app/course_kit/grade_report.h"
+#include "course/grade_report.h"
 #include "course/grading.h"
 #include "io/limits.h"
 #include "io/read_file.h"

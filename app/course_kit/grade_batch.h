@@ -6,7 +6,7 @@
 // row, never the end of the batch.
 #pragma once
 
-#include "app/course_kit/grade_report.h"
+#include "course/grade_report.h"
 #include "course/assignment.h"
 #include "base/language.h"
 

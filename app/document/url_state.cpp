@@ -93,6 +93,14 @@ std::string encodeUrlState(const UrlState& s) {
     for (ViewKind v : s.embed) views += (views.empty() ? "" : ",") + std::string(toString(v));
     parts.push_back("embed=" + views);
   }
+  if (s.exercise) {
+    parts.push_back("exercise=" + std::string(toString(s.exercise->spec.topic)));
+    parts.push_back("seed=" + std::to_string(s.exercise->spec.seed));
+    if (!s.exercise->studentId.empty()) parts.push_back("id=" + s.exercise->studentId);
+    if (s.exercise->spec.projection != Projection::perspective)
+      parts.push_back("projection=" + std::string(toString(s.exercise->spec.projection)));
+    if (s.reveal) parts.push_back("reveal=" + std::string(toString(*s.reveal)));
+  }
   if (!s.lesson.empty()) parts.push_back("lesson=" + s.lesson);
   if (s.step > 0) parts.push_back("step=" + std::to_string(s.step));
   if (!s.scene.empty()) parts.push_back("scene=" + s.scene);
@@ -137,6 +145,9 @@ UrlState decodeUrlState(std::string_view fragment) {
                 std::to_string(kMaxUrlStateLength) + " are read");
   UrlState s;
   CameraLink& c = s.camera;
+  std::optional<ExerciseTopic> exerciseTopic;
+  std::optional<uint64_t> exerciseSeed;
+  std::optional<std::string> studentId;
   size_t start = 0;
   while (start < fragment.size()) {
     const size_t amp = fragment.find('&', start);
@@ -164,6 +175,23 @@ UrlState decodeUrlState(std::string_view fragment) {
         s.embed.push_back(*kind);
         at = comma + 1;
       }
+    } else if (key == "exercise") {
+      const auto topic = fromString<ExerciseTopic>(value);
+      if (!topic)
+        throw Error("the link's exercise=" + quoteForError(value) + " is not a topic of the exercises (orientation, mapping, clipping or pipeline)");
+      exerciseTopic = *topic;
+    } else if (key == "seed") {
+      const auto seed = exerciseSeedFrom(value);
+      if (!seed) throw Error("the link's seed=" + quoteForError(value) + " is not an exercise's number (0 to 999999999999999999)");
+      exerciseSeed = *seed;
+    } else if (key == "id") {
+      if (value.empty() || !validStudentId(value))
+        throw Error("the link's id=" + quoteForError(value) + " is not a student's id (at most 64 letters, digits, '.', '-' or '@')");
+      studentId = std::string(value);
+    } else if (key == "reveal") {
+      const auto reveal = fromString<Reveal>(value);
+      if (!reveal) throw Error("the link's reveal=" + quoteForError(value) + " is not values, stages or none");
+      s.reveal = *reveal;
     } else if (key == "lesson") {
       if (!isBundledLessonName(value))
         throw Error("the link's lesson=" + quoteForError(value) +
@@ -214,8 +242,21 @@ UrlState decodeUrlState(std::string_view fragment) {
       s.strategy = *st;
     } else {
       throw Error("the link's " + quoteForError(key) + " is not a key vplab knows (embed, lesson, step, scene, vrp, prp, "
-                  "vup, window, front, back, projection, oblique, camera-style, world-style, npc-style, world, npc, strategy)");
+                  "vup, window, front, back, projection, oblique, camera-style, world-style, npc-style, world, npc, strategy, "
+                  "exercise, seed, id, reveal)");
     }
+  }
+  // An exercise is named by its topic and seed; its projection is the exercise's, not a camera's.
+  if (exerciseTopic || exerciseSeed || studentId || s.reveal) {
+    if (!exerciseTopic) throw Error("the link gives an exercise's seed, id or reveal but no exercise=TOPIC");
+    if (!exerciseSeed) throw Error("the link's exercise=" + std::string(toString(*exerciseTopic)) + " needs its seed=N");
+    ExerciseRef ref;
+    ref.spec = {*exerciseSeed, *exerciseTopic, c.projection.value_or(Projection::perspective)};
+    ref.studentId = studentId.value_or("");
+    s.exercise = ref;
+    c.projection.reset();
+    if (!c.empty() || !s.lesson.empty() || !s.scene.empty())
+      throw Error("the link names an exercise and a scene, lesson or camera: an exercise is its own scene");
   }
   return s;
 }

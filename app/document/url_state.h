@@ -1,7 +1,8 @@
 // What the lecturer shows, as the fragment of a link (`#scene=default&vrp=0,0,0&…`): the bundled
 // scene, the synthetic camera, each view's style and observer, and the clipping strategy; or a
-// bundled lesson's step (`#lesson=02-view-orientation&step=3`), and the embed form that shows only
-// some views and the caption (`#embed=camera,world&lesson=…`). The web
+// bundled lesson's step (`#lesson=02-view-orientation&step=3`), an exercise to practise
+// (`#exercise=clipping&seed=7&id=100[&projection=P][&reveal=values|stages|none]`, issue 40), and the
+// embed form that shows only some views and the caption (`#embed=camera,world&lesson=…`). The web
 // page keeps its address up to date with it, so that a link reproduces exactly the picture; the
 // desktop tests check the round trip and hostile fragments (tests/app/document/url_state_test.cpp).
 //
@@ -10,6 +11,8 @@
 #pragma once
 
 #include "app/views/views.h"
+#include "course/exercise_file.h"
+#include "course/grade_report.h"
 #include "pipeline/camera.h"
 #include "pipeline/pipeline.h"
 
@@ -52,6 +55,10 @@ struct UrlState {
   std::optional<Style> cameraStyle, worldStyle, npcStyle;
   std::optional<Orbit> worldOrbit, npcOrbit;
   std::optional<ClipStrategy> strategy;
+  /// An exercise (`vplab exercise`'s topic, seed, student id and projection): the whole state, as a
+  /// lesson's step is; `reveal` what Check shows of the reference (default: stages).
+  std::optional<ExerciseRef> exercise;
+  std::optional<Reveal> reveal;
   bool operator==(const UrlState&) const = default;
 };
 

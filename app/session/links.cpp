@@ -11,6 +11,14 @@
 namespace vplab {
 
 UrlState Links::urlState() const {
+  // An exercise is the whole state: the link names it (what was typed is kept per exercise).
+  if (state_.practice) {
+    UrlState u;
+    u.embed = state_.embedViews;
+    u.exercise = state_.practice->ref;
+    if (state_.practice->reveal != Reveal::stages) u.reveal = state_.practice->reveal;
+    return u;
+  }
   // A bundled lesson's step is the whole state: the link names the lesson and the step.
   if (state_.lesson) {
     const std::filesystem::path& file = state_.lesson->lesson().file;
@@ -58,6 +66,15 @@ void Links::showUrlState(const UrlState& link, bool atStart) {
   if (link.embed != state_.embedViews) {
     state_.embedViews = link.embed;
     session_.hooks().changed();
+  }
+  if (link.exercise) {
+    const Reveal reveal = link.reveal.value_or(Reveal::stages);
+    ExerciseRef ref = *link.exercise;
+    ref.language = state_.display.language;
+    const bool shown = state_.practice && state_.practice->ref.spec == ref.spec && state_.practice->ref.studentId == ref.studentId &&
+                       state_.practice->reveal == reveal;
+    if (!shown) session_.exercises().open(ref, reveal);
+    return;
   }
   if (!link.lesson.empty()) {
     const std::filesystem::path file = bundledLessonFile(link.lesson, state_.display.language);

@@ -16,7 +16,8 @@ Session::Session(ViewerModel& state, std::unique_ptr<FileChooser> chooser, Hooks
       hooks_(std::move(hooks)),
       files_(state, *this, std::move(chooser)),
       recovery_(state, *this),
-      links_(state, *this) {}
+      links_(state, *this),
+      exercises_(state, *this) {}
 
 // ---------------------------------------------------------------- 1 documents
 
@@ -38,6 +39,9 @@ void Session::startDocument(Scene scene, bool dirty) {
   state_.display.world.orbit = defaultWorldOrbit(state_.doc.shown(), state_.worldAspect);
   state_.lesson.reset();  // a lesson opens its own document after this (openLesson)
   state_.lessonMarks.clear();
+  exercises_.endFrame();  // what was typed last is kept; an exercise opens its own document after this
+  state_.practice.reset();
+  state_.check.reset();
   hooks_.changed();
 }
 
@@ -147,6 +151,7 @@ bool Session::beginFrame() {
 void Session::endFrame(double now) {
   if (state_.quitRequested && !state_.doc.dirty()) state_.quitConfirmed = true;
   recovery_.endFrame(now);
+  exercises_.endFrame();
 }
 
 std::optional<double> Session::wakeIn(double now) const {
@@ -161,10 +166,12 @@ void Session::start(Start start) {
   rememberLanguage_ = std::move(start.rememberLanguage);
   recovery_.offerRecoveries(std::move(start.recoveries));
   if (!start.autosaveDirectory.empty()) recovery_.enableAutosave(start.autosaveDirectory, kAutosaveDelay);
+  exercises_.keepOn(std::move(start.answers));
 }
 
 void Session::chooseLanguage(Language lang) {
   state_.display.language = lang;
+  if (state_.practice) setPracticeLanguage(*state_.practice, lang);
   if (!rememberLanguage_) return;
   try {
     rememberLanguage_(lang);

@@ -6,10 +6,12 @@
 //   SceneFiles   open, save, never over a bundled scene (app/session/scene_files.h)
 //   Recoveries   autosave and recovery (app/session/recoveries.h)
 //   Links        the page's address, both ways (app/session/links.h)
+//   Exercises    an exercise practised beside the views: open, Check, keep, Hand in (app/session/exercises.h)
 #pragma once
 
 #include "app/document/loader.h"
 #include "app/lessons/lesson.h"
+#include "app/session/exercises.h"
 #include "app/session/file_chooser.h"
 #include "app/session/links.h"
 #include "app/session/recoveries.h"
@@ -43,6 +45,7 @@ class Session {
   SceneFiles& files() { return files_; }
   Recoveries& recovery() { return recovery_; }
   Links& links() { return links_; }
+  Exercises& exercises() { return exercises_; }
   SceneLoader& loader() { return loader_; }
 
   // ------------------------------------------------------------ documents
@@ -100,6 +103,7 @@ class Session {
     std::function<void(Language)> rememberLanguage{};
     std::vector<Recovery> recoveries{};          // unsaved changes of sessions that ended, newest first
     std::filesystem::path autosaveDirectory{};   // where this session's are kept; empty: nowhere
+    AnswerShelf answers{};                       // where exercises' answers are kept; empty: nowhere
   };
   /// Starts as the platform found things: the language and how a choice is kept, the kept scenes
   /// offered, autosave after kAutosaveDelay seconds of quiet.
@@ -125,6 +129,7 @@ class Session {
   SceneFiles files_;
   Recoveries recovery_;
   Links links_;
+  Exercises exercises_;
 };
 
 /// Adds an object of `shape` where the camera looks, selected (the scene panel's "+ cube" …). A mesh

@@ -8,6 +8,7 @@
 #include "app/document/document.h"
 #include "app/inspect/picking.h"
 #include "app/lessons/lesson_player.h"
+#include "app/practice/practice.h"
 #include "app/views/views.h"
 #include "pipeline/pipeline.h"
 
@@ -94,6 +95,15 @@ struct LecturePart {
   int lessonScrollFrames = 0;   // the frames it is still scrolled to
 };
 
+/// An exercise being practised (issue 40): the sheet in the Tasks panel, the student's fields, the
+/// last Check (app/session/exercises.h).
+struct PracticePart {
+  std::optional<Practice> practice;
+  std::optional<PracticeCheck> check;  // of practice->edits == check->edits: the fields as they are
+  uint64_t keptEdits = 0;              // the fields' state last kept (the answer's autosave)
+  bool showTasks = false;              // bring the Tasks tab forward (an exercise opened)
+};
+
 /// How the window is laid out and drawn.
 struct LayoutPart {
   double worldAspect = 1.6;     // of the world view's image, for framing the observer
@@ -110,7 +120,7 @@ struct LayoutPart {
   int compactPanel = noPanel;
   bool compactShown = false;    // the last frame had the compact layout
   enum ControlsTab { cameraTab, sceneTab, clippingTab, displayTab, lectureTab };
-  enum InspectTab { probeTab, matricesTab, depthTab };
+  enum InspectTab { probeTab, matricesTab, depthTab, tasksTab };
   int controlsTab = cameraTab;
   int inspectTab = probeTab;
   float captionHeight = 0;      // the lesson's caption box, across the bottom of the layout (0: none)
@@ -136,7 +146,7 @@ struct StatusPart {
 };
 
 /// All the parts: what the viewer knows between frames, without the widgets' memory.
-struct ViewerModel : DocumentPart, ViewsPart, RunPart, EditPart, LecturePart, LayoutPart, StatusPart {
+struct ViewerModel : DocumentPart, ViewsPart, RunPart, EditPart, LecturePart, PracticePart, LayoutPart, StatusPart {
   explicit ViewerModel(Scene scene) : DocumentPart(std::move(scene)) {}
 };
 

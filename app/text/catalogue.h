@@ -18,6 +18,7 @@
 //   views.inc                        the labels and titles the views draw (also in exported pictures)
 //   camera.inc                       what makes a camera invalid (app/inspect/camera_text.cpp)
 //   page.inc                         the page's own texts (app/web/)
+//   practice.inc                     an exercise practised: the Tasks panel, Check, Hand in
 #pragma once
 
 #include "base/language.h"
@@ -45,6 +46,7 @@ inline constexpr Entry kCatalogue[] = {
 #include "app/text/views.inc"
 #include "app/text/camera.inc"
 #include "app/text/page.inc"
+#include "app/text/practice.inc"
 };
 // clang-format on
 

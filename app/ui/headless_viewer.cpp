@@ -1,5 +1,6 @@
 #include "app/ui/headless_viewer.h"
 
+#include "app/ui/keys.h"
 #include "base/error.h"
 
 #include <imgui.h>
@@ -12,6 +13,18 @@ HeadlessViewer::HeadlessViewer(GlContext& context, Scene scene, int width, int h
   viewer_.makeCurrent();
   ImGuiIO& io = ImGui::GetIO();
   io.MousePos = ImVec2(-1, -1);
+  // ImGui's own keys at the codes the window's GLFW backend maps them to (app/ui/keys.h): Tab moves
+  // between fields, Enter ends an edit, as in the window.
+  io.KeyMap[ImGuiKey_Tab] = keys::kTab;
+  io.KeyMap[ImGuiKey_Enter] = keys::kEnter;
+  io.KeyMap[ImGuiKey_KeyPadEnter] = keys::kKeypadEnter;
+  io.KeyMap[ImGuiKey_Escape] = keys::kEscape;
+  io.KeyMap[ImGuiKey_Backspace] = keys::kBackspace;
+  io.KeyMap[ImGuiKey_LeftArrow] = keys::kLeft;
+  io.KeyMap[ImGuiKey_RightArrow] = keys::kRight;
+  io.KeyMap[ImGuiKey_Home] = keys::kHome;
+  io.KeyMap[ImGuiKey_End] = keys::kEnd;
+  io.KeyMap[ImGuiKey_A] = 'A';
 }
 
 void HeadlessViewer::frame() {

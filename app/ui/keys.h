@@ -7,6 +7,8 @@ namespace vplab::keys {
 inline constexpr int kSpace = 32;
 inline constexpr int kEscape = 256;
 inline constexpr int kEnter = 257;
+inline constexpr int kTab = 258;
+inline constexpr int kBackspace = 259;
 inline constexpr int kRight = 262;
 inline constexpr int kLeft = 263;
 inline constexpr int kPageUp = 266;

@@ -89,9 +89,12 @@ inline Layout computeLayout(ImVec2 display, float menuHeight, float scale, float
 }
 
 /// Whether the lesson's current step shows its evidence in the inspector (its tab is one of the
-/// inspector's): the lesson layout then puts the inspector in the tall column.
+/// inspector's), or an exercise's Tasks tab is open (its fields need the height): the layout then
+/// puts the inspector in the tall column.
 inline bool lessonEvidenceInInspector(const ViewerState& s) {
-  if (!s.lesson || s.lectureMode) return false;
+  if (s.lectureMode) return false;
+  if (s.practice && s.inspectTab == ViewerState::tasksTab) return true;
+  if (!s.lesson) return false;
   const std::string& tab = s.lesson->current().state.tab;
   return tab == "probe" || tab == "matrices" || tab == "depth";
 }

@@ -53,6 +53,8 @@ void Menus::menuBar() {
       if (ImGui::MenuItem(ui::tr(s_, "Open scene…"), ui::tr(s_, "Ctrl+O"))) session_.files().chooseFileToOpen();
       if (ImGui::MenuItem(ui::tr(s_, "Save"), ui::tr(s_, "Ctrl+S"))) session_.files().save();
       if (ImGui::MenuItem(ui::tr(s_, "Save as…"), ui::tr(s_, "Ctrl+Shift+S"))) session_.files().saveAs();
+      if (ImGui::MenuItem(ui::tr(s_, "Open exercise…"))) session_.exercises().chooseFolder();
+      ui::recordRect("menu.openExercise");
     }
     if (ImGui::BeginMenu(ui::tr(s_, "Presets"), !session_.files().presets().empty())) {
       for (const SceneFileInfo& p : session_.files().presets())
@@ -63,6 +65,11 @@ void Menus::menuBar() {
       ImGui::EndMenu();
     }
     lessonsMenu();
+    // An exercise's answer, from wherever the Tasks are scrolled.
+    if (s_.practice) {
+      if (ImGui::MenuItem(ui::tr(s_, "Hand in…"))) session_.exercises().handIn();
+      ui::recordRect("menu.handIn");
+    }
     ImGui::Separator();
     const bool exportOpen = ImGui::BeginMenu(ui::tr(s_, "Export a view"));
     ui::recordRect("menu.export");

@@ -21,9 +21,9 @@ void PanelWindows::controls(float scale, bool relayout) {
   ui::placeNext(l, l.controls, relayout);
   ImGui::Begin(ui::tr(s_, "Controls###Controls"), nullptr, ui::layoutFlags(l, ImGuiWindowFlags_NoCollapse));
   const Scene& scene = s_.doc.scene();
-  // In a lesson the caption box says what to look at: the scene's own caption would leave the panel
-  // no room at a projector's scale.
-  if (!s_.lesson && (!scene.title.empty() || !scene.caption.empty())) {
+  // In a lesson the caption box says what to look at (the scene's own caption would leave the panel
+  // no room at a projector's scale), in an exercise the Tasks panel.
+  if (!s_.lesson && !s_.practice && (!scene.title.empty() || !scene.caption.empty())) {
     ImGui::PushStyleColor(ImGuiCol_Text, ui::accentColor());
     const std::string& title = titleIn(scene, s_.display.language);
     ImGui::TextWrapped("%s", title.empty() ? ui::tr(s_, "Scene") : title.c_str());
@@ -71,12 +71,18 @@ void PanelWindows::inspect(float scale, bool relayout) {
   // the panel scrolls.
   if (s_.probe && s_.probe != s_.probeShown) s_.inspectTab = ViewerState::probeTab;
   s_.probeShown = s_.probe;
+  // An exercise adds its Tasks, brought forward when it opens.
+  if (s_.showTasks && s_.practice) s_.inspectTab = ViewerState::tasksTab;
+  s_.showTasks = false;
+  if (!s_.practice && s_.inspectTab == ViewerState::tasksTab) s_.inspectTab = ViewerState::probeTab;
   ui::Widgets widgets(s_);
-  ui::tabRow(widgets, "inspect", {"Vertex probe", "Matrices", "Depth"}, s_.inspectTab);
+  if (s_.practice) ui::tabRow(widgets, "inspect", {"Vertex probe", "Matrices", "Depth", "Tasks"}, s_.inspectTab);
+  else ui::tabRow(widgets, "inspect", {"Vertex probe", "Matrices", "Depth"}, s_.inspectTab);
   if (ImGui::BeginChild("panel")) {
     switch (s_.inspectTab) {
       case ViewerState::probeTab: ui::probePanel(widgets, s_, s_); break;
       case ViewerState::matricesTab: ui::matricesPanel(widgets, s_, s_, s_); break;
+      case ViewerState::tasksTab: ui::tasksPanel(widgets, s_, session_.exercises()); break;
       default: ui::depthPanel(widgets, s_, s_); break;
     }
   }
@@ -115,7 +121,16 @@ void PanelWindows::compactSwitcher(float scale) {
   ImGui::SameLine();
   for (const auto& [panel, name, id] : {std::tuple{int(ViewerState::controlsPanel), text::Text("Controls"), "switch.controls"},
                                         std::tuple{int(ViewerState::inspectPanel), text::Text("Inspect"), "switch.inspect"}})
-    if (choice(ui::tr(s_, name), id, s_.compactPanel == panel)) s_.compactPanel = s_.compactPanel == panel ? ViewerState::noPanel : panel;
+    if (choice(ui::tr(s_, name), id, s_.compactPanel == panel && !(s_.practice && s_.inspectTab == ViewerState::tasksTab)))
+      s_.compactPanel = s_.compactPanel == panel ? ViewerState::noPanel : panel;
+  // An exercise's Tasks: the inspector with its Tasks tab.
+  if (s_.practice) {
+    const bool tasksShown = s_.compactPanel == ViewerState::inspectPanel && s_.inspectTab == ViewerState::tasksTab;
+    if (choice(ui::tr(s_, "Tasks"), "switch.tasks", tasksShown)) {
+      s_.compactPanel = tasksShown ? ViewerState::noPanel : ViewerState::inspectPanel;
+      s_.inspectTab = ViewerState::tasksTab;
+    }
+  }
   ImGui::End();
   ImGui::PopStyleVar();
 }

@@ -2,6 +2,7 @@
 // the view settings in place; the viewer records every change for undo.
 #pragma once
 
+#include "app/session/exercises.h"
 #include "app/session/file_chooser.h"
 #include "app/ui/widgets.h"
 
@@ -27,5 +28,7 @@ void lecturePanel(Widgets& w, ViewsPart& v, const DocumentPart& d, const RunPart
                   LayoutPart& l);
 /// The depth plot: NPC z against VRC z, and what depth buffers resolve.
 void depthPanel(Widgets& w, const RunPart& r, const LayoutPart& l);
+/// An exercise's tasks, the student's fields, Check and Hand in (issue 40).
+void tasksPanel(Widgets& w, PracticePart& p, Exercises& exercises);
 
 }  // namespace vplab::ui

@@ -172,8 +172,11 @@ int runViewerWindow(ViewerLaunch launch) {
                 << (r.scenePath.empty() ? std::string("the default lecture scene") : r.scenePath.string())
                 << " from a session that did not end normally; the viewer offers to recover them\n";
   }
+  // An exercise's answers are kept beside the recovery files, one per exercise (app/session/exercises.h).
+  if (!start.autosaveDirectory.empty()) start.answers = AnswerShelf::inDirectory(start.autosaveDirectory / "answers");
   viewer.session().start(std::move(start));
   if (!launch.lesson.empty()) viewer.session().openLesson(launch.lesson, launch.lessonStep);
+  if (!launch.exercise.empty()) viewer.session().exercises().openFolder(launch.exercise, launch.reveal);
   try {
     const int status = loop(window, viewer, input, signals, launch);
     // The views' render thread finishes the image it is drawing before the viewer ends (a GL draw

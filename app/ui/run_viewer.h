@@ -2,6 +2,7 @@
 #pragma once
 
 #include "base/language.h"
+#include "course/grade_report.h"
 #include "pipeline/scene.h"
 
 #include <functional>
@@ -27,6 +28,8 @@ struct ViewerLaunch {
   Scene scene;
   std::string lesson;               // a lesson file to present (docs/lecturers.md "Lessons"), or empty
   size_t lessonStep = 0;            // its step to open, from 0
+  std::string exercise;             // an exercise's folder to practise (`vplab exercise --out DIR`), or empty
+  Reveal reveal = Reveal::stages;   // what Check shows of the reference (course/grade_report.h)
   int width = 1280, height = 720;   // the window, in screen units
   float uiScale = 1.f;              // larger fonts and handles for projectors
   std::optional<Language> language; // --lang; else the remembered choice, else the locale's (app/document/preferences.h)

@@ -2,6 +2,7 @@
 //
 // Index: 1 helpers  2 drawing a view  3 the windows (the mouse in them: view_mouse.cpp)
 #define IMGUI_DEFINE_MATH_OPERATORS
+#include "app/session/exercises.h"
 #include "app/ui/layout.h"
 #include "app/inspect/camera_text.h"
 #include "app/lessons/lesson_marks.h"
@@ -182,6 +183,7 @@ void ViewPanes::viewWindows() {
   hl.vanishingObject = s_.selectedObject;
   stepHighlight();
   ui::addLessonMarks(s_, hl);
+  hl.student = studentMarks(s_, s_.stepThrough);
 
   if (!ImGui::IsMouseDown(ImGuiMouseButton_Left) && !ImGui::IsMouseDown(ImGuiMouseButton_Right) &&
       !ImGui::IsMouseDown(ImGuiMouseButton_Middle))

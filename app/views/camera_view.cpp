@@ -5,6 +5,7 @@
 #include "app/text/catalogue.h"
 #include "app/views/batches.h"
 #include "app/views/number_text.h"
+#include "app/views/student_marks.h"
 #include "app/views/theme.h"
 #include "app/views/views.h"
 
@@ -128,6 +129,7 @@ DisplayList cameraView(const ViewInput& in) {
   const PixelsFromDc pixels{{double(w) / run.device.width, double(h) / run.device.height}};
   Marks marks;
   if (in.highlights.probeDc) marks.point(pixels(*in.highlights.probeDc), pal.probe, 14.f);
+  studentDcMarks(in.highlights.student, pal, pixels, marks);
   if (s.overlays.cpuPolygons) {
     std::vector<Vec3> poly;
     for (const ObjectRun& o : run.objects) {

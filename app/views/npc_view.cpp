@@ -3,6 +3,7 @@
 // an orbiting observer. The filled polygons are the CPU clipper's output; what it cut away is shown
 // faded, as far as it lies in front of the eye (w > 0) and not too far outside the cube.
 #include "app/views/batches.h"
+#include "app/views/student_marks.h"
 #include "app/views/theme.h"
 #include "app/views/view_geometry.h"
 #include "app/views/views.h"
@@ -209,6 +210,7 @@ void npcView(const ViewInput& in, DisplayList& list) {
   // are not pushed back).
   cube.emit(list, Space::npc, Depth::test, scale, /*pushedBack=*/true);
   if (in.highlights.probeNpc) newEdges.point(*in.highlights.probeNpc, pal.probe, 14.f);
+  studentNpcMarks(in.highlights.student, pal, newEdges);
   // A lesson's highlighted planes of the view volume: faces of the cube, outlined.
   for (int plane : in.highlights.planes) {
     if (plane < 0 || plane >= kPlaneCount) continue;

@@ -33,6 +33,7 @@ struct Palette {
   glm::vec4 window, windowFill;
   glm::vec4 newEdge, cube, cubeFront, text, cpuPolygon, clipPlane, stepPlane;
   glm::vec4 probe, handle, handleHot;
+  glm::vec4 student;       // an exercise's numbers as the student gave them (app/practice/practice_marks.h)
   glm::vec3 labelOutline;  // the outline that keeps labels readable on the ground
   float frustumWidthPx, windowWidthPx, windowDashPx, projectorDashPx;
   float edgeWidthPx;       // the scene objects' edges
@@ -53,6 +54,7 @@ inline constexpr Palette kDark{
   /* cpuPolygon */ {1.f, 0.93f, 0.2f, 0.95f}, /* clipPlane */ {0.95f, 0.45f, 0.75f, 0.13f},
   /* stepPlane */ {1.f, 0.35f, 0.3f, 0.22f},
   /* probe */ {1.f, 1.f, 1.f, 1.f}, /* handle */ {0.95f, 0.95f, 0.95f, 0.55f}, /* handleHot */ {1.f, 0.85f, 0.25f, 1.f},
+  /* student */ {1.f, 0.35f, 0.85f, 1.f},
   /* labelOutline */ {0.f, 0.f, 0.f},
   /* frustumWidthPx */ 2.f, /* windowWidthPx */ 2.f, /* windowDashPx */ 0.f, /* projectorDashPx */ 5.f,
   /* edgeWidthPx */ 1.5f, /* inkScale */ 1.f, /* fadedAlpha */ 0.22f,
@@ -70,6 +72,7 @@ inline constexpr Palette kLight{
   /* cpuPolygon */ {0.85f, 0.4f, 0.f, 0.95f}, /* clipPlane */ {0.7f, 0.1f, 0.45f, 0.13f},
   /* stepPlane */ {0.8f, 0.1f, 0.1f, 0.18f},
   /* probe */ {0.f, 0.f, 0.f, 1.f}, /* handle */ {0.2f, 0.2f, 0.2f, 0.55f}, /* handleHot */ {0.85f, 0.4f, 0.f, 1.f},
+  /* student */ {0.75f, 0.f, 0.6f, 1.f},
   /* labelOutline */ {1.f, 1.f, 1.f},
   /* frustumWidthPx */ 1.5f, /* windowWidthPx */ 3.5f, /* windowDashPx */ 9.f, /* projectorDashPx */ 2.5f,
   /* edgeWidthPx */ 2.5f, /* inkScale */ 0.55f, /* fadedAlpha */ 0.5f,

@@ -94,6 +94,21 @@ struct Highlights {
   std::vector<int> planes;
   std::vector<int> axes;
   int vanishingObject = -1;  // scene index of the object whose vanishing points are drawn
+  /// An exercise's numbers as the student gave them (app/practice/practice_marks.h), drawn in the
+  /// student's colour beside the lab's: points as rings, polygons and the view volume dashed.
+  struct Student {
+    std::vector<Vec3> pointsWc;   // their P1 in WC, and their P1 in VRC placed in WC by the lab's wcFromVrc
+    std::vector<Vec3> pointsNpc;  // their P1 in NPC (their homogeneous NPC divided by their w)
+    std::vector<Vec3> pointsDc;   // their P1 in DC
+    std::vector<Vec3> labWc, labNpc, labDc;  // the lab's P1, shown only when the exercise reveals values
+    std::vector<Vec3> polygonWc;  // the polygon placed in WC by their wcFromMc
+    std::vector<Vec3> polygonNpc; // their polygon after a Sutherland–Hodgman pass, divided by their w
+    std::vector<Vec3> polygonDc;  // their clipped polygon in DC
+    std::vector<Vec3> volumeWc;   // their view volume: the NPC cube's corners (cubeCorner order) by their matrices
+    bool operator==(const Student&) const = default;
+    bool empty() const { return *this == Student{}; }
+  };
+  Student student;
   bool operator==(const Highlights&) const = default;
 };
 

@@ -4,6 +4,7 @@
 // the CPU clipper created are highlighted (lecture notes 15.1, figures 15.1–15.5).
 #include "app/text/catalogue.h"
 #include "app/views/batches.h"
+#include "app/views/student_marks.h"
 #include "app/views/theme.h"
 #include "app/views/view_geometry.h"
 #include "app/views/views.h"
@@ -214,6 +215,7 @@ DisplayList worldView(const ViewInput& in) {
     if (m.hot) label(m.wc, handleLabel(m.name, lang), pal.handleHot, {10, -12}, kHot);
   }
   if (hl.probeWc) b.point(*hl.probeWc, pal.probe, 14.f);
+  studentWorldMarks(hl.student, pal, b);
   // A lesson's highlighted planes: a face of the view volume as the step-through shows its plane,
   // outlined; a user clip plane's square outlined thick. Its highlighted axis: drawn over, thicker.
   for (int plane : hl.planes) {

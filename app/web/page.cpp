@@ -16,6 +16,7 @@
 #include "app/ui/widgets.h"
 #include "app/ui/window_input.h"
 #include "app/web/page_services.h"
+#include "course/mistake_models.h"
 #include "io/dump.h"
 #include "io/limits.h"
 #include "base/error.h"
@@ -110,7 +111,8 @@ struct Page {
     viewer.session().start({.language = page::language(),
                             .rememberLanguage = rememberLanguage,
                             .recoveries = keptRecoveries(),
-                            .autosaveDirectory = kStateDir});
+                            .autosaveDirectory = kStateDir,
+                            .answers = page::answerShelf()});
     showLink(page::locationHash(), /*atStart=*/true);
   }
 
@@ -253,6 +255,34 @@ struct Page {
     nextWake = 0;
   }
 
+  /// The exercise practised (issue 40), for the browser tests: its fields in the sheet's order (their
+  /// rects' ids, what they hold), and the last Check.
+  static nlohmann::json exerciseJson(const ViewerState& s) {
+    const Practice& p = *s.practice;
+    nlohmann::json fields = nlohmann::json::array();
+    static constexpr const char* kKinds[] = {"number", "vector", "matrix", "outcode", "polygon"};
+    for (const ItemFields& f : p.fields)
+      fields.push_back({{"path", f.item.path}, {"kind", kKinds[size_t(f.kind)]}, {"rows", f.rows}, {"columns", f.columns},
+                        {"texts", f.texts}});
+    nlohmann::json e = {{"key", exerciseKey(p.ref)}, {"reveal", toString(p.reveal)}, {"fields", fields}, {"edits", p.edits}};
+    if (s.check) {
+      e["check"] = {{"edits", s.check->edits},
+                    {"points", s.check->grade.points},
+                    {"maxPoints", s.check->grade.maxPoints},
+                    {"passed", s.check->report.passed},
+                    {"mistake", s.check->grade.mistake ? std::string(mistakeModel(*s.check->grade.mistake).key) : ""},
+                    {"diagnosis", s.check->report.diagnosis},
+                    {"items", [&] {
+                       nlohmann::json items = nlohmann::json::array();
+                       for (const GradeCase& c : s.check->report.cases)
+                         items.push_back({{"name", c.name}, {"passed", c.passed}, {"message", c.message}, {"details", c.details}});
+                       return items;
+                     }()},
+                    {"seconds", s.check->seconds}};
+    }
+    return e;
+  }
+
   /// The state the browser tests read (window.vplab.state()).
   std::string stateJson() {
     const ViewerState& s = viewer.state();
@@ -284,6 +314,7 @@ struct Page {
                      {"step", s.lesson->step() + 1},  // from 1, as the caption box and the link count
                      {"steps", s.lesson->stepCount()},
                      {"settled", s.lesson->settled()}};
+    if (s.practice) j["exercise"] = exerciseJson(s);
     j["embed"] = nlohmann::json::array();
     for (ViewKind v : s.embedViews) j["embed"].push_back(std::string(toString(v)));
     nlohmann::json rects = nlohmann::json::object();

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdlib>
+#include <optional>
 #include <memory>
 #include <system_error>
 
@@ -26,6 +27,16 @@ EM_JS(char*, jsKeptScenes, (), {
 });
 EM_JS(void, jsDropKeptScene, (const char* key), { vplabPage.dropKeptScene(UTF8ToString(key)); });
 EM_JS(int, jsStoreRecovery, (const char* text), { return vplabPage.storeRecovery(UTF8ToString(text)) ? 1 : 0; });
+// An exercise's answer as the student types it (issue 40), one per exercise and shared by the tabs.
+EM_JS(char*, jsKeptAnswer, (const char* key), {
+  var s = null;
+  try { s = localStorage.getItem("vplab.answer." + UTF8ToString(key)); } catch (e) {}
+  if (s === null) return 0;
+  var n = lengthBytesUTF8(s) + 1; var p = _malloc(n); stringToUTF8(s, p, n); return p;
+});
+EM_JS(int, jsStoreAnswer, (const char* key, const char* text), {
+  try { localStorage.setItem("vplab.answer." + UTF8ToString(key), UTF8ToString(text)); return 1; } catch (e) { return 0; }
+});
 EM_JS(int, jsLanguageIsGerman, (), { return vplabPage.language() === "de" ? 1 : 0; });
 EM_JS(int, jsRememberLanguage, (const char* code), { return vplabPage.rememberLanguage(UTF8ToString(code)) ? 1 : 0; });
 EM_JS(void, jsReplaceLocationHash, (const char* fragment), { vplabPage.replaceHash(UTF8ToString(fragment)); });
@@ -109,6 +120,19 @@ std::vector<KeptScene> keptScenes() {
 void dropKeptScene(const std::string& key) { jsDropKeptScene(key.c_str()); }
 
 bool storeRecovery(const std::string& text) { return jsStoreRecovery(text.c_str()) != 0; }
+
+AnswerShelf answerShelf() {
+  AnswerShelf shelf;
+  shelf.load = [](const std::string& key) -> std::optional<std::string> {
+    char* text = jsKeptAnswer(key.c_str());
+    if (!text) return std::nullopt;
+    std::string kept(text);
+    std::free(text);
+    return kept;
+  };
+  shelf.store = [](const std::string& key, const std::string& text) { return jsStoreAnswer(key.c_str(), text.c_str()) != 0; };
+  return shelf;
+}
 
 Language language() { return jsLanguageIsGerman() ? Language::de : Language::en; }
 bool rememberLanguage(Language lang) { return jsRememberLanguage(lang == Language::de ? "de" : "en") != 0; }

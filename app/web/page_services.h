@@ -6,6 +6,7 @@
 // changes is left. The DOM side is in index.html (vplabPage).
 #pragma once
 
+#include "app/session/exercises.h"
 #include "app/session/file_chooser.h"
 #include "base/language.h"
 
@@ -68,6 +69,9 @@ void dropKeptScene(const std::string& key);
 /// Keeps `text` (this tab's autosave file) in localStorage; an empty text removes it. Returns
 /// false when the browser refused (storage full or disabled).
 bool storeRecovery(const std::string& text);
+/// Where an exercise's answers are kept: localStorage ("vplab.answer.KEY", exerciseKey), shared by
+/// the page's tabs (the latest typed wins), surviving a reload (issue 40).
+AnswerShelf answerShelf();
 /// The page's language (index.html decides it before the lab starts): View ▸ Language's choice kept in
 /// localStorage ("vplab.language"), else the browser's (navigator.languages: German for "de…", else English).
 Language language();

@@ -39,6 +39,7 @@ TEST_F(ClassCli, AMoodleClassRoundTrips) {
   for (const char* id : {"101", "7", "12"}) {
     EXPECT_TRUE(fs::exists(dir_ / "week/students" / id / "sheet.md")) << id;
     EXPECT_TRUE(fs::exists(dir_ / "week/students" / id / "answer.json")) << id;
+    EXPECT_TRUE(fs::exists(dir_ / "week/students" / id / "exercise.json")) << id;  // it opens in the viewer (issue 40)
     EXPECT_FALSE(fs::exists(dir_ / "week/students" / id / "solution.json")) << id;  // the key stays with the staff
     EXPECT_TRUE(fs::exists(dir_ / "week/staff" / id / "solution.json")) << id;
     EXPECT_TRUE(fs::exists(dir_ / "week/staff" / id / "assignment.json")) << id;

@@ -3,7 +3,9 @@
 // error cases and `vplab dump`'s give a clear message on stderr and a non-zero exit, and write no
 // file; without a display, `vplab` says so and leaves a dump and a picture instead. Also the check
 // half of the Xvfb smoke test (tests/CMakeLists.txt runs the window first).
+#include "app/practice/practice.h"
 #include "app/render/headless.h"
+#include "course/mistake_models.h"
 #include "app/export/image_compare.h"
 #include "io/dump.h"
 #include "io/scene_io.h"
@@ -56,7 +58,7 @@ class Cli : public test::ProcessTest {
   /// 240 bytes and is unloaded before the check, so no suppression can name it
   /// (tests/sanitizers/lsan.supp).
   ProcessResult windowVplab(const std::string& args, const std::string& env = "") {
-    const std::string inner = env + (env.empty() ? "" : " ") + "XDG_STATE_HOME=state ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\" " +
+    const std::string inner = env + (env.empty() ? "" : " ") + "XDG_STATE_HOME=\"$PWD/state\" ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\" " +
                               shellQuoted(VPLAB_EXE) + " " + args + "; echo $? > vplab-status";
     ProcessResult r = sh("xvfb-run -a -s '-screen 0 1280x800x24' sh -c " + shellQuoted(inner));
     std::ifstream status(dir_ / "vplab-status");
@@ -463,6 +465,44 @@ TEST_F(Cli, TheWindowSpeaksTheRememberedLanguageAndLangOverridesIt) {
   const ProcessResult bad = vplab("--lang fr");
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_THAT(bad.err, HasSubstr("--lang"));
+}
+
+// An exercise's folder in the real window (issue 40): the Tasks panel beside the views, and the answer
+// kept of an earlier session (its divide-first passes) drawn in the student's colour in the views;
+// without a kept answer, nothing of that colour is in the views. A bad folder ends before a window opens.
+TEST_F(Cli, TheWindowPractisesAnExerciseFolderAndDrawsTheKeptAnswer) {
+  ASSERT_EQ(vplab("exercise --seed 3 --topic clipping --out ex").exitCode, 0);
+  Practice practice = openPracticeFolder(dir_ / "ex", Reveal::stages, Language::en);
+  for (const auto& [id, dump] : practice.grading.models) {
+    if (id != Mistake::divideFirst) continue;
+    for (ItemFields& f : practice.fields) {
+      if (f.kind != FieldKind::polygon) continue;
+      const nlohmann::ordered_json& v = dump[nlohmann::ordered_json::json_pointer(f.item.path)];
+      f.setRows(int(v.size()));
+      for (int r = 0; r < f.rows; ++r)
+        for (int c = 0; c < f.columns; ++c) f.text(r, c) = std::to_string(v[size_t(r)][size_t(c)].get<double>());
+    }
+  }
+  // The views' part of the window (the tall column on the left holds the Tasks at 1280 × 800).
+  auto studentPixels = [](const Image& shot) {
+    size_t n = 0;
+    for (int y = 30; y < shot.height; ++y)
+      for (int x = 440; x < shot.width; ++x) {
+        const Rgba& c = shot.pixels[size_t(y) * size_t(shot.width) + size_t(x)];
+        // The student's colour (255 89 217) and its antialiased edges; not VUP's violet (230 115 242).
+        n += c.r > 150 && c.b > 0.6 * c.r && c.b < 0.95 * c.r && c.g < 0.42 * c.r;
+      }
+    return n;
+  };
+  ASSERT_EQ(windowVplab("--exercise ex --quit-after-frames 30 --screenshot fresh.png").exitCode, 0);
+  EXPECT_LT(studentPixels(readPng(dir_ / "fresh.png")), 20u) << "nothing typed, nothing of the student's drawn";
+  fs::create_directories(dir_ / "state/vplab/answers");
+  writeFile(dir_ / "state/vplab/answers/clipping-3-perspective.json", practiceAnswer(practice).dump());
+  ASSERT_EQ(windowVplab("--exercise ex --lang de --quit-after-frames 30 --screenshot kept.png").exitCode, 0);
+  EXPECT_GT(studentPixels(readPng(dir_ / "kept.png")), 150u) << "the kept passes and DC polygon, dashed";
+  const ProcessResult bad = vplab("--exercise .", "env -u DISPLAY");
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_THAT(bad.err, HasSubstr("exercise.json"));
 }
 
 // ---------------------------------------------------------------- the Xvfb smoke test's check

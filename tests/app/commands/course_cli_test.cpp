@@ -47,7 +47,7 @@ TEST_F(Course, ExerciseTwiceWritesTheSameBytes) {
     ++files;
     EXPECT_EQ(readFile(e.path()), readFile(dir_ / "b" / e.path().filename())) << e.path().filename();
   }
-  EXPECT_EQ(files, 12u);  // sheet and solution .md/.tex, scene.json, answer.json, solution.json, assignment.json,
+  EXPECT_EQ(files, 13u);  // sheet and solution .md/.tex, scene.json, exercise.json, answer.json, solution.json, assignment.json,
                           // world and npc .svg/.png
   // The key passes the assignment with every point; the template fails it, every item missing.
   ProcessResult key = vplab("grade numbers --assignment a/assignment.json --student a/solution.json --json");

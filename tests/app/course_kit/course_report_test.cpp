@@ -1,7 +1,7 @@
 // The reports of `vplab grade` (app/course_kit/grade_report.h, issue 21): hints that do not contradict
 // themselves and only when a model explains most of what is wrong, counts that are right ("… and N
 // more"), German feedback, and a report (JUnit with an <error>) for an answer that cannot be graded.
-#include "app/course_kit/grade_report.h"
+#include "app/course_kit/image_report.h"
 #include "course/mistake_models.h"
 #include "io/scene_io.h"
 

@@ -121,5 +121,43 @@ TEST(UrlState, HostileFragmentsAreNamedErrors) {
   EXPECT_THAT(error("zoom\x01=2"), HasSubstr("\"zoom?\""));  // control characters are not echoed
 }
 
+// An exercise (issue 40): its topic, seed, student's id and projection, and what Check reveals; the
+// whole state, as a lesson's step is.
+TEST(UrlState, AnExerciseLinkRoundTripsAndItsProjectionIsTheExercises) {
+  const UrlState s = decodeUrlState("#exercise=clipping&seed=7&id=100&projection=parallel&reveal=values");
+  ASSERT_TRUE(s.exercise);
+  EXPECT_EQ(s.exercise->spec.topic, ExerciseTopic::clipping);
+  EXPECT_EQ(s.exercise->spec.seed, 7u);
+  EXPECT_EQ(s.exercise->spec.projection, Projection::parallel);
+  EXPECT_EQ(s.exercise->studentId, "100");
+  EXPECT_EQ(s.reveal, Reveal::values);
+  EXPECT_TRUE(s.camera.empty()) << "projection= is the exercise's";
+  EXPECT_EQ(encodeUrlState(s), "exercise=clipping&seed=7&id=100&projection=parallel&reveal=values");
+  EXPECT_EQ(decodeUrlState(encodeUrlState(s)), s);
+  const UrlState plain = decodeUrlState("exercise=pipeline&seed=4");
+  EXPECT_EQ(plain.exercise->spec.projection, Projection::perspective);
+  EXPECT_EQ(encodeUrlState(plain), "exercise=pipeline&seed=4");
+}
+
+TEST(UrlState, ABadExerciseLinkNamesItsKey) {
+  auto error = [](const std::string& fragment) {
+    try {
+      decodeUrlState(fragment);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_THAT(error("exercise=shading&seed=1"), HasSubstr("exercise=\"shading\""));
+  EXPECT_THAT(error("exercise=clipping&seed=-3"), HasSubstr("seed=\"-3\""));
+  EXPECT_THAT(error("exercise=clipping&seed=1234567890123456789"), HasSubstr("seed="));
+  EXPECT_THAT(error("exercise=clipping&seed=1&id=../etc"), HasSubstr("id=\"../etc\""));
+  EXPECT_THAT(error("exercise=clipping&seed=1&reveal=all"), HasSubstr("reveal=\"all\""));
+  EXPECT_THAT(error("exercise=clipping"), HasSubstr("needs its seed"));
+  EXPECT_THAT(error("seed=3"), HasSubstr("no exercise=TOPIC"));
+  EXPECT_THAT(error("exercise=clipping&seed=3&vrp=1,2,3"), HasSubstr("an exercise is its own scene"));
+  EXPECT_THAT(error("exercise=clipping&seed=3&lesson=01-synthetic-camera"), HasSubstr("an exercise is its own scene"));
+}
+
 }  // namespace
 }  // namespace vplab

@@ -375,5 +375,108 @@ TEST(Session, AnObjectIsAddedWhereTheCameraLooksAndAMeshIsReadOnTheWorker) {
   EXPECT_EQ(lab.model.doc.scene().objects.back().shape, Shape::mesh);
 }
 
+// ---------------------------------------------------------------- exercises (issue 40)
+
+ExerciseRef pipelineSheet() { return {ExerciseSpec{4, ExerciseTopic::pipeline, Projection::perspective}, "100", Language::en}; }
+
+TEST(SessionExercises, AnExerciseBecomesTheDocumentAndEndsWithTheNextOne) {
+  Lab lab;
+  ASSERT_TRUE(lab.session.exercises().open(pipelineSheet(), Reveal::stages));
+  ASSERT_TRUE(lab.model.practice);
+  EXPECT_EQ(lab.model.doc.scene(), lab.model.practice->exercise.scene);
+  EXPECT_TRUE(lab.model.display.overlays.vertexNames) << "the sheet names P1 … Pn, so do the views";
+  EXPECT_TRUE(lab.model.showTasks);
+  EXPECT_FALSE(lab.model.doc.dirty());
+  lab.session.newDocument();
+  EXPECT_FALSE(lab.model.practice) << "a new document ends the exercise";
+}
+
+TEST(SessionExercises, AClippingSheetStepsThroughItsPolygon) {
+  Lab lab;
+  ASSERT_TRUE(lab.session.exercises().open({ExerciseSpec{7, ExerciseTopic::clipping, Projection::perspective}, "", Language::en},
+                                           Reveal::stages));
+  EXPECT_TRUE(lab.model.stepThrough.active);
+  EXPECT_EQ(lab.model.stepThrough.object, 0);
+}
+
+TEST(SessionExercises, WhatWasTypedIsKeptPerExerciseAndComesBackInTheNextSession) {
+  TempDir dir;
+  const fs::path shelf = dir.path / "answers";
+  {
+    Lab lab;
+    lab.session.start({.answers = AnswerShelf::inDirectory(shelf)});
+    ASSERT_TRUE(lab.session.exercises().open(pipelineSheet(), Reveal::stages));
+    lab.model.practice->fields[0].texts[3] = "5/2";
+    ++lab.model.practice->edits;
+    lab.session.endFrame(0);
+    EXPECT_TRUE(fs::exists(shelf / "pipeline-4-perspective-100.json"));
+  }
+  Lab next;
+  next.session.start({.answers = AnswerShelf::inDirectory(shelf)});
+  ASSERT_TRUE(next.session.exercises().open(pipelineSheet(), Reveal::stages));
+  EXPECT_EQ(next.model.practice->fields[0].texts[3], "5/2");
+  // Another exercise keeps its own.
+  ASSERT_TRUE(next.session.exercises().open({ExerciseSpec{5, ExerciseTopic::pipeline, Projection::perspective}, "100", Language::en},
+                                            Reveal::stages));
+  EXPECT_EQ(next.model.practice->fields[0].texts[3], "");
+}
+
+TEST(SessionExercises, AShelfThatCannotKeepTheAnswerSaysSoOnceAndTheFieldsStay) {
+  Lab lab;
+  int stored = 0;
+  lab.session.start({.answers = AnswerShelf{[](const std::string&) { return std::nullopt; },
+                                            [&](const std::string&, const std::string&) { return ++stored, false; }}});
+  ASSERT_TRUE(lab.session.exercises().open(pipelineSheet(), Reveal::stages));
+  lab.model.practice->fields[0].texts[0] = "1";
+  ++lab.model.practice->edits;
+  lab.session.endFrame(0);
+  EXPECT_TRUE(lab.model.statusIsError);
+  EXPECT_THAT(lab.model.status, HasSubstr("could not be kept"));
+  lab.model.setStatus("", false);
+  ++lab.model.practice->edits;
+  lab.session.endFrame(0);
+  EXPECT_EQ(stored, 2);
+  EXPECT_TRUE(lab.model.status.empty()) << "said once";
+  EXPECT_EQ(lab.model.practice->fields[0].texts[0], "1");
+}
+
+TEST(SessionExercises, HandInAsksWhereAndWritesTheAnswerFile) {
+  TempDir dir;
+  Lab lab;
+  ASSERT_TRUE(lab.session.exercises().open(pipelineSheet(), Reveal::stages));
+  lab.model.practice->fields[0].texts[0] = "1";
+  lab.session.exercises().handIn();
+  ASSERT_TRUE(lab.asked);
+  EXPECT_EQ(lab.asked->mode, FileChooser::Mode::save);
+  EXPECT_EQ(lab.asked->start.filename(), "answer.json");
+  lab.choose(dir.path / "answer.json");
+  EXPECT_THAT(readFile(dir.path / "answer.json"), HasSubstr("\"1\""));
+  EXPECT_THAT(lab.model.status, HasSubstr("answer.json"));
+}
+
+TEST(SessionExercises, AFolderThatIsNoExerciseIsNamedAndTheSceneStays) {
+  TempDir dir;
+  Lab lab;
+  const Scene before = lab.model.doc.scene();
+  EXPECT_FALSE(lab.session.exercises().openFolder(dir.path, Reveal::stages));
+  EXPECT_TRUE(lab.model.statusIsError);
+  EXPECT_THAT(lab.model.status, HasSubstr("exercise.json"));
+  EXPECT_EQ(lab.model.doc.scene(), before);
+  EXPECT_FALSE(lab.model.practice);
+}
+
+TEST(SessionExercises, AnExerciseLinkOpensItAndTheShownStateIsItsLink) {
+  Lab lab;
+  lab.session.links().showUrlState(decodeUrlState("#exercise=clipping&seed=7&id=100&reveal=values"), true);
+  ASSERT_TRUE(lab.model.practice);
+  EXPECT_EQ(lab.model.practice->ref.spec.seed, 7u);
+  EXPECT_EQ(lab.model.practice->reveal, Reveal::values);
+  EXPECT_EQ(encodeUrlState(lab.session.links().urlState()), "exercise=clipping&seed=7&id=100&reveal=values");
+  // The same link again (the page hears its own address) keeps what was typed.
+  lab.model.practice->fields[0].setRows(1);
+  lab.session.links().showUrlState(decodeUrlState("exercise=clipping&seed=7&id=100&reveal=values"), false);
+  EXPECT_EQ(lab.model.practice->fields[0].rows, 1);
+}
+
 }  // namespace
 }  // namespace vplab

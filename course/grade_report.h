@@ -3,7 +3,7 @@
 // the lecture's German (--lang de). A malformed or unreadable answer gets a report too (errorReport):
 // the student always learns what was wrong with the file.
 #pragma once
-#include "app/course_kit/grade_image.h"
+#include "base/enum_table.h"
 #include "course/grading.h"
 #include "base/language.h"
 
@@ -48,15 +48,20 @@ struct GradeReport {
 /// first departing stage and the mistake named, no reference value; none: only which values are
 /// wrong and the points.
 enum class Reveal { values, stages, none };
-std::optional<Reveal> revealFromString(std::string_view s);
+inline constexpr EnumTable<Reveal, 3> kRevealNames = {
+    {{Reveal::values, "values"}, {Reveal::stages, "stages"}, {Reveal::none, "none"}}};
+constexpr const auto& namesOf(Reveal) { return kRevealNames; }
 
 GradeReport numbersReport(const NumbersGrade& grade, const std::string& student, const std::string& scene,
                           Language lang = Language::en, Reveal reveal = Reveal::values);
-GradeReport imageReport(const ImageGrade& grade, const std::string& student, const std::string& scene,
-                        const std::string& differenceFile, Language lang = Language::en);
 /// The report of an answer that could not be graded (malformed, unreadable): `error` names the problem.
 GradeReport errorReport(const std::string& kind, const std::string& student, const std::string& scene,
                         const std::string& error, Language lang = Language::en);
+
+/// The report's number and name texts, for the image report (app/course_kit/image_report.h):
+/// `v` with `places` decimals; `s` in the language's quotation marks.
+std::string fixed(double v, int places);
+std::string quoted(std::string_view s, Language lang);
 
 /// The student's id from the answer file's name: "alice.json" → "alice".
 std::string studentIdOf(const std::string& file);
