@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <string>
+#include <string_view>
 
 namespace vplab::ui {
 
@@ -33,8 +34,8 @@ ImVec4 verdictColour(FieldVerdict v) {
   }
 }
 
-/// One field: its text as typed. Returns whether it changed.
-bool field(Widgets& w, PracticePart& p, ItemFields& f, int row, int column, float width) {
+/// One field: its text as typed, in the font scaled by `fontScale`. Returns whether it changed.
+bool field(Widgets& w, PracticePart& p, ItemFields& f, int row, int column, float width, float fontScale = 1.f) {
   std::string& text = f.text(row, column);
   const std::string path = f.path(row, column);
   FieldVerdict verdict = FieldVerdict::unchecked;
@@ -47,7 +48,9 @@ bool field(Widgets& w, PracticePart& p, ItemFields& f, int row, int column, floa
     ImGui::PushStyleColor(ImGuiCol_Border, frame);
   }
   ImGui::SetNextItemWidth(width);
+  if (fontScale != 1.f) ImGui::SetWindowFontScale(fontScale);
   const bool changed = ImGui::InputText(("##" + path).c_str(), &text, ImGuiInputTextFlags_AutoSelectAll);
+  if (fontScale != 1.f) ImGui::SetWindowFontScale(1.f);
   recordRect(("task" + path).c_str());
   if (framed) {
     ImGui::PopStyleColor();
@@ -70,14 +73,24 @@ bool itemFields(Widgets& w, PracticePart& p, ItemFields& f) {
   auto cellWidth = [&](int columns, float label) {
     return std::clamp((avail - label - spacing * float(columns)) / float(columns), unit * 3.2f, unit * 5.5f);
   };
+  // A number wider than its field is drawn in a smaller font rather than cut off at the field's edge
+  // (the cut-off rule; a 6-decimal "-0,333333" in a 4-column grid at a projector's scale), as the
+  // matrices panel shrinks a wide table.
+  const int columns = f.kind == FieldKind::number || f.kind == FieldKind::outcode ? 1 : f.columns;
+  const float cell = cellWidth(columns, f.kind == FieldKind::polygon ? ImGui::CalcTextSize("P16").x + spacing : 0);
+  float widest = 0;
+  for (const std::string& t : f.texts) widest = std::max(widest, ImGui::CalcTextSize(t.c_str()).x);
+  widest += ImGui::GetStyle().FramePadding.x * 2 + 2;
+  const float fontScale = widest > cell ? std::max(0.55f, cell / widest) : 1.f;
   ImGui::PushID(f.item.path.c_str());
   switch (f.kind) {
     case FieldKind::number:
     case FieldKind::outcode:
-      changed |= field(w, p, f, 0, 0, cellWidth(1, 0) * (f.kind == FieldKind::outcode ? 1.2f : 1.f));
-      if (f.kind == FieldKind::outcode) {
-        ImGui::SameLine();
-        ImGui::TextDisabled("%s", tr(w, "bits: front back top bottom right left"));
+      changed |= field(w, p, f, 0, 0, cellWidth(1, 0) * (f.kind == FieldKind::outcode ? 1.2f : 1.f), fontScale);
+      if (f.kind == FieldKind::outcode) {  // the bits' planes, wrapped below the field (a phone's width)
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("%s", tr(w, "bits: front back top bottom right left"));
+        ImGui::PopStyleColor();
       }
       break;
     case FieldKind::vector:
@@ -85,7 +98,7 @@ bool itemFields(Widgets& w, PracticePart& p, ItemFields& f) {
       for (int r = 0; r < f.rows; ++r)
         for (int c = 0; c < f.columns; ++c) {
           if (c > 0) ImGui::SameLine();
-          changed |= field(w, p, f, r, c, cellWidth(f.columns, 0));
+          changed |= field(w, p, f, r, c, cellWidth(f.columns, 0), fontScale);
         }
       break;
     case FieldKind::polygon: {
@@ -107,7 +120,7 @@ bool itemFields(Widgets& w, PracticePart& p, ItemFields& f) {
         ImGui::SameLine(label);
         for (int c = 0; c < f.columns; ++c) {
           if (c > 0) ImGui::SameLine();
-          changed |= field(w, p, f, r, c, cellWidth(f.columns, label));
+          changed |= field(w, p, f, r, c, cellWidth(f.columns, label), fontScale);
         }
       }
       break;
@@ -125,7 +138,12 @@ void itemVerdict(const GradeCase& c) {
   ImGui::PushStyleColor(ImGuiCol_Text, colour);
   ImGui::TextWrapped("%s", c.message.c_str());
   ImGui::PopStyleColor();
-  for (const std::string& d : c.details) ImGui::TextWrapped("  %s", d.c_str());
+  // The report's "… and 2 more": the panel draws no ellipsis glyph (the cut-off rule reads one as text
+  // shortened).
+  for (const std::string& d : c.details) {
+    const std::string_view shown = std::string_view(d).starts_with("\u2026 ") ? std::string_view(d).substr(4) : std::string_view(d);
+    ImGui::TextWrapped("  %.*s", int(shown.size()), shown.data());
+  }
 }
 
 void checkSummary(Widgets& w, const PracticePart& p) {
@@ -212,8 +230,8 @@ void tasksPanel(Widgets& w, PracticePart& p, Exercises& exercises) {
                          ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows);
   if (ImGui::Button(tr(w, "Check (Ctrl+Enter)")) || ctrlEnter) exercises.check();
   recordRect("task.check");
-  sameLineIfFits(tr(w, "Hand in…"));
-  if (ImGui::Button(tr(w, "Hand in…"))) exercises.handIn();
+  sameLineIfFits(tr(w, "Hand in"));
+  if (ImGui::Button(tr(w, "Hand in"))) exercises.handIn();
   recordRect("task.handIn");
   sameLineIfFits(tr(w, "Close the exercise"));
   if (ImGui::Button(tr(w, "Close the exercise"))) {

@@ -39,6 +39,16 @@ UrlState everything() {
   return s;
 }
 
+/// What decoding `fragment` says is wrong, or "no error".
+std::string error(const std::string& fragment) {
+  try {
+    decodeUrlState(fragment);
+  } catch (const Error& e) {
+    return std::string(e.what());
+  }
+  return std::string("no error");
+}
+
 TEST(UrlState, RoundTripsExactly) {
   const UrlState s = everything();
   const std::string text = encodeUrlState(s);
@@ -95,14 +105,6 @@ TEST(UrlState, AnEmptyFragmentGivesNothing) {
 }
 
 TEST(UrlState, HostileFragmentsAreNamedErrors) {
-  auto error = [](const std::string& fragment) {
-    try {
-      decodeUrlState(fragment);
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   EXPECT_THAT(error("vrp=1,2"), HasSubstr("vrp=\"1,2\" has 2 numbers, 3 expected"));
   EXPECT_THAT(error("vrp=1,2,3,4"), HasSubstr("more than 3"));
   EXPECT_THAT(error("front=nan"), HasSubstr("front=\"nan\" is not 1 finite number"));
@@ -140,14 +142,6 @@ TEST(UrlState, AnExerciseLinkRoundTripsAndItsProjectionIsTheExercises) {
 }
 
 TEST(UrlState, ABadExerciseLinkNamesItsKey) {
-  auto error = [](const std::string& fragment) {
-    try {
-      decodeUrlState(fragment);
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   EXPECT_THAT(error("exercise=shading&seed=1"), HasSubstr("exercise=\"shading\""));
   EXPECT_THAT(error("exercise=clipping&seed=-3"), HasSubstr("seed=\"-3\""));
   EXPECT_THAT(error("exercise=clipping&seed=1234567890123456789"), HasSubstr("seed="));

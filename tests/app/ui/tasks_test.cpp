@@ -12,6 +12,7 @@
 #include "app/ui/keys.h"
 #include "course/mistake_models.h"
 #include "course/rational.h"
+#include "tests/app/ui/cut_off.h"
 #include "tests/support/files.h"
 #include "tests/support/gl_test_support.h"
 
@@ -22,6 +23,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 namespace vplab {
 namespace {
@@ -220,6 +222,58 @@ TEST(Tasks, HandInWritesTheAnswerThatTheGraderGivesTheSamePoints) {
   const NumbersGrade again = gradeNumbers(handedIn, "answer.json", practice.exercise.scene, assignment.tolerance, &assignment);
   EXPECT_DOUBLE_EQ(again.points, p.s().check->grade.points);
   EXPECT_DOUBLE_EQ(again.points, 2) << "wcFromMc right, nothing else given";
+}
+
+/// Fills the fields with `answer`'s values as `keystrokes` writes them, without typing (the cut-off
+/// test looks at the panel, not at the keys).
+void fillWith(Practice& p, const Json& answer) {
+  const std::vector<std::string> texts = keystrokes(p, answer);
+  size_t i = 0;
+  for (ItemFields& f : p.fields) {
+    if (f.kind == FieldKind::polygon) f.setRows(std::stoi(texts[i++]));
+    for (std::string& t : f.texts) t = texts[i++];
+  }
+  ++p.edits;
+}
+
+// The Tasks at a projector's 1280 × 720 × 1.6 and on a phone (upright, the page's scale), in English
+// and in German, with a sheet checked (its verdicts and diagnosis shown): no text cut off at the side
+// of the panel, a column or a field's frame (ui::textCutOff, paged through the scrolled panel).
+TEST(Tasks, NoTextOfTheTasksIsCutOffAtAProjectorsScaleOrOnAPhone) {
+  struct Screen {
+    const char* name;
+    int width, height;
+    float scale;
+    bool compact;
+  };
+  for (const Screen& screen : {Screen{"projector", 1280, 720, 1.6f, false}, Screen{"phone", 780, 1688, 2.f * 0.886f, true}})
+    for (const Language lang : {Language::en, Language::de})
+      for (const auto& [topic, seed, model] : {std::tuple{ExerciseTopic::pipeline, 4, Mistake::transposed},
+                                               std::tuple{ExerciseTopic::clipping, 3, Mistake::divideFirst}}) {
+        SCOPED_TRACE(std::string(screen.name) + " " + std::string(toString(topic)) + (lang == Language::de ? " de" : " en"));
+        HeadlessViewer v(*test::egl().context, defaultScene(), screen.width, screen.height, screen.scale);
+        v.state().compactAllowed = screen.compact;
+        v.state().display.language = lang;
+        v.frames(2);
+        ASSERT_TRUE(v.viewer().session().exercises().open({ExerciseSpec{uint64_t(seed), topic, Projection::perspective}, "100", Language::en},
+                                                          Reveal::values));
+        v.frames(2);
+        if (screen.compact) {
+          const auto [x, y] = v.centreOf("switch.tasks");
+          v.click(x, y);
+          v.frames(2);
+        }
+        fillWith(*v.state().practice, modelAnswer(*v.state().practice, model));
+        v.viewer().session().exercises().check();
+        v.frames(3);
+        ASSERT_TRUE(v.rects().rects.count("task.check")) << "the Tasks are shown";
+        const std::string prefix = std::string("tasks-") + screen.name + "-" + std::string(toString(topic)) + (lang == Language::de ? "-de" : "-en");
+        const std::vector<std::string> problems = test::clippedTextOfEveryPage(v, prefix);
+        writePng(v.image(), test::outputDir() / (prefix + ".png"));
+        std::string list;
+        for (size_t i = 0; i < std::min<size_t>(problems.size(), 6); ++i) list += "\n  " + problems[i];
+        EXPECT_TRUE(problems.empty()) << problems.size() << " places:" << list;
+      }
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "app/ui/headless_viewer.h"
 #include "app/ui/text_fit.h"
 #include "app/ui/keys.h"
+#include "tests/app/ui/cut_off.h"
 #include "tests/support/gl_test_support.h"
 
 #include <gtest/gtest.h>
@@ -112,29 +113,6 @@ namespace {
 
 // ---------------------------------------------------------------- item 6: nothing cut off
 
-/// ui::textCutOff() of every scrolled panel from top to bottom (ImGui draws only what is in view); a
-/// page with problems is left in the test output directory as PREFIX-page-N.png.
-std::vector<std::string> clippedTextOfEveryPage(HeadlessViewer& v, const std::string& prefix) {
-  std::vector<std::string> problems = ui::textCutOff();
-  for (int page = 0; page < 30; ++page) {
-    std::vector<std::pair<ImGuiWindow*, float>> before;
-    for (ImGuiWindow* w : ImGui::GetCurrentContext()->Windows)
-      if (w->Active && w->ScrollMax.y > 0 && w->Scroll.y < w->ScrollMax.y - 0.5f) {
-        before.emplace_back(w, w->Scroll.y);
-        ImGui::SetScrollY(w, w->Scroll.y + w->InnerRect.GetHeight() * 0.8f);
-      }
-    if (before.empty()) break;
-    v.frames(2);
-    bool moved = false;
-    for (const auto& [w, y] : before) moved |= w->Scroll.y != y;
-    if (!moved) break;
-    const std::vector<std::string> more = ui::textCutOff();
-    if (!more.empty()) writePng(v.image(), test::outputDir() / (prefix + "-page-" + std::to_string(page + 1) + ".png"));
-    for (const std::string& p : more) problems.push_back(p);
-  }
-  return problems;
-}
-
 /// The world view's labels (TextRenderer's placed rectangles) that overlap another.
 int overlappingLabels(const std::vector<glm::vec4>& r) {
   int n = 0;
@@ -192,7 +170,7 @@ TEST(UiLecture, NoTextIsCutOffAtAnyScale) {
       s.show(*v);
       char prefix[128];
       std::snprintf(prefix, sizeof prefix, "ui-%s-%.1f-%s", code, scale, s.what);
-      std::vector<std::string> problems = clippedTextOfEveryPage(*v, prefix);
+      std::vector<std::string> problems = test::clippedTextOfEveryPage(*v, prefix);
       if (std::string(s.what) == "Depth") {  // the plot at least ten lines high at every scale
         EXPECT_GE(v->rects().rects.at("depth.plot").w, 10 * ImGui::GetTextLineHeight());
       }
@@ -264,7 +242,7 @@ TEST(UiCompact, APhoneShowsOneViewAtATimeAndEveryPanelWithNothingCutOff) {
         std::snprintf(name, sizeof name, "compact-%s-%s-%s", lang == Language::de ? "de" : "en", upright ? "upright" : "side",
                       tab.c_str());
         writePng(v->image(), test::outputDir() / (std::string(name) + ".png"));
-        const std::vector<std::string> problems = clippedTextOfEveryPage(*v, name);
+        const std::vector<std::string> problems = test::clippedTextOfEveryPage(*v, name);
         std::string list;
         for (size_t i = 0; i < std::min<size_t>(problems.size(), 6); ++i) list += "\n  " + problems[i];
         EXPECT_TRUE(problems.empty()) << problems.size() << " places:" << list;
