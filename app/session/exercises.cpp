@@ -38,18 +38,16 @@ AnswerShelf AnswerShelf::inDirectory(const std::filesystem::path& directory) {
 }
 
 bool Exercises::open(const ExerciseRef& ref, Reveal reveal) {
-  try {
-    start(std::make_shared<Practice>(openPractice(ref, reveal, language())));
-    return true;
-  } catch (const Error& e) {
-    state_.setStatus(text::fill(language(), "the exercise could not be opened: {1}", {e.what()}), true);
-    return false;
-  }
+  return startMade([&] { return openPractice(ref, reveal, language()); });
 }
 
 bool Exercises::openFolder(const std::filesystem::path& dir, Reveal reveal) {
+  return startMade([&] { return openPracticeFolder(dir, reveal, language()); });
+}
+
+bool Exercises::startMade(const std::function<Practice()>& make) {
   try {
-    start(std::make_shared<Practice>(openPracticeFolder(dir, reveal, language())));
+    start(std::make_shared<Practice>(make()));
     return true;
   } catch (const Error& e) {
     state_.setStatus(text::fill(language(), "the exercise could not be opened: {1}", {e.what()}), true);

@@ -55,6 +55,8 @@ class Exercises {
 
  private:
   Language language() const { return state_.display.language; }
+  /// Starts the exercise `make` gives; false, the reason in the status line, when it throws.
+  bool startMade(const std::function<Practice()>& make);
   /// The exercise becomes the document (asked first when changes would be lost) and its answer kept is restored.
   void start(std::shared_ptr<Practice> practice);
 
