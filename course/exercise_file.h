@@ -14,6 +14,8 @@
 #include "course/exercise.h"
 #include "course/roster.h"  // validStudentId: an id is printed on the sheet and names files
 
+#include <nlohmann/json.hpp>
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -34,10 +36,21 @@ struct ExerciseRef {
   bool operator==(const ExerciseRef&) const = default;
 };
 
-/// exercise.json of an exercise.
+/// exercise.json of an exercise, as an object and as the file's text.
+nlohmann::ordered_json exerciseFileObject(const ExerciseRef& ref);
 std::string exerciseFileJson(const ExerciseRef& ref);
 /// Reads exercise.json as strictly as a scene. Throws vplab::Error "SOURCE: /json/path: …".
 ExerciseRef parseExerciseFile(std::string_view text, std::string_view source);
+/// The same of an object already parsed; `at` is its JSON path in the source ("" or "/exercise").
+ExerciseRef parseExerciseObject(const nlohmann::ordered_json& j, std::string_view source, std::string_view at = "");
+
+/// An answer that names its exercise: {"exercise": {exercise.json's members}, …the answer's values}.
+/// The template `vplab exercise` writes and the file Hand in writes carry it, so that an answer.json
+/// opens on its own (File ▸ Open exercise… in the page); the graders pass over it.
+nlohmann::ordered_json answerNamingExercise(const nlohmann::ordered_json& answer, const ExerciseRef& ref);
+/// The exercise an answer names (its "exercise" member, read as strictly as exercise.json), or
+/// nullopt when it names none. Throws vplab::Error "SOURCE: /exercise/…: …" for a member that is wrong.
+std::optional<ExerciseRef> exerciseOfAnswer(const nlohmann::ordered_json& answer, std::string_view source);
 
 /// A name for one exercise's files and kept answers: "clipping-7-perspective" or
 /// "clipping-7-perspective-100" (letters, digits, '.', '-' and '@' only).

@@ -296,6 +296,8 @@ struct Walker {
                          typeNameDe(s) + ", wo ein Objekt erwartet wird");
       }
       for (const auto& [key, value] : s.items()) {
+        // The exercise an answer names (course/exercise_file.h) labels it, as a file's name does: no value.
+        if (path.empty() && key == "exercise") continue;
         if (!r.contains(key)) {
           std::string known;
           for (const auto& [k, v] : r.items()) known += (known.empty() ? "" : ", ") + k;

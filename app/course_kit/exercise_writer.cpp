@@ -575,12 +575,13 @@ void writeExercise(const Exercise& exercise, Language lang, const std::filesyste
   writeText(docs.solutionTex, dir / "solution.tex");
   writeText(sceneToJson(exercise.scene), dir / "scene.json");
   // Which exercise this is, for the viewer (`vplab --exercise DIR`, issue 40).
-  writeText(exerciseFileJson({exercise.spec, exercise.studentId, lang}), dir / "exercise.json");
+  const ExerciseRef ref{exercise.spec, exercise.studentId, lang};
+  writeText(exerciseFileJson(ref), dir / "exercise.json");
   // What the sheet asks for: the grader's assignment and the template a student fills in.
   const Assignment assignment = exerciseAssignment(exercise, solution, lang);
   writeText(assignmentJson(assignment), dir / "assignment.json");
   const nlohmann::ordered_json reference = referenceAnswer(exercise.scene);
-  writeText(prettyJson(answerTemplate(assignment, reference)) + "\n", dir / "answer.json");
+  writeText(prettyJson(answerNamingExercise(answerTemplate(assignment, reference), ref)) + "\n", dir / "answer.json");
   writeText(prettyJson(answerKey(assignment, reference)) + "\n", dir / "solution.json");
   // The figures: the world view for the sheet, the NPC view for the solution, as SVG and as the
   // same drawing in PNG for LaTeX.

@@ -34,7 +34,8 @@ Practice openPractice(const ExerciseRef& ref, Reveal reveal, Language lang) {
   p.assignment = exerciseAssignment(p.exercise, p.solution, lang);
   p.tasks = exerciseTasks(p.exercise, p.solution, lang);
   p.grading = gradingReference(p.exercise.scene);
-  p.answerTemplate = answerTemplate(p.assignment, p.grading.reference);
+  // Hand in's answer.json names its exercise, so that it opens again on its own.
+  p.answerTemplate = answerNamingExercise(answerTemplate(p.assignment, p.grading.reference), ref);
   p.fields = answerFields(p.assignment, answerKey(p.assignment, p.grading.reference));
   return p;
 }
@@ -53,6 +54,21 @@ Practice openPracticeFolder(const std::filesystem::path& dir, Reveal reveal, Lan
     const std::string text = readRegularFile(answerFile, kDefaultLimits.sceneFileBytes, "answer");
     fillFields(p.fields, parseAnswer(text, answerFile.string()));
   }
+  return p;
+}
+
+Practice openPracticeFile(const std::filesystem::path& file, Reveal reveal, Language lang) {
+  const std::string text = readRegularFile(file, kDefaultLimits.sceneFileBytes, "exercise");
+  const Json j = parseAnswer(text, file.string());
+  if (j.contains("vplab_exercise")) return openPracticeFolder(file.parent_path(), reveal, lang);
+  const std::optional<ExerciseRef> ref = exerciseOfAnswer(j, file.string());
+  if (!ref)
+    throw Error(file.string() + ": neither an exercise.json nor an answer.json that names its exercise (/exercise): "
+                "open the exercise.json of the folder your course gave you, or an answer handed in from vplab");
+  Practice p = openPractice(*ref, reveal, lang);
+  p.folder = file.parent_path();
+  fillFields(p.fields, j);
+  p.answerOpened = true;
   return p;
 }
 

@@ -38,6 +38,7 @@ struct Practice {
   nlohmann::ordered_json answerTemplate;
   std::vector<ItemFields> fields;     // one per assignment item, in the sheet's order
   std::filesystem::path folder;       // the exercise's folder it was opened from; empty: from a link
+  bool answerOpened = false;          // its fields hold an answer.json the student opened (not the kept one)
   uint64_t edits = 0;                 // counts the changes of the fields (what was checked, kept, handed in)
 
   /// The index of the first field of task `task`.
@@ -52,6 +53,11 @@ Practice openPractice(const ExerciseRef& ref, Reveal reveal, Language lang);
 /// folder's answer.json in its fields (the template's nulls leave them empty). Throws vplab::Error
 /// naming the file: a folder without exercise.json, an unreadable or hostile file.
 Practice openPracticeFolder(const std::filesystem::path& dir, Reveal reveal, Language lang);
+
+/// File ▸ Open exercise…: an exercise's exercise.json (openPracticeFolder of its folder), or an
+/// answer.json that names its exercise (the template `vplab exercise` writes, a handed-in answer), its
+/// values in the fields. Throws vplab::Error naming the file for any other file.
+Practice openPracticeFile(const std::filesystem::path& file, Reveal reveal, Language lang);
 
 /// The tasks' texts and the items' titles in `lang`; the fields keep what was typed.
 void setPracticeLanguage(Practice& p, Language lang);

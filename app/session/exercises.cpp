@@ -55,10 +55,14 @@ bool Exercises::startMade(const std::function<Practice()>& make) {
   }
 }
 
-void Exercises::chooseFolder(Reveal reveal) {
-  session_.files().fileDialog().open(text::Text("Open an exercise's folder (written by vplab exercise): its exercise.json").in(language()),
+bool Exercises::openFile(const std::filesystem::path& file, Reveal reveal) {
+  return startMade([&] { return openPracticeFile(file, reveal, language()); });
+}
+
+void Exercises::chooseFile(Reveal reveal) {
+  session_.files().fileDialog().open(text::Text("Open an exercise: its exercise.json, or an answer.json").in(language()),
                                      FileChooser::Mode::open, {".json"}, {},
-                                     [this, reveal](const std::filesystem::path& file) { openFolder(file.parent_path(), reveal); });
+                                     [this, reveal](const std::filesystem::path& file) { openFile(file, reveal); });
 }
 
 void Exercises::start(std::shared_ptr<Practice> practice) {
@@ -68,8 +72,9 @@ void Exercises::start(std::shared_ptr<Practice> practice) {
     // through the polygon's passes (the Lecture tab's step-through), the student's beside the lab's.
     state_.display.overlays.vertexNames = true;
     if (exerciseShows(practice->ref.spec.topic, ExerciseTopic::clipping)) state_.stepThrough = {true, 0, 0, 0};
-    // What the student typed before (this exercise's kept answer) comes back; a new one keeps the folder's.
-    if (shelf_.load)
+    // What the student typed before (this exercise's kept answer) comes back; a new one keeps the
+    // folder's. An answer.json the student opened is what they asked to see.
+    if (shelf_.load && !practice->answerOpened)
       if (const auto kept = shelf_.load(exerciseKey(practice->ref))) {
         try {
           fillFields(practice->fields, parseAnswer(*kept, "kept answer"));
@@ -81,6 +86,7 @@ void Exercises::start(std::shared_ptr<Practice> practice) {
     state_.keptEdits = state_.practice->edits;
     state_.check.reset();
     state_.showTasks = true;
+    state_.focusFirstField = true;
     state_.setStatus(text::fill(language(), "opened the exercise {1}", {exerciseKey(state_.practice->ref)}), false);
     session_.hooks().changed();
   });

@@ -35,8 +35,12 @@ class Exercises {
   /// An exercise's folder written by `vplab exercise` (File ▸ Open exercise…, `--exercise DIR`): the
   /// answer kept of it, else the folder's answer.json, fills the fields.
   bool openFolder(const std::filesystem::path& dir, Reveal reveal);
-  /// File ▸ Open exercise…: the chooser, for the folder's exercise.json.
-  void chooseFolder(Reveal reveal = Reveal::stages);
+  /// An exercise's exercise.json, or an answer.json that names its exercise, its values in the fields
+  /// (app/practice/practice.h openPracticeFile). False, the reason in the status line, for any other.
+  bool openFile(const std::filesystem::path& file, Reveal reveal);
+  /// File ▸ Open exercise…: the chooser, for a folder's exercise.json or an answer.json (in the
+  /// browser, the file a course gave or one handed in before).
+  void chooseFile(Reveal reveal = Reveal::stages);
   /// Ends practising; the scene stays.
   void close();
 

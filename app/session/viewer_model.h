@@ -102,6 +102,7 @@ struct PracticePart {
   std::optional<PracticeCheck> check;  // of practice->edits == check->edits: the fields as they are
   uint64_t keptEdits = 0;              // the fields' state last kept (the answer's autosave)
   bool showTasks = false;              // bring the Tasks tab forward (an exercise opened)
+  bool focusFirstField = false;        // the first field takes the keys when the Tasks are next drawn
 };
 
 /// How the window is laid out and drawn.

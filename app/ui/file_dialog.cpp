@@ -1,6 +1,7 @@
 #include "app/ui/file_dialog.h"
 
 #include "app/text/catalogue.h"
+#include "app/ui/widgets.h"
 
 #define IMGUI_DEFINE_MATH_OPERATORS
 #include <imgui.h>
@@ -83,8 +84,11 @@ void FileDialog::draw(Language lang) {
   }
   ImGui::EndChild();
   ImGui::SetNextItemWidth(-1);
+  // The name takes the keys as the dialog opens: Enter accepts what is suggested, as in every file dialog.
+  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
   if (ImGui::InputText("##name", &name_, ImGuiInputTextFlags_EnterReturnsTrue) && !name_.empty())
     chosen = directory_ / name_;
+  ui::recordRect("dialog.fileName");
   if (!error_.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", error_.c_str());
   if (ImGui::Button((mode_ == Mode::open ? text::Text("Open") : text::Text("Save")).in(lang)) && !name_.empty()) chosen = directory_ / name_;
   ImGui::SameLine();

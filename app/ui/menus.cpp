@@ -53,9 +53,9 @@ void Menus::menuBar() {
       if (ImGui::MenuItem(ui::tr(s_, "Open scene…"), ui::tr(s_, "Ctrl+O"))) session_.files().chooseFileToOpen();
       if (ImGui::MenuItem(ui::tr(s_, "Save"), ui::tr(s_, "Ctrl+S"))) session_.files().save();
       if (ImGui::MenuItem(ui::tr(s_, "Save as…"), ui::tr(s_, "Ctrl+Shift+S"))) session_.files().saveAs();
-      if (ImGui::MenuItem(ui::tr(s_, "Open exercise…"))) session_.exercises().chooseFolder();
-      ui::recordRect("menu.openExercise");
     }
+    if (ImGui::MenuItem(ui::tr(s_, "Open exercise…"))) session_.exercises().chooseFile();
+    ui::recordRect("menu.openExercise");
     if (ImGui::BeginMenu(ui::tr(s_, "Presets"), !session_.files().presets().empty())) {
       for (const SceneFileInfo& p : session_.files().presets())
         if (ImGui::MenuItem((p.titleIn(s_.display.language) + "##" + p.file.filename().string()).c_str())) {

@@ -1,7 +1,8 @@
 // The Tasks panel (issue 40): an exercise's sheet beside the views, in the UI's language: the given
 // data, each task with its points and a field wherever the answer has a value (4 × 4 grids, vectors,
 // a polygon's vertices, an outcode's bits), Check and what it found, Hand in. Every field is reached
-// with Tab in the sheet's order and filled from the keyboard; Ctrl+Enter checks.
+// with Tab in the sheet's order and filled from the keyboard (the first takes the keys when the
+// exercise opens); Ctrl+Enter checks.
 // Index: 1 the fields  2 the verdicts  3 the panel
 #include "app/practice/practice.h"
 #include "app/session/exercises.h"
@@ -195,7 +196,7 @@ void legend(Widgets& w) {
 
 }  // namespace
 
-void tasksPanel(Widgets& w, PracticePart& p, Exercises& exercises) {
+void tasksPanel(Widgets& w, PracticePart& p, Exercises& exercises, bool mayFocus) {
   if (!p.practice) {
     ImGui::TextWrapped("%s", tr(w, "No exercise is open: File > Open exercise…, or a link #exercise=…"));
     return;
@@ -220,6 +221,14 @@ void tasksPanel(Widgets& w, PracticePart& p, Exercises& exercises) {
       ItemFields& f = practice.fields[index];
       ImGui::Spacing();
       ImGui::TextWrapped("%s (%s)", f.item.title.c_str(), pointsText(w, f.item.points).c_str());
+      // Opened, the exercise is typed into at once: the keyboard alone reaches every field.
+      if (index == 0 && p.focusFirstField) {
+        if (mayFocus) {
+          ImGui::SetWindowFocus();  // Tab moves within the focused window: the Tasks', not the one clicked last
+          ImGui::SetKeyboardFocusHere();
+        }
+        p.focusFirstField = false;
+      }
       if (itemFields(w, p, f)) ++practice.edits;
       if (checked && index < p.check->report.cases.size()) itemVerdict(p.check->report.cases[index]);
     }

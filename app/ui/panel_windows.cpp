@@ -82,7 +82,7 @@ void PanelWindows::inspect(float scale, bool relayout) {
     switch (s_.inspectTab) {
       case ViewerState::probeTab: ui::probePanel(widgets, s_, s_); break;
       case ViewerState::matricesTab: ui::matricesPanel(widgets, s_, s_, s_); break;
-      case ViewerState::tasksTab: ui::tasksPanel(widgets, s_, session_.exercises()); break;
+      case ViewerState::tasksTab: ui::tasksPanel(widgets, s_, session_.exercises(), !l.compact); break;
       default: ui::depthPanel(widgets, s_, s_); break;
     }
   }

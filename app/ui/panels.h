@@ -28,7 +28,9 @@ void lecturePanel(Widgets& w, ViewsPart& v, const DocumentPart& d, const RunPart
                   LayoutPart& l);
 /// The depth plot: NPC z against VRC z, and what depth buffers resolve.
 void depthPanel(Widgets& w, const RunPart& r, const LayoutPart& l);
-/// An exercise's tasks, the student's fields, Check and Hand in (issue 40).
-void tasksPanel(Widgets& w, PracticePart& p, Exercises& exercises);
+/// An exercise's tasks, the student's fields, Check and Hand in (issue 40). With `mayFocus`, an
+/// exercise just opened gives its first field the keys (a phone's compact layout would open the
+/// on-screen keyboard unasked: there the student taps a field).
+void tasksPanel(Widgets& w, PracticePart& p, Exercises& exercises, bool mayFocus);
 
 }  // namespace vplab::ui

@@ -211,6 +211,7 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
                 << " ms, the longest answering input in " << std::lround(longestAnswer * 1000) << " ms\n";
   };
   double lastFrame = 0;
+  bool driverDone = false;
   for (;;) {
     const bool scriptedEnd = launch.quitAfterFrames > 0 && frames >= launch.quitAfterFrames;
     // Smoke tests, scripted screenshots (--quit-after-frames) and a driver draw every frame, as fast
@@ -235,7 +236,9 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
       window.setShouldClose(false);
       input.changed = true;
     }
-    if (launch.driver && !launch.driver(viewer, input.queue, window, lastFrame)) break;
+    // A driver that is done ends the viewer as quitting does: the next frame is the last (with its
+    // screenshot, when one is asked for on quitting).
+    if (launch.driver && !driverDone && !launch.driver(viewer, input.queue, window, lastFrame)) driverDone = true;
     const bool answering = input.changed || !input.queue.empty();
     if (answering) viewer.requestFrames(kSettleFrames);
     input.changed = false;
@@ -250,7 +253,7 @@ int loop(GlfwWindow& window, Viewer& viewer, WindowInput& input, const EndSignal
     if (w > 0 && h > 0) viewer.frame(0, w, h);
     ++frames;
     const bool scripted = launch.quitAfterFrames > 0 && frames >= launch.quitAfterFrames;
-    const bool quitting = viewer.shouldQuit() || scripted;
+    const bool quitting = viewer.shouldQuit() || scripted || driverDone;
     const bool shot = viewer.screenshotRequested() || (quitting && !launch.screenshotOnQuit.empty());
     // A screenshot is of what the user asked to see, and a scripted end shows it too: both wait until
     // every shown view has its current image (docs/lecturers.md "The viewer", issue 19).

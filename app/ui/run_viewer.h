@@ -20,7 +20,8 @@ inline constexpr int kUnexpectedEnd = 70;
 
 /// Plays the user (the monkey test, tests/app/window/monkey_test.cpp): called before every frame with
 /// the viewer, the window's input queue (events put there are handed to ImGui as GLFW's are) and
-/// the window, and the seconds the last frame took; false ends the viewer as quitting does. With a
+/// the window, and the seconds the last frame took; false ends the viewer as quitting does (one more
+/// frame is drawn: the last, with screenshotOnQuit's picture). With a
 /// driver every frame is drawn, none waited for.
 using ViewerDriver = std::function<bool(Viewer&, InputQueue&, GlfwWindow&, double lastFrameSeconds)>;
 

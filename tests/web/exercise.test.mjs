@@ -2,12 +2,13 @@
 // student fills every field from the keyboard (a click into the first field, then text and Tab),
 // presses Ctrl+Enter and gets full points; a divide-first answer is named and its polygon drawn where
 // the desktop `vplab render --answer` draws it; Hand in downloads the answer.json that `vplab grade
-// numbers` grades to the same points; what was typed survives a reload; a phone reaches the Tasks.
+// numbers` and `vplab grade batch` grade to the same points, and that opens again on its own in a
+// fresh browser (File ▸ Open exercise…); what was typed survives a reload; a phone reaches the Tasks.
 //
 // Oracles: the desktop `vplab exercise`'s solution.json (the key), and the divide-first answer worked
 // out here, in a few lines of Sutherland–Hodgman on the divided polygon (Hill 7.4), never by the page.
 import assert from 'node:assert/strict';
-import { existsSync, readFileSync } from 'node:fs';
+import { copyFileSync, existsSync, mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { after, before, describe, test } from 'node:test';
 
@@ -202,6 +203,15 @@ describe('an exercise in the browser', { concurrency: 1 }, () => {
     const graded = JSON.parse((await runVplab(['grade', 'numbers', '--student', file, '--assignment', path.join(dir, 'assignment.json'), '--json'])
       .catch((e) => ({ stdout: e.stdout }))).stdout);
     assert.equal(graded.points, state.exercise.check.points, 'vplab grade numbers gives the handed-in answer the same points');
+    // A class's handed-in answers, one per student, as `vplab grade batch` reads them.
+    const answers = path.join(work.dir, 'answers');
+    mkdirSync(answers, { recursive: true });
+    copyFileSync(file, path.join(answers, 's1.json'));
+    await runVplab(['grade', 'batch', '--assignment', path.join(dir, 'assignment.json'), '--answers', answers,
+      '--out', path.join(work.dir, 'grades')]);
+    const batch = JSON.parse(readFileSync(path.join(work.dir, 'grades', 'results.json'), 'utf8'));
+    assert.equal(batch.students.length, 1);
+    assert.equal(batch.students[0].score, state.exercise.check.points, 'vplab grade batch gives the handed-in answer the same points');
 
     await waitFrames(page, 5);
     state = await vplabState(page);
@@ -220,8 +230,35 @@ describe('an exercise in the browser', { concurrency: 1 }, () => {
     assert.ok(both >= 0.95 * inShown, `shown ${inShown}, rendered ${inRendered}, both ${both}`);
     assert.ok(both > 0.5 * inRendered, `shown ${inShown}, rendered ${inRendered}, both ${both}`);
     assert.deepEqual(errorsOf(messages), [], 'the page logged errors or warnings');
-    downloads.remove();
+    const typed = state.exercise.fields.flatMap((f) => f.texts);
+    const { points, mistake } = state.exercise.check;
     await context.close();
+
+    // The handed-in file opens on its own in a fresh browser (no answer kept there): File ▸ Open exercise….
+    const fresh = await browser.createBrowserContext();
+    const opened = await openPage(fresh, server.url);
+    await waitForState(opened.page, (s) => s.rects['menu.file'], 'the page', opened.console);
+    state = await vplabState(opened.page);
+    rect = await cssRect(opened.page, state, 'menu.file');
+    await afterInput(opened.page, () => opened.page.mouse.click(rect.x + rect.w / 2, rect.y + rect.h / 2));
+    state = await vplabState(opened.page);
+    rect = await cssRect(opened.page, state, 'menu.openExercise');
+    await afterInput(opened.page, () => opened.page.mouse.click(rect.x + rect.w / 2, rect.y + rect.h / 2));
+    await (await opened.page.$('#vplab-file')).uploadFile(file);
+    await waitForState(opened.page, (s) => s.exercise && s.exercise.key === 'clipping-3-perspective', 'the exercise the file names',
+      opened.console);
+    state = await vplabState(opened.page);
+    assert.deepEqual(state.exercise.fields.flatMap((f) => f.texts), typed, 'the fields hold the handed-in values');
+    await opened.page.keyboard.down('Control');
+    await opened.page.keyboard.press('Enter');
+    await opened.page.keyboard.up('Control');
+    await waitForState(opened.page, (s) => s.exercise.check, 'Check of the opened answer', opened.console, 60_000);
+    state = await vplabState(opened.page);
+    assert.equal(state.exercise.check.points, points);
+    assert.equal(state.exercise.check.mistake, mistake);
+    assert.deepEqual(errorsOf(opened.console), [], 'the page logged errors or warnings');
+    downloads.remove();
+    await fresh.close();
   });
 
   test('(c) what was typed survives a reload; on a phone the switcher reaches the Tasks and checks', { timeout: 300_000 }, async () => {

@@ -340,5 +340,56 @@ TEST(PracticeFolder, AHostileExerciseFileIsRefusedNamingTheValue) {
   EXPECT_EQ(parseExerciseFile(exerciseFileJson(ref(ExerciseTopic::mapping, 12, "a.b@c")), "x").studentId, "a.b@c");
 }
 
+TEST(PracticeFolder, AnAnswerHandedInOpensOnItsOwnWithItsValuesAndIsGradedWithoutAWarning) {
+  test::TempDir dir;
+  const ExerciseRef r = ref(ExerciseTopic::clipping, 3, "100");
+  Practice p = openPractice(r, Reveal::stages, Language::en);
+  typeAnswer(p, modelAnswer(p, Mistake::divideFirst), true);
+  const PracticeCheck before = checkPractice(p, Language::en);
+  // Hand in's file names its exercise; no folder beside it (the page: a file the student downloaded).
+  const Json handedIn = practiceAnswer(p);
+  ASSERT_TRUE(handedIn.contains("exercise"));
+  EXPECT_EQ(handedIn.begin().key(), "exercise") << "read first by a person opening the file";
+  dir.write("my answer.json", handedIn.dump(2));
+  const Practice reopened = openPracticeFile(dir.path / "my answer.json", Reveal::stages, Language::de);
+  EXPECT_EQ(reopened.ref, r);
+  EXPECT_TRUE(reopened.answerOpened) << "what the student opened is shown, not the answer kept of it";
+  EXPECT_EQ(reopened.folder, dir.path);
+  for (size_t i = 0; i < p.fields.size(); ++i) EXPECT_EQ(reopened.fields[i].texts, p.fields[i].texts) << p.fields[i].item.path;
+  const PracticeCheck after = checkPractice(reopened, Language::en);
+  EXPECT_EQ(after.grade.points, before.grade.points);
+  EXPECT_EQ(after.report.diagnosis, before.report.diagnosis);
+  // The exercise it names is a label, as a file's name is: the grader says nothing of it.
+  const NumbersGrade graded = gradeNumbers(handedIn, "answer.json", p.grading, p.assignment.tolerance, &p.assignment);
+  EXPECT_TRUE(graded.warnings.empty()) << graded.warnings.front();
+
+  // exercise.json opens its folder; the template `vplab exercise` writes opens as an empty sheet.
+  dir.write("exercise.json", exerciseFileJson(r));
+  EXPECT_FALSE(openPracticeFile(dir.path / "exercise.json", Reveal::stages, Language::en).answerOpened);
+  dir.write("answer.json", answerNamingExercise(p.answerTemplate, r).dump());
+  const Practice blank = openPracticeFile(dir.path / "answer.json", Reveal::stages, Language::en);
+  for (const ItemFields& f : blank.fields)
+    for (const std::string& t : f.texts) EXPECT_EQ(t, "") << f.item.path;
+}
+
+TEST(PracticeFolder, AFileThatNamesNoExerciseOrAWrongOneIsRefusedNamingIt) {
+  test::TempDir dir;
+  dir.write("scene.json", R"({"vplab_scene": 1})");
+  dir.write("bare.json", R"({"camera": {"n": [0, 0, 1]}})");
+  dir.write("wrong.json", R"({"exercise": {"vplab_exercise": 1, "topic": "clipping", "seed": "3"}, "camera": {}})");
+  dir.write("list.json", R"([1, 2, 3])");
+  for (const auto& [file, said] : {std::pair{"scene.json", "names its exercise"}, std::pair{"bare.json", "names its exercise"},
+                                   std::pair{"wrong.json", "/exercise/seed"}, std::pair{"list.json", "list.json"},
+                                   std::pair{"missing.json", "missing.json"}}) {
+    try {
+      openPracticeFile(dir.path / file, Reveal::stages, Language::en);
+      ADD_FAILURE() << file << " opened";
+    } catch (const Error& e) {
+      EXPECT_THAT(e.what(), HasSubstr(said)) << file;
+      EXPECT_THAT(e.what(), HasSubstr(file));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace vplab
