@@ -7,9 +7,11 @@
 // desktop tests check the round trip and hostile fragments (tests/app/document/url_state_test.cpp).
 //
 // Numbers are written with the fewest digits that read back to the same double, so a link is short
-// and exact. A fragment is user input: each key and value is checked, and an error names them.
+// and exact. A fragment is user input: each key and value is checked, and a link explains itself
+// (issue 41): every part that is not understood is named at once, with why, and the rest is used.
 #pragma once
 
+#include "app/text/catalogue.h"
 #include "app/views/views.h"
 #include "course/exercise_file.h"
 #include "course/grade_report.h"
@@ -36,9 +38,27 @@ struct CameraLink {
   /// `base` with the link's parts. Throws vplab::Error with cameraError's reason when the result
   /// is no valid camera.
   Camera over(const Camera& base) const;
+  /// `base` with the link's parts, valid or not.
+  Camera applied(const Camera& base) const;
 };
 /// Every part of `camera` (the oblique parameters only for an oblique projection).
 CameraLink cameraLinkOf(const Camera& camera);
+
+/// A part of a link that was not understood or cannot be used, and is left out: its key and value
+/// as written and why, in the catalogue's words (app/text/links.inc; {1} is `detail`).
+struct LinkProblem {
+  std::string key, value;
+  text::Text why;
+  std::string detail;
+  /// `vrp="1,2": 3 numbers separated by commas expected` in `lang`.
+  std::string said(Language lang) const;
+  bool operator==(const LinkProblem& o) const {
+    return key == o.key && value == o.value && why.english() == o.why.english() && detail == o.detail;
+  }
+};
+
+/// Every problem, one after the other: "scene="nope": …; vrp="1,2": …".
+std::string saidTogether(const std::vector<LinkProblem>& problems, Language lang);
 
 /// The parts of a view state a fragment can carry; each is optional (a link may give only a camera).
 struct UrlState {
@@ -59,6 +79,9 @@ struct UrlState {
   /// lesson's step is; `reveal` what Check shows of the reference (default: stages).
   std::optional<ExerciseRef> exercise;
   std::optional<Reveal> reveal;
+  /// What the fragment held that was not understood, each part named, in the fragment's order; the
+  /// parts above are the rest, used as if the bad parts were not there.
+  std::vector<LinkProblem> problems;
   bool operator==(const UrlState&) const = default;
 };
 
@@ -67,9 +90,9 @@ inline constexpr size_t kMaxUrlStateLength = 4096;
 
 /// The fragment (without '#') for everything in `state` that is given.
 std::string encodeUrlState(const UrlState& state);
-/// Reads a fragment (a leading '#' is skipped). Throws vplab::Error naming the key and value that
-/// are not understood. Whether the camera parts make a camera is known only over the scene's
-/// camera (CameraLink::over).
+/// Reads a fragment (a leading '#' is skipped): every part it understands, and a problem for each
+/// it does not (UrlState::problems). Whether the camera parts make a camera is known only over the
+/// scene's camera (CameraLink::over).
 UrlState decodeUrlState(std::string_view fragment);
 
 /// Whether `s` can name a bundled lesson: a bundled scene's name, with ".de" or ".en" or without.

@@ -1,5 +1,6 @@
 #include "app/session/links.h"
 
+#include "app/inspect/camera_text.h"
 #include "app/lessons/lesson.h"
 #include "app/session/session.h"
 #include "app/text/catalogue.h"
@@ -63,6 +64,24 @@ void Links::applyViews(const UrlState& link) {
 }
 
 void Links::showUrlState(const UrlState& link, bool atStart) {
+  std::vector<LinkProblem> problems = link.problems;
+  state_.linkProblems.clear();
+  showing_ = true;
+  show(link, atStart, problems);
+  showing_ = false;
+  // A lesson opened at once has said a step it does not have already (showLesson): it comes last.
+  problems.insert(problems.end(), state_.linkProblems.begin(), state_.linkProblems.end());
+  say(problems);
+}
+
+void Links::say(const std::vector<LinkProblem>& problems) {
+  state_.linkProblems = problems;
+  if (!problems.empty())
+    state_.setStatus(text::fill(language(), "Not understood in the link, and left out: {1}", {saidTogether(problems, language())}), true);
+  session_.hooks().changed();
+}
+
+void Links::show(const UrlState& link, bool atStart, std::vector<LinkProblem>& problems) {
   if (link.embed != state_.embedViews) {
     state_.embedViews = link.embed;
     session_.hooks().changed();
@@ -78,52 +97,92 @@ void Links::showUrlState(const UrlState& link, bool atStart) {
   }
   if (!link.lesson.empty()) {
     const std::filesystem::path file = bundledLessonFile(link.lesson, state_.display.language);
-    if (file.empty()) throw Error(text::fill(language(), "the link's lesson \"{1}\" is not one of vplab's bundled lessons", {link.lesson}));
-    const size_t step = link.step > 0 ? link.step - 1 : 0;
-    std::error_code ec;
-    if (state_.lesson && std::filesystem::equivalent(state_.lesson->lesson().file, file, ec)) {
-      if (step >= state_.lesson->stepCount())
-        throw Error(text::fill(language(), "the link's step {1} is not one of the lesson's {2} steps",
-                           {std::to_string(link.step), std::to_string(state_.lesson->stepCount())}));
-      session_.hooks().goToStep(step);  // the address followed a step: move there
-      session_.hooks().changed();
+    if (!file.empty()) {
+      if (!link.scene.empty() || !link.camera.empty())
+        problems.push_back({!link.scene.empty() ? "scene" : "", "", "left out: a lesson's step brings its own scene and camera"});
+      showLesson(file, link.step, problems);
       return;
     }
-    session_.openLesson(file, step);
-    return;
+    // The rest of the link is used as if it named no lesson.
+    problems.push_back({"lesson", link.lesson, "not one of vplab's bundled lessons"});
   }
   auto showViews = [this, link] {
     applyViews(link);
     session_.hooks().changed();
   };
-  const bool otherScene = !link.scene.empty() && link.scene != urlState().scene;
+  std::string scene = link.scene;
+  if (!scene.empty() && !bundledPreset(scene)) {
+    problems.push_back({"scene", scene, "not one of vplab's bundled scenes"});
+    scene.clear();
+  }
+  const bool otherScene = !scene.empty() && scene != urlState().scene;
   if (otherScene || (atStart && !link.camera.empty())) {
-    Scene scene = state_.doc.scene();
+    Scene shown = state_.doc.scene();
     if (otherScene) {
-      const auto preset = std::find_if(session_.files().presets().begin(), session_.files().presets().end(),
-                                       [&](const SceneFileInfo& p) { return p.file.stem() == link.scene; });
-      if (preset == session_.files().presets().end()) throw Error(text::fill(language(), "the link's scene \"{1}\" is not one of vplab's bundled scenes", {link.scene}));
+      const std::filesystem::path file = *bundledPreset(scene);
       if (session_.loader().remote()) {
         // The page: its worker reads the scene while the page goes on (a million triangles took most
         // of a second); the link's camera and views apply when it is there (beginFrame).
-        session_.unlessUnsaved([this, file = preset->file, link, showViews] {
+        session_.unlessUnsaved([this, file, link, showViews] {
           session_.loader().start(file);
           pending_ = Pending{link, showViews};
           session_.hooks().changed();
         });
         return;
       }
-      scene = loadScene(preset->file);
+      shown = loadScene(file);
     }
-    scene.camera = link.camera.over(scene.camera);
-    session_.unlessUnsaved([this, scene = std::move(scene), showViews]() mutable {
-      session_.startDocument(std::move(scene));
+    shown.camera = cameraOver(link.camera, shown.camera, problems);
+    session_.unlessUnsaved([this, shown = std::move(shown), showViews]() mutable {
+      session_.startDocument(std::move(shown));
       showViews();
     });
     return;
   }
-  if (const Camera c = link.camera.over(state_.doc.scene().camera); c != state_.doc.scene().camera) state_.doc.scene().camera = c;
+  if (const Camera c = cameraOver(link.camera, state_.doc.scene().camera, problems); c != state_.doc.scene().camera)
+    state_.doc.scene().camera = c;
   showViews();
+}
+
+void Links::showLesson(const std::filesystem::path& file, size_t linkStep, std::vector<LinkProblem>& problems) {
+  const size_t step = linkStep > 0 ? linkStep - 1 : 0;
+  std::error_code ec;
+  if (state_.lesson && std::filesystem::equivalent(state_.lesson->lesson().file, file, ec)) {
+    if (step >= state_.lesson->stepCount()) {  // the lesson stays where it is
+      problems.push_back({"step", std::to_string(linkStep), "the lesson has {1} steps: it opens at its first",
+                          std::to_string(state_.lesson->stepCount())});
+      return;
+    }
+    session_.hooks().goToStep(step);  // the address followed a step: move there
+    session_.hooks().changed();
+    return;
+  }
+  // A step the lesson does not have opens its first, said once the lesson is read.
+  session_.openLesson(file, step, [this, linkStep, problems](size_t steps) {
+    const LinkProblem beyond{"step", std::to_string(linkStep), "the lesson has {1} steps: it opens at its first", std::to_string(steps)};
+    if (showing_) {
+      state_.linkProblems.push_back(beyond);  // showUrlState says it with the others
+      return;
+    }
+    std::vector<LinkProblem> all = problems;  // opened later, once unsaved changes were answered for
+    all.push_back(beyond);
+    say(all);
+  });
+}
+
+std::optional<std::filesystem::path> Links::bundledPreset(const std::string& name) const {
+  const auto& presets = session_.files().presets();
+  const auto preset = std::find_if(presets.begin(), presets.end(), [&](const SceneFileInfo& p) { return p.file.stem() == name; });
+  if (preset == presets.end()) return std::nullopt;
+  return preset->file;
+}
+
+Camera Links::cameraOver(const CameraLink& link, const Camera& base, std::vector<LinkProblem>& problems) const {
+  const Camera c = link.applied(base);
+  const std::optional<CameraProblem> problem = cameraProblem(c);
+  if (!problem) return c;
+  problems.push_back({"", "", "the camera is not valid, the scene's own is shown: {1}", cameraProblemText(*problem, c, language())});
+  return base;
 }
 
 }  // namespace vplab

@@ -6,6 +6,7 @@
 #include "app/document/url_state.h"
 #include "app/session/viewer_model.h"
 
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <utility>
@@ -22,7 +23,9 @@ class Links {
   UrlState urlState() const;
   /// Shows a link's state. A named bundled scene starts a new document with the link's camera (at
   /// start, or asking first when changes would be lost); a camera alone is an edit of the open
-  /// scene (undoable). Throws vplab::Error when the scene is not bundled or cannot be read.
+  /// scene (undoable). What cannot be used (the link's problems, a scene or lesson vplab does not
+  /// bundle, a step the lesson does not have, a camera that is not valid) is left out, the rest
+  /// shown, and every part left out is named at once (ViewerModel::linkProblems, the status line).
   void showUrlState(const UrlState& link, bool atStart);
   /// The views' part of a link: each view's style and observer, the clipping strategy.
   UrlState views() const;
@@ -36,14 +39,22 @@ class Links {
     std::function<void()> showViews;
   };
   std::optional<Pending> takePending() { return std::exchange(pending_, std::nullopt); }
+  /// `base` with the link's camera parts, or `base` (a problem added) when they make no valid camera.
+  Camera cameraOver(const CameraLink& link, const Camera& base, std::vector<LinkProblem>& problems) const;
+  /// Names every part of a link left out, over the views and in the status line (empty: none).
+  void say(const std::vector<LinkProblem>& problems);
   void forgetPending() { pending_.reset(); }
 
  private:
   Language language() const { return state_.display.language; }
+  void show(const UrlState& link, bool atStart, std::vector<LinkProblem>& problems);
+  void showLesson(const std::filesystem::path& file, size_t linkStep, std::vector<LinkProblem>& problems);
+  std::optional<std::filesystem::path> bundledPreset(const std::string& name) const;
 
   ViewerModel& state_;
   Session& session_;
   std::optional<Pending> pending_;
+  bool showing_ = false;  // within showUrlState
 };
 
 }  // namespace vplab

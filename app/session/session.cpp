@@ -64,7 +64,7 @@ LessonContext Session::lessonContext() const {
   return c;
 }
 
-void Session::openLesson(const std::filesystem::path& file, size_t step) {
+void Session::openLesson(const std::filesystem::path& file, size_t step, std::function<void(size_t steps)> beyond) {
   // Read (and checked) before anything is asked or replaced: a broken lesson changes nothing.
   std::optional<Lesson> lesson;
   try {
@@ -74,13 +74,15 @@ void Session::openLesson(const std::filesystem::path& file, size_t step) {
     return;
   }
   auto shared = std::make_shared<Lesson>(std::move(*lesson));
-  unlessUnsaved([this, shared, step] {
-    const size_t first = std::min(step, shared->steps.size() - 1);
+  unlessUnsaved([this, shared, step, beyond] {
+    const size_t count = shared->steps.size();
+    const size_t first = step < count ? step : beyond ? 0 : count - 1;
     startDocument(shared->steps[first].state.scene);
     // The caption box names the lesson: the status line says nothing, and the panels keep its rows
     // for the step's evidence (at 1.6 it took two).
     state_.setStatus("", false);
     state_.lesson.emplace(std::move(*shared), first);
+    if (step >= count && beyond) beyond(count);
     hooks_.changed();
   });
 }
@@ -128,15 +130,14 @@ bool Session::beginFrame() {
   std::optional<Links::Pending> link = links_.takePending();
   if (loaded->scene) {
     const std::string file = loaded->scene->path.string();
-    try {
-      if (link) loaded->scene->camera = link->link.camera.over(loaded->scene->camera);
-    } catch (const Error& e) {
-      state_.setStatus(e.what(), true);  // as the link read at once would: nothing opened
-      return true;
-    }
+    // The link's camera over the scene it names; one that is no camera is left out, said with the
+    // link's other problems.
+    std::vector<LinkProblem> problems = state_.linkProblems;
+    if (link) loaded->scene->camera = links_.cameraOver(link->link.camera, loaded->scene->camera, problems);
     startDocument(std::move(*loaded->scene));
     state_.setStatus(text::fill(language(), "opened {1}", {file}), false);
     if (link) link->showViews();
+    if (link && !problems.empty()) links_.say(problems);
   } else if (loaded->object) {  // one undo step, recorded at the end of this frame
     Scene& scene = state_.doc.scene();
     state_.setStatus(text::fill(language(), "added {1}", {loaded->object->file}), false);

@@ -62,8 +62,10 @@ class Session {
   void startDocument(Scene scene, bool dirty = false);
   /// Opens a lesson (docs/lecturers.md "Lessons") at `step` (from 0), asking first when changes would be
   /// lost: its first step's scene becomes a new document and the caption box shows the step. A lesson
-  /// that cannot be read leaves everything as it was and says why in the status line.
-  void openLesson(const std::filesystem::path& file, size_t step = 0);
+  /// that cannot be read leaves everything as it was and says why in the status line. A step beyond
+  /// the lesson's last is its last; with `beyond`, the first, and `beyond` is told the lesson's step
+  /// count (a link that names a step the lesson does not have says so).
+  void openLesson(const std::filesystem::path& file, size_t step = 0, std::function<void(size_t steps)> beyond = {});
   /// What a lesson's steps are resolved against: the bundled scenes and a fresh document's views.
   LessonContext lessonContext() const;
 

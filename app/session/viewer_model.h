@@ -6,6 +6,7 @@
 #pragma once
 
 #include "app/document/document.h"
+#include "app/document/url_state.h"
 #include "app/inspect/picking.h"
 #include "app/lessons/lesson_player.h"
 #include "app/practice/practice.h"
@@ -140,6 +141,9 @@ struct StatusPart {
   bool quitRequested = false;   // asked to quit; a dirty document asks first
   bool quitConfirmed = false;
   bool screenshotRequested = false;  // F12 or the menu: the window (or the page) reads the frame back
+  // The parts of the last link that were left out (issue 41): named over the views until the user
+  // changes what the link showed (the page clears them) or follows another link.
+  std::vector<LinkProblem> linkProblems;
   void setStatus(std::string message, bool error) {
     status = std::move(message);
     statusIsError = error;

@@ -19,6 +19,7 @@
 //   camera.inc                       what makes a camera invalid (app/inspect/camera_text.cpp)
 //   page.inc                         the page's own texts (app/web/)
 //   practice.inc                     an exercise practised: the Tasks panel, Check, Hand in
+//   links.inc                        a link's parts not understood (app/document/url_state.cpp)
 #pragma once
 
 #include "base/language.h"
@@ -47,6 +48,7 @@ inline constexpr Entry kCatalogue[] = {
 #include "app/text/camera.inc"
 #include "app/text/page.inc"
 #include "app/text/practice.inc"
+#include "app/text/links.inc"
 };
 // clang-format on
 

@@ -150,6 +150,32 @@ void ViewPanes::lastValidNote() {
   ui::recordRect("view.lastValidNote");
 }
 
+void ViewPanes::linkNote() {
+  if (s_.linkProblems.empty() || linkNoteDrawn_) return;
+  linkNoteDrawn_ = true;
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  const float pad = 5 * uiScale_, wrap = std::max(1.f, max.x - min.x - 2 * pad);
+  // A line for each part left out, as many as fit in half the view; the others counted.
+  std::string note = ui::tr(s_, "Not understood in the link, and left out:");
+  const float room = (max.y - min.y) * 0.5f;
+  for (size_t i = 0; i < s_.linkProblems.size(); ++i) {
+    const std::string line = "\n\u2022 " + s_.linkProblems[i].said(s_.display.language);
+    const std::string rest = "\n" + ui::tr(s_, "and {1} more (the status line)", {std::to_string(s_.linkProblems.size() - i)});
+    if (ImGui::CalcTextSize((note + line + rest).c_str(), nullptr, false, wrap).y > room && i + 1 < s_.linkProblems.size()) {
+      note += rest;
+      break;
+    }
+    note += line;
+  }
+  const ImVec2 text = ImGui::CalcTextSize(note.c_str(), nullptr, false, wrap);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->PushClipRect(min, max, true);
+  draw->AddRectFilled(min, ImVec2(max.x, std::min(max.y, min.y + text.y + 2 * pad)), IM_COL32(20, 22, 28, 230));
+  draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(min.x + pad, min.y + pad), IM_COL32(255, 200, 90, 255),
+                note.c_str(), nullptr, wrap);
+  draw->PopClipRect();
+}
+
 std::optional<Vec3> ViewPanes::probePositionOf(ViewKind view) const {
   return s_.probe ? probePosition(s_.run(), *s_.probe, view) : std::nullopt;
 }
@@ -190,6 +216,7 @@ void ViewPanes::viewWindows() {
     s_.drag = {};
 
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
+  linkNoteDrawn_ = false;
   if (shown(ViewKind::world)) worldWindow(layout, flags, fbScale);
   if (shown(ViewKind::camera)) {
     ui::placeNext(layout, layout.camera, relayout_);
@@ -221,6 +248,7 @@ void ViewPanes::worldWindow(const ui::Layout& layout, ImGuiWindowFlags flags, Im
       ui::recordRect("view.world");
       busyMark(ViewKind::world);
       lastValidNote();
+      linkNote();
       const ImVec2 origin = ImGui::GetItemRectMin();
       const int w = cachedWidth(ViewKind::world), h = cachedHeight(ViewKind::world);
       mouse_.world(hovered, observer, w, h, mouseIn(origin, fbScale));
@@ -241,6 +269,7 @@ void ViewPanes::npcWindow(const ui::Layout& layout, ImGuiWindowFlags flags, ImVe
       const bool hovered = viewImage("npc", texture, size);
       busyMark(ViewKind::npc);
       lastValidNote();
+      linkNote();
       ui::recordRect("view.npc");
       mouse_.orbit(hovered, ViewKind::npc, s_.display.npc.orbit, observer, cachedWidth(ViewKind::npc), cachedHeight(ViewKind::npc),
                        mouseIn(ImGui::GetItemRectMin(), fbScale));
@@ -295,6 +324,7 @@ void ViewPanes::cameraWindowContents() {
   const bool hovered = viewImage("camera", texture, size);
   busyMark(ViewKind::camera);
   lastValidNote();
+  linkNote();
   ui::recordRect("view.camera");
   if (demo) {
     caption(at, size.x, IM_COL32(140, 230, 140, 255),

@@ -45,6 +45,9 @@ class ViewPanes {
   /// While the edited camera (or scene) is invalid, across the bottom of the last item (a view's
   /// image): that the view shows the last valid one, and why (issue 37: seen where people look).
   void lastValidNote();
+  /// While a link's parts were left out (ViewerModel::linkProblems), across the top of the last item
+  /// of the first view drawn: each part and why (issue 41: seen on any screen, a phone's too).
+  void linkNote();
   std::optional<Vec3> probePositionOf(ViewKind view) const;
   void stepHighlight();
   void cameraWindowContents();
@@ -61,6 +64,7 @@ class ViewPanes {
   ViewMouse mouse_;
   float uiScale_ = 1.f;
   bool relayout_ = true;
+  bool linkNoteDrawn_ = false;  // this frame's link note is in a view already
 };
 
 }  // namespace vplab

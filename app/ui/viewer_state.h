@@ -19,6 +19,13 @@ struct WidgetMemory {
     ImGuiID field = 0;          // which of its components
     std::array<double, 4> values{};  // its values so far, applied when it loses focus
   } typing;
+  // A drag field pressed and let go without dragging opens its text (issue 41: a tapped field takes
+  // the keys, so that a digit typed next goes into it and not to the lesson).
+  struct Pressed {
+    ImGuiID id = 0;             // the drag field held down, not dragged (0: none)
+    int component = 0;          // which of its components
+    bool open = false;          // let go: its text opens in the next frame
+  } pressed;
   struct Copied {
     std::string id;             // the copy button that copied last
     double at = 0;              // when (ImGui time, s)

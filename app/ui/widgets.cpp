@@ -36,22 +36,70 @@ void scrollAnchor(Widgets& w, const char* id) {
 
 namespace {
 
+/// The ImGui id of component `i` of the drag field `label` with N components (as DragScalarN and
+/// DragScalar make them, in the current ID stack).
+template <int N>
+ImGuiID componentId(const char* label, int i) {
+  if (N == 1) return ImGui::GetID(label);
+  ImGui::PushID(label);
+  ImGui::PushID(i);
+  const ImGuiID id = ImGui::GetID("");
+  ImGui::PopID();
+  ImGui::PopID();
+  return id;
+}
+
+/// Follows a press on the drag field `group` (`label`, N components): held and not dragged beyond
+/// ImGui's drag threshold, then let go, its text opens in the next frame (editInPlace).
+template <int N>
+void pressedWithoutDrag(WidgetMemory::Pressed& pressed, ImGuiID group, const char* label, bool typing) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const bool dragged = io.MouseDragMaxDistanceSqr[0] > io.MouseDragThreshold * io.MouseDragThreshold;
+  if (ImGui::IsItemActive() && !typing) {
+    if (dragged || io.KeyCtrl || !ImGui::IsMouseDown(0)) {  // dragged, Ctrl+click, or reached by keys
+      if (pressed.id == group) pressed = {};
+      return;
+    }
+    const ImGuiID active = ImGui::GetActiveID();
+    for (int i = 0; i < N; ++i)
+      if (componentId<N>(label, i) == active) pressed = {group, i, false};
+    return;
+  }
+  if (pressed.id != group || pressed.open) return;
+  if (ImGui::IsItemDeactivated() && !dragged && !typing) pressed.open = true;
+  else if (!ImGui::IsItemActive()) pressed = {};
+}
+
 // ImGui's drag fields become text fields on Ctrl+click or double-click, and then write the value
 // parsed from the text at every keystroke: typing "10" would apply F = 1 first (another camera, maybe
 // an invalid one, and an undo step). The field works on a copy instead; while its text is being
 // typed, the copy is kept in w.memory.typing and applied once, when the field loses focus (Enter, Tab or a
 // click elsewhere); Esc drops it. Dragging writes through at once, as before.
+//
+// A click or a tap that does not drag opens the text too (issue 41): a field that was tapped takes
+// the keys, as in a spreadsheet, so that "8" and Enter typed next go into it and not to a lesson's
+// step keys. Dragging still changes the value.
 template <int N>
-bool editInPlace(Widgets& w, double* value, const std::function<bool(double*)>& widget) {
+bool editInPlace(Widgets& w, const char* label, double* value, const std::function<bool(double*)>& widget) {
   std::array<double, N> copy;
   std::copy_n(value, N, copy.begin());
   const ImGuiID group = ImGui::GetID("##typing");  // this field's identity (within the panel's ID stack)
   if (w.memory.typing.id == group) std::copy_n(w.memory.typing.values.begin(), N, copy.begin());
+  WidgetMemory::Pressed& pressed = w.memory.pressed;
+  if (pressed.open && pressed.id == group) {
+    ImGui::SetKeyboardFocusHere(pressed.component);  // ImGui opens a drag field's text when it is focused
+    pressed = {};
+  }
   ImGui::BeginGroup();
   const bool changed = widget(copy.data());
   ImGui::EndGroup();
   const ImGuiContext& g = *ImGui::GetCurrentContext();
   const bool typing = ImGui::IsItemActive() && g.TempInputId != 0 && g.TempInputId == g.ActiveId;
+  pressedWithoutDrag<N>(pressed, group, label, typing);
+  // A double-click's first click opened the text already; its second selects the whole number, as
+  // a double-click on a drag field always did (ImGui's text would select one "word" of "3.000").
+  if (typing && ImGui::IsMouseDoubleClicked(0) && ImGui::IsItemHovered())
+    if (ImGuiInputTextState* state = ImGui::GetInputTextState(g.ActiveId)) state->SelectAll();
   if (typing) {
     // Ctrl+click from one component's text straight into another's: the first is finished.
     const bool otherField = w.memory.typing.id == group && w.memory.typing.field != g.ActiveId;
@@ -87,7 +135,7 @@ void fitLabel(const char* label) {
 bool dragVec3(Widgets& w, const char* label, const char* id, Vec3& v, float speed) {
   fitLabel(label);
   ImGui::PushID(id);
-  const bool changed = editInPlace<3>(w, &v.x, [&](double* p) {
+  const bool changed = editInPlace<3>(w, label, &v.x, [&](double* p) {
     return ImGui::DragScalarN(label, ImGuiDataType_Double, p, 3, speed, nullptr, nullptr, "%.3f");
   });
   ImGui::PopID();
@@ -100,7 +148,7 @@ bool dragDouble(Widgets& w, const char* label, const char* id, double& v, float 
   const bool bounded = min < max;
   fitLabel(label);
   ImGui::PushID(id);
-  const bool changed = editInPlace<1>(w, &v, [&](double* p) {
+  const bool changed = editInPlace<1>(w, label, &v, [&](double* p) {
     return ImGui::DragScalar(label, ImGuiDataType_Double, p, speed, bounded ? &min : nullptr, bounded ? &max : nullptr,
                              format);
   });

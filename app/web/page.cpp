@@ -77,6 +77,10 @@ struct Page {
   unsigned frames = 0;
   bool graphicsLost = false;  // between webglcontextlost and webglcontextrestored: nothing is drawn
   std::string shownHash, shownTitle;
+  // A link with parts left out stays in the address as it was given, and its note over the views,
+  // until the user changes what it showed (issue 41: the student sees what was wrong).
+  bool holdingLink = false;
+  std::optional<std::string> heldShows;  // what the held link showed, once its scene is read
   bool shownUnsaved = false;
   std::string storedAutosave;  // what this tab's localStorage key holds (empty: nothing)
   std::vector<std::pair<std::filesystem::path, std::string>> kept;  // offered kept scenes: file, key
@@ -178,6 +182,8 @@ struct Page {
       viewer.state().status = e.what();
       viewer.state().statusIsError = true;
     }
+    holdingLink = !viewer.state().linkProblems.empty();
+    heldShows.reset();
     input.changed = true;
   }
 
@@ -230,7 +236,16 @@ struct Page {
     mirrorAutosave();
     if (viewer.title() != shownTitle) page::setPageTitle(shownTitle = viewer.title());
     const std::string hash = encodeUrlState(viewer.session().links().urlState());
-    if (hash != shownHash) page::replaceLocationHash(shownHash = hash);
+    if (holdingLink) {
+      if (!heldShows) {
+        if (!viewer.session().loader().busy()) heldShows = hash;  // what the link showed, its scene read
+      } else if (hash != *heldShows) {  // the user changed it: the address follows again
+        holdingLink = false;
+        viewer.state().linkProblems.clear();
+        input.changed = true;
+      }
+    }
+    if (!holdingLink && hash != shownHash) page::replaceLocationHash(shownHash = hash);
     const bool unsaved = viewer.state().doc.dirty();
     if (unsaved != shownUnsaved) page::setUnsavedChanges(shownUnsaved = unsaved);
     if (frames == 1) page::firstFrameDrawn();
@@ -315,6 +330,9 @@ struct Page {
                      {"steps", s.lesson->stepCount()},
                      {"settled", s.lesson->settled()}};
     if (s.practice) j["exercise"] = exerciseJson(s);
+    j["linkProblems"] = nlohmann::json::array();
+    for (const LinkProblem& p : s.linkProblems)
+      j["linkProblems"].push_back({{"key", p.key}, {"value", p.value}, {"said", p.said(s.display.language)}});
     j["embed"] = nlohmann::json::array();
     for (ViewKind v : s.embedViews) j["embed"].push_back(std::string(toString(v)));
     nlohmann::json rects = nlohmann::json::object();

@@ -1,13 +1,14 @@
 // Lessons in the page (docs/lecturers.md "Lessons"): a link opens a bundled lesson at a step, the keys a
 // clicker sends advance it and the address follows the step; the embed form shows only the named
-// views and the caption, as a figure beside a course page's own text.
+// views and the caption, as a figure beside a course page's own text. A link explains itself (issue 41):
+// every part left out is named at once over the view, the valid lesson kept, the address as given.
 import assert from 'node:assert/strict';
 import { existsSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { after, before, describe, test } from 'node:test';
 
 import {
-  afterInput, cssRect, distinctColours, launchBrowser, openPage, rectPoint, startServer, tempDir, vplabState,
+  afterInput, cssRect, decodePng, distinctColours, launchBrowser, openPage, rectPoint, startServer, tempDir, vplabState,
   waitForState, waitFrames, webDir,
 } from './support.mjs';
 
@@ -154,6 +155,39 @@ describe('lessons in the browser', { concurrency: 1 }, () => {
     assert.deepEqual(state.camera.prp, typed.camera.prp, 'the recovered PRP is not the one typed');
     assert.equal(state.lesson?.step, 9, 'the recovered lesson is not at its step');
     assert.equal(state.caughtErrors, 0, `an error was caught: ${state.lastCaughtError}`);
+    await context.close();
+  });
+  test('(s) a link with three bad parts on a phone names all three over the view, keeps its lesson and its address', { timeout: 180_000 }, async () => {
+    const context = await browser.createBrowserContext();
+    const given = 'lesson=05-clipping&step=abc&zoom=2&vrp=1,2';
+    const { page, console: messages } = await openPage(context, `${server.url}#${given}`,
+      { viewport: { width: 390, height: 844, deviceScaleFactor: 2, isMobile: true, hasTouch: true } });
+    await waitForState(page, (s) => s.lesson && s.lesson.settled && s.linkProblems.length === 3, 'the lesson and three parts left out', messages);
+    let state = await vplabState(page);
+    assert.equal(state.lesson.file, '05-clipping.en.json', 'the valid lesson is opened');
+    assert.equal(state.lesson.step, 1, 'the bad step is ignored: the lesson opens at its first');
+    assert.deepEqual(state.linkProblems.map((p) => p.key), ['step', 'zoom', 'vrp'], 'every bad part, all at once');
+    for (const part of ['step="abc"', 'zoom="2"', 'vrp="1,2"']) assert.ok(state.status.includes(part), `${part} in: ${state.status}`);
+    assert.equal(await page.evaluate(() => location.hash), `#${given}`, 'the address stays as given');
+    // Seen on the phone without opening a panel: the note's amber text over the one view shown.
+    const view = ['view.world', 'view.camera', 'view.npc'].find((id) => state.rects[id]);
+    assert.ok(view, 'a view is shown');
+    const [x, y, w] = state.rects[view].map(Math.round);
+    const shot = decodePng(await page.screenshot({ type: 'png' }));
+    const scale = shot.width / state.canvas[0];
+    let amber = 0;
+    for (let py = Math.round(y * scale); py < Math.round((y + 120) * scale); ++py)
+      for (let px = Math.round(x * scale); px < Math.round((x + w) * scale); ++px) {
+        const i = (py * shot.width + px) * 4;
+        amber += shot.data[i] > 200 && shot.data[i + 1] > 150 && shot.data[i + 1] < 220 && shot.data[i + 2] < 120;
+      }
+    assert.ok(amber > 300, `the note is drawn over the view (${amber} amber pixels)`);
+
+    // The student moves on: the address follows again and the note goes.
+    await afterInput(page, () => page.keyboard.press('ArrowRight'));
+    await waitForState(page, (s) => s.lesson.step === 2 && /step=2/.test(s.hash) && s.linkProblems.length === 0, 'step 2, the note gone', messages);
+    assert.match(await page.evaluate(() => location.hash), /^#lesson=05-clipping\.en&step=2$/);
+    assert.deepEqual(errorsOf(messages), [], 'the page logged errors or warnings');
     await context.close();
   });
 });

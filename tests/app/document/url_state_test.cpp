@@ -39,14 +39,17 @@ UrlState everything() {
   return s;
 }
 
-/// What decoding `fragment` says is wrong, or "no error".
-std::string error(const std::string& fragment) {
-  try {
-    decodeUrlState(fragment);
-  } catch (const Error& e) {
-    return std::string(e.what());
-  }
-  return std::string("no error");
+/// What decoding `fragment` says is wrong, in English, every problem, or "no error".
+std::string error(const std::string& fragment, Language lang = Language::en) {
+  const UrlState s = decodeUrlState(fragment);
+  return s.problems.empty() ? std::string("no error") : saidTogether(s.problems, lang);
+}
+
+/// The keys of the problems decoding `fragment` finds, in order.
+std::vector<std::string> badKeys(const std::string& fragment) {
+  std::vector<std::string> keys;
+  for (const LinkProblem& p : decodeUrlState(fragment).problems) keys.push_back(p.key);
+  return keys;
 }
 
 TEST(UrlState, RoundTripsExactly) {
@@ -95,6 +98,7 @@ TEST(UrlState, CameraPartsGoOverTheScenesCamera) {
   };
   EXPECT_THAT(invalid("prp=1,2,3"), HasSubstr("the link's camera is not valid"));  // PRP on VRP
   EXPECT_THAT(invalid("front=-5&back=5"), HasSubstr("the link's camera is not valid"));
+  EXPECT_EQ(decodeUrlState("prp=1,2,3").camera.applied(base).prp, Vec3(1, 2, 3)) << "applied, valid or not";
   EXPECT_EQ(decodeUrlState("").camera.over(base), base);
 }
 
@@ -105,22 +109,44 @@ TEST(UrlState, AnEmptyFragmentGivesNothing) {
 }
 
 TEST(UrlState, HostileFragmentsAreNamedErrors) {
-  EXPECT_THAT(error("vrp=1,2"), HasSubstr("vrp=\"1,2\" has 2 numbers, 3 expected"));
-  EXPECT_THAT(error("vrp=1,2,3,4"), HasSubstr("more than 3"));
-  EXPECT_THAT(error("front=nan"), HasSubstr("front=\"nan\" is not 1 finite number"));
-  EXPECT_THAT(error("back=-inf"), HasSubstr("not 1 finite number"));
-  EXPECT_THAT(error("back=1e999"), HasSubstr("not 1 finite number"));
-  EXPECT_THAT(error("front=3x"), HasSubstr("not 1 finite number"));
+  EXPECT_THAT(error("vrp=1,2"), HasSubstr("vrp=\"1,2\": 3 finite numbers separated by commas expected"));
+  EXPECT_THAT(error("vrp=1,2,3,4"), HasSubstr("3 finite numbers"));
+  EXPECT_THAT(error("front=nan"), HasSubstr("front=\"nan\": a finite number expected"));
+  EXPECT_THAT(error("back=-inf"), HasSubstr("a finite number expected"));
+  EXPECT_THAT(error("back=1e999"), HasSubstr("a finite number expected"));
+  EXPECT_THAT(error("front=3x"), HasSubstr("a finite number expected"));
   EXPECT_THAT(error("projection=fisheye"), HasSubstr("not perspective, parallel or oblique"));
-  EXPECT_THAT(error("camera-style=pretty"), HasSubstr("is not a style"));
-  EXPECT_THAT(error("world=0,0,0,0,95,10,40"), HasSubstr("is no observer"));
-  EXPECT_THAT(error("world=0,0,0,0,0,-1,40"), HasSubstr("is no observer"));
+  EXPECT_THAT(error("camera-style=pretty"), HasSubstr("not a style"));
+  EXPECT_THAT(error("world=0,0,0,0,95,10,40"), HasSubstr("no observer"));
+  EXPECT_THAT(error("world=0,0,0,0,0,-1,40"), HasSubstr("no observer"));
   EXPECT_THAT(error("strategy=fast"), HasSubstr("not npc, wc or divide-first"));
   EXPECT_THAT(error("scene=../../etc/passwd"), HasSubstr("not the name of a bundled scene"));
-  EXPECT_THAT(error("zoom=2"), HasSubstr("\"zoom\" is not a key vplab knows"));
-  EXPECT_THAT(error("vrp"), HasSubstr("is not KEY=VALUE"));
+  EXPECT_THAT(error("zoom=2"), HasSubstr("zoom=\"2\": not a key vplab knows"));
+  EXPECT_THAT(error("vrp"), HasSubstr("vrp: not KEY=VALUE"));
   EXPECT_THAT(error(std::string(5000, 'a')), HasSubstr("5000 characters long"));
-  EXPECT_THAT(error("zoom\x01=2"), HasSubstr("\"zoom?\""));  // control characters are not echoed
+  EXPECT_THAT(error("zoom\x01=2"), HasSubstr("zoom?=")) << "control characters are not echoed";
+  EXPECT_THAT(error("embed=camera,tv"), HasSubstr("\"tv\" is not one of the views"));
+  EXPECT_THAT(error("step=3"), HasSubstr("a step without lesson=NAME"));
+}
+
+// Issue 41: a link explains itself. Every bad part is named at once, in the fragment's order and in
+// the UI's language, and every good part is kept as if the bad ones were not there.
+TEST(UrlState, EveryBadPartIsNamedAndTheRestIsKept) {
+  EXPECT_EQ(badKeys("scene=nope!&vrp=1,2"), (std::vector<std::string>{"scene", "vrp"}));
+  EXPECT_EQ(badKeys("lesson=nope!&step=abc"), (std::vector<std::string>{"lesson", "step"}));
+  const UrlState s = decodeUrlState("lesson=05-clipping&step=abc&zoom=2&prp=1,x,3");
+  EXPECT_EQ(s.lesson, "05-clipping") << "the valid lesson is kept";
+  EXPECT_EQ(s.step, 0u) << "the bad step is ignored: the lesson opens at its first";
+  EXPECT_EQ(badKeys("lesson=05-clipping&step=abc&zoom=2&prp=1,x,3"), (std::vector<std::string>{"step", "zoom", "prp"}));
+  const UrlState camera = decodeUrlState("scene=perspective&vrp=1,2&prp=0,0,9&front=x");
+  EXPECT_EQ(camera.scene, "perspective");
+  EXPECT_FALSE(camera.camera.vrp);
+  EXPECT_EQ(camera.camera.prp, Vec3(0, 0, 9));
+  EXPECT_FALSE(camera.camera.front);
+  // In German, the reasons are the lecture's words; the parts as written.
+  EXPECT_THAT(error("scene=nope!&vrp=1,2", Language::de),
+              HasSubstr("scene=\"nope!\": nicht der Name einer mitgelieferten Szene"));
+  EXPECT_THAT(error("scene=nope!&vrp=1,2", Language::de), HasSubstr("vrp=\"1,2\": 3 endliche Zahlen"));
 }
 
 // An exercise (issue 40): its topic, seed, student's id and projection, and what Check reveals; the
@@ -151,6 +177,10 @@ TEST(UrlState, ABadExerciseLinkNamesItsKey) {
   EXPECT_THAT(error("seed=3"), HasSubstr("no exercise=TOPIC"));
   EXPECT_THAT(error("exercise=clipping&seed=3&vrp=1,2,3"), HasSubstr("an exercise is its own scene"));
   EXPECT_THAT(error("exercise=clipping&seed=3&lesson=01-synthetic-camera"), HasSubstr("an exercise is its own scene"));
+  // The exercise is kept; what else the link gave is left out.
+  const UrlState s = decodeUrlState("exercise=clipping&seed=3&lesson=01-synthetic-camera");
+  ASSERT_TRUE(s.exercise);
+  EXPECT_TRUE(s.lesson.empty());
 }
 
 }  // namespace

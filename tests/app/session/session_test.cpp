@@ -288,13 +288,55 @@ TEST(Session, ALinkNamesTheSceneAndCameraAndShowsThemAgain) {
 
   UrlState bad;
   bad.scene = "nope";
-  try {
-    other.session.links().showUrlState(bad, false);
-    ADD_FAILURE() << "a scene that is not bundled was accepted";
-  } catch (const Error& e) {
-    EXPECT_THAT(e.what(), HasSubstr("nope"));
+  other.session.links().showUrlState(bad, false);
+  ASSERT_EQ(other.model.linkProblems.size(), 1u) << "a scene that is not bundled is named";
+  EXPECT_EQ(other.model.linkProblems[0].key, "scene");
+  EXPECT_THAT(other.model.status, HasSubstr("scene=\"nope\""));
+  EXPECT_TRUE(other.model.statusIsError);
+  EXPECT_EQ(other.model.doc.path(), preset("parallel.json")) << "a bad scene opens nothing";
+}
+
+// Issue 41: a link explains itself. `#lesson=05-clipping&step=abc` opens the lesson and says the
+// step was left out; a step the lesson does not have opens its first and says how many it has; three
+// bad keys are named together; an invalid camera is left out and named with its reason.
+TEST(Session, ALinkKeepsItsValidPartsAndNamesEveryPartLeftOut) {
+  {
+    Lab lab;
+    lab.session.links().showUrlState(decodeUrlState("lesson=05-clipping.en&step=abc"), true);
+    ASSERT_TRUE(lab.model.lesson.has_value()) << "the valid lesson is opened";
+    EXPECT_EQ(lab.model.lesson->step(), 0u);
+    ASSERT_EQ(lab.model.linkProblems.size(), 1u);
+    EXPECT_EQ(lab.model.linkProblems[0].key, "step");
   }
-  EXPECT_EQ(other.model.doc.path(), preset("parallel.json")) << "a bad link changes nothing";
+  {
+    Lab lab;
+    lab.session.links().showUrlState(decodeUrlState("lesson=05-clipping.en&step=99"), true);
+    ASSERT_TRUE(lab.model.lesson.has_value());
+    EXPECT_EQ(lab.model.lesson->step(), 0u) << "a step the lesson does not have: its first, not its last";
+    ASSERT_EQ(lab.model.linkProblems.size(), 1u);
+    EXPECT_THAT(lab.model.status, HasSubstr("step=\"99\": the lesson has " + std::to_string(lab.model.lesson->stepCount()) + " steps"));
+  }
+  {
+    Lab lab;
+    lab.model.display.language = Language::de;
+    lab.session.links().showUrlState(decodeUrlState("scene=nope&vrp=1,2&zoom=3&prp=0,2,7"), true);
+    std::vector<std::string> keys;
+    for (const LinkProblem& p : lab.model.linkProblems) keys.push_back(p.key);
+    EXPECT_EQ(keys, (std::vector<std::string>{"vrp", "zoom", "scene"})) << "every bad key, all at once";
+    EXPECT_THAT(lab.model.status, HasSubstr("Im Link nicht verstanden und weggelassen"));
+    EXPECT_THAT(lab.model.status, HasSubstr("keine der mitgelieferten Szenen"));
+    EXPECT_EQ(lab.model.doc.scene().camera.prp, Vec3(0, 2, 7)) << "the valid camera part is shown";
+  }
+  {
+    Lab lab;
+    const Camera before = lab.model.doc.scene().camera;
+    lab.session.links().showUrlState(decodeUrlState("prp=" + std::to_string(before.vrp.x) + "," + std::to_string(before.vrp.y) +
+                                                    "," + std::to_string(before.vrp.z)),
+                                     false);
+    EXPECT_EQ(lab.model.doc.scene().camera, before) << "PRP on VRP: the camera is left out";
+    ASSERT_EQ(lab.model.linkProblems.size(), 1u);
+    EXPECT_THAT(lab.model.status, HasSubstr("the camera is not valid"));
+  }
 }
 
 TEST(Session, ALessonOpensAtItsStepAndALinkToAnotherStepMovesIt) {

@@ -11,6 +11,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <imgui.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -82,6 +83,46 @@ TEST(LectureNeverFails, AnInvalidCameraInAFreeStepThenBackIsACutIntoTheStep) {
   p.settle();
   EXPECT_EQ(p.v.viewer().caught().count, 0u) << p.v.viewer().caught().last;
   EXPECT_EQ(p.s().lesson->step(), std::min<size_t>(9, p.s().lesson->stepCount() - 1));
+}
+
+// Issue 41: a field clicked (or tapped) once takes the keys. Lesson 02's step 9 asks for PRP = (0, 8, 0):
+// one click on PRP's y, "8" and Enter type it, and the lesson stays on step 9 (before, the digits
+// and Enter went to the lesson's step keys: it jumped to step 8 and replaced the camera). A drag on
+// the same field still changes the value, and opens no text.
+TEST(LectureNeverFails, AFieldClickedOnceTakesTheKeysAndTheLessonStays) {
+  Presenting p(8);
+  p.settle();
+  p.s().controlsTab = ViewerState::cameraTab;
+  p.v.frames(2);
+  const Vec3 before = p.s().doc.scene().camera.prp;
+  // The PRP row: x, y, z side by side, then the label; y is a little left of the row's middle.
+  const ImVec4 r = p.v.viewer().rects().rects.at("camera.prp");
+  const double x = r.x + r.z * 0.42, y = r.y + r.w / 2;
+  p.v.click(x, y);
+  p.v.frames(3);  // the text opens in the next frame; ImGui says it wants the keys from the frame after
+  ASSERT_TRUE(ImGui::GetIO().WantTextInput) << "one click opened the field's text";
+  p.v.type("8");
+  p.v.key(keys::kEnter);
+  p.settle();
+  EXPECT_EQ(p.s().lesson->step(), 8u) << "the digit and Enter went into the field, not to the lesson";
+  EXPECT_EQ(p.s().doc.scene().camera.prp, (Vec3{before.x, 8, before.z}));
+  EXPECT_FALSE(ImGui::GetIO().WantTextInput);
+  // A drag along the field changes the value as before and leaves no text open.
+  p.v.drag(x, y, x + 40, y);
+  p.v.frame();
+  EXPECT_NE(p.s().doc.scene().camera.prp.y, 8.0) << "dragging still changes the value";
+  EXPECT_FALSE(ImGui::GetIO().WantTextInput) << "a drag opens no text";
+  EXPECT_EQ(p.s().lesson->step(), 8u);
+  // A double-click, as users are used to, still types the whole number anew (not one "word" of it).
+  const double z = r.x + r.z * 0.70;
+  p.v.click(z, y);
+  p.v.click(z, y);
+  p.v.frames(3);
+  p.v.type("7");
+  p.v.key(keys::kEnter);
+  p.settle();
+  EXPECT_EQ(p.s().doc.scene().camera.prp.z, 7.0);
+  EXPECT_EQ(p.s().lesson->step(), 8u);
 }
 
 // An error in the middle of a frame (here: a step number that is no number, put where only digits
