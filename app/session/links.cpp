@@ -99,12 +99,12 @@ void Links::show(const UrlState& link, bool atStart, std::vector<LinkProblem>& p
     const std::filesystem::path file = bundledLessonFile(link.lesson, state_.display.language);
     if (!file.empty()) {
       if (!link.scene.empty() || !link.camera.empty())
-        problems.push_back({!link.scene.empty() ? "scene" : "", "", "left out: a lesson's step brings its own scene and camera"});
+        problems.push_back({!link.scene.empty() ? "scene" : "", "", "left out: a lesson's step brings its own scene and camera", {}});
       showLesson(file, link.step, problems);
       return;
     }
     // The rest of the link is used as if it named no lesson.
-    problems.push_back({"lesson", link.lesson, "not one of vplab's bundled lessons"});
+    problems.push_back({"lesson", link.lesson, "not one of vplab's bundled lessons", {}});
   }
   auto showViews = [this, link] {
     applyViews(link);
@@ -112,7 +112,7 @@ void Links::show(const UrlState& link, bool atStart, std::vector<LinkProblem>& p
   };
   std::string scene = link.scene;
   if (!scene.empty() && !bundledPreset(scene)) {
-    problems.push_back({"scene", scene, "not one of vplab's bundled scenes"});
+    problems.push_back({"scene", scene, "not one of vplab's bundled scenes", {}});
     scene.clear();
   }
   const bool otherScene = !scene.empty() && scene != urlState().scene;

@@ -113,6 +113,10 @@ struct LayoutPart {
   bool antialias = true;        // 4× multisampling in the world, NPC and morph views (off by default on
                                 // a software renderer, where it costs more than all the drawing)
   float uiScale = 1.f;          // fonts and handles; applied at the start of the next frame
+  // The last pointer was a finger (the page on a touch screen): targets a finger's size, handles and
+  // vertices hit within a finger's radius (app/ui/touch.h, issue 41); applied with uiScale.
+  bool touch = false;
+  float cssPixel = 1.f;         // screen pixels a CSS pixel has (the page's devicePixelRatio; 1 on the desktop)
   bool showHelp = false;
   // The compact layout of a phone's screen (ui::tooSmallForDesktop): one view at a time, chosen in
   // the switcher at the bottom, and at most one panel below it (upright) or beside it (on its side).

@@ -129,10 +129,16 @@ inline ImGuiWindowFlags layoutFlags(const Layout& l, ImGuiWindowFlags flags) {
   return l.compact || !l.onlyViews.empty() ? flags | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse : flags;
 }
 
-/// The switcher's height at UI scale `scale` (a row of buttons large enough for a finger).
-inline float switcherHeight() {
+/// The switcher's buttons' padding: twice the frame's height for a finger with a mouse's style; the
+/// touch style's frames are a finger's size already (app/ui/touch.h).
+inline ImVec2 switcherPadding(bool touch) {
   const ImGuiStyle& style = ImGui::GetStyle();
-  return ImGui::GetFrameHeight() + style.FramePadding.y * 2 + style.WindowPadding.y * 2;
+  return ImVec2(style.FramePadding.x * 1.5f, style.FramePadding.y * (touch ? 1 : 2));
+}
+
+/// The switcher's height (a row of buttons large enough for a finger).
+inline float switcherHeight(bool touch) {
+  return ImGui::GetFontSize() + switcherPadding(touch).y * 2 + ImGui::GetStyle().WindowPadding.y * 2;
 }
 
 /// The layout of this frame: compact where it is allowed and the display is too small.
@@ -140,7 +146,7 @@ inline Layout currentLayout(const ViewerState& s, float scale) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   if (!s.embedViews.empty()) return computeEmbedLayout(display, s.captionHeight, s.embedViews);
   if (s.compactAllowed && tooSmallForDesktop(display, scale))
-    return computeCompactLayout(display, ImGui::GetFrameHeight(), switcherHeight(), s.compactPanel != ViewerState::noPanel,
+    return computeCompactLayout(display, ImGui::GetFrameHeight(), switcherHeight(s.touch), s.compactPanel != ViewerState::noPanel,
                                 s.captionHeight);
   return computeLayout(display, ImGui::GetFrameHeight(), scale, s.captionHeight, lessonEvidenceInInspector(s));
 }

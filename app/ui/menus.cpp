@@ -17,6 +17,7 @@
 #include <imgui_internal.h>
 
 #include <array>
+#include <optional>
 #include <tuple>
 
 namespace vplab {
@@ -37,6 +38,7 @@ Enum nextOf(const std::array<Enum, N>& all, Enum value) {
 
 void Menus::menuBar() {
   if (!ImGui::BeginMainMenuBar()) return;
+  std::optional<ui::FingerRows> rows(std::in_place, s_.touch);  // every menu's entries, on touch
   const bool fileMenu = ImGui::BeginMenu(ui::tr(s_, "File"));
   ui::recordRect("menu.file");
   if (fileMenu) {
@@ -110,6 +112,7 @@ void Menus::menuBar() {
     if (ImGui::MenuItem(ui::tr(s_, "Mouse and keys"), "F1")) s_.showHelp = true;
     ImGui::EndMenu();
   }
+  rows.reset();
   ImGui::EndMainMenuBar();
 }
 

@@ -131,6 +131,7 @@ void stepThroughSection(Widgets& w, const DocumentPart& d, const RunPart& r, Lec
   fitLabel(objectLabel);
   const Language lang = w.language();
   if (ImGui::BeginCombo(objectLabel, nameIn(scene.objects[size_t(st.object)], lang).c_str())) {
+    const FingerRows rows(w.touch);
     for (int i = 0; i < int(scene.objects.size()); ++i)
       if (ImGui::Selectable((nameIn(scene.objects[size_t(i)], lang) + "##" + std::to_string(i)).c_str(), i == st.object))
         st.object = i;

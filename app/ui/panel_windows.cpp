@@ -9,6 +9,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include <algorithm>
 #include <tuple>
 
 namespace vplab {
@@ -101,13 +102,14 @@ void PanelWindows::compactSwitcher(float scale) {
   if (s_.probe && s_.probe != s_.probeShown && s_.compactPanel == ViewerState::noPanel) s_.compactPanel = ViewerState::inspectPanel;
   ImGui::SetNextWindowPos(l.switcher.pos);
   ImGui::SetNextWindowSize(l.switcher.size);
-  const ImGuiStyle& style = ImGui::GetStyle();
-  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(style.FramePadding.x * 1.5f, style.FramePadding.y * 2));
+  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ui::switcherPadding(s_.touch));
   ImGui::Begin("##switcher", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
   auto choice = [&](const char* name, const char* id, bool selected) {
     ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(selected ? ImGuiCol_TabActive : ImGuiCol_Tab));
-    const bool pressed = ImGui::Button(name);
+    // At least as wide as tall: "NPC" is a finger's target too.
+    const float width = std::max(ImGui::CalcTextSize(name).x + ImGui::GetStyle().FramePadding.x * 2, ImGui::GetFrameHeight());
+    const bool pressed = ImGui::Button(name, ImVec2(width, 0));
     ImGui::PopStyleColor();
     ui::recordRect(id);
     ImGui::SameLine();

@@ -2,6 +2,7 @@
 #include "app/ui/view_mouse.h"
 
 #include "app/inspect/picking.h"
+#include "app/ui/touch.h"
 #include "app/ui/widgets.h"
 
 #include <imgui.h>
@@ -11,6 +12,12 @@
 #include <string>
 
 namespace vplab {
+
+double ViewMouse::pickRadius() const {
+  if (!s_.touch) return kPickRadiusPx;
+  // In the image's pixels, the framebuffer's.
+  return double(ui::fingerPixels(ui::kTouchRadiusPx, s_.uiScale, s_.cssPixel) * ImGui::GetIO().DisplayFramebufferScale.x);
+}
 
 // A click: the left button released where it went down.
 bool ui::viewClicked() {
@@ -35,7 +42,7 @@ void ViewMouse::orbit(bool hovered, ViewKind view, Orbit& orbit, const ViewCamer
     if (s_.drag.kind == Drag::Kind::pan) panBy(orbit, io.MouseDelta.x / h, io.MouseDelta.y / h);
   }
   if (hovered && io.MouseWheel != 0) zoomBy(orbit, std::pow(0.88, io.MouseWheel));
-  if (hovered && ui::viewClicked() && view != ViewKind::morph) s_.probe = pickVertex(s_.run(), view, observer, w, h, mouse, kPickRadiusPx);
+  if (hovered && ui::viewClicked() && view != ViewKind::morph) s_.probe = pickVertex(s_.run(), view, observer, w, h, mouse, pickRadius());
 }
 
 void ViewMouse::morph(bool hovered) {
@@ -49,7 +56,7 @@ void ViewMouse::morph(bool hovered) {
 // Where the world view's handles are, in screen units (ui::RectLog "handle.vrp", "handle.prp",
 // "handle.xmin", …, "handle.front-f"): the UI tests and the browser tests grab them there.
 void ViewMouse::recordHandles(ImVec2 origin, const ViewCamera& observer, int w, int h, ImVec2 fbScale) {
-  const float r = float(kPickRadiusPx) / fbScale.x;
+  const float r = float(pickRadius()) / fbScale.x;
   for (Handle handle : kHandles) {
     const Projected p = projectToPixels(observer, handlePosition(s_.run(), handle), w, h);
     if (!p.visible) continue;
@@ -62,7 +69,7 @@ void ViewMouse::recordHandles(ImVec2 origin, const ViewCamera& observer, int w, 
 
 void ViewMouse::world(bool hovered, const ViewCamera& observer, int w, int h, Vec2 mouse) {
   s_.hovered = hovered && s_.drag.kind == Drag::Kind::none
-                   ? pickHandle(s_.run(), observer, w, h, mouse, kPickRadiusPx + 3)
+                   ? pickHandle(s_.run(), observer, w, h, mouse, pickRadius() + 3)
                    : Handle::none;
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && s_.hovered != Handle::none)
     s_.drag = {Drag::Kind::handle, ViewKind::world, s_.hovered};

@@ -31,6 +31,10 @@ class ViewMouse {
   /// Where the world view's handles are, in screen units, for the tests (ui::RectLog "handle.vrp", …).
   void recordHandles(ImVec2 origin, const ViewCamera& observer, int w, int h, ImVec2 fbScale);
 
+  /// How near (image pixels) the pointer must be to a handle or a vertex: a mouse's kPickRadiusPx, a
+  /// finger's radius on touch (app/ui/touch.h) in the image's pixels.
+  double pickRadius() const;
+
  private:
   ViewerState& s_;
 };

@@ -235,10 +235,13 @@ void ViewPanes::worldWindow(const ui::Layout& layout, ImGuiWindowFlags flags, Im
   if (ImGui::Begin(ui::tr(s_, "World view (WC)###World view (WC)"), nullptr, flags)) {
     const ImVec2 size = ImGui::GetContentRegionAvail();
     if (size.x >= 8 && size.y >= 8) {
-      // On a phone the view's shape changes with the panel and the phone's turn: the scene is framed
-      // for the new shape until the user turns the view (then the user's observer stays).
+      // The view's shape changes with the window, a phone's panel and its turn, and a tablet's view
+      // is nearly square: the scene is framed for the shape it is shown in (PRP and the whole view
+      // volume in sight, issue 41) until the user turns the view (then the user's observer stays).
+      // A lesson's steps were framed for the shape the lesson opened in (lesson_framing.h): on the
+      // desktop they keep it, on a phone's compact layout the default framing follows the shape.
       const double aspect = aspectOf(size);
-      if (layout.compact && std::abs(aspect - s_.worldAspect) > 1e-3 &&
+      if ((layout.compact || !s_.lesson) && std::abs(aspect - s_.worldAspect) > 1e-3 &&
           s_.display.world.orbit == defaultWorldOrbit(s_.doc.shown(), s_.worldAspect))
         s_.display.world.orbit = defaultWorldOrbit(s_.doc.shown(), aspect);
       s_.worldAspect = aspect;
@@ -344,7 +347,7 @@ void ViewPanes::cameraWindowContents() {
     return;
   }
   ViewCamera none;
-  s_.probe = pickVertex(s_.run(), ViewKind::camera, none, int(size.x), int(size.y), mouse, kPickRadiusPx);
+  s_.probe = pickVertex(s_.run(), ViewKind::camera, none, int(size.x), int(size.y), mouse, mouse_.pickRadius());
 }
 
 void ViewPanes::morphWindow() {

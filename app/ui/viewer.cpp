@@ -8,6 +8,7 @@
 #include "app/ui/layout.h"
 #include "app/ui/lesson_presenter.h"
 #include "app/ui/panels.h"
+#include "app/ui/touch.h"
 #include "app/ui/widgets.h"
 #include "base/error.h"
 
@@ -16,6 +17,7 @@
 #include <imgui_internal.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -36,7 +38,13 @@ void setUpFonts(float scale) {
   else io.Fonts->AddFontDefault();
 }
 
-void setUpStyle(float scale, Theme theme) {
+/// A finger's target height in pixels at UI scale `scale`, 0 for a mouse.
+float touchTarget(const ViewerState& s, float scale) {
+  return s.touch ? ui::fingerPixels(ui::kTouchTargetPx, scale, s.cssPixel) : 0.f;
+}
+
+/// The style at UI scale `scale`; `touchTarget` > 0: a finger's, every target that many pixels tall.
+void setUpStyle(float scale, Theme theme, float touchTarget) {
   if (theme == Theme::light) ImGui::StyleColorsLight();
   else ImGui::StyleColorsDark();
   ImGuiStyle& style = ImGui::GetStyle();
@@ -44,7 +52,21 @@ void setUpStyle(float scale, Theme theme) {
   style.FrameRounding = 2;
   style.WindowBorderSize = 1;
   style.ItemSpacing = ImVec2(7, 5);
+  if (touchTarget > 0) {  // a finger's gaps (app/ui/touch.h), a button's label well inside it, a scrollbar a thumb can hold
+    style.ItemSpacing = ImVec2(ui::kTouchGapPx, ui::kTouchGapPx);
+    style.ItemInnerSpacing = ImVec2(ui::kTouchGapPx, ui::kTouchGapPx);
+    style.FramePadding.x = 10;
+    style.ScrollbarSize = 20;
+    style.GrabMinSize = 20;
+  }
   style.ScaleAllSizes(scale);
+  if (touchTarget > 0) {
+    // A field, a button, a tab, a checkbox, the menu bar are the font's height and twice the frame's
+    // padding: padded to a target's height, rounded up so that no rounding makes one a pixel short.
+    const ImGuiIO& io = ImGui::GetIO();
+    const float font = io.Fonts->ConfigData.empty() ? 13.f : io.Fonts->ConfigData[0].SizePixels;
+    style.FramePadding.y = std::ceil(std::max(0.f, touchTarget - font) / 2);
+  }
 }
 
 /// The busy mark's spinner steps 10 times a second (a frame each, nothing else while idle).
@@ -79,7 +101,7 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
   io.UserData = &rects_;     // where the widgets record their rects (ui::recordRect)
   io.ConfigWindowsMoveFromTitleBarOnly = true;
   setUpFonts(uiScale);
-  setUpStyle(uiScale, s_.display.theme);
+  setUpStyle(uiScale, s_.display.theme, touchTarget(s_, uiScale));
   // WebGL2 (the browser) and OpenGL ES are GLSL ES 3.00; the desktop's window is OpenGL 3.3 core.
   const bool es = gl::dialectOf(context.gl()) == gl::GlslDialect::es300;
   if (!ImGui_ImplOpenGL3_Init(es ? "#version 300 es" : "#version 330 core")) {
@@ -102,8 +124,10 @@ void Viewer::applyUiScale(float scale) {
   ImGui_ImplOpenGL3_DestroyFontsTexture();
   ImGui_ImplOpenGL3_CreateFontsTexture();
   ImGui::GetStyle() = ImGuiStyle();
-  setUpStyle(scale, s_.display.theme);
+  setUpStyle(scale, s_.display.theme, touchTarget(s_, scale));
   styledTheme_ = s_.display.theme;
+  styledTouch_ = s_.touch;
+  styledCssPixel_ = s_.cssPixel;
   renderer_.setScale(scale);
   relayout_ = true;
 }
@@ -143,8 +167,10 @@ std::vector<ViewKind> Viewer::viewsNotReady() const {
 
 void Viewer::makeCurrent() { ImGui::SetCurrentContext(imgui_); }
 
+bool Viewer::wantsText() const { return imgui_->IO.WantTextInput || s_.widgets.typing.id != 0; }
+
 double Viewer::wakeIn() const {
-  if (settleFrames_ > 0 || s_.morphPlaying || s_.animateUntil > imgui_->Time) return 0;
+  if (settleFrames_ > 0 || s_.morphPlaying || s_.animateUntil > imgui_->Time || touchScroll_.moving()) return 0;
   if (s_.lesson && (s_.lesson->moving(imgui_->Time) || !s_.lesson->settled())) return 0;  // moving into a step
   double wake = 1e9;
   // A run of the pipeline or a view's image finished on its thread is shown at once; until then the
@@ -205,7 +231,7 @@ void Viewer::recoverFrom(const std::string& what) {
 
 void Viewer::drawFrame(GLuint framebuffer, int width, int height) {
   // The font atlas is locked during a frame: the scale (and with it the style) changes before one.
-  if (s_.uiScale != uiScale_ || s_.display.theme != styledTheme_) applyUiScale(s_.uiScale);
+  if (s_.uiScale != uiScale_ || s_.display.theme != styledTheme_ || s_.touch != styledTouch_ || (s_.touch && s_.cssPixel != styledCssPixel_)) applyUiScale(s_.uiScale);
   if (settleFrames_ > 0) --settleFrames_;
   images_.beginFrame();
   rects_.visible.clear();  // filled again by this frame's widgets
@@ -265,6 +291,7 @@ void Viewer::drawFrame(GLuint framebuffer, int width, int height) {
   }
   menus_.helpWindow();
   dialogs_.draw(uiScale_);
+  touchScroll_.endOfFrame(s_.touch, now);
   relayout_ = false;
   images_.endFrame();
   if (const auto error = images_.takeError()) {  // a view's image failed on the render thread: said, counted

@@ -19,6 +19,7 @@
 #include "app/session/session.h"
 #include "app/ui/session_dialogs.h"
 #include "app/ui/shown_run.h"
+#include "app/ui/touch_scroll.h"
 #include "app/ui/view_panes.h"
 #include "app/ui/viewer_state.h"
 #include "app/ui/widgets.h"
@@ -62,6 +63,12 @@ class Viewer {
   const Session& session() const { return session_; }
   /// Makes this viewer's ImGui context the current one (input is fed to the current context).
   void makeCurrent();
+  /// Whether a field has the keys (a text field, or a number field's text open): a phone shows its
+  /// on-screen keyboard for it (the page, issue 41).
+  bool wantsText() const;
+  /// A finger lifts moving at (vx, vy) pixels a second (the page measures it from its touch events'
+  /// times): a swipe on a panel coasts at that speed (ui::TouchScroll).
+  void fingerLifting(float vx, float vy) { touchScroll_.fingerLifting(ImVec2(vx, vy)); }
   ViewerState& state() { return s_; }
   const ViewerState& state() const { return s_; }
   /// Whether a modal dialog (a question of the session, the file chooser) takes the keys.
@@ -135,6 +142,9 @@ class Viewer {
   Menus menus_;
   float uiScale_;
   Theme styledTheme_ = Theme::dark;  // the ImGui colours set up (StyleColorsDark or Light)
+  ui::TouchScroll touchScroll_;      // a swipe scrolls the panel under the finger
+  bool styledTouch_ = false;         // the style set up for a finger (app/ui/touch.h)
+  float styledCssPixel_ = 1.f;       // ... of a CSS pixel this large
   int lastWidth_ = 0, lastHeight_ = 0;
   bool inspectorLeft_ = false;  // the lesson layout's inspector in the tall column (ui::lessonEvidenceInInspector)
   bool relayout_ = true;

@@ -34,6 +34,17 @@ void scrollAnchor(Widgets& w, const char* id) {
   if (--w.scrollFrames <= 0) w.scrollTo.clear();
 }
 
+FingerRows::FingerRows(bool touch) : pushed_(touch) {
+  // The style padded every frame to a target's height (setUpStyle): a row as tall as a frame.
+  if (pushed_)
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing,
+                        ImVec2(ImGui::GetStyle().ItemSpacing.x, ImGui::GetFrameHeight() - ImGui::GetFontSize()));
+}
+
+FingerRows::~FingerRows() {
+  if (pushed_) ImGui::PopStyleVar();
+}
+
 namespace {
 
 /// The ImGui id of component `i` of the drag field `label` with N components (as DragScalarN and

@@ -19,12 +19,13 @@ namespace vplab::ui {
 /// panel is handed this and the parts of the state it reads and edits (app/ui/panels.h).
 struct Widgets {
   explicit Widgets(ViewerState& s)
-      : views(s), memory(s.widgets), scrollTo(s.lessonScrollTo), scrollFrames(s.lessonScrollFrames), animateUntil(s.animateUntil) {}
+      : views(s), memory(s.widgets), scrollTo(s.lessonScrollTo), scrollFrames(s.lessonScrollFrames), animateUntil(s.animateUntil), touch(s.touch) {}
   const ViewsPart& views;  // the language
   WidgetMemory& memory;
   std::string& scrollTo;   // LecturePart::lessonScrollTo
   int& scrollFrames;       // LecturePart::lessonScrollFrames
   double& animateUntil;    // LayoutPart::animateUntil
+  bool touch;              // LayoutPart::touch: a finger's targets (app/ui/touch.h)
   Language language() const { return views.display.language; }
 };
 
@@ -52,6 +53,20 @@ struct RectLog {
 };
 /// The current ImGui context's RectLog; none in a context without a viewer.
 RectLog* rectLog();
+
+/// On touch, the rows of a menu or of a combo's list a finger's height apart (an entry's hit box
+/// spans the gaps to its neighbours, ImGui's Selectable); nothing with a mouse. Lives while the rows
+/// are submitted.
+class FingerRows {
+ public:
+  explicit FingerRows(bool touch);
+  ~FingerRows();
+  FingerRows(const FingerRows&) = delete;
+  FingerRows& operator=(const FingerRows&) = delete;
+
+ private:
+  bool pushed_;
+};
 
 /// A drag field for a WC vector; records its rect as `id` (recordRect).
 bool dragVec3(Widgets& w, const char* label, const char* id, Vec3& v, float speed = 0.02f);

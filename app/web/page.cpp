@@ -26,6 +26,7 @@
 #include <GLFW/glfw3.h>
 #include <emscripten.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // ImTextCharFromUtf8
 #include <backends/imgui_impl_glfw.h>
 
 #include <nlohmann/json.hpp>
@@ -82,6 +83,7 @@ struct Page {
   bool holdingLink = false;
   std::optional<std::string> heldShows;  // what the held link showed, once its scene is read
   bool shownUnsaved = false;
+  bool keysWanted = false;  // ImGui wanted text input in the last frame (the on-screen keyboard's focus)
   std::string storedAutosave;  // what this tab's localStorage key holds (empty: nothing)
   std::vector<std::pair<std::filesystem::path, std::string>> kept;  // offered kept scenes: file, key
   std::string reply;  // the last string handed to JavaScript (valid until the next call)
@@ -96,6 +98,7 @@ struct Page {
     files = chooser.get();
     viewer.session().files().useFileChooser(std::move(chooser), /*browser=*/true);
     viewer.state().compactAllowed = true;  // a phone's screen: one view at a time (app/ui/layout.h)
+    viewer.state().cssPixel = float(std::clamp(page::devicePixelRatio(), 1.0, 4.0));
     // SwiftShader takes about 7 s for the three views of a million triangles: a large scene's views
     // are drawn across frames (docs/measured.md "Large scenes in the page").
     viewer.images().drawInSlices(kFirstSliceTriangles);
@@ -193,6 +196,7 @@ struct Page {
     const double ratio = pageScale();
     if (ratio == pixelRatio) return;
     viewer.state().uiScale = float(viewer.state().uiScale * ratio / pixelRatio);
+    viewer.state().cssPixel = float(std::clamp(page::devicePixelRatio(), 1.0, 4.0));
     pixelRatio = ratio;
     input.changed = true;
   }
@@ -249,6 +253,22 @@ struct Page {
     const bool unsaved = viewer.state().doc.dirty();
     if (unsaved != shownUnsaved) page::setUnsavedChanges(shownUnsaved = unsaved);
     if (frames == 1) page::firstFrameDrawn();
+    // A field's text closed (Enter, a tap elsewhere): the on-screen keyboard goes with it.
+    const bool wants = viewer.wantsText();
+    if (wants != keysWanted) page::setKeysWanted(keysWanted = wants);
+  }
+
+  /// Whether the finger lifting now gives a field the keys (index.html then focuses its hidden input,
+  /// which opens a phone's on-screen keyboard: only a handler of the tap itself may). A number field
+  /// held and not dragged opens its text as it is let go (editInPlace); a text field took the keys as
+  /// it was pressed. A press not yet seen by ImGui (a tap quicker than a frame) is drawn first.
+  bool takesKeysOnRelease() {
+    if (!graphicsLost && !input.queue.empty()) {
+      int w = 0, h = 0;
+      window.framebufferSize(w, h);
+      drawFrame(w, h);
+    }
+    return viewer.state().widgets.pressed.id != 0 || viewer.wantsText();
   }
 
   /// The browser took the WebGL context away (webglcontextlost): nothing is drawn until it is given
@@ -343,6 +363,8 @@ struct Page {
     j["canvas"] = {w, h};
     j["devicePixelRatio"] = page::devicePixelRatio();
     j["uiScale"] = s.uiScale;
+    j["touch"] = s.touch;
+    j["keysWanted"] = keysWanted;
     j["compact"] = s.compactShown;
     j["compactView"] = std::string(toString(s.compactView));
     j["compactPanel"] = s.compactPanel == ViewerState::controlsPanel ? "controls"
@@ -420,6 +442,37 @@ EMSCRIPTEN_KEEPALIVE void vplab_status(Page* p, const char* message, int error) 
 EMSCRIPTEN_KEEPALIVE void vplab_pointer(Page* p, double x, double y, int down) {
   p->input.queue.mouseMove(x, y);
   if (down >= 0) p->input.queue.mouseButton(0, down == 1);
+}
+
+/// The last pointer was a finger (`touch` 1: a touch began; the page started on a coarse pointer) or
+/// a mouse (0): a finger's targets and handle radius (app/ui/touch.h), from the next frame.
+EMSCRIPTEN_KEEPALIVE void vplab_touch(Page* p, int touch) {
+  p->viewer.state().touch = touch != 0;
+  p->input.changed = true;
+}
+
+/// The finger lifts moving at (vx, vy) canvas pixels a second, measured from its touch events' times.
+EMSCRIPTEN_KEEPALIVE void vplab_finger_lifting(Page* p, double vx, double vy) { p->viewer.fingerLifting(float(vx), float(vy)); }
+
+/// 1 when the finger lifting now gives a field the keys (Page::takesKeysOnRelease).
+EMSCRIPTEN_KEEPALIVE int vplab_takes_keys(Page* p) { return p->takesKeysOnRelease() ? 1 : 0; }
+
+/// Text typed on the on-screen keyboard (UTF-8), which came without key events.
+EMSCRIPTEN_KEEPALIVE void vplab_text(Page* p, const char* utf8) {
+  for (const char* c = utf8; *c;) {
+    unsigned codepoint = 0;
+    const int length = ImTextCharFromUtf8(&codepoint, c, nullptr);
+    if (length <= 0) break;
+    p->input.queue.character(codepoint);
+    c += length;
+  }
+}
+
+/// A key the on-screen keyboard sent without a key event (Backspace as "deleteContentBackward"),
+/// pressed and let go; `code` is GLFW's (app/ui/keys.h).
+EMSCRIPTEN_KEEPALIVE void vplab_key_stroke(Page* p, int code) {
+  p->input.queue.key(code, true);
+  p->input.queue.key(code, false);
 }
 
 /// A pinch as the mouse wheel: steps > 0 zoom in.

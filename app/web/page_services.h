@@ -49,6 +49,9 @@ void setUnsavedChanges(bool unsaved);
 void buildInWorker(uint64_t id, const std::string& text, const std::string& source, const std::filesystem::path& baseDir);
 /// The first frame is on the canvas: resolves window.vplab.ready and notes the time.
 void firstFrameDrawn();
+/// Whether a field has the keys: when none has, the page's hidden input lets go of the focus, which
+/// closes a phone's on-screen keyboard (index.html opens it, in the tap's handler).
+void setKeysWanted(bool wanted);
 /// The page's document.title.
 void setPageTitle(const std::string& title);
 /// Says on the page, over the canvas, that the lab stopped (an unexpected error); also console.error.

@@ -10,11 +10,9 @@
 // The desktop window's monkey (tests/app/window/monkey_test.cpp) gives 20 000 events under ASan +
 // UBSan; SwiftShader draws the page's frames on the same two cores, so the page gets fewer.
 import assert from 'node:assert/strict';
-import { existsSync } from 'node:fs';
-import path from 'node:path';
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 
-import { cssRect, launchBrowser, openPage, startServer, vplabState, webDir } from './support.mjs';
+import { cssRect, openPage, servedPageAndBrowser, vplabState } from './support.mjs';
 
 const seed = Number(process.env.VPLAB_MONKEY_SEED ?? 41);
 const events = Number(process.env.VPLAB_MONKEY_EVENTS ?? 600);
@@ -43,24 +41,12 @@ const scenes = ['default', 'perspective', 'parallel', 'oblique-cabinet', 'obliqu
   'vanishing-1', 'vanishing-2', 'vanishing-3'];
 const viewports = [[1280, 720], [1024, 768], [1920, 1080], [390, 844], [844, 390], [800, 600]];
 
-let server;
-let browser;
-
-before(async () => {
-  assert.ok(existsSync(path.join(webDir, 'index.html')), `${webDir}/index.html is missing: build the page with scripts/web.sh`);
-  server = await startServer(webDir);
-  browser = await launchBrowser();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+const served = servedPageAndBrowser();
 
 // Found by the monkey: a page exactly the screen's size (a phone's, here headless Chromium's 800 × 600
 // screen) made Emscripten's GLFW ask for full screen without a gesture, an uncaught rejection.
 test('a page the size of the screen does not ask for full screen', { timeout: 120_000 }, async () => {
-  const { page, console: messages } = await openPage(browser, `${server.url}#scene=default`);
+  const { page, console: messages } = await openPage(served.browser, `${served.server.url}#scene=default`);
   const screen = await page.evaluate(() => [screen.width, screen.height]);
   const before = (await vplabState(page)).frames;
   await page.setViewport({ width: screen[0], height: screen[1], deviceScaleFactor: 1 });
@@ -74,7 +60,7 @@ test('a page the size of the screen does not ask for full screen', { timeout: 12
 test(`the page survives a random user (seed ${seed}, ${events} events)`, { timeout: 1_200_000 }, async () => {
   const random = generator(seed);
   const pick = (list) => list[Math.floor(random() * list.length)];
-  const { page, console: messages } = await openPage(browser, `${server.url}#scene=default`);
+  const { page, console: messages } = await openPage(served.browser, `${served.server.url}#scene=default`);
   // The frames' intervals (requestAnimationFrame): the longest outside a scene's loading is the test's.
   await page.evaluate(() => {
     window.__monkey = { last: performance.now(), longest: 0, paused: false };

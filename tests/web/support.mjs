@@ -16,6 +16,7 @@ import { execFile } from 'node:child_process';
 import { createReadStream, existsSync, mkdtempSync, readdirSync, rmSync, statSync } from 'node:fs';
 import { writeFile } from 'node:fs/promises';
 import { createServer } from 'node:http';
+import { after, before } from 'node:test';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -142,6 +143,24 @@ export const chromiumArgs = [
   '--disable-extensions',
   '--mute-audio',
 ];
+
+/**
+ * The page served and a browser launched for the tests of the current file or suite (node:test's
+ * before and after hooks, registered here): returns {server, browser}, filled in before the first test.
+ */
+export function servedPageAndBrowser() {
+  const held = { server: null, browser: null };
+  before(async () => {
+    if (!existsSync(path.join(webDir, 'index.html'))) throw new Error(`${webDir}/index.html is missing: build the page with scripts/web.sh`);
+    held.server = await startServer(webDir);
+    held.browser = await launchBrowser();
+  });
+  after(async () => {
+    await held.browser?.close();
+    await held.server?.close();
+  });
+  return held;
+}
 
 /**
  * Launches Chromium with a fresh temporary profile. Resolves to the puppeteer Browser; its `close()`
