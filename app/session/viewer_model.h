@@ -121,6 +121,7 @@ struct LayoutPart {
   // The compact layout of a phone's screen (ui::tooSmallForDesktop): one view at a time, chosen in
   // the switcher at the bottom, and at most one panel below it (upright) or beside it (on its side).
   bool compactAllowed = false;  // the page allows it; the desktop window keeps its layout
+  bool inBrowser = false;       // the page: the browser owns F11, lecture mode takes the browser's full screen
   ViewKind compactView = ViewKind::world;
   enum CompactPanel { noPanel, controlsPanel, inspectPanel };
   int compactPanel = noPanel;

@@ -22,7 +22,10 @@ void derived(const Widgets& w, const RunPart& r) {
   tooltip(w, "V = N × U: the view plane's y axis, VUP projected into the view plane.");
   ImGui::TextWrapped("N = %s", vecText(f.n).c_str());
   tooltip(w, "N = normalize(PRP − VRP): the view plane normal; the eye lies on +N.");
-  ImGui::TextWrapped("VPD = %s   dmin = %s   dmax = %s", num(f.vpd).c_str(), num(f.dmin).c_str(), num(f.dmax).c_str());
+  // Broken between the three, never inside one ("dmax =" above "11.63" on a tablet): no-break spaces
+  // (U+00A0, which ImGui's word wrap does not break at) within each.
+  ImGui::TextWrapped("VPD\u00a0=\u00a0%s   dmin\u00a0=\u00a0%s   dmax\u00a0=\u00a0%s", num(f.vpd).c_str(), num(f.dmin).c_str(),
+                     num(f.dmax).c_str());
   tooltip(w, "VPD = |PRP − VRP|, the view plane distance. dmin = VPD − F and dmax = VPD − B: the distances "
              "of the front and back planes from the eye.");
 }

@@ -243,8 +243,13 @@ void lectureModeSection(Widgets& w, LecturePart& lec, LayoutPart& l) {
   const char* viewLabel = tr(w, "full-screen view");
   fitLabel(viewLabel);
   if (ImGui::Combo(viewLabel, &current, names, 4)) lec.lectureView = kinds[current];
-  if (ImGui::Button(tr(w, "lecture mode (F11)"))) lec.lectureMode = true;
-  tooltip(w, "One view fills the window, without panels; F11 or Esc returns.");
+  // F11 is the browser's own (its full screen, of the page and its address bar): the page's lecture
+  // mode takes the browser's full screen itself (app/web/page.cpp), and Esc returns.
+  if (ImGui::Button(tr(w, l.inBrowser ? text::Text("lecture mode (full screen)") : text::Text("lecture mode (F11)"))))
+    lec.lectureMode = true;
+  recordRect("lecture.mode");
+  if (l.inBrowser) tooltip(w, "One view fills the screen, without panels; Esc returns.");
+  else tooltip(w, "One view fills the window, without panels; F11 or Esc returns.");
 }
 
 }  // namespace

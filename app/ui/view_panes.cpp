@@ -445,7 +445,10 @@ void ViewPanes::lectureWindow() {
       });
     }
     ImGui::SetCursorPos(ImVec2(14 * uiScale_, size.y - ImGui::GetTextLineHeightWithSpacing() - 6 * uiScale_));
-    panelBehind([this] { ImGui::TextDisabled("%s", ui::tr(s_, "lecture mode — F11 or Esc returns to the panels")); });
+    panelBehind([this] {
+      ImGui::TextDisabled("%s", ui::tr(s_, s_.inBrowser ? text::Text("lecture mode — Esc returns to the panels")
+                                                        : text::Text("lecture mode — F11 or Esc returns to the panels")));
+    });
   }
   ImGui::End();
   ImGui::PopStyleVar(2);

@@ -83,7 +83,8 @@ struct Page {
   bool holdingLink = false;
   std::optional<std::string> heldShows;  // what the held link showed, once its scene is read
   bool shownUnsaved = false;
-  bool keysWanted = false;  // ImGui wanted text input in the last frame (the on-screen keyboard's focus)
+  bool keysWanted = false;
+  bool fullScreen = false;  // lecture mode asked for the browser's full screen (and has not left it)  // ImGui wanted text input in the last frame (the on-screen keyboard's focus)
   std::string storedAutosave;  // what this tab's localStorage key holds (empty: nothing)
   std::vector<std::pair<std::filesystem::path, std::string>> kept;  // offered kept scenes: file, key
   std::string reply;  // the last string handed to JavaScript (valid until the next call)
@@ -98,6 +99,7 @@ struct Page {
     files = chooser.get();
     viewer.session().files().useFileChooser(std::move(chooser), /*browser=*/true);
     viewer.state().compactAllowed = true;  // a phone's screen: one view at a time (app/ui/layout.h)
+    viewer.state().inBrowser = true;
     viewer.state().cssPixel = float(std::clamp(page::devicePixelRatio(), 1.0, 4.0));
     // SwiftShader takes about 7 s for the three views of a million triangles: a large scene's views
     // are drawn across frames (docs/measured.md "Large scenes in the page").
@@ -253,6 +255,10 @@ struct Page {
     const bool unsaved = viewer.state().doc.dirty();
     if (unsaved != shownUnsaved) page::setUnsavedChanges(shownUnsaved = unsaved);
     if (frames == 1) page::firstFrameDrawn();
+    // Lecture mode fills the screen, as F11 does on the desktop: it asks the browser's full screen
+    // (a click moments ago is the gesture a browser requires: its transient activation lasts a few
+    // seconds) and leaves it with lecture mode; the browser's own Esc leaving full screen ends it.
+    if (viewer.state().lectureMode != fullScreen) page::setFullScreen(fullScreen = viewer.state().lectureMode);
     // A field's text closed (Enter, a tap elsewhere): the on-screen keyboard goes with it.
     const bool wants = viewer.wantsText();
     if (wants != keysWanted) page::setKeysWanted(keysWanted = wants);
@@ -365,6 +371,7 @@ struct Page {
     j["uiScale"] = s.uiScale;
     j["touch"] = s.touch;
     j["keysWanted"] = keysWanted;
+    j["lectureMode"] = s.lectureMode;
     j["compact"] = s.compactShown;
     j["compactView"] = std::string(toString(s.compactView));
     j["compactPanel"] = s.compactPanel == ViewerState::controlsPanel ? "controls"
@@ -451,6 +458,14 @@ EMSCRIPTEN_KEEPALIVE void vplab_touch(Page* p, int touch) {
   p->input.changed = true;
 }
 
+/// The browser left full screen (its Esc, F11, a gesture): lecture mode ends with it.
+EMSCRIPTEN_KEEPALIVE void vplab_full_screen_left(Page* p) {
+  if (!p->fullScreen) return;
+  p->fullScreen = false;
+  p->viewer.state().lectureMode = false;
+  p->input.changed = true;
+}
+
 /// The finger lifts moving at (vx, vy) canvas pixels a second, measured from its touch events' times.
 EMSCRIPTEN_KEEPALIVE void vplab_finger_lifting(Page* p, double vx, double vy) { p->viewer.fingerLifting(float(vx), float(vy)); }
 
@@ -473,6 +488,13 @@ EMSCRIPTEN_KEEPALIVE void vplab_text(Page* p, const char* utf8) {
 EMSCRIPTEN_KEEPALIVE void vplab_key_stroke(Page* p, int code) {
   p->input.queue.key(code, true);
   p->input.queue.key(code, false);
+}
+
+/// Two fingers pan a view: their midpoint (canvas pixels) as the pointer with the right button held
+/// (`down` 1: the second finger landed; 0: one lifted; -1 moves only), which pans every view.
+EMSCRIPTEN_KEEPALIVE void vplab_pan_fingers(Page* p, double x, double y, int down) {
+  p->input.queue.mouseMove(x, y);
+  if (down >= 0) p->input.queue.mouseButton(1, down == 1);
 }
 
 /// A pinch as the mouse wheel: steps > 0 zoom in.

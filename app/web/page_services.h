@@ -52,6 +52,9 @@ void firstFrameDrawn();
 /// Whether a field has the keys: when none has, the page's hidden input lets go of the focus, which
 /// closes a phone's on-screen keyboard (index.html opens it, in the tap's handler).
 void setKeysWanted(bool wanted);
+/// Lecture mode takes the browser's full screen (`on`) or leaves it; a browser that refuses (no
+/// recent gesture, an iframe without allowfullscreen) leaves the page as it is, lecture mode still on.
+void setFullScreen(bool on);
 /// The page's document.title.
 void setPageTitle(const std::string& title);
 /// Says on the page, over the canvas, that the lab stopped (an unexpected error); also console.error.

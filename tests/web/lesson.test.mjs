@@ -157,6 +157,27 @@ describe('lessons in the browser', { concurrency: 1 }, () => {
     assert.equal(state.caughtErrors, 0, `an error was caught: ${state.lastCaughtError}`);
     await context.close();
   });
+  test('(y) lecture mode takes the browser\'s full screen (F11 is the browser\'s), and the browser\'s leaving it ends lecture mode', { timeout: 120_000 }, async () => {
+    const context = await browser.createBrowserContext();
+    const { page, console: messages } = await openPage(context, `${server.url}#lesson=01-synthetic-camera&step=2`);
+    await waitForState(page, (s) => s.lesson && s.lesson.settled, 'the lesson', messages);
+    const clickId = async (id) => {
+      const p = rectPoint(await cssRect(page, await vplabState(page), id));
+      await afterInput(page, () => page.mouse.click(p.x, p.y));
+    };
+    await clickId('tab.controls.Lecture');
+    await waitForState(page, (s) => Boolean(s.rects['lecture.mode']), 'the Lecture tab', messages);
+    await clickId('lecture.mode');
+    await waitForState(page, (s) => s.lectureMode, 'lecture mode', messages);
+    await page.waitForFunction(() => document.fullscreenElement === document.documentElement, { timeout: 10_000 });
+    // The browser leaves full screen (its Esc, which the page never sees): lecture mode ends with it.
+    await page.evaluate(() => document.exitFullscreen());
+    await waitForState(page, (s) => !s.lectureMode, 'lecture mode to end with the full screen', messages);
+    assert.equal((await vplabState(page)).lesson.step, 2, 'the lesson moved');
+    assert.deepEqual(errorsOf(messages), [], 'the page logged errors or warnings');
+    await context.close();
+  });
+
   test('(s) a link with three bad parts on a phone names all three over the view, keeps its lesson and its address', { timeout: 180_000 }, async () => {
     const context = await browser.createBrowserContext();
     const given = 'lesson=05-clipping&step=abc&zoom=2&vrp=1,2';

@@ -27,6 +27,7 @@ async function fingerOn(page) {
     { type, touchPoints: points.map(([x, y], id) => ({ x, y, id })), ...(at === undefined ? {} : { timestamp: at }) });
   return {
     cdp,
+    touch,
     async tap(point) {
       await afterInput(page, () => touch('touchStart', [[point.x, point.y]]));
       await afterInput(page, () => touch('touchEnd', []));
@@ -114,6 +115,28 @@ describe('the page under a finger', { concurrency: 1 }, () => {
     assert.deepEqual(after.camera.vrp, before.camera.vrp, 'VRP moved with PRP');
     const observer = (s) => new URLSearchParams(s.hash.replace(/^#/, '')).get('world');
     assert.equal(observer(after), observer(before), 'the world view turned instead');
+    assert.deepEqual(errorsOf(messages), [], 'the page logged errors');
+    await context.close();
+  });
+
+  test('(x) on a tablet two fingers moved together pan the world view as on a map; they neither turn nor zoom it', { timeout: 180_000 }, async () => {
+    const context = await served.browser.createBrowserContext();
+    const { page, console: messages } = await openPage(context, served.server.url, { viewport: kTablet });
+    const finger = await fingerOn(page);
+    const observer = (s) => new URLSearchParams(s.hash.replace(/^#/, '')).get('world').split(',').map(Number);
+    const before = await vplabState(page);
+    const [tx0, ty0, tz0, yaw0, pitch0, distance0] = observer(before);
+    const c = rectPoint(await cssRect(page, before, 'view.world'), 0.3, 0.75);  // no handle there
+    await afterInput(page, () => finger.touch('touchStart', [[c.x - 30, c.y], [c.x + 30, c.y]]));
+    for (let i = 1; i <= 6; ++i) await afterInput(page, () => finger.touch('touchMove', [[c.x - 30 + 10 * i, c.y], [c.x + 30 + 10 * i, c.y]]));
+    await afterInput(page, () => finger.touch('touchEnd', []));
+    const after = await vplabState(page);
+    const [tx1, ty1, tz1, yaw1, pitch1, distance1] = observer(after);
+    assert.ok(Math.hypot(tx1 - tx0, ty1 - ty0, tz1 - tz0) > 0.3, `the observer's target moved ${Math.hypot(tx1 - tx0, ty1 - ty0, tz1 - tz0)}: no pan`);
+    assert.equal(yaw1, yaw0, 'two fingers turned the view');
+    assert.equal(pitch1, pitch0, 'two fingers tilted the view');
+    assert.equal(distance1, distance0, 'two fingers a constant spread apart zoomed the view');
+    assert.deepEqual(after.camera, before.camera, 'the pan moved the camera');
     assert.deepEqual(errorsOf(messages), [], 'the page logged errors');
     await context.close();
   });

@@ -7,6 +7,7 @@
 #include "app/ui/touch.h"
 #include "app/views/observer.h"
 #include "app/views/view_camera.h"
+#include "tests/app/ui/screen_text.h"
 #include "tests/support/gl_test_support.h"
 
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include <imgui_internal.h>
 
 #include <cctype>
+#include <cstring>
 #include <memory>
 #include <utility>
 #include <regex>
@@ -152,6 +154,30 @@ TEST(Touch, ASwipeScrollsAPanelAndItCoasts) {
   mouse->drag(mx, my, mx, my - 120);
   mouse->frames(20);
   EXPECT_EQ(controls()->Scroll.y, 0.f) << "a mouse's drag on text scrolled the panel";
+}
+
+// On a tablet (1024 × 768 at devicePixelRatio 2: UI scale 2, a finger's style) the camera panel's
+// derived distances wrap: never inside one ("dmax =" at a line's end, "11.63" on the next).
+TEST(Touch, OnATabletTheDerivedDistancesWrapBetweenThemNeverInsideOne) {
+  auto v = std::make_unique<HeadlessViewer>(*test::egl().context, defaultScene(), 2048, 1536, 2.f);
+  v->state().touch = true;
+  v->state().cssPixel = 2;
+  v->frames(3);
+  ImGuiWindow* tab = controls();  // the camera tab, scrolled to its end, where the derived values are
+  ASSERT_NE(tab, nullptr);
+  ImGui::SetScrollY(tab, tab->ScrollMax.y);
+  v->frames(2);
+  const std::vector<test::ScreenLine> lines = test::screenText();
+  int seen = 0;
+  for (const char* name : {"VPD", "dmin", "dmax"})
+    for (const test::ScreenLine& l : lines) {
+      const size_t at = l.text.find(name);
+      if (at == std::string::npos || l.text.find(" = ", at) != at + std::strlen(name)) continue;
+      ++seen;
+      EXPECT_TRUE(std::regex_search(l.text.substr(at), std::regex(R"(^\w+ = [0-9.−-]+)")))
+          << name << "'s value is not on its line: \"" << l.text << "\"\n" << test::screenTextDump(lines);
+    }
+  EXPECT_EQ(seen, 3) << test::screenTextDump(lines);
 }
 
 }  // namespace
