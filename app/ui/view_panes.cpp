@@ -235,13 +235,16 @@ void ViewPanes::worldWindow(const ui::Layout& layout, ImGuiWindowFlags flags, Im
   if (ImGui::Begin(ui::tr(s_, "World view (WC)###World view (WC)"), nullptr, flags)) {
     const ImVec2 size = ImGui::GetContentRegionAvail();
     if (size.x >= 8 && size.y >= 8) {
-      // The view's shape changes with the window, a phone's panel and its turn, and a tablet's view
-      // is nearly square: the scene is framed for the shape it is shown in (PRP and the whole view
-      // volume in sight, issue 41) until the user turns the view (then the user's observer stays).
-      // A lesson's steps were framed for the shape the lesson opened in (lesson_framing.h): on the
-      // desktop they keep it, on a phone's compact layout the default framing follows the shape.
+      // In the page the scene is framed for the shape the view is shown in (PRP and the whole view
+      // volume in sight, issue 41): the shape the view first has (a tablet's view is nearly square,
+      // not the 1.6 assumed before the first frame), and on a phone every shape the panel and the
+      // phone's turn give it, until the user turns the view (then the user's observer stays). A
+      // lesson's steps keep the shape the lesson opened in (lesson_framing.h), but on a phone. The
+      // desktop window keeps its observer, as its goldens show it.
       const double aspect = aspectOf(size);
-      if ((layout.compact || !s_.lesson) && std::abs(aspect - s_.worldAspect) > 1e-3 &&
+      const bool firstShape = s_.inBrowser && worldFramesDrawn_ < 3 && !s_.lesson;  // ImGui settles the layout over two frames
+      ++worldFramesDrawn_;
+      if ((layout.compact || firstShape) && std::abs(aspect - s_.worldAspect) > 1e-3 &&
           s_.display.world.orbit == defaultWorldOrbit(s_.doc.shown(), s_.worldAspect))
         s_.display.world.orbit = defaultWorldOrbit(s_.doc.shown(), aspect);
       s_.worldAspect = aspect;

@@ -65,6 +65,7 @@ class ViewPanes {
   float uiScale_ = 1.f;
   bool relayout_ = true;
   bool linkNoteDrawn_ = false;  // this frame's link note is in a view already
+  int worldFramesDrawn_ = 0;     // the world view's frames so far (its first shape frames the scene)
 };
 
 }  // namespace vplab
