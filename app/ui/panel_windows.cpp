@@ -102,13 +102,25 @@ void PanelWindows::compactSwitcher(float scale) {
   if (s_.probe && s_.probe != s_.probeShown && s_.compactPanel == ViewerState::noPanel) s_.compactPanel = ViewerState::inspectPanel;
   ImGui::SetNextWindowPos(l.switcher.pos);
   ImGui::SetNextWindowSize(l.switcher.size);
-  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ui::switcherPadding(s_.touch));
+  // Every button on the screen's width: the padding beside the names shrinks to fit a narrow phone
+  // (a finger's padding made "Tasks" run off a 390 px screen), down to a few pixels.
+  const char* names[] = {ui::tr(s_, "World"), ui::tr(s_, "Camera"), "NPC", ui::tr(s_, "Controls"), ui::tr(s_, "Inspect"),
+                         ui::tr(s_, "Tasks")};
+  const int buttons = s_.practice ? 6 : 5;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float textWidth = 0;
+  for (int i = 0; i < buttons; ++i) textWidth += ImGui::CalcTextSize(names[i]).x;
+  const float room = l.switcher.size.x - style.WindowPadding.x * 2 - style.ItemSpacing.x * float(buttons + 1) - 1;
+  ImVec2 padding = ui::switcherPadding(s_.touch);
+  padding.x = std::clamp((room - textWidth) / float(2 * buttons), 2.f, padding.x);
+  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, padding);
   ImGui::Begin("##switcher", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
   auto choice = [&](const char* name, const char* id, bool selected) {
     ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(selected ? ImGuiCol_TabActive : ImGuiCol_Tab));
-    // At least as wide as tall: "NPC" is a finger's target too.
-    const float width = std::max(ImGui::CalcTextSize(name).x + ImGui::GetStyle().FramePadding.x * 2, ImGui::GetFrameHeight());
+    // At least as wide as tall where the screen has room: "NPC" is a finger's target too.
+    const float square = std::min(ImGui::GetFrameHeight(), room / float(buttons) - style.ItemSpacing.x);
+    const float width = std::max(ImGui::CalcTextSize(name).x + ImGui::GetStyle().FramePadding.x * 2, square);
     const bool pressed = ImGui::Button(name, ImVec2(width, 0));
     ImGui::PopStyleColor();
     ui::recordRect(id);

@@ -13,7 +13,7 @@ import path from 'node:path';
 import { after, before, describe, test } from 'node:test';
 
 import {
-  afterInput, catchDownloads, cssRect, decodePng, launchBrowser, openPage, rectPoint, runVplab, startServer, tempDir,
+  afterInput, catchDownloads, cssRect, decodePng, fingerOn, launchBrowser, openPage, rectPoint, runVplab, startServer, tempDir,
   vplabState, waitForState, waitFrames, webDir,
 } from './support.mjs';
 
@@ -266,14 +266,29 @@ describe('an exercise in the browser', { concurrency: 1 }, () => {
     let { page, console: messages } = await openPage(context, `${server.url}#exercise=mapping&seed=2`,
       { viewport: { width: 390, height: 844, deviceScaleFactor: 2, isMobile: true, hasTouch: true } });
     await waitForState(page, (s) => s.exercise && s.compact, 'the exercise in the compact layout', messages);
+    await waitFrames(page, 5);  // laid out for a finger (a phone starts so)
     let state = await vplabState(page);
+    assert.equal(state.touch, true, 'a phone starts with a finger\'s targets');
     assert.ok(state.rects['switch.tasks'], 'the switcher has the Tasks');
-    const tasks = await cssRect(page, state, 'switch.tasks');
-    await afterInput(page, () => page.mouse.click(tasks.x + tasks.w / 2, tasks.y + tasks.h / 2));
+    // A phone is touched, not clicked (a mouse would give it the mouse's smaller targets).
+    const finger = await fingerOn(page);
+    await finger.tap(rectPoint(await cssRect(page, state, 'switch.tasks')));
     state = await vplabState(page);
     assert.equal(state.compactPanel, 'inspect');
     const first = state.exercise.fields[0];
-    await clickField(page, firstCellId(first));
+    await waitFrames(page, 5);  // the Tasks laid out
+    // Swiped into sight: the sheet's givens come first (a swipe on their text scrolls the panel).
+    for (let i = 0; i < 8; ++i) {
+      state = await vplabState(page);
+      const cell = await cssRect(page, state, firstCellId(first));
+      const switcher = await cssRect(page, state, 'switch.tasks');
+      if (cell.y + cell.h <= switcher.y - 4) break;
+      const at = { x: 195, y: switcher.y - 60 };
+      await finger.swipe(at, { x: at.x, y: at.y - 150 });
+      await waitFrames(page, 3);
+    }
+    await finger.tap(rectPoint(await cssRect(page, await vplabState(page), firstCellId(first))));
+    await waitForState(page, (s) => s.keysWanted, 'the first cell to take the keys', messages);
     await page.keyboard.type('5/2');
     await page.keyboard.press('Tab');
     await page.keyboard.down('Control');

@@ -8,7 +8,7 @@
 //   1. Paths and processes        (webDir, vplabBin, runVplab)
 //   2. The server                 (startServer)
 //   3. The browser and the page   (launchBrowser, openPage, waitFrames, afterInput, vplabState)
-//   4. The mouse                  (cssRect, rectPoint, drag)
+//   4. The mouse and a finger     (cssRect, rectPoint, drag, click, fingerOn)
 //   5. Downloads                  (catchDownloads)
 //   6. Pictures                   (decodePng, comparePngs, formatComparison, isBlank)
 
@@ -391,6 +391,37 @@ export async function click(page, point) {
   await afterInput(page, () => page.mouse.move(point.x, point.y));
   await afterInput(page, () => page.mouse.down());
   await afterInput(page, () => page.mouse.up());
+}
+
+/** A finger on `page`: tap, swipe and hold through the protocol's touch events, each in frames of its own. */
+export async function fingerOn(page) {
+  const cdp = await page.createCDPSession();
+  // `at`: the event's time (s since the epoch), as a finger's hardware stamps it; the protocol
+  // answers only once the page handled an event, so a slow frame would otherwise space them out.
+  const touch = (type, points, at = undefined) => cdp.send('Input.dispatchTouchEvent',
+    { type, touchPoints: points.map(([x, y], id) => ({ x, y, id })), ...(at === undefined ? {} : { timestamp: at }) });
+  return {
+    cdp,
+    touch,
+    async tap(point) {
+      await afterInput(page, () => touch('touchStart', [[point.x, point.y]]));
+      await afterInput(page, () => touch('touchEnd', []));
+    },
+    async swipe(from, to, steps = 8) {
+      await afterInput(page, () => touch('touchStart', [[from.x, from.y]]));
+      for (let i = 1; i <= steps; ++i)
+        await afterInput(page, () => touch('touchMove', [[from.x + (to.x - from.x) * i / steps, from.y + (to.y - from.y) * i / steps]]));
+      await afterInput(page, () => touch('touchEnd', []));
+    },
+    /** A flick: moves stamped 16 ms apart (a finger's pace, however slow the page's frames), lifted while moving. */
+    async flick(from, to, steps = 6) {
+      const start = Date.now() / 1000;
+      await afterInput(page, () => touch('touchStart', [[from.x, from.y]], start));
+      for (let i = 1; i <= steps; ++i)
+        await touch('touchMove', [[from.x + (to.x - from.x) * i / steps, from.y + (to.y - from.y) * i / steps]], start + 0.016 * i);
+      await touch('touchEnd', [], start + 0.016 * (steps + 1));
+    },
+  };
 }
 
 // ---------------------------------------------------------------------------------------------------

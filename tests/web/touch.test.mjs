@@ -6,7 +6,8 @@ import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 
 import {
-  afterInput, cssRect, keepArtifacts, openPage, rectPoint, servedPageAndBrowser, vplabState, waitForState, waitFrames,
+  afterInput, cssRect, fingerOn, keepArtifacts, openPage, rectPoint, servedPageAndBrowser, vplabState, waitForState,
+  waitFrames,
 } from './support.mjs';
 
 const errorsOf = (messages) => messages.filter((m) => m.type === 'error' || m.type === 'warning' || m.type === 'pageerror');
@@ -17,37 +18,6 @@ const kTablet = { width: 1024, height: 768, deviceScaleFactor: 2, hasTouch: true
 // fractions of a CSS pixel (canvas pixels / devicePixelRatio), so half a CSS pixel is allowed.
 const kTarget = 44;
 const kRounding = 0.5;
-
-/** A finger on `page`: tap, swipe and hold through the protocol's touch events, each in frames of its own. */
-async function fingerOn(page) {
-  const cdp = await page.createCDPSession();
-  // `at`: the event's time (s since the epoch), as a finger's hardware stamps it; the protocol
-  // answers only once the page handled an event, so a slow frame would otherwise space them out.
-  const touch = (type, points, at = undefined) => cdp.send('Input.dispatchTouchEvent',
-    { type, touchPoints: points.map(([x, y], id) => ({ x, y, id })), ...(at === undefined ? {} : { timestamp: at }) });
-  return {
-    cdp,
-    touch,
-    async tap(point) {
-      await afterInput(page, () => touch('touchStart', [[point.x, point.y]]));
-      await afterInput(page, () => touch('touchEnd', []));
-    },
-    async swipe(from, to, steps = 8) {
-      await afterInput(page, () => touch('touchStart', [[from.x, from.y]]));
-      for (let i = 1; i <= steps; ++i)
-        await afterInput(page, () => touch('touchMove', [[from.x + (to.x - from.x) * i / steps, from.y + (to.y - from.y) * i / steps]]));
-      await afterInput(page, () => touch('touchEnd', []));
-    },
-    /** A flick: moves stamped 16 ms apart (a finger's pace, however slow the page's frames), lifted while moving. */
-    async flick(from, to, steps = 6) {
-      const start = Date.now() / 1000;
-      await afterInput(page, () => touch('touchStart', [[from.x, from.y]], start));
-      for (let i = 1; i <= steps; ++i)
-        await touch('touchMove', [[from.x + (to.x - from.x) * i / steps, from.y + (to.y - from.y) * i / steps]], start + 0.016 * i);
-      await touch('touchEnd', [], start + 0.016 * (steps + 1));
-    },
-  };
-}
 
 describe('the page under a finger', { concurrency: 1 }, () => {
   const served = servedPageAndBrowser();
