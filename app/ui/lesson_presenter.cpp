@@ -183,6 +183,67 @@ std::string sectionText(const Lesson& lesson, const std::string& section) {
   return lectureNotes ? text::fill(lesson.language, "lecture notes {1}", {section}) : section;
 }
 
+/// The caption box's heading row: the heading where it fits beside the buttons, else (a phone
+/// upright) on its own line above them, the buttons then sharing the width as a finger's row.
+struct HeadingRow {
+  std::string heading, source;
+  const char *back, *next, *close;
+  float buttons = 0;     // the buttons' width beside the heading
+  bool ownRow = false;   // the buttons on a row of their own under the heading
+};
+
+HeadingRow headingRow(const LessonPlayer& player, float width) {
+  const Lesson& lesson = player.lesson();
+  const LessonStep& step = player.current();
+  const ImGuiStyle& style = ImGui::GetStyle();
+  HeadingRow row;
+  row.back = text::Text("← Back").in(lesson.language);
+  row.next = text::Text("Next →").in(lesson.language);
+  row.close = text::Text("Close").in(lesson.language);
+  row.buttons = ImGui::CalcTextSize(row.back).x + ImGui::CalcTextSize(row.next).x + ImGui::CalcTextSize(row.close).x +
+                style.FramePadding.x * 6 + style.ItemSpacing.x * 2;
+  // The heading left of the buttons, never under them: the lesson's title, the step and the source
+  // where they fit; else the step and the source (the title is in the menu and the first step);
+  // else the step alone (at 1024 × 768 "← Zurück" covered the source); else, on a screen too narrow
+  // for the step beside the buttons, the heading on its own line.
+  const std::string stepOf =
+      text::fill(lesson.language, "step {1} / {2}", {std::to_string(player.step() + 1), std::to_string(player.stepCount())});
+  const std::string titled = text::fill(lesson.language, "{1}  ·  step {2} / {3}",
+                                        {lesson.title, std::to_string(player.step() + 1), std::to_string(player.stepCount())});
+  const std::string sourceText = step.section.empty() ? "" : "(" + sectionText(lesson, step.section) + ")";
+  auto widthOf = [&](const std::string& heading, const std::string& source) {
+    return ImGui::CalcTextSize(heading.c_str()).x + (source.empty() ? 0 : style.ItemSpacing.x + ImGui::CalcTextSize(source.c_str()).x);
+  };
+  row.ownRow = widthOf(stepOf, "") > width - row.buttons - style.ItemSpacing.x;
+  const float room = row.ownRow ? width : width - row.buttons - style.ItemSpacing.x;
+  row.heading = titled;
+  row.source = sourceText;
+  if (widthOf(row.heading, row.source) > room) row.heading = stepOf;
+  if (widthOf(row.heading, row.source) > room) row.source.clear();
+  return row;
+}
+
+/// The note under the caption: the typed step number, or a free step's note ("" for none).
+std::string captionNote(const ViewerState& s) {
+  const Lesson& lesson = s.lesson->lesson();
+  if (!s.lessonTyped.empty()) return text::fill(lesson.language, "go to step {1} (Enter)", {s.lessonTyped});
+  if (s.lesson->current().free) return text::Text("Explore freely: the next step restores its own state.").in(lesson.language);
+  return "";
+}
+
+/// The height of the caption and its note laid out `width` wide.
+float captionTextHeight(const ViewerState& s, float width) {
+  float h = 0;
+  layOut(s.lesson->current().caption, width, &h);
+  const std::string note = captionNote(s);
+  if (!note.empty()) h += ImGui::GetStyle().ItemSpacing.y + ImGui::CalcTextSize(note.c_str(), nullptr, false, width).y;
+  return h;
+}
+
+/// The share of the display's height a caption box takes at most: a longer caption scrolls in it
+/// (on a phone on its side a whole caption left the view a sliver).
+constexpr float kCaptionShare = 0.4f;
+
 }  // namespace
 
 float lessonCaptionHeight(const ViewerState& s, float width) {
@@ -191,20 +252,15 @@ float lessonCaptionHeight(const ViewerState& s, float width) {
   const float inner = width - style.WindowPadding.x * 2;
   // The current step's caption, and at least two lines: the box leaves the rest to the step's
   // evidence (sized for the longest caption, it took a third of a 720-line projector at 1.6).
-  float tallest = 2 * ImGui::GetTextLineHeightWithSpacing();
-  float h = 0;
-  layOut(s.lesson->current().caption, inner, &h);
-  tallest = std::max(tallest, h);
-  // The heading row, and a row for the free step's note or the typed number when there is one.
-  const bool noteRow = s.lesson->current().free || !s.lessonTyped.empty();
-  return std::floor(tallest + ImGui::GetFrameHeightWithSpacing() + (noteRow ? ImGui::GetTextLineHeightWithSpacing() : 0) +
-                    style.WindowPadding.y * 2 + 2);
+  const float text = std::max(2 * ImGui::GetTextLineHeightWithSpacing(), captionTextHeight(s, inner));
+  const float rows = headingRow(*s.lesson, inner).ownRow ? 2.f : 1.f;
+  const float h = std::floor(text + rows * ImGui::GetFrameHeightWithSpacing() + style.WindowPadding.y * 2 + 2);
+  return std::min(h, std::floor(ImGui::GetIO().DisplaySize.y * kCaptionShare));
 }
 
 void lessonCaption(ViewerState& s, const Rect& rect, double now) {
   if (!s.lesson) return;
   const LessonPlayer& player = *s.lesson;
-  const Lesson& lesson = player.lesson();
   const LessonStep& step = player.current();
   ImGui::SetNextWindowPos(rect.pos);
   ImGui::SetNextWindowSize(rect.size);
@@ -212,65 +268,54 @@ void lessonCaption(ViewerState& s, const Rect& rect, double now) {
   ImGui::Begin("##lesson", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
   recordRect("lesson.caption");
 
-  // The heading: title, step k of n, the source; the buttons at the right. The box speaks the
-  // lesson's language, whatever the viewer's.
+  // The heading: title, step k of n, the source; the buttons at the right, or under it on a narrow
+  // screen, a third of the width each. The box speaks the lesson's language, whatever the viewer's.
   const ImGuiStyle& style = ImGui::GetStyle();
-  const char* back = text::Text("← Back").in(lesson.language);
-  const char* next = text::Text("Next →").in(lesson.language);
-  const char* close = text::Text("Close").in(lesson.language);
-  const float buttons = ImGui::CalcTextSize(back).x + ImGui::CalcTextSize(next).x + ImGui::CalcTextSize(close).x +
-                        style.FramePadding.x * 6 + style.ItemSpacing.x * 2;
-  // The heading left of the buttons, never under them: the lesson's title, the step and the source
-  // where they fit; else the step and the source (the title is in the menu and the first step);
-  // else the step alone (at 1024 × 768 "← Zurück" covered the source).
-  const std::string stepOf =
-      text::fill(lesson.language, "step {1} / {2}", {std::to_string(player.step() + 1), std::to_string(player.stepCount())});
-  const std::string titled = text::fill(lesson.language, "{1}  ·  step {2} / {3}",
-                                        {lesson.title, std::to_string(player.step() + 1), std::to_string(player.stepCount())});
-  const std::string sourceText = step.section.empty() ? "" : "(" + sectionText(lesson, step.section) + ")";
-  const float room = ImGui::GetContentRegionAvail().x - buttons - style.ItemSpacing.x;
-  auto width = [&](const std::string& heading, const std::string& source) {
-    return ImGui::CalcTextSize(heading.c_str()).x + (source.empty() ? 0 : style.ItemSpacing.x + ImGui::CalcTextSize(source.c_str()).x);
-  };
-  std::string heading = titled, source = sourceText;
-  if (width(heading, source) > room) heading = stepOf;
-  if (width(heading, source) > room) source.clear();
+  const HeadingRow row = headingRow(player, ImGui::GetContentRegionAvail().x);
   ImGui::BeginGroup();
   ImGui::PushStyleColor(ImGuiCol_Text, accentColor());
-  ImGui::TextUnformatted(heading.c_str());
+  ImGui::TextUnformatted(row.heading.c_str());
   ImGui::PopStyleColor();
-  if (!source.empty()) {
+  if (!row.source.empty()) {
     ImGui::SameLine();
-    ImGui::TextDisabled("%s", source.c_str());
+    ImGui::TextDisabled("%s", row.source.c_str());
   }
   ImGui::EndGroup();
   recordRect("lesson.heading");
-  ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowContentRegionMax().x - buttons));
+  const float third = std::floor((ImGui::GetContentRegionAvail().x - style.ItemSpacing.x * 2) / 3);
+  const ImVec2 button(row.ownRow ? third : 0, 0);
+  if (!row.ownRow) ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowContentRegionMax().x - row.buttons));
   ImGui::BeginDisabled(player.step() == 0);
-  if (ImGui::Button(back)) goToStep(s, player.step() - 1, now);
+  if (ImGui::Button(row.back, button)) goToStep(s, player.step() - 1, now);
   ImGui::EndDisabled();
   recordRect("lesson.back");
   ImGui::SameLine();
   ImGui::BeginDisabled(player.step() + 1 >= player.stepCount());
-  if (ImGui::Button(next)) goToStep(s, player.step() + 1, now);
+  if (ImGui::Button(row.next, button)) goToStep(s, player.step() + 1, now);
   ImGui::EndDisabled();
   recordRect("lesson.next");
   ImGui::SameLine();
-  const bool closing = ImGui::Button(close);
+  const bool closing = ImGui::Button(row.close, button);
   recordRect("lesson.close");
 
-  // The caption, its mathematics in the accent colour.
+  // The caption, its mathematics in the accent colour, and its note; what the box cannot hold
+  // scrolls (a swipe on a phone, the wheel on the desktop).
+  ImGui::BeginChild("##captionText", ImVec2(0, 0), false);
   float height = 0;
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const std::vector<Placed> placed = layOut(step.caption, ImGui::GetContentRegionAvail().x, &height);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text), math = ImGui::ColorConvertFloat4ToU32(accentColor());
   for (const Placed& p : placed) draw->AddText(ImGui::GetFont(), p.size, origin + p.at, p.math ? math : text, p.text.c_str());
-  ImGui::Dummy(ImVec2(1, height));
-  if (!s.lessonTyped.empty())
-    ImGui::TextDisabled("%s", text::fill(lesson.language, "go to step {1} (Enter)", {s.lessonTyped}).c_str());
-  else if (step.free)
-    ImGui::TextDisabled("%s", text::Text("Explore freely: the next step restores its own state.").in(lesson.language));
+  ImGui::Dummy(ImVec2(ImGui::GetContentRegionAvail().x, height));
+  recordRect("lesson.text");
+  // The note wraps (on a phone "…stellt seinen Zustand wieder her" ran off the box).
+  if (const std::string note = captionNote(s); !note.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", note.c_str());
+    ImGui::PopStyleColor();
+  }
+  ImGui::EndChild();
   ImGui::End();
   if (closing) {
     s.lesson.reset();

@@ -113,13 +113,23 @@ void PanelWindows::compactSwitcher(float scale) {
   const float room = l.switcher.size.x - style.WindowPadding.x * 2 - style.ItemSpacing.x * float(buttons + 1) - 1;
   ImVec2 padding = ui::switcherPadding(s_.touch);
   padding.x = std::clamp((room - textWidth) / float(2 * buttons), 2.f, padding.x);
-  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, padding);
+  // Names that do not fit even so (a 320 px phone at a raised UI scale) are set smaller, the
+  // buttons keeping their height.
+  const float square = std::min(ImGui::GetFrameHeight(), room / float(buttons) - style.ItemSpacing.x);
+  auto needed = [&](float fontScale) {
+    float sum = 0;
+    for (int i = 0; i < buttons; ++i) sum += std::max(ImGui::CalcTextSize(names[i]).x * fontScale + padding.x * 2, square);
+    return sum;
+  };
+  float fontScale = 1;
+  while (fontScale > 0.6f && needed(fontScale) > room) fontScale -= 0.05f;
+  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(padding.x, padding.y + ImGui::GetFontSize() * (1 - fontScale) / 2));
   ImGui::Begin("##switcher", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::SetWindowFontScale(fontScale);
   auto choice = [&](const char* name, const char* id, bool selected) {
     ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(selected ? ImGuiCol_TabActive : ImGuiCol_Tab));
     // At least as wide as tall where the screen has room: "NPC" is a finger's target too.
-    const float square = std::min(ImGui::GetFrameHeight(), room / float(buttons) - style.ItemSpacing.x);
     const float width = std::max(ImGui::CalcTextSize(name).x + ImGui::GetStyle().FramePadding.x * 2, square);
     const bool pressed = ImGui::Button(name, ImVec2(width, 0));
     ImGui::PopStyleColor();

@@ -355,10 +355,17 @@ void ViewPanes::cameraWindowContents() {
 
 void ViewPanes::morphWindow() {
   if (!s_.showMorph) return;
-  ImGui::SetNextWindowSize(ImVec2(560, 420) * uiScale_, ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowPos(ImGui::GetIO().DisplaySize * 0.5f, ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
+  // On a phone the morph takes the view's place (a floating window of 560 units hung off a 390 px
+  // screen's left edge); its close button gives the view back.
+  const ui::Layout layout = ui::currentLayout(s_, uiScale_);
+  if (layout.compact) {
+    ui::placeNext(layout, layout.world, relayout_);
+  } else {
+    ImGui::SetNextWindowSize(ImVec2(560, 420) * uiScale_, ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImGui::GetIO().DisplaySize * 0.5f, ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
+  }
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
-  if (ImGui::Begin(ui::tr(s_, "Stage morph###Stage morph"), &s_.showMorph, kViewFlags)) {
+  if (ImGui::Begin(ui::tr(s_, "Stage morph###Stage morph"), &s_.showMorph, ui::layoutFlags(layout, kViewFlags))) {
     const ImVec2 size = ImGui::GetContentRegionAvail();
     if (size.x >= 8 && size.y >= 8) {
       const GLuint texture = drawView(ViewKind::morph, size);

@@ -1,0 +1,154 @@
+// Every lesson step on a phone (issue 41 item 2): each bundled lesson, in its language, walked step
+// by step in the page's compact layout at 390 × 844 and 844 × 390 CSS px (devicePixelRatio 3, the
+// page's UI scale there, a finger's style). On every step nothing is cut off (the page's own check,
+// every scrolled panel paged through), the caption can be read to its last line, the heading says
+// which step this is beside, never under, the lesson's buttons, and the buttons are whole and a
+// finger's size.
+#include "app/ui/headless_viewer.h"
+#include "app/ui/touch.h"
+#include "tests/app/ui/cut_off.h"
+#include "tests/app/ui/screen_text.h"
+#include "tests/support/gl_test_support.h"
+
+#include <gtest/gtest.h>
+#include <imgui_internal.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace vplab {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct PhoneSize {
+  int width, height;  // device pixels: CSS px × 3
+  const char* name;
+};
+// The page's UI scale on a phone: devicePixelRatio × the shorter CSS side / 440 (app/web/page.cpp pageScale).
+constexpr float kRatio = 3, kScale = kRatio * 390.f / 440.f;
+constexpr PhoneSize kPhones[] = {{1170, 2532, "upright"}, {2532, 1170, "on its side"}};
+
+std::vector<std::string> bundledLessons() {
+  std::vector<std::string> names;
+  for (const fs::directory_entry& e : fs::directory_iterator(fs::path(VPLAB_ASSETS) / "lessons"))
+    if (e.path().extension() == ".json") names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+bool overlap(const ImVec4& a, const ImVec4& b) {
+  return a.x < b.x + b.z && a.x + a.z > b.x && a.y < b.y + b.w && a.y + a.w > b.y;
+}
+
+class LessonOnAPhone : public ::testing::TestWithParam<std::tuple<std::string, int>> {};
+
+TEST_P(LessonOnAPhone, EveryStepIsReadWholeWithItsButtonsAFingersSize) {
+  const auto& [file, phoneIndex] = GetParam();
+  const PhoneSize phone = kPhones[phoneIndex];
+  HeadlessViewer v{*test::egl().context, defaultScene(), phone.width, phone.height, kScale};
+  v.state().compactAllowed = true;
+  v.state().inBrowser = true;
+  v.state().touch = true;
+  v.state().cssPixel = kRatio;
+  v.state().display.language = file.find(".de.") != std::string::npos ? Language::de : Language::en;
+  v.frames(2);
+  const fs::path path = fs::path(VPLAB_ASSETS) / "lessons" / file;
+  v.viewer().session().openLesson(path, 0);
+  v.frames(2);
+  ASSERT_TRUE(v.state().lesson) << v.state().status;
+  const size_t steps = v.state().lesson->stepCount();
+  const std::string prefix = "phone-" + file.substr(0, file.size() - 5) + "-" + std::to_string(phone.width);
+  for (size_t step = 0; step < steps; ++step) {
+    const std::string where = file + " step " + std::to_string(step + 1) + " " + phone.name;
+    v.viewer().session().openLesson(path, step);
+    v.frames(3);
+    ASSERT_EQ(v.state().lesson->step(), step);
+    ASSERT_TRUE(v.rects().rects.count("switch.world")) << where << ": the phone got the desktop's layout";
+
+    // The heading names the step, and it is on screen.
+    const std::string stepOf = text::fill(v.state().lesson->lesson().language, "step {1} / {2}",
+                                          {std::to_string(step + 1), std::to_string(steps)});
+    const std::vector<test::ScreenLine> lines = test::screenText();
+    EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [&](const test::ScreenLine& l) { return l.text.find(stepOf) != std::string::npos; }))
+        << where << ": \"" << stepOf << "\" is not on screen\n" << test::screenTextDump(lines);
+
+    // The buttons: whole, a finger's size, and the heading never under them.
+    const auto& rects = v.rects().rects;
+    const auto& shown = v.rects().visible;
+    for (const char* id : {"lesson.back", "lesson.next", "lesson.close"}) {
+      ASSERT_TRUE(rects.count(id)) << where << ": " << id << " was not drawn";
+      EXPECT_GE(shown.at(id).z, rects.at(id).z - 1) << where << ": " << id << " is cut off at the side";
+      EXPECT_GE(shown.at(id).w, rects.at(id).w - 1) << where << ": " << id << " is cut off below";
+      EXPECT_GE(rects.at(id).w, ui::kTouchTargetPx * kRatio - 1) << where << ": " << id << " is too low for a finger";
+      EXPECT_FALSE(overlap(rects.at("lesson.heading"), rects.at(id))) << where << ": the heading runs under " << id;
+    }
+
+    // The caption to its last line: whole in its box, or the box scrolls to its end.
+    const ImVec4 text = rects.at("lesson.text"), textShown = shown.at("lesson.text");
+    if (textShown.w < text.w - 1) {
+      const ImGuiWindow* scrolled = nullptr;
+      for (ImGuiWindow* w : ImGui::GetCurrentContext()->Windows)
+        if (w->Active && std::string(w->Name).find("##lesson") != std::string::npos && w->ScrollMax.y > 0) scrolled = w;
+      ASSERT_NE(scrolled, nullptr) << where << ": the caption is " << text.w << " px high, " << textShown.w
+                                   << " px of it shown, and nothing scrolls it";
+      EXPECT_GE(scrolled->ScrollMax.y + textShown.w, text.w - 1) << where << ": the caption cannot be scrolled to its end";
+    }
+
+    // Nothing cut off, every scrolled panel (the caption too) paged from top to bottom.
+    const std::vector<std::string> problems = test::clippedTextOfEveryPage(v, prefix + "-step" + std::to_string(step + 1));
+    EXPECT_TRUE(problems.empty()) << where << ":\n" << testing::PrintToString(problems);
+    if (!problems.empty() || std::getenv("VPLAB_LESSON_SHOTS")) {
+      fs::create_directories(test::outputDir() / "lesson-phone");
+      writePng(v.image(), test::outputDir() / "lesson-phone" / (prefix + "-step" + std::to_string(step + 1) + ".png"));
+    }
+  }
+}
+
+// A narrow phone (320 CSS px, the smallest still sold) with the UI scale raised by half (View ▸ UI
+// scale, for larger text): "Schritt 10 / 11" does not fit beside the three buttons, so the heading
+// takes its own line and the buttons share the row under it.
+TEST(LessonOnANarrowPhone, TheHeadingTakesItsOwnLineAndTheButtonsShareTheRowUnderIt) {
+  const float scale = 1.5f * kRatio * 320.f / 440.f;
+  HeadlessViewer v{*test::egl().context, defaultScene(), 960, 1704, scale};
+  v.state().compactAllowed = true;
+  v.state().inBrowser = true;
+  v.state().touch = true;
+  v.state().cssPixel = kRatio;
+  v.state().display.language = Language::de;
+  v.frames(2);
+  v.viewer().session().openLesson(fs::path(VPLAB_ASSETS) / "lessons" / "05-clipping.de.json", 9);
+  v.frames(3);
+  ASSERT_TRUE(v.state().lesson) << v.state().status;
+  const auto& rects = v.rects().rects;
+  const ImVec4 heading = rects.at("lesson.heading"), back = rects.at("lesson.back"), next = rects.at("lesson.next"),
+               close = rects.at("lesson.close"), box = rects.at("lesson.caption");
+  EXPECT_LE(heading.y + heading.w, back.y) << "the heading is not above the buttons";
+  EXPECT_FLOAT_EQ(back.z, next.z);
+  EXPECT_FLOAT_EQ(back.z, close.z);
+  EXPECT_GE(back.z + next.z + close.z, 0.85f * box.z) << "the buttons do not share the row";
+  EXPECT_EQ(back.y, close.y);
+  const std::vector<test::ScreenLine> lines = test::screenText();
+  EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [](const test::ScreenLine& l) { return l.text.find("Schritt 10 / 11") != std::string::npos; }))
+      << test::screenTextDump(lines);
+  const std::vector<std::string> problems = test::clippedTextOfEveryPage(v, "phone-narrow");
+  EXPECT_TRUE(problems.empty()) << testing::PrintToString(problems);
+  fs::create_directories(test::outputDir() / "lesson-phone");
+  writePng(v.image(), test::outputDir() / "lesson-phone" / "phone-narrow-05-clipping.de-step10.png");
+}
+
+INSTANTIATE_TEST_SUITE_P(Bundled, LessonOnAPhone, ::testing::Combine(::testing::ValuesIn(bundledLessons()), ::testing::Values(0, 1)),
+                         [](const auto& param) {
+                           std::string name = std::get<0>(param.param);
+                           name = name.substr(0, name.size() - 5);
+                           for (char& c : name)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return name + (std::get<1>(param.param) == 0 ? "_upright" : "_on_its_side");
+                         });
+
+}  // namespace
+}  // namespace vplab
