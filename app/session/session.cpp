@@ -82,9 +82,21 @@ void Session::openLesson(const std::filesystem::path& file, size_t step, std::fu
     // for the step's evidence (at 1.6 it took two).
     state_.setStatus("", false);
     state_.lesson.emplace(std::move(*shared), first);
+    state_.lessonAspect = state_.worldAspect;
     if (step >= count && beyond) beyond(count);
     hooks_.changed();
   });
+}
+
+void Session::reframeLesson() {
+  if (!state_.lesson || state_.doc.dirty()) return;
+  const std::filesystem::path file = state_.lesson->lesson().file;
+  try {
+    loadLesson(file, lessonContext());  // it was read once: if it cannot be now, the lesson stays as it is
+  } catch (const Error&) {
+    return;
+  }
+  openLesson(file, state_.lesson->step());
 }
 
 void Session::openScene(const std::filesystem::path& file) {

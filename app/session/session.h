@@ -66,6 +66,11 @@ class Session {
   /// the lesson's last is its last; with `beyond`, the first, and `beyond` is told the lesson's step
   /// count (a link that names a step the lesson does not have says so).
   void openLesson(const std::filesystem::path& file, size_t step = 0, std::function<void(size_t steps)> beyond = {});
+  /// The open lesson read again at its step for the world view's shape now (state().worldAspect):
+  /// in the page a lesson opens from the link before the views have a shape (an embed's world view
+  /// beside the camera view on a phone is five times taller than the default; PRP fell outside it).
+  /// Nothing happens to a lesson whose step was changed.
+  void reframeLesson();
   /// What a lesson's steps are resolved against: the bundled scenes and a fresh document's views.
   LessonContext lessonContext() const;
 

@@ -88,6 +88,8 @@ struct LecturePart {
   bool seedForm = false;        // matrices in the lecture notes' row-vector form (transposed)
   // A lesson: its steps and the move into the step shown.
   std::optional<LessonPlayer> lesson;
+  double lessonAspect = 0;      // the world view's aspect the open lesson's steps were framed for
+  bool lessonReframe = false;   // the world view first drawn in another shape: the lesson is framed again
   double lessonSeconds = 0.8;   // how long the move from one step into the next takes
   std::string lessonTyped;      // the digits of a step number typed so far (Enter goes there)
   std::vector<LessonHighlight> lessonMarks;  // the highlights of the step reached (none while moving)

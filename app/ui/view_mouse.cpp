@@ -39,7 +39,7 @@ void ViewMouse::orbit(bool hovered, ViewKind view, Orbit& orbit, const ViewCamer
                           ImGui::IsMouseClicked(ImGuiMouseButton_Middle);
   if (s_.drag.view == view && !pressedNow) {
     if (s_.drag.kind == Drag::Kind::orbit) orbitBy(orbit, io.MouseDelta.x * 0.4, io.MouseDelta.y * 0.4);
-    if (s_.drag.kind == Drag::Kind::pan) panBy(orbit, io.MouseDelta.x / h, io.MouseDelta.y / h);
+    if (s_.drag.kind == Drag::Kind::pan) panBy(orbit, io.MouseDelta.x / std::min(w, h), io.MouseDelta.y / std::min(w, h));
   }
   if (hovered && io.MouseWheel != 0) zoomBy(orbit, std::pow(0.88, io.MouseWheel));
   if (hovered && ui::viewClicked() && view != ViewKind::morph) s_.probe = pickVertex(s_.run(), view, observer, w, h, mouse, pickRadius());

@@ -243,6 +243,8 @@ void ViewPanes::worldWindow(const ui::Layout& layout, ImGuiWindowFlags flags, Im
       // desktop window keeps its observer, as its goldens show it.
       const double aspect = aspectOf(size);
       const bool firstShape = s_.inBrowser && worldFramesDrawn_ < 3 && !s_.lesson;  // ImGui settles the layout over two frames
+      if (s_.inBrowser && worldFramesDrawn_ < 3 && s_.lesson && std::abs(aspect / s_.lessonAspect - 1) > 0.05)
+        s_.lessonReframe = true;  // opened from the link before the view had its shape
       ++worldFramesDrawn_;
       if ((layout.compact || firstShape) && std::abs(aspect - s_.worldAspect) > 1e-3 &&
           s_.display.world.orbit == defaultWorldOrbit(s_.doc.shown(), s_.worldAspect))

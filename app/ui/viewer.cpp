@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <tuple>
+#include <utility>
 
 namespace vplab {
 
@@ -293,6 +294,7 @@ void Viewer::drawFrame(GLuint framebuffer, int width, int height) {
   dialogs_.draw(uiScale_);
   touchScroll_.endOfFrame(s_.touch, now);
   relayout_ = false;
+  if (std::exchange(s_.lessonReframe, false)) session_.reframeLesson();
   images_.endFrame();
   if (const auto error = images_.takeError()) {  // a view's image failed on the render thread: said, counted
     setStatus(*error, true);

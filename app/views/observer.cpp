@@ -20,7 +20,11 @@ Camera observerCamera(const Orbit& o, double aspect) {
   c.vrp = o.target;
   c.prp = o.target + o.distance * eyeDirection(o);
   c.vup = {0, 1, 0};
-  const double halfH = o.distance * std::tan(radians(o.fovDeg) / 2);
+  // The field of view spans the shorter side: a view taller than wide (a phone upright) sees as much
+  // across as a square one, and more above and below (set vertically, it cut the NPC cube off left
+  // and right).
+  const double half = o.distance * std::tan(radians(o.fovDeg) / 2);
+  const double halfH = aspect >= 1 ? half : half / aspect;
   const double halfW = halfH * aspect;
   c.window = {-halfW, halfW, -halfH, halfH};
   c.front = o.distance * 0.99;  // VRC z: the front plane 1% of the distance in front of the eye
@@ -130,7 +134,8 @@ Orbit framed(Orbit o, const std::vector<Vec3>& points, double aspect, double fil
     }
     const Vec2 centre = (pmin + pmax) * 0.5, extent = pmax - pmin;
     if (!(pmax.x > pmin.x)) break;  // nothing in front of the observer
-    panBy(o, (centre.x - 0.5) * aspect * -1.0, (centre.y - 0.5));
+    // NPC spans the view; panBy counts in its shorter side (observerCamera).
+    panBy(o, (centre.x - 0.5) * std::max(aspect, 1.0) * -1.0, (centre.y - 0.5) * std::max(1.0, 1.0 / aspect));
     zoomBy(o, std::max({extent.x, extent.y, 1e-9}) / fill);
   }
   return o;
@@ -155,8 +160,8 @@ void panBy(Orbit& o, double dxFraction, double dyFraction) {
   const Vec3 n = eyeDirection(o);
   const Vec3 u = glm::normalize(glm::cross(Vec3(0, 1, 0), n));
   const Vec3 v = glm::cross(n, u);
-  const double viewHeight = 2 * o.distance * std::tan(radians(o.fovDeg) / 2);
-  o.target += (-dxFraction * u + dyFraction * v) * viewHeight;
+  const double shorterSide = 2 * o.distance * std::tan(radians(o.fovDeg) / 2);
+  o.target += (-dxFraction * u + dyFraction * v) * shorterSide;
 }
 
 void zoomBy(Orbit& o, double factor) { o.distance = std::clamp(o.distance * factor, 1e-3, 1e6); }

@@ -18,7 +18,8 @@ struct Orbit {
 };
 
 /// VRP = target, PRP on the orbit, VUP = +y, the window filling the field of view in the view plane
-/// through the target, front and back planes at 1% and 10000% of the distance from the eye.
+/// through the target (`fovDeg` spans the view's shorter side: its height, or its width in a view
+/// taller than wide, `aspect` = width / height < 1), front and back planes at 1% and 10000% of the distance from the eye.
 Camera observerCamera(const Orbit& orbit, double aspect);
 
 /// An orbit that shows the scene camera's VRP, PRP, view volume and the objects, seen from the side
@@ -37,7 +38,7 @@ Orbit defaultNpcOrbit();
 
 /// Orbit controls: drag by pixels (yaw and pitch), pan in the view plane, zoom by a factor.
 void orbitBy(Orbit& orbit, double dxDeg, double dyDeg);
-void panBy(Orbit& orbit, double dxFraction, double dyFraction);  // fractions of the view's height
+void panBy(Orbit& orbit, double dxFraction, double dyFraction);  // fractions of the view's shorter side
 void zoomBy(Orbit& orbit, double factor);
 
 }  // namespace vplab

@@ -174,4 +174,61 @@ describe('the page under a finger', { concurrency: 1 }, () => {
     assert.deepEqual(errorsOf(messages), [], 'the page logged errors');
     await context.close();
   });
+  // Issue 41 item 2 in the page itself (tests/app/ui/lesson_phone_test.cpp walks every bundled lesson
+  // with the page's layout and scale): the clipping lesson, in German, every step reached by tapping
+  // Weiter → on a phone upright and on its side; on each the page's cut-off check finds nothing, the
+  // heading names the step and stays off the buttons.
+  test('(z) a lesson on a phone, upright and on its side: every step tapped through, nothing cut off', { timeout: 300_000 }, async () => {
+    for (const viewport of [kPhone, { ...kPhone, width: kPhone.height, height: kPhone.width }]) {
+      const where = viewport.height > viewport.width ? 'upright' : 'on its side';
+      const context = await served.browser.createBrowserContext();
+      const { page, console: messages } = await openPage(context, `${served.server.url}#lesson=05-clipping.de&step=1`, { viewport });
+      await waitForState(page, (s) => s.lesson && s.lesson.settled && s.lesson.step === 1, 'lesson 05 at step 1', messages);
+      const finger = await fingerOn(page);
+      const steps = (await vplabState(page)).lesson.steps;
+      for (let step = 1; step <= steps; ++step) {
+        if (step > 1) {
+          await finger.tap(rectPoint(await cssRect(page, await vplabState(page), 'lesson.next')));
+          await waitForState(page, (s) => s.lesson.step === step && s.lesson.settled, `step ${step} ${where}`, messages);
+        }
+        await waitFrames(page, 2);
+        const s = await vplabState(page);
+        const problems = await page.evaluate(() => window.vplab.textCutOff());
+        if (problems.length || (step === 4 && where === 'upright'))
+          await keepArtifacts(`phone-lesson-${where === 'upright' ? 'upright' : 'side'}-step${step}`, { actual: await page.screenshot({ type: 'png' }) });
+        assert.deepEqual(problems, [], `text cut off at step ${step} ${where}`);
+        const heading = await cssRect(page, s, 'lesson.heading');
+        for (const id of ['lesson.back', 'lesson.next', 'lesson.close']) {
+          const b = await cssRect(page, s, id);
+          const apart = heading.x + heading.w <= b.x + kRounding || heading.y + heading.h <= b.y + kRounding;
+          assert.ok(apart, `the heading runs under ${id} at step ${step} ${where}`);
+          assert.ok(b.h >= kTarget - kRounding, `${id} is ${b.h} CSS px tall at step ${step} ${where}`);
+        }
+      }
+      assert.deepEqual(errorsOf(messages), [], `the page logged errors ${where}`);
+      await context.close();
+    }
+  });
+
+  // The embed form on an upright phone, on the step about PRP: the lesson opens from the link before
+  // the views have a shape, and is framed again for the tall world view, PRP and VRP in it.
+  test('(e) the embed form on a phone: PRP and VRP in the world view on the step about PRP', { timeout: 120_000 }, async () => {
+    const context = await served.browser.createBrowserContext();
+    const { page, console: messages } = await openPage(context, `${served.server.url}#embed=camera,world&lesson=01-synthetic-camera&step=2`,
+      { viewport: kPhone });
+    await waitForState(page, (s) => s.lesson && s.lesson.step === 2 && s.lesson.settled, 'the embedded lesson at step 2', messages);
+    await waitFrames(page, 3);
+    const s = await vplabState(page);
+    assert.equal(s.lesson.step, 2, 'framing the lesson again moved it');
+    assert.match(s.hash, /^embed=camera,world&lesson=01-synthetic-camera\.en&step=2$/, 'the address changed');
+    const view = await cssRect(page, s, 'view.world');
+    for (const id of ['handle.prp', 'handle.vrp']) {
+      const p = rectPoint(await cssRect(page, s, id));
+      assert.ok(p.x > view.x && p.x < view.x + view.w && p.y > view.y && p.y < view.y + view.h,
+        `${id} at (${p.x}, ${p.y}) is outside the world view (${view.x}, ${view.y}, ${view.w} × ${view.h})`);
+    }
+    await keepArtifacts('phone-embed', { actual: await page.screenshot({ type: 'png' }) });
+    assert.deepEqual(errorsOf(messages), [], 'the page logged errors');
+    await context.close();
+  });
 });

@@ -6,6 +6,7 @@
 // finger's size.
 #include "app/ui/headless_viewer.h"
 #include "app/ui/touch.h"
+#include "app/views/views.h"
 #include "tests/app/ui/cut_off.h"
 #include "tests/app/ui/screen_text.h"
 #include "tests/support/gl_test_support.h"
@@ -107,6 +108,77 @@ TEST_P(LessonOnAPhone, EveryStepIsReadWholeWithItsButtonsAFingersSize) {
       writePng(v.image(), test::outputDir() / "lesson-phone" / (prefix + "-step" + std::to_string(step + 1) + ".png"));
     }
   }
+}
+
+/// The NPC view's list as it was last drawn, built again.
+draw::DisplayList npcList(const Viewer& viewer) {
+  const ViewRequest* r = viewer.images().lastRequest(ViewKind::npc);
+  return npcView({*r->scene, *r->run, r->settings, r->highlights, r->width, r->height, viewer.viewTextMetrics()});
+}
+
+/// The corners of the NPC cube outside the list's view (pixels), described.
+std::string cornersOutside(const draw::DisplayList& list) {
+  std::string outside;
+  for (int i = 0; i < 8; ++i) {
+    const Vec3 corner(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+    const Projected p = projectToPixels(list.observer.camera, corner, list.width, list.height);
+    if (!p.visible || p.pixel.x < 0 || p.pixel.y < 0 || p.pixel.x > list.width || p.pixel.y > list.height)
+      outside += " (" + std::to_string(int(corner.x)) + ", " + std::to_string(int(corner.y)) + ", " + std::to_string(int(corner.z)) +
+                 ") at (" + std::to_string(p.pixel.x) + ", " + std::to_string(p.pixel.y) + ")";
+  }
+  return outside;
+}
+
+// The NPC view on an upright phone shows the cube whole (its eight corners in the view), in a new
+// document and in a lesson's step; on its side too; the user's own turn of the view is kept.
+TEST(NpcViewOnAPhone, TheCubeIsWholeUprightAndOnItsSide) {
+  for (const PhoneSize& phone : kPhones) {
+    SCOPED_TRACE(phone.name);
+    HeadlessViewer v{*test::egl().context, defaultScene(), phone.width, phone.height, kScale};
+    v.state().compactAllowed = true;
+    v.state().inBrowser = true;
+    v.state().touch = true;
+    v.state().cssPixel = kRatio;
+    v.state().compactView = ViewKind::npc;
+    v.frames(3);
+    draw::DisplayList list = npcList(v.viewer());
+    EXPECT_EQ(cornersOutside(list), "") << "the cube is cut off in a " << list.width << " × " << list.height << " view";
+    v.viewer().session().openLesson(fs::path(VPLAB_ASSETS) / "lessons" / "03-view-mapping.en.json", 0);
+    v.frames(3);
+    ASSERT_TRUE(v.state().lesson) << v.state().status;
+    v.state().compactView = ViewKind::npc;
+    v.frames(2);
+    list = npcList(v.viewer());
+    EXPECT_EQ(cornersOutside(list), "") << "in the lesson the cube is cut off in a " << list.width << " × " << list.height << " view";
+    if (phone.height > phone.width) writePng(v.image(), test::outputDir() / "phone-npc-upright.png");
+  }
+}
+
+// The embed form on an upright phone (`#embed=camera,world&lesson=01-synthetic-camera&step=2`, the
+// step about PRP): the page opens the lesson from the link before the views have a shape; the world
+// view, a tall strip beside the camera view, is framed for its shape once it has one, so PRP and
+// VRP are in it. The step and the document stay the lesson's.
+TEST(EmbedOnAPhone, TheWorldViewFramesPrpAndVrpForItsShape) {
+  HeadlessViewer v{*test::egl().context, defaultScene(), 1170, 2532, kScale};
+  v.state().inBrowser = true;
+  v.state().touch = true;
+  v.state().cssPixel = kRatio;
+  v.state().embedViews = {ViewKind::camera, ViewKind::world};
+  v.viewer().session().openLesson(fs::path(VPLAB_ASSETS) / "lessons" / "01-synthetic-camera.en.json", 1);
+  ASSERT_TRUE(v.state().lesson) << v.state().status;
+  v.frames(6);
+  ASSERT_TRUE(v.state().lesson);
+  EXPECT_EQ(v.state().lesson->step(), 1u);
+  EXPECT_FALSE(v.state().doc.dirty());
+  const ImVec4 view = v.rects().rects.at("view.world");
+  EXPECT_LT(view.z, view.w / 2) << "the world view is not the tall strip this test is about";
+  for (const char* id : {"handle.prp", "handle.vrp"}) {
+    const auto [x, y] = v.centreOf(id);
+    EXPECT_TRUE(x > view.x && x < view.x + view.z && y > view.y && y < view.y + view.w)
+        << id << " at (" << x << ", " << y << ") outside the world view (" << view.x << ", " << view.y << ") "
+        << view.z << " × " << view.w;
+  }
+  writePng(v.image(), test::outputDir() / "phone-embed-camera-world.png");
 }
 
 // A narrow phone (320 CSS px, the smallest still sold) with the UI scale raised by half (View ▸ UI
