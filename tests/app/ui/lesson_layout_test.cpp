@@ -6,6 +6,7 @@
 // The test writes the table of cited values per step (test output: lesson-evidence-*.md).
 #include "app/ui/headless_viewer.h"
 #include "app/views/views.h"
+#include "tests/app/ui/bundled_lessons.h"
 #include "tests/app/ui/screen_text.h"
 #include "tests/support/gl_test_support.h"
 
@@ -34,14 +35,6 @@ struct ProjectorSize {
   float scale;
 };
 constexpr ProjectorSize kSizes[] = {{1280, 720, 1.6f}, {1024, 768, 1.25f}};
-
-std::vector<std::string> bundledLessons() {
-  std::vector<std::string> names;
-  for (const fs::directory_entry& e : fs::directory_iterator(fs::path(VPLAB_ASSETS) / "lessons"))
-    if (e.path().extension() == ".json") names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
 
 Language languageOf(const std::string& file) {
   return file.find(".de.") != std::string::npos ? Language::de : Language::en;
@@ -270,14 +263,8 @@ TEST_P(LessonLayout, EveryStepsLabelsNeverOverlapLeaveTheirViewOrStrayFromTheirP
 }
 
 INSTANTIATE_TEST_SUITE_P(Bundled, LessonLayout,
-                         ::testing::Combine(::testing::ValuesIn(bundledLessons()), ::testing::Values(0, 1)),
-                         [](const auto& param) {
-                           std::string name = std::get<0>(param.param);
-                           name = name.substr(0, name.size() - 5);
-                           for (char& c : name)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return name + (std::get<1>(param.param) == 0 ? "_1280x720x1_6" : "_1024x768x1_25");
-                         });
+                         ::testing::Combine(::testing::ValuesIn(test::bundledLessons()), ::testing::Values(0, 1)),
+                         [](const auto& param) { return test::lessonTestName(std::get<0>(param.param)) + (std::get<1>(param.param) == 0 ? "_1280x720x1_6" : "_1024x768x1_25"); });
 
 }  // namespace
 }  // namespace vplab

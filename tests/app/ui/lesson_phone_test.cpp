@@ -8,6 +8,7 @@
 #include "app/ui/touch.h"
 #include "app/views/views.h"
 #include "tests/app/ui/cut_off.h"
+#include "tests/app/ui/bundled_lessons.h"
 #include "tests/app/ui/screen_text.h"
 #include "tests/support/gl_test_support.h"
 
@@ -33,14 +34,6 @@ struct PhoneSize {
 // The page's UI scale on a phone: devicePixelRatio × the shorter CSS side / 440 (app/web/page.cpp pageScale).
 constexpr float kRatio = 3, kScale = kRatio * 390.f / 440.f;
 constexpr PhoneSize kPhones[] = {{1170, 2532, "upright"}, {2532, 1170, "on its side"}};
-
-std::vector<std::string> bundledLessons() {
-  std::vector<std::string> names;
-  for (const fs::directory_entry& e : fs::directory_iterator(fs::path(VPLAB_ASSETS) / "lessons"))
-    if (e.path().extension() == ".json") names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
 
 bool overlap(const ImVec4& a, const ImVec4& b) {
   return a.x < b.x + b.z && a.x + a.z > b.x && a.y < b.y + b.w && a.y + a.w > b.y;
@@ -213,14 +206,8 @@ TEST(LessonOnANarrowPhone, TheHeadingTakesItsOwnLineAndTheButtonsShareTheRowUnde
   writePng(v.image(), test::outputDir() / "lesson-phone" / "phone-narrow-05-clipping.de-step10.png");
 }
 
-INSTANTIATE_TEST_SUITE_P(Bundled, LessonOnAPhone, ::testing::Combine(::testing::ValuesIn(bundledLessons()), ::testing::Values(0, 1)),
-                         [](const auto& param) {
-                           std::string name = std::get<0>(param.param);
-                           name = name.substr(0, name.size() - 5);
-                           for (char& c : name)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return name + (std::get<1>(param.param) == 0 ? "_upright" : "_on_its_side");
-                         });
+INSTANTIATE_TEST_SUITE_P(Bundled, LessonOnAPhone, ::testing::Combine(::testing::ValuesIn(test::bundledLessons()), ::testing::Values(0, 1)),
+                         [](const auto& param) { return test::lessonTestName(std::get<0>(param.param)) + (std::get<1>(param.param) == 0 ? "_upright" : "_on_its_side"); });
 
 }  // namespace
 }  // namespace vplab
