@@ -195,11 +195,19 @@ export async function launchBrowser({ viewport = { width: 1280, height: 720, dev
  * own, as another visitor's) of `viewport`'s size and deviceScaleFactor, if given, and waits until
  * `window.vplab.ready` resolved (the first frame drawn).
  * Resolves to {page, console}: `console` collects the page's messages of level error and warning and
- * its uncaught exceptions ({type, text, location}) from before the navigation on.
+ * its uncaught exceptions ({type, text, location}) from before the navigation on. `languages` sets
+ * the browser's languages (navigator.languages) before the page loads.
  */
-export async function openPage(browser, url, { timeout = 60_000, viewport } = {}) {
+export async function openPage(browser, url, { timeout = 60_000, viewport, languages } = {}) {
   const page = await browser.newPage(); // a Browser or a BrowserContext
   if (viewport) await page.setViewport(viewport);
+  // `languages`: the browser's, as navigator reports them (['de-DE', 'de']: a German student's).
+  if (languages) {
+    await page.evaluateOnNewDocument((list) => {
+      Object.defineProperty(Navigator.prototype, 'language', { get: () => list[0], configurable: true });
+      Object.defineProperty(Navigator.prototype, 'languages', { get: () => list, configurable: true });
+    }, languages);
+  }
   const messages = [];
   page.on('console', (message) => {
     const type = message.type();

@@ -175,21 +175,22 @@ describe('the page under a finger', { concurrency: 1 }, () => {
     await context.close();
   });
   // Issue 41 item 2 in the page itself (tests/app/ui/lesson_phone_test.cpp walks every bundled lesson
-  // with the page's layout and scale): the clipping lesson, in German, every step reached by tapping
+  // with the page's layout and scale): the clipping lesson, in a German browser, every step reached by tapping
   // Weiter → on a phone upright and on its side; on each the page's cut-off check finds nothing, the
   // heading names the step and stays off the buttons.
   test('(z) a lesson on a phone, upright and on its side: every step tapped through, nothing cut off', { timeout: 300_000 }, async () => {
     for (const viewport of [kPhone, { ...kPhone, width: kPhone.height, height: kPhone.width }]) {
       const where = viewport.height > viewport.width ? 'upright' : 'on its side';
       const context = await served.browser.createBrowserContext();
-      const { page, console: messages } = await openPage(context, `${served.server.url}#lesson=05-clipping.de&step=1`, { viewport });
+      const { page, console: messages } = await openPage(context, `${served.server.url}#lesson=05-clipping.de&step=1`,
+        { viewport, languages: ['de-DE', 'de'] });  // a German student: the lab in German too
       await waitForState(page, (s) => s.lesson && s.lesson.settled && s.lesson.step === 1, 'lesson 05 at step 1', messages);
       const finger = await fingerOn(page);
       const steps = (await vplabState(page)).lesson.steps;
       for (let step = 1; step <= steps; ++step) {
         if (step > 1) {
           await finger.tap(rectPoint(await cssRect(page, await vplabState(page), 'lesson.next')));
-          await waitForState(page, (s) => s.lesson.step === step && s.lesson.settled, `step ${step} ${where}`, messages);
+          await waitForState(page, `(s) => s.lesson.step === ${step} && s.lesson.settled`, `step ${step} ${where}`, messages);  // the page reads the predicate as text
         }
         await waitFrames(page, 2);
         const s = await vplabState(page);
