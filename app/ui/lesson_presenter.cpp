@@ -81,6 +81,8 @@ void applyMarks(ViewerState& s, const LessonState& state) {
   if (state.stepThrough) {
     s.stepThrough = {true, int(state.stepThrough->object), state.stepThrough->face, state.stepThrough->plane};
     if (state.tab.empty()) s.showStepThrough = true;
+    // A phone shows one view: the one where the polygon is clipped (it showed the world view).
+    if (s.compactShown) s.compactView = ViewKind::npc;
   } else {
     s.stepThrough.active = false;
   }
