@@ -10,6 +10,7 @@
 #include "tests/app/ui/cut_off.h"
 #include "tests/app/ui/bundled_lessons.h"
 #include "tests/app/ui/screen_text.h"
+#include "tests/app/ui/view_lists.h"
 #include "tests/support/gl_test_support.h"
 
 #include <gtest/gtest.h>
@@ -84,6 +85,17 @@ TEST_P(LessonOnAPhone, EveryStepIsReadWholeWithItsButtonsAFingersSize) {
       EXPECT_FALSE(overlap(rects.at("lesson.heading"), rects.at(id))) << where << ": the heading runs under " << id;
     }
 
+    // Each label said once in the view shown (PRP and VRP were named twice on a tablet).
+    for (ViewKind kind : v.viewer().images().asked()) {
+      if (!v.viewer().images().lastRequest(kind)) continue;
+      std::vector<std::string> texts;
+      for (const PlacedLabel& l : test::listOf(v.viewer(), kind).labels())
+        if (l.text.find_first_not_of("0123456789.−-") != std::string::npos) texts.push_back(l.text);  // not the axes' ticks
+      std::sort(texts.begin(), texts.end());
+      const auto twice = std::adjacent_find(texts.begin(), texts.end());
+      EXPECT_TRUE(twice == texts.end()) << where << ": \"" << *twice << "\" twice in the " << toString(kind) << " view";
+    }
+
     // The caption to its last line: whole in its box, or the box scrolls to its end.
     const ImVec4 text = rects.at("lesson.text"), textShown = shown.at("lesson.text");
     if (textShown.w < text.w - 1) {
@@ -103,12 +115,6 @@ TEST_P(LessonOnAPhone, EveryStepIsReadWholeWithItsButtonsAFingersSize) {
       writePng(v.image(), test::outputDir() / "lesson-phone" / (prefix + "-step" + std::to_string(step + 1) + ".png"));
     }
   }
-}
-
-/// The NPC view's list as it was last drawn, built again.
-draw::DisplayList npcList(const Viewer& viewer) {
-  const ViewRequest* r = viewer.images().lastRequest(ViewKind::npc);
-  return npcView({*r->scene, *r->run, r->settings, r->highlights, r->width, r->height, viewer.viewTextMetrics()});
 }
 
 /// The corners of the NPC cube outside the list's view (pixels), described.
@@ -136,14 +142,14 @@ TEST(NpcViewOnAPhone, TheCubeIsWholeUprightAndOnItsSide) {
     v.state().cssPixel = kRatio;
     v.state().compactView = ViewKind::npc;
     v.frames(3);
-    draw::DisplayList list = npcList(v.viewer());
+    draw::DisplayList list = test::listOf(v.viewer(), ViewKind::npc);
     EXPECT_EQ(cornersOutside(list), "") << "the cube is cut off in a " << list.width << " × " << list.height << " view";
     v.viewer().session().openLesson(fs::path(VPLAB_ASSETS) / "lessons" / "03-view-mapping.en.json", 0);
     v.frames(3);
     ASSERT_TRUE(v.state().lesson) << v.state().status;
     v.state().compactView = ViewKind::npc;
     v.frames(2);
-    list = npcList(v.viewer());
+    list = test::listOf(v.viewer(), ViewKind::npc);
     EXPECT_EQ(cornersOutside(list), "") << "in the lesson the cube is cut off in a " << list.width << " × " << list.height << " view";
     if (phone.height > phone.width) writePng(v.image(), test::outputDir() / "phone-npc-upright.png");
   }
