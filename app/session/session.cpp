@@ -96,7 +96,11 @@ void Session::reframeLesson() {
   } catch (const Error&) {
     return;
   }
+  // The same lesson at the same step: what the status line says (a link's parts left out) stays.
+  const std::string status = state_.status;
+  const bool statusIsError = state_.statusIsError;
   openLesson(file, state_.lesson->step());
+  state_.setStatus(status, statusIsError);
 }
 
 void Session::openScene(const std::filesystem::path& file) {

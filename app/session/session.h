@@ -69,7 +69,7 @@ class Session {
   /// The open lesson read again at its step for the world view's shape now (state().worldAspect):
   /// in the page a lesson opens from the link before the views have a shape (an embed's world view
   /// beside the camera view on a phone is five times taller than the default; PRP fell outside it).
-  /// Nothing happens to a lesson whose step was changed.
+  /// Nothing happens to a lesson whose step was changed; the status line keeps what it said.
   void reframeLesson();
   /// What a lesson's steps are resolved against: the bundled scenes and a fresh document's views.
   LessonContext lessonContext() const;

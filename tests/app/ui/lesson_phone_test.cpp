@@ -167,10 +167,12 @@ TEST(EmbedOnAPhone, TheWorldViewFramesPrpAndVrpForItsShape) {
   v.state().embedViews = {ViewKind::camera, ViewKind::world};
   v.viewer().session().openLesson(fs::path(VPLAB_ASSETS) / "lessons" / "01-synthetic-camera.en.json", 1);
   ASSERT_TRUE(v.state().lesson) << v.state().status;
+  v.state().setStatus("zoom=\"2\": not a key of a link", true);  // what the link said, as the page shows it
   v.frames(6);
   ASSERT_TRUE(v.state().lesson);
   EXPECT_EQ(v.state().lesson->step(), 1u);
   EXPECT_FALSE(v.state().doc.dirty());
+  EXPECT_EQ(v.state().status, "zoom=\"2\": not a key of a link") << "framing the lesson again took the link's note away";
   const ImVec4 view = v.rects().rects.at("view.world");
   EXPECT_LT(view.z, view.w / 2) << "the world view is not the tall strip this test is about";
   for (const char* id : {"handle.prp", "handle.vrp"}) {
