@@ -24,7 +24,7 @@
 // class_exercise.cpp with `command -v pdflatex` in /bin/sh, so the command runs with a PATH where it
 // cannot be found (the sheets' PDFs are checked by other tests). And each variant's figures are
 // rendered with llvmpipe, whose shaders are compiled again for every variant when the shader cache is
-// off (as the GL tests run, MESA_SHADER_CACHE_DISABLE=true): ~1.6 s a variant, most of it LLVM. The
+// off (`vplab` runs with the user's settings; Mesa's default cache is the user's): ~1.6 s a variant. The
 // generation runs with a shader cache of its own in the test's fresh folder (compiled once by the
 // first variant, then reused: ~0.5 s a variant), which no other test and no later run sees; the
 // figures are not what this test checks. Under the sanitizers (the ASan CI
