@@ -145,7 +145,9 @@ void stepThroughSection(Widgets& w, const DocumentPart& d, const RunPart& r, Lec
   st.face = std::clamp(st.face, 0, int(o->faceCount()) - 1);
   const char* polygonLabel = tr(w, "polygon");
   fitLabel(polygonLabel);
-  ImGui::SliderInt(polygonLabel, &st.face, 0, int(o->faceCount()) - 1);
+  // Typed values (Ctrl+click) are held to the range too: the face and the pass index arrays below.
+  ImGui::SliderInt(polygonLabel, &st.face, 0, int(o->faceCount()) - 1, "%d", ImGuiSliderFlags_AlwaysClamp);
+  st.face = std::clamp(st.face, 0, int(o->faceCount()) - 1);
   ImGui::TextDisabled("%s", tr(w, fateText(o->fate[size_t(st.face)])));
   const std::vector<ClipStep> steps = clipSteps(r.run(), *o, size_t(st.face));
   const int last = int(steps.size());
@@ -163,7 +165,8 @@ void stepThroughSection(Widgets& w, const DocumentPart& d, const RunPart& r, Lec
   recordRect("step.next");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(std::max(ImGui::GetFontSize() * 4, ImGui::GetContentRegionAvail().x));
-  ImGui::SliderInt("##step", &st.step, 0, last, tr(w, "pass %d"));
+  ImGui::SliderInt("##step", &st.step, 0, last, tr(w, "pass %d"), ImGuiSliderFlags_AlwaysClamp);
+  st.step = std::clamp(st.step, 0, last);
   recordRect("step.slider");
 
   if (st.step == 0) {

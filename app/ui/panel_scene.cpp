@@ -60,9 +60,14 @@ void objectEditor(Widgets& w, SceneObject& o) {
     o.color = Vec3(color);
   if (o.shape == Shape::cylinder || o.shape == Shape::sphere) {
     int n = o.segments;
+    // A typed value is held to the slider's range too: Ctrl+click lets one type "99999999999", which
+    // ImGui reads as 1215752192 (the monkey test, seed 37). A scene's larger count (the 1024-segment
+    // sphere) is shown as it is until the slider is moved (the meshes of up to 128 are built at once).
+    const int lo = o.shape == Shape::sphere ? 4 : 3, hi = 128;
     fitLabel(tr(w, "segments"));
-    if (ImGui::SliderInt(tr(w, "segments"), &n, o.shape == Shape::sphere ? 4 : 3, 128)) {
-      if (o.shape == Shape::sphere) n += n % 2;
+    if (ImGui::SliderInt(tr(w, "segments"), &n, lo, hi, "%d", ImGuiSliderFlags_AlwaysClamp)) {
+      n = std::clamp(n, lo, hi);
+      if (o.shape == Shape::sphere) n += n % 2;  // hi is even for a sphere
       SceneObject rebuilt = o;
       rebuilt.segments = n;
       rebuilt.mesh = primitiveMesh(rebuilt);

@@ -64,8 +64,9 @@ TEST_P(LessonOnAPhone, EveryStepIsReadWholeWithItsButtonsAFingersSize) {
     v.frames(3);
     ASSERT_EQ(v.state().lesson->step(), step);
     ASSERT_TRUE(v.rects().rects.count("switch.world")) << where << ": the phone got the desktop's layout";
-    if (v.state().lesson->current().state.stepThrough)
+    if (v.state().lesson->current().state.stepThrough) {
       EXPECT_EQ(v.state().compactView, ViewKind::npc) << where << ": a step through a polygon shows another view than the NPC view";
+    }
 
     // The heading names the step, and it is on screen.
     const std::string stepOf = text::fill(v.state().lesson->lesson().language, "step {1} / {2}",

@@ -273,6 +273,7 @@ TEST(UiCompact, TheDesktopLayoutStaysWhereItFitsOrIsNotAllowed) {
 
 #include "app/inspect/picking.h"
 #include "app/inspect/vanishing_text.h"
+#include "pipeline/clip_steps.h"
 #include "io/scene_io.h"
 
 namespace vplab {
@@ -325,22 +326,26 @@ TEST(UiLecture, CopyingALatexMatrixSaysSoAndPastesAsDisplayMath) {
   EXPECT_NE(text.find("\\[\n\\begin{bmatrix}"), std::string::npos) << text;
 }
 
+/// A vertex of the run away from the camera view's edges, where the view draws it (in the window's pixels).
+std::optional<std::pair<double, double>> aVertexInTheCameraView(HeadlessViewer& v) {
+  const PipelineRun& run = v.state().run();
+  const ImVec4 r = v.rects().rects.at("view.camera");
+  const Device& d = run.device;
+  for (size_t k = 0; k < run.objects.size(); ++k)
+    for (uint32_t i = 0; i < run.objects[k].vertexCount(); ++i)
+      if (const auto dc = probePosition(run, Probe{run.sceneIndex[k], i}, ViewKind::camera))
+        if (dc->x > 40 && dc->x < d.width - 40 && dc->y > 40 && dc->y < d.height - 40)
+          return std::pair(r.x + dc->x * r.z / d.width, r.y + dc->y * r.w / d.height);
+  return std::nullopt;
+}
+
 TEST(UiLecture, ClickingAVertexShowsTheProbeAndShiftClickTheStepThrough) {
   auto v = makeViewer();
   const auto [tx, ty] = v->centreOf("tab.inspect.Matrices");
   v->click(tx, ty);
   v->frames(2);
   ASSERT_EQ(v->state().inspectTab, ViewerState::matricesTab);
-  // A vertex of the run, where the camera view draws it.
-  const PipelineRun& run = v->state().run();
-  const ImVec4 r = v->rects().rects.at("view.camera");
-  const Device& d = run.device;
-  std::optional<std::pair<double, double>> at;
-  for (size_t k = 0; k < run.objects.size() && !at; ++k)
-    for (uint32_t i = 0; i < run.objects[k].vertexCount() && !at; ++i)
-      if (const auto dc = probePosition(run, Probe{run.sceneIndex[k], i}, ViewKind::camera))
-        if (dc->x > 40 && dc->x < d.width - 40 && dc->y > 40 && dc->y < d.height - 40)
-          at = std::pair(r.x + dc->x * r.z / d.width, r.y + dc->y * r.w / d.height);
+  const auto at = aVertexInTheCameraView(*v);
   ASSERT_TRUE(at);
   v->click(at->first, at->second);
   v->frames(1);
@@ -362,6 +367,42 @@ TEST(UiLecture, ClickingAVertexShowsTheProbeAndShiftClickTheStepThrough) {
   const auto [nx, ny] = v->centreOf("step.next");
   v->click(nx, ny);
   EXPECT_EQ(v->state().stepThrough.step, 1);
+}
+
+// A pass typed into the step-through's slider (Ctrl+click) is held to the passes there are: the
+// monkey test typed "99999999999", which ImGui reads as 1215752192, and the panel indexed its passes
+// with it. Typed below the first, it is the first.
+TEST(UiLecture, APassTypedBeyondTheLastIsTheLast) {
+  auto v = makeViewer();
+  const auto at = aVertexInTheCameraView(*v);
+  ASSERT_TRUE(at);
+  v->click(at->first, at->second);  // the probe's polygon is the one stepped through
+  v->frames(1);
+  ASSERT_TRUE(v->state().probe);
+  const auto [cx, cy] = v->centreOf("view.camera");
+  ImGui::GetIO().KeyShift = true;
+  v->click(cx, cy);
+  ImGui::GetIO().KeyShift = false;
+  v->frames(1);
+  ASSERT_TRUE(v->state().stepThrough.active);
+  const StepThrough& st = v->state().stepThrough;
+  const PipelineRun& run = v->state().run();
+  const ObjectRun* o = nullptr;
+  for (size_t k = 0; k < run.objects.size(); ++k)
+    if (run.sceneIndex[k] == size_t(st.object)) o = &run.objects[k];
+  ASSERT_NE(o, nullptr);
+  const int passes = int(clipSteps(run, *o, size_t(st.face)).size());
+  ASSERT_GT(passes, 0);
+  v->frames(2);  // the Lecture tab, opened by the Shift+click, settles its layout
+
+  typeSlowly(*v, "step.slider", "99999999999");
+  v->key(keys::kEnter);
+  v->frames(2);
+  EXPECT_EQ(v->state().stepThrough.step, passes);
+  typeSlowly(*v, "step.slider", "-99999999999");
+  v->key(keys::kEnter);
+  v->frames(2);
+  EXPECT_EQ(v->state().stepThrough.step, 0);
 }
 
 }  // namespace
