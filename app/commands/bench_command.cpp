@@ -1,6 +1,8 @@
 // Index: 1 timing helpers  2 frame times  3 start-up  4 input to frame  5 the report
+// (memory: app/commands/bench_memory.cpp)
 #include "app/commands/bench_command.h"
 
+#include "app/commands/bench_memory.h"
 #include "app/render/headless.h"
 #include "app/ui/headless_viewer.h"
 #include "app/ui/keys.h"
@@ -288,6 +290,13 @@ Json goals(const Json& report) {
   }
   // One thread: its CPU time is what the pipeline costs; the wall time adds the waits for a core on
   // a shared machine, which swing this ratio from 1.5 to 5 between runs (and ratios_cpu by ±0.2).
+  if (report.contains("memory")) {
+    const Json& p = report["memory"];
+    add("viewer, large scene over the default, bytes a triangle", p.value("viewer_bytes_per_triangle", 0.0), "B", "<=",
+        p.value("viewer_bytes_per_triangle_max", 0.0));
+    add("vplab render --view all of the large scene, peak", p.value("render_view_all_peak_mib", 0.0), "MiB", "<=",
+        p.value("render_view_all_peak_max_mib", 0.0));
+  }
   if (report.contains("pipeline")) {
     add("CPU pipeline: full / floor (transform + outcode), CPU",
         report["pipeline"]["ratios_cpu"].value("full_over_floor", 0.0), "ratio", "<=",
@@ -297,7 +306,36 @@ Json goals(const Json& report) {
   return g;
 }
 
+void printMemoryUse(const char* what, const Json& use) {
+  std::cout << "  " << what << ": " << fixed(use.value("total_mib", 0.0)) << " MiB";
+  const char* sep = " (";
+  for (const Json& p : use["parts"])
+    if (p.value("mib", 0.0) >= 0.05) {
+      std::cout << sep << p.value("part", "") << " " << fixed(p.value("mib", 0.0));
+      sep = ", ";
+    }
+  std::cout << (*sep == ',' ? ")" : "") << "\n";
+}
+
+void printMemory(const Json& m) {
+  std::cout << "Memory of the large scene (" << m["scene"].value("triangles", 0) << " triangles), by structure:\n";
+  const Json& s = m["structures"];
+  printMemoryUse("meshes", s["meshes"]);
+  printMemoryUse("one pipeline run", s["pipeline_run"]);
+  for (const char* style : {"shaded", "wire"})
+    for (const char* view : {"camera", "world", "npc"})
+      printMemoryUse(("display list, " + std::string(view) + " view, " + style).c_str(),
+                     s["display_lists_" + std::string(style)][view]);
+  printMemoryUse("GPU buffers", s["gpu_buffers"]);
+  const Json& p = m;
+  std::cout << "  peak: the viewer (vplab render --view ui) " << fixed(p.value("viewer_default_scene_peak_mib", 0.0))
+            << " MiB on the default scene, " << fixed(p.value("viewer_large_scene_peak_mib", 0.0))
+            << " MiB on the large one: " << fixed(p.value("viewer_bytes_per_triangle", 0.0))
+            << " B a triangle; vplab render --view all " << fixed(p.value("render_view_all_peak_mib", 0.0)) << " MiB\n";
+}
+
 void printHuman(const Json& j) {
+  if (j.contains("memory")) printMemory(j["memory"]);
   if (j.contains("pipeline")) {
     const Json& p = j["pipeline"];
     const Json& med = p["median_ms"];
@@ -334,7 +372,7 @@ void printHuman(const Json& j) {
               << ms(j["input_to_frame"].value("p95_ms", 0.0)) << ", CPU (all threads) "
               << ms(j["input_to_frame"].value("cpu_median_ms", 0.0)) << "\n";
   if (!j.contains("goals") || j["goals"].empty()) return;
-  std::cout << "Goals (issue 11), from this run:\n";
+  std::cout << "Goals (issues 11 and 42), from this run:\n";
   for (const Json& g : j["goals"]) {
     char line[200];
     std::snprintf(line, sizeof line, "  %-55s %8.2f %-8s (goal %s %g): %s", g.value("goal", "").c_str(),
@@ -352,6 +390,8 @@ int runBench(const BenchOptions& o) {
   Json report;
   report["machine"] = {{"cores", std::thread::hardware_concurrency()}};
   std::ostream& log = std::cerr;
+  // The peaks first: a child's peak includes this process's memory when it starts (bench_memory.h).
+  if (wanted(o, "memory")) report["memory"] = memoryPeaks(o.executable, log);
   if (wanted(o, "pipeline")) {
     log << "  pipeline: full, floor and textbook on ~1M triangles, " << o.repetitions << " rounds…\n";
     report["pipeline"] = bench::toJson(bench::runPipelineBenchmarks(o.repetitions));
@@ -359,6 +399,7 @@ int runBench(const BenchOptions& o) {
   if (wanted(o, "frames")) report["frames"] = frameTimes(o, log);
   if (wanted(o, "startup")) report["startup"] = startupTimes(o, log);
   if (wanted(o, "input")) report["input_to_frame"] = inputToFrame(o, log);
+  if (wanted(o, "memory")) report["memory"]["structures"] = memoryStructures(log);
   report["goals"] = goals(report);
   if (o.json) std::cout << report.dump(2) << "\n";
   else printHuman(report);

@@ -4,6 +4,8 @@
 //              ~1M-triangle mesh), and the three views of the default scene together
 //   startup    from starting `vplab render` to the PNG on disk
 //   input      from an input event (a drag on the VRP field) to the updated frame, all three views
+//   memory     where the bytes of the 1M-triangle scene go, by structure, and the peak memory of the
+//              viewer and of `vplab render --view all` showing it (app/commands/bench_memory.cpp)
 #pragma once
 
 #include <string>
@@ -15,7 +17,7 @@ struct BenchOptions {
   bool json = false;
   int repetitions = 5;   // pipeline rounds
   int frames = 40;       // frames per view measurement
-  std::vector<std::string> only;  // empty: everything; else a subset of pipeline, frames, startup, input
+  std::vector<std::string> only;  // empty: everything; else a subset of pipeline, frames, startup, input, memory
   std::string executable;         // vplab itself, for the start-up measurement
 };
 

@@ -652,12 +652,16 @@ int runCommandLine(int argc, char** argv) {
   CLI::App* benchCmd = app.add_subcommand(
       "bench", "Measure, in one run on this machine: the CPU pipeline on ~1M triangles against a floor pass and a "
                "textbook baseline; frame times per view at 1280×720; the start-up of vplab render; the time "
-               "from an input event to the updated frame");
+               "from an input event to the updated frame; where the memory of the 1M-triangle scene goes");
   benchCmd->add_flag("--json", bench.json, "Print the report as JSON on stdout (progress goes to stderr)");
   benchCmd->add_option("--repetitions", bench.repetitions, "Rounds of the pipeline workloads (median reported)")
       ->check(CLI::Range(1, 100));
   benchCmd->add_option("--frames", bench.frames, "Frames per frame-time measurement")->check(CLI::Range(5, 10000));
-  benchCmd->add_option("--only", benchOnly, "Comma-separated parts: pipeline, frames, startup, input");
+  benchCmd->add_option("--only", benchOnly, "Comma-separated parts: pipeline, frames, startup, input, memory");
+  bool benchMemory = false;
+  benchCmd->add_flag("--memory", benchMemory,
+                     "Only where the bytes of the 1M-triangle scene go, by structure, and the peak memory of the viewer "
+                     "and of vplab render --view all (--only memory)");
 
   CLI::App* presetsCmd = app.add_subcommand(
       "presets", "List the bundled scenes (the viewer's File > Presets): each one's name, title and file");
@@ -691,11 +695,12 @@ int runCommandLine(int argc, char** argv) {
       for (size_t start = 0; start < benchOnly.size();) {
         const size_t comma = std::min(benchOnly.find(',', start), benchOnly.size());
         const std::string part = benchOnly.substr(start, comma - start);
-        if (part != "pipeline" && part != "frames" && part != "startup" && part != "input")
-          throw Error("--only: \"" + part + "\" is not one of pipeline, frames, startup, input");
+        if (part != "pipeline" && part != "frames" && part != "startup" && part != "input" && part != "memory")
+          throw Error("--only: \"" + part + "\" is not one of pipeline, frames, startup, input, memory");
         bench.only.push_back(part);
         start = comma + 1;
       }
+      if (benchMemory) bench.only.push_back("memory");
       std::error_code ec;
       bench.executable = std::filesystem::read_symlink("/proc/self/exe", ec).string();
       if (ec) bench.executable = argv[0];

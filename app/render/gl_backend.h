@@ -84,6 +84,10 @@ class GlBackend {
   uint32_t meshChunkCorners() const { return meshes_.chunkCorners(); }
   /// Where the last draw call put its labels (x0, y0, x1, y1, pixels), for the tests.
   const std::vector<glm::vec4>& labelsPlaced() const { return labelsPlaced_; }
+  /// The bytes of the meshes' GPU buffers (faces, edges), on llvmpipe and SwiftShader the process's own.
+  MemoryUse gpuMemoryUse() const {
+    return {{"gpu.mesh faces", meshes_.faceBytes()}, {"gpu.mesh edges", meshes_.edgeBytes()}};
+  }
 
  private:
   struct View {

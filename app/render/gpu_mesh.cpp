@@ -48,6 +48,7 @@ GpuMeshChunk makeChunk(const GladGLContext& gl, const Mesh& mesh, size_t first, 
   gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), reinterpret_cast<void*>(sizeof(glm::vec3)));
   gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, chunk.indices.id());
   gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(triangles.size() * sizeof(uint32_t)), triangles.data(), GL_STATIC_DRAW);
+  chunk.bytes = corners.size() * sizeof(glm::vec3) + triangles.size() * sizeof(uint32_t);
   gl.BindVertexArray(0);
   gl.BindBuffer(GL_ARRAY_BUFFER, 0);
   return chunk;
@@ -68,6 +69,7 @@ GpuEdgeChunk makeEdgeChunk(const GladGLContext& gl, const Mesh& mesh, const std:
   gl.BindVertexArray(chunk.vao.id());
   gl.BindBuffer(GL_ARRAY_BUFFER, chunk.ends.id());
   gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(ends.size() * sizeof(glm::vec3)), ends.data(), GL_STATIC_DRAW);
+  chunk.bytes = ends.size() * sizeof(glm::vec3);
   gl.BindVertexArray(0);
   pointEdgesAt(gl, chunk, 0);
   return chunk;
@@ -153,6 +155,20 @@ void GpuMeshCache::collect() {
     if (it->second.mesh.expired()) it = entries_.erase(it);
     else ++it;
   }
+}
+
+size_t GpuMeshCache::faceBytes() const {
+  size_t sum = 0;
+  for (const auto& [mesh, e] : entries_)
+    for (const GpuMeshChunk& c : e.gpu.chunks) sum += c.bytes;
+  return sum;
+}
+
+size_t GpuMeshCache::edgeBytes() const {
+  size_t sum = 0;
+  for (const auto& [mesh, e] : entries_)
+    for (const GpuEdgeChunk& c : e.gpu.edgeChunks) sum += c.bytes;
+  return sum;
 }
 
 }  // namespace vplab

@@ -25,6 +25,7 @@ struct GpuMeshChunk {
   gl::Buffer vertices, indices;
   size_t firstFace = 0, endFace = 0;
   uint32_t firstCorner = 0;
+  size_t bytes = 0;  // of its two buffers (on llvmpipe and SwiftShader, the process's memory)
 };
 
 /// Edges [first, first + count) of the mesh's unique edges (uniqueEdges), one instance each.
@@ -32,6 +33,7 @@ struct GpuEdgeChunk {
   gl::VertexArray vao;  // per instance: location 0, 2: the MC end points (1, 3, the colours, are set constant)
   gl::Buffer ends;
   GLsizei first = 0, count = 0;
+  size_t bytes = 0;  // of its buffer
 };
 /// Points the chunk's instanced attributes at its edge `first` (0: its start). WebGL2 has no base
 /// instance, so a draw of a part of a chunk moves the attributes' offsets instead.
@@ -65,6 +67,9 @@ class GpuMeshCache {
   const GpuMesh& withEdges(const std::shared_ptr<const Mesh>& mesh);
   /// Drops the GPU copies of meshes nobody else holds any more.
   void collect();
+  /// The bytes of the buffers uploaded (faces; edges), over every mesh held.
+  size_t faceBytes() const;
+  size_t edgeBytes() const;
   /// The corners a chunk holds at most (unless one face has more); for tests of chunk boundaries.
   /// Meshes uploaded before keep their chunks.
   void setChunkCorners(uint32_t corners) { chunkCorners_ = std::max<uint32_t>(corners, 3); }

@@ -75,6 +75,8 @@ class ViewRenderer {
   /// The corners of a mesh's GPU chunks at most (GpuMeshCache::setChunkCorners): tests of chunk
   /// boundaries make them small. Meshes uploaded before keep theirs.
   void setMeshChunkCorners(uint32_t corners) { backend_->setMeshChunkCorners(corners); }
+  /// The bytes of the meshes' GPU buffers (GlBackend::gpuMemoryUse).
+  MemoryUse gpuMemoryUse() const { return backend_->gpuMemoryUse(); }
   /// Where the last view drawn put its labels (x0, y0, x1, y1, pixels), for the tests.
   const std::vector<glm::vec4>& labelsPlaced() const { return backend_->labelsPlaced(); }
   /// Larger text, lines and points for a projector (lecture mode).

@@ -32,4 +32,26 @@ std::vector<PlacedLabel> DisplayList::labels() const {
   return out;
 }
 
+MemoryUse memoryUse(const DisplayList& list) {
+  size_t meshes = 0, polygons = 0, lines = 0, points = 0, triangles = 0, text = 0;
+  for (const Batch& b : list.batches) {
+    if (const Fill* f = std::get_if<Fill>(&b)) {
+      meshes += heapBytes(f->meshes) + heapBytes(f->lights) + heapBytes(f->clipPlanes);
+      polygons += heapBytes(f->polygons);
+      for (const PolygonSet& p : f->polygons) polygons += heapBytes(p.points) + heapBytes(p.ends) + heapBytes(p.faces);
+    } else if (const Lines* l = std::get_if<Lines>(&b)) {
+      lines += heapBytes(l->segments) + heapBytes(l->meshEdges) + heapBytes(l->clipPlanes);
+    } else if (const Points* p = std::get_if<Points>(&b)) {
+      points += heapBytes(p->points);
+    } else if (const Triangles* t = std::get_if<Triangles>(&b)) {
+      triangles += heapBytes(t->vertices);
+    } else if (const Text* x = std::get_if<Text>(&b)) {
+      text += heapBytes(x->labels);
+      for (const PlacedLabel& label : x->labels) text += label.text.capacity() > 15 ? label.text.capacity() + 1 : 0;
+    }
+  }
+  return {{"batches", heapBytes(list.batches)}, {"fill meshes", meshes}, {"polygons", polygons}, {"lines", lines},
+          {"points", points}, {"triangles", triangles}, {"labels", text}};
+}
+
 }  // namespace vplab::draw

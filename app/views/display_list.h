@@ -13,6 +13,7 @@
 #include "app/views/labels.h"
 #include "app/views/view_camera.h"
 #include "base/enum_table.h"
+#include "pipeline/memory_use.h"
 #include "pipeline/mesh.h"
 #include "pipeline/scene.h"
 
@@ -196,6 +197,10 @@ struct DisplayList {
   /// The labels of every Text batch (for the tests: where each went).
   std::vector<PlacedLabel> labels() const;
 };
+
+/// The list's heap bytes by kind of batch (`vplab bench --memory`): meshes by reference count only
+/// their instances, polygons by reference only their face numbers.
+MemoryUse memoryUse(const DisplayList& list);
 
 /// A picture of one or more views: the "all" composition is three panels and a title strip.
 struct Panel {

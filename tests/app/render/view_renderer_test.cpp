@@ -112,3 +112,40 @@ TEST(WorldViewPartition, EachPassDrawsAboutTheFacesOnItsSide) {
 
 }  // namespace
 }  // namespace vplab
+
+namespace vplab {
+namespace {
+
+// The GPU buffers' bytes (`vplab bench --memory`) against the mesh: a corner is a position and a normal
+// (six floats), a fan triangle three 32-bit indices, an edge its two end points (six floats). The
+// edges are uploaded only once a wireframe style draws them.
+TEST(ViewRenderer, TheGpuBuffersHoldEachCornerTriangleAndEdgeOnce) {
+  test::GlFixture& gl = test::egl();
+  gl.context->makeCurrent();
+  ViewRenderer renderer(*gl.context);  // its own mesh cache: nothing of other tests' meshes
+  Scene scene = defaultScene();
+  scene.objects.resize(1);
+  scene.objects[0].shape = Shape::sphere;
+  scene.objects[0].segments = 24;
+  scene.objects[0].mesh = std::make_shared<const Mesh>(sphere(24));
+  const Mesh& mesh = *scene.objects[0].mesh;
+  size_t triangles = 0;
+  for (size_t f = 0; f < mesh.faceCount(); ++f) triangles += mesh.face(f).size() - 2;
+  const size_t faces = mesh.indices.size() * 6 * sizeof(float) + triangles * 3 * sizeof(uint32_t);
+  const size_t edges = uniqueEdges(mesh).size() * 6 * sizeof(float);
+  const PipelineRun run = runPipeline(scene, {ClipStrategy::npc, false, true});
+
+  renderer.render(ViewKind::all, scene, run, displaySettingsFor(scene, Style::shaded, 4.0 / 3), {}, 400, 300);
+  MemoryUse use = renderer.gpuMemoryUse();
+  ASSERT_EQ(use.size(), 2u);
+  EXPECT_EQ(use[0].bytes, faces) << use[0].name;
+  EXPECT_EQ(use[1].bytes, 0u) << use[1].name;
+
+  renderer.render(ViewKind::all, scene, run, displaySettingsFor(scene, Style::wire, 4.0 / 3), {}, 400, 300);
+  use = renderer.gpuMemoryUse();
+  EXPECT_EQ(use[0].bytes, faces) << "the faces uploaded again";
+  EXPECT_EQ(use[1].bytes, edges) << use[1].name;
+}
+
+}  // namespace
+}  // namespace vplab

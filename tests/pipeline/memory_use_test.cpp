@@ -1,0 +1,91 @@
+// Where the bytes go (pipeline/memory_use.h): each part against what the structure's own sizes say,
+// worked out here from the element counts (an allocation holds at least its elements).
+#include "pipeline/memory_use.h"
+#include "pipeline/primitives.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+namespace vplab {
+namespace {
+
+size_t bytesOf(const MemoryUse& use, const std::string& name) {
+  for (const MemoryPart& p : use)
+    if (p.name == name) return p.bytes;
+  ADD_FAILURE() << "no part named " << name;
+  return 0;
+}
+
+// A sphere's arrays, shrunk to their sizes: each part is exactly its element count × element size.
+TEST(MemoryUse, AMeshsPartsAreItsArrays) {
+  Mesh m = sphere(16);
+  m.positions.shrink_to_fit();
+  m.indices.shrink_to_fit();
+  m.faceStart.shrink_to_fit();
+  m.cornerNormals.shrink_to_fit();
+  const MemoryUse use = memoryUse(m);
+  EXPECT_EQ(bytesOf(use, "mesh.positions"), m.vertexCount() * 3 * sizeof(double));
+  EXPECT_EQ(bytesOf(use, "mesh.indices"), m.indices.size() * 4);
+  EXPECT_EQ(bytesOf(use, "mesh.faceStart"), (m.faceCount() + 1) * 4);
+  EXPECT_EQ(bytesOf(use, "mesh.cornerNormals"), m.indices.size() * 3 * sizeof(double));
+  EXPECT_EQ(totalBytes(use), (m.vertexCount() + m.indices.size()) * 24 + m.indices.size() * 4 + (m.faceCount() + 1) * 4);
+}
+
+// Two objects sharing one mesh hold it once; a second mesh adds its own.
+TEST(MemoryUse, AMeshSharedByObjectsCountsOnce) {
+  Scene scene = defaultScene();
+  scene.objects.resize(1);
+  const size_t one = totalBytes(meshMemoryUse(scene));
+  ASSERT_GT(one, 0u);
+  scene.objects.push_back(scene.objects[0]);  // the same shared_ptr<const Mesh>
+  EXPECT_EQ(totalBytes(meshMemoryUse(scene)), one);
+  const auto copy = std::make_shared<const Mesh>(*scene.objects[0].mesh);  // its own arrays
+  scene.objects[1].mesh = copy;
+  EXPECT_EQ(totalBytes(meshMemoryUse(scene)), one + totalBytes(memoryUse(*copy)));
+}
+
+// A run's per-vertex and per-face arrays hold at least one entry a vertex and a face of every object,
+// and the edges' arrays one an edge when the edges are clipped.
+TEST(MemoryUse, ARunHoldsItsPerVertexPerFaceAndPerEdgeArrays) {
+  const Scene scene = defaultScene();
+  PipelineRun run;
+  runPipeline(scene, {ClipStrategy::npc, false, true}, run);
+  size_t vertices = 0, faces = 0, edges = 0;
+  for (const ObjectRun& o : run.objects) {
+    vertices += o.vertexCount();
+    faces += o.faceCount();
+    edges += o.edges.size();
+  }
+  ASSERT_GT(edges, 0u);
+  const MemoryUse use = memoryUse(run);
+  EXPECT_GE(bytesOf(use, "run.npcH"), vertices * 4 * sizeof(double));
+  EXPECT_GE(bytesOf(use, "run.outcodes"), vertices * sizeof(Outcode));
+  EXPECT_GE(bytesOf(use, "run.fate"), faces);
+  EXPECT_GE(bytesOf(use, "run.edges"), edges * 2 * sizeof(uint32_t));
+  EXPECT_GE(bytesOf(use, "run.edgeRanges"), edges * sizeof(EdgeRange));
+  EXPECT_EQ(totalBytes(use), [&] {
+    size_t sum = 0;
+    for (const MemoryPart& p : use) sum += p.bytes;
+    return sum;
+  }());
+
+  PipelineRun noEdges;
+  runPipeline(scene, {ClipStrategy::npc, false, false}, noEdges);
+  EXPECT_EQ(bytesOf(memoryUse(noEdges), "run.edgeRanges"), 0u);
+}
+
+TEST(MemoryUse, PartsOfOneNameAddUpAndSortLargestFirst) {
+  MemoryUse use{{"a", 1}, {"b", 5}};
+  accumulate(use, {{"b", 2}, {"c", 4}});
+  ASSERT_EQ(use.size(), 3u);
+  EXPECT_EQ(bytesOf(use, "b"), 7u);
+  EXPECT_EQ(totalBytes(use), 12u);
+  const MemoryUse sorted = sortedLargestFirst(use);
+  EXPECT_EQ(sorted[0].name, "b");
+  EXPECT_EQ(sorted[1].name, "c");
+  EXPECT_EQ(sorted[2].name, "a");
+}
+
+}  // namespace
+}  // namespace vplab
