@@ -158,8 +158,10 @@ class ListWriter {
     out_ += std::string("<g class=\"lines") + depth[int(l.depth)] + "\" stroke-width=\"" +
             num(l.widthPx + kInkPx) + "\" stroke-linecap=\"" + cap + "\">\n";
     const ViewProjection proj(list_, l.space), clipped(list_, l.space, l.clipPlanes);
-    for (size_t i = 0; i + 1 < l.segments.size(); i += 2)
-      segment(l, proj.segment(l.segments[i].position, l.segments[i + 1].position), l.segments[i].color);
+    std::vector<Vertex> segments;  // its own and its runs' edges (Lines::segmentsInto)
+    l.segmentsInto(0, l.segmentCount(), segments);
+    for (size_t i = 0; i + 1 < segments.size(); i += 2)
+      segment(l, proj.segment(segments[i].position, segments[i + 1].position), segments[i].color);
     for (const MeshInstance& m : l.meshEdges) {
       if (!m.mesh) continue;
       auto at = [&](uint32_t v) { return clipped.npcH(m.spaceFromMc * Vec4(m.mesh->positions[v], 1.0)); };

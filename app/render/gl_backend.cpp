@@ -127,7 +127,7 @@ bool GlBackend::drawSlice(const draw::DisplayList& list, gl::RenderTarget& targe
         c.mesh = 0;
         c.pass = 0;
         c.index = 0;
-        if (lines->segments.empty()) continue;
+        if (lines->segmentCount() == 0) continue;
       }
       if (depth == draw::Depth::xray) {
         marks.push_back(&b);
@@ -494,12 +494,15 @@ bool GlBackend::drawMarksSlice(const draw::Batch& b, draw::Depth depth, const Vi
                                size_t& triangles) {
   // A line or a point is a quad: two triangles. At least one primitive a slice.
   size_t count = 0, cost = 2;
-  if (const auto* l = std::get_if<draw::Lines>(&b)) count = l->segments.size() / 2;
+  if (const auto* l = std::get_if<draw::Lines>(&b)) count = l->segmentCount();
   else if (const auto* p = std::get_if<draw::Points>(&b)) count = p->points.size();
   else if (const auto* t = std::get_if<draw::Triangles>(&b)) count = t->vertices.size() / 3, cost = 1;
   const size_t first = std::min(c.primitive, count);
   const size_t end = first + std::min(count - first, std::max<size_t>(1, triangles / cost));
-  drawMarks({&b}, depth, view, first, end);
+  // In parts of at most kMarksAtOnce: the overlay's vertices of a million edges are not made at once
+  // (56 MB beside the list's run they are read from, issue 42). The order, and so every pixel, is kept.
+  for (size_t part = first; part < end; part += kMarksAtOnce)
+    drawMarks({&b}, depth, view, part, std::min(end, part + kMarksAtOnce));
   triangles -= std::min(triangles, cost * (end - first));
   c.primitive = end;
   return end >= count;
@@ -517,8 +520,11 @@ void GlBackend::drawMarks(const std::vector<const draw::Batch*>& batches, draw::
   for (const draw::Batch* b : batches) {
     if (const auto* l = std::get_if<draw::Lines>(b)) {
       useSpace(l->space);
-      for (size_t i = 2 * first; i + 1 < l->segments.size() && i / 2 < end; i += 2)
-        marks.line(l->segments[i].position, l->segments[i + 1].position, l->segments[i].color, l->widthPx, l->dashPx);
+      segmentScratch_.clear();
+      l->segmentsInto(first, end, segmentScratch_);
+      for (size_t i = 0; i + 1 < segmentScratch_.size(); i += 2)
+        marks.line(segmentScratch_[i].position, segmentScratch_[i + 1].position, segmentScratch_[i].color, l->widthPx,
+                   l->dashPx);
     } else if (const auto* p = std::get_if<draw::Points>(b)) {
       useSpace(p->space);
       for (size_t i = first; i < p->points.size() && i < end; ++i)

@@ -135,6 +135,9 @@ class GlBackend {
   bool es_;  // OpenGL ES: no gl_ClipDistance enables
   std::array<std::optional<gl::Program>, 2 * 5 * 2> scenePrograms_;
   GpuMeshCache meshes_;
+  /// The lines, points or triangles of a batch drawn at once at most (drawMarksSlice).
+  static constexpr size_t kMarksAtOnce = size_t(1) << 16;
+  std::vector<draw::Vertex> segmentScratch_;  // a part's segments (Lines::segmentsInto)
   OverlayRenderer overlay_;
   std::unique_ptr<TextRenderer> text_;
   PolygonBuffers polygonBuffers_;  // a list drawn whole (draw)

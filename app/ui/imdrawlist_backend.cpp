@@ -35,6 +35,7 @@ struct Drawer {
   void operator()(const Lines& l) const {
     refuse("lines", l.space, l.depth);
     if (!l.meshEdges.empty()) refuse("mesh edges", Space::wc, l.depth);
+    if (!l.runEdges.empty()) refuse("a run's edges", Space::wc, l.depth);
     for (size_t i = 0; i + 1 < l.segments.size(); i += 2) {
       const ImVec2 a = at(l.segments[i].position), b = at(l.segments[i + 1].position);
       const ImU32 col = color32(l.segments[i].color);

@@ -2,6 +2,8 @@
 
 #include "pipeline/pipeline.h"
 
+#include <algorithm>
+
 namespace vplab::draw {
 
 size_t PolygonSet::polygonSize(size_t i) const {
@@ -25,6 +27,38 @@ void Lines::polyline(std::span<const Vec3> points, bool closed, const glm::vec4&
   if (closed && points.size() > 2) line(points.back(), points.front(), color);
 }
 
+size_t RunEdges::count() const { return run ? std::min(run->edges.size(), run->edgeRanges.size()) : 0; }
+
+size_t Lines::segmentCount() const {
+  size_t n = segments.size() / 2;
+  for (const RunEdges& r : runEdges) n += r.count();
+  return n;
+}
+
+void Lines::segmentsInto(size_t first, size_t end, std::vector<Vertex>& out) const {
+  const size_t own = segments.size() / 2;
+  for (size_t i = first; i < std::min(end, own); ++i) out.insert(out.end(), {segments[2 * i], segments[2 * i + 1]});
+  size_t base = own;  // the first segment of the next run
+  for (const RunEdges& r : runEdges) {
+    const size_t n = r.count();
+    const size_t from = std::max(first, base), to = std::min(end, base + n);
+    for (size_t i = from; i < to; ++i) {
+      const ObjectRun& o = *r.run;
+      const Edge& e = o.edges[i - base];
+      const Vec3 a = o.wc(e.a), b = o.wc(e.b);
+      if (!r.visiblePart) {
+        out.insert(out.end(), {{a, r.color}, {b, r.color}});
+        continue;
+      }
+      const EdgeRange& range = o.edgeRanges[i - base];
+      if (!range.visible) continue;
+      // Boundary coordinates are linear along the WC segment, so t carries over from NPC.
+      out.insert(out.end(), {{a + range.t0 * (b - a), r.color}, {a + range.t1 * (b - a), r.color}});
+    }
+    base += n;
+  }
+}
+
 std::vector<PlacedLabel> DisplayList::labels() const {
   std::vector<PlacedLabel> out;
   for (const Batch& b : batches)
@@ -40,7 +74,7 @@ MemoryUse memoryUse(const DisplayList& list) {
       polygons += heapBytes(f->polygons);
       for (const PolygonSet& p : f->polygons) polygons += heapBytes(p.points) + heapBytes(p.ends) + heapBytes(p.faces);
     } else if (const Lines* l = std::get_if<Lines>(&b)) {
-      lines += heapBytes(l->segments) + heapBytes(l->meshEdges) + heapBytes(l->clipPlanes);
+      lines += heapBytes(l->segments) + heapBytes(l->runEdges) + heapBytes(l->meshEdges) + heapBytes(l->clipPlanes);
     } else if (const Points* p = std::get_if<Points>(&b)) {
       points += heapBytes(p->points);
     } else if (const Triangles* t = std::get_if<Triangles>(&b)) {

@@ -130,11 +130,23 @@ struct Vertex {
   glm::vec4 color;
 };
 
+/// A run's clipped edges in WC, by reference (the world view's wireframes: a million edges are not
+/// copied into each frame's list as 160 MB of segments, issue 42): edge i of `run` from wc(a) to
+/// wc(b), whole or only its visible part [t0, t1] (EdgeRange; none when it is not visible), in
+/// `color`. Points into the run the list was built from, which must outlive the list.
+struct RunEdges {
+  const ObjectRun* run = nullptr;
+  glm::vec4 color{1, 1, 1, 1};
+  bool visiblePart = true;  // false: every edge whole
+  size_t count() const;     // the run's edges with their ranges
+};
+
 /// Wide lines with a one-pixel smooth edge, solid or dashed (dashPx on, dashPx off, measured in
 /// pixels from each segment's start).
 struct Lines {
   Space space = Space::wc;
   std::vector<Vertex> segments;        // segment i: segments[2i] → segments[2i + 1]
+  std::vector<RunEdges> runEdges;      // then these, segment by segment (WC only)
   std::vector<MeshInstance> meshEdges; // every edge of these meshes, in their colour
   float widthPx = 2.f;
   float dashPx = 0.f;
@@ -145,6 +157,11 @@ struct Lines {
     segments.push_back({b, color});
   }
   void polyline(std::span<const Vec3> points, bool closed, const glm::vec4& color);
+  /// The segments: its own, then the runs' edges (an edge not visible counts, and draws nothing).
+  size_t segmentCount() const;
+  /// Appends the end points of segments [first, end) that draw something to `out` (two a segment),
+  /// working out the runs' edges as the world view did when it copied them.
+  void segmentsInto(size_t first, size_t end, std::vector<Vertex>& out) const;
 };
 
 /// Round markers sizePx across with a dark rim.

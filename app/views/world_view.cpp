@@ -9,6 +9,9 @@
 #include "app/views/view_geometry.h"
 #include "app/views/views.h"
 
+#include <algorithm>
+#include <span>
+
 namespace vplab {
 
 namespace {
@@ -74,26 +77,24 @@ void addEdges(const ViewInput& in, float scale, DisplayList& list) {
     list.add(std::move(occluder));
   }
   const theme::Palette& pal = theme::palette(in.settings.theme);
-  Marks solid, dashed, faded;
+  // The run's edges by reference (Lines::runEdges): each edge whole and faded, then its visible part
+  // solid (and dashed where hidden), in the order the backends draw batches.
+  const Depth depth = hidden ? Depth::test : Depth::ignore;
+  Lines faded{Space::wc, {}, {}, {}, pal.edgeWidthPx * scale, 0.f, depth, {}};
+  Lines solid = faded;
+  Lines dashed{Space::wc, {}, {}, {}, pal.edgeWidthPx * scale, theme::kDashPx, Depth::hiddenOnly, {}};
   for (const ObjectRun& o : in.run.objects) {
     const glm::vec4 c = theme::ink(pal, glm::vec4(glm::vec3(o.color), 1.f));
-    for (size_t i = 0; i < o.edges.size() && i < o.edgeRanges.size(); ++i) {
-      const Vec3 a = o.wc(o.edges[i].a), b = o.wc(o.edges[i].b);
-      if (in.settings.overlays.fadeOutside)
-        faded.line(a, b, glm::vec4(glm::vec3(c), pal.fadedAlpha), pal.edgeWidthPx);
-      const EdgeRange& r = o.edgeRanges[i];
-      if (!r.visible) continue;
-      // Boundary coordinates are linear along the WC segment, so t carries over from NPC.
-      const Vec3 p0 = a + r.t0 * (b - a), p1 = a + r.t1 * (b - a);
-      solid.line(p0, p1, c, pal.edgeWidthPx);
-      if (style == Style::hiddenLine)
-        dashed.line(p0, p1, glm::vec4(glm::vec3(c), 0.8f), pal.edgeWidthPx, theme::kDashPx);
-    }
+    const RunEdges edges{&o, c, true};
+    if (edges.count() == 0) continue;
+    if (in.settings.overlays.fadeOutside) faded.runEdges.push_back({&o, glm::vec4(glm::vec3(c), pal.fadedAlpha), false});
+    const auto ranges = std::span(o.edgeRanges).first(edges.count());
+    if (std::none_of(ranges.begin(), ranges.end(), [](const EdgeRange& r) { return r.visible; })) continue;
+    solid.runEdges.push_back(edges);
+    if (style == Style::hiddenLine) dashed.runEdges.push_back({&o, glm::vec4(glm::vec3(c), 0.8f), true});
   }
-  const Depth depth = hidden ? Depth::test : Depth::ignore;
-  faded.emit(list, Space::wc, depth, scale);
-  solid.emit(list, Space::wc, depth, scale);
-  dashed.emit(list, Space::wc, Depth::hiddenOnly, scale);
+  for (Lines* l : {&faded, &solid, &dashed})
+    if (!l->runEdges.empty()) list.add(std::move(*l));
 }
 
 }  // namespace

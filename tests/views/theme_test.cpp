@@ -37,7 +37,7 @@ struct LineStyle {
 // The width and dash of the lines drawn in `color`, −1 when none is.
 LineStyle styleOf(const DisplayList& list, const glm::vec4& color) {
   for (const Lines* l : test::batchesOf<Lines>(list))
-    for (const Vertex& v : l->segments)
+    for (const Vertex& v : test::segmentsOf(*l))
       if (v.color == color) return {l->widthPx, l->dashPx};
   return {};
 }

@@ -43,6 +43,13 @@ std::vector<const B*> batchesOf(const draw::DisplayList& list) {
   return out;
 }
 
+/// The end points of the segments the batch draws, its runs' edges worked out (Lines::segmentsInto).
+inline std::vector<draw::Vertex> segmentsOf(const draw::Lines& l) {
+  std::vector<draw::Vertex> out;
+  l.segmentsInto(0, l.segmentCount(), out);
+  return out;
+}
+
 /// The batch's kind and space, for messages.
 std::string describe(const draw::Batch& b);
 

@@ -339,6 +339,16 @@ std::optional<std::pair<double, double>> aVertexInTheCameraView(HeadlessViewer& 
   return std::nullopt;
 }
 
+/// Shift+click on the middle of a recorded widget or view (in the camera view: the step-through of the
+/// probed vertex's polygon).
+void shiftClick(HeadlessViewer& v, const char* id) {
+  const auto [x, y] = v.centreOf(id);
+  ImGui::GetIO().KeyShift = true;
+  v.click(x, y);
+  ImGui::GetIO().KeyShift = false;
+  v.frames(1);
+}
+
 TEST(UiLecture, ClickingAVertexShowsTheProbeAndShiftClickTheStepThrough) {
   auto v = makeViewer();
   const auto [tx, ty] = v->centreOf("tab.inspect.Matrices");
@@ -353,11 +363,7 @@ TEST(UiLecture, ClickingAVertexShowsTheProbeAndShiftClickTheStepThrough) {
   EXPECT_EQ(v->state().inspectTab, ViewerState::probeTab);
 
   ASSERT_EQ(v->state().controlsTab, ViewerState::cameraTab);
-  const auto [cx, cy] = v->centreOf("view.camera");
-  ImGui::GetIO().KeyShift = true;
-  v->click(cx, cy);
-  ImGui::GetIO().KeyShift = false;
-  v->frames(1);
+  shiftClick(*v, "view.camera");
   ASSERT_TRUE(v->state().stepThrough.active);
   EXPECT_EQ(v->state().controlsTab, ViewerState::lectureTab);
   // Back is greyed at the start: a click on it changes nothing.
@@ -379,11 +385,7 @@ TEST(UiLecture, APassTypedBeyondTheLastIsTheLast) {
   v->click(at->first, at->second);  // the probe's polygon is the one stepped through
   v->frames(1);
   ASSERT_TRUE(v->state().probe);
-  const auto [cx, cy] = v->centreOf("view.camera");
-  ImGui::GetIO().KeyShift = true;
-  v->click(cx, cy);
-  ImGui::GetIO().KeyShift = false;
-  v->frames(1);
+  shiftClick(*v, "view.camera");
   ASSERT_TRUE(v->state().stepThrough.active);
   const StepThrough& st = v->state().stepThrough;
   const PipelineRun& run = v->state().run();
