@@ -60,6 +60,23 @@ void GlBackend::draw(const draw::DisplayList& list, gl::RenderTarget& target) {
 
 bool GlBackend::drawSlice(const draw::DisplayList& list, gl::RenderTarget& target, Cursor& c, size_t& triangles,
                           PolygonBuffers& polygons) {
+  // In parts of at most kTrianglesAtOnce, each rasterized before the next is given (glFinish):
+  // llvmpipe keeps every binned triangle (~130 B of setup data) until its scene is rasterized, and
+  // binning runs ahead of the rasterizer threads: a 1M-triangle view held ~140 MB of bins besides
+  // its CPU polygons' buffer, which now holds one part (issue 42, heaptrack). Parts draw what one
+  // slice does (the ViewSlices tests). WebGL gets no glFinish: the browser batches a frame anyway.
+  for (;;) {
+    const size_t given = std::min(triangles, kTrianglesAtOnce);
+    size_t part = given;
+    const bool done = drawPart(list, target, c, part, polygons);
+    triangles -= given - part;
+    if (!es_ && part < given) gl_.Finish();  // also after the last part: a window's next frame bins more
+    if (done || triangles == 0 || part == given) return done;
+  }
+}
+
+bool GlBackend::drawPart(const draw::DisplayList& list, gl::RenderTarget& target, Cursor& c, size_t& triangles,
+                         PolygonBuffers& polygons) {
   View view;
   view.width = target.width();
   view.height = target.height();

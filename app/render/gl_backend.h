@@ -135,6 +135,11 @@ class GlBackend {
   bool es_;  // OpenGL ES: no gl_ClipDistance enables
   std::array<std::optional<gl::Program>, 2 * 5 * 2> scenePrograms_;
   GpuMeshCache meshes_;
+  /// A slice of drawSlice, up to `triangles`, with no wait for the rasterizer inside.
+  bool drawPart(const draw::DisplayList& list, gl::RenderTarget& target, Cursor& cursor, size_t& triangles,
+                PolygonBuffers& polygons);
+  /// The triangles of a slice drawn before the rasterizer is waited for (drawSlice).
+  static constexpr size_t kTrianglesAtOnce = size_t(1) << 17;
   /// The lines, points or triangles of a batch drawn at once at most (drawMarksSlice).
   static constexpr size_t kMarksAtOnce = size_t(1) << 16;
   std::vector<draw::Vertex> segmentScratch_;  // a part's segments (Lines::segmentsInto)
