@@ -51,14 +51,23 @@ void checkWellFormed(const Mesh& mesh) {
     if (mesh.indices[i] >= mesh.positions.size())
       throw Error("index " + std::to_string(i) + " names vertex " + std::to_string(mesh.indices[i]) + " of " +
                   std::to_string(mesh.positions.size()));
-  if (!mesh.cornerNormals.empty() && mesh.cornerNormals.size() != mesh.indices.size())
-    throw Error(std::to_string(mesh.cornerNormals.size()) + " corner normals for " + std::to_string(mesh.indices.size()) +
-                " corners");
+  if (!mesh.normalIndices.empty()) {
+    if (mesh.normalIndices.size() != mesh.indices.size())
+      throw Error(std::to_string(mesh.normalIndices.size()) + " normal indices for " +
+                  std::to_string(mesh.indices.size()) + " corners");
+    for (size_t c = 0; c < mesh.normalIndices.size(); ++c)
+      if (mesh.normalIndices[c] >= mesh.normals.size())
+        throw Error("corner " + std::to_string(c) + " names normal " + std::to_string(mesh.normalIndices[c]) + " of " +
+                    std::to_string(mesh.normals.size()));
+  } else if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size()) {
+    throw Error(std::to_string(mesh.normals.size()) + " normals, one a vertex, for " +
+                std::to_string(mesh.positions.size()) + " vertices");
+  }
   auto finite = [](const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
   for (size_t v = 0; v < mesh.positions.size(); ++v)
     if (!finite(mesh.positions[v])) throw Error("vertex " + std::to_string(v) + " is not finite");
-  for (size_t c = 0; c < mesh.cornerNormals.size(); ++c)
-    if (!finite(mesh.cornerNormals[c])) throw Error("corner normal " + std::to_string(c) + " is not finite");
+  for (size_t n = 0; n < mesh.normals.size(); ++n)
+    if (!finite(mesh.normals[n])) throw Error("normal " + std::to_string(n) + " is not finite");
 }
 
 void buildMesh(SceneObject& o, const std::filesystem::path& baseDir, const Limits& limits, const MeshSize& used) {

@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 namespace vplab {
@@ -183,8 +184,11 @@ Mesh toMesh(const tinyobj::ObjReader& reader, std::string_view name, const MeshS
     mesh.positions.push_back({attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]});
   mesh.indices.reserve(corners);
   mesh.faceStart.reserve(faces + 1);
+  // The normals the corners name, each once, in the order first named ("vn" lines no face names are
+  // left out); then one a vertex where every vertex's corners agree (normalPerVertexWherePossible).
   bool allNormals = true;
-  std::vector<Vec3> normals;
+  constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+  std::vector<uint32_t> kept(normalCount, kNone);  // the mesh's normal of each "vn"
   std::vector<uint32_t> face;
   size_t f = 0;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
@@ -205,15 +209,24 @@ Mesh toMesh(const tinyobj::ObjReader& reader, std::string_view name, const MeshS
           fail("face " + std::to_string(f) + " refers to normal " + std::to_string(idx.normal_index + 1) + " of " +
                std::to_string(normalCount));
         } else if (allNormals) {
-          const size_t j = 3 * size_t(idx.normal_index);
-          normals.push_back({attrib.normals[j], attrib.normals[j + 1], attrib.normals[j + 2]});
+          uint32_t& n = kept[size_t(idx.normal_index)];
+          if (n == kNone) {
+            const size_t j = 3 * size_t(idx.normal_index);
+            n = uint32_t(mesh.normals.size());
+            mesh.normals.push_back({attrib.normals[j], attrib.normals[j + 1], attrib.normals[j + 2]});
+          }
+          mesh.normalIndices.push_back(n);
         }
       }
       mesh.addFace(face);
       offset += n;
     }
   }
-  if (allNormals) mesh.cornerNormals = std::move(normals);
+  if (!allNormals || mesh.indices.empty()) {
+    std::vector<Vec3>().swap(mesh.normals);
+    std::vector<uint32_t>().swap(mesh.normalIndices);
+  }
+  normalPerVertexWherePossible(mesh);
   return mesh;
 }
 

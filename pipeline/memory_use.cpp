@@ -9,7 +9,8 @@ MemoryUse memoryUse(const Mesh& mesh) {
   return {{"mesh.positions", heapBytes(mesh.positions)},
           {"mesh.indices", heapBytes(mesh.indices)},
           {"mesh.faceStart", heapBytes(mesh.faceStart)},
-          {"mesh.cornerNormals", heapBytes(mesh.cornerNormals)}};
+          {"mesh.normals", heapBytes(mesh.normals)},
+          {"mesh.normalIndices", heapBytes(mesh.normalIndices)}};
 }
 
 MemoryUse meshMemoryUse(const Scene& scene) {

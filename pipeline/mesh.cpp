@@ -1,5 +1,7 @@
 #include "pipeline/mesh.h"
 
+#include <limits>
+
 #include "base/error.h"
 
 #include <algorithm>
@@ -159,17 +161,34 @@ bool UniqueEdgesJob::step(uint64_t budget) {
 Mesh triangulated(const Mesh& mesh) {
   Mesh out;
   out.positions = mesh.positions;
-  const bool smooth = !mesh.cornerNormals.empty();
+  out.normals = mesh.normals;  // one a vertex stays valid: the triangles' corners are the same vertices
+  const bool indexed = !mesh.normalIndices.empty();
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     const auto face = mesh.face(f);
     const uint32_t first = mesh.faceStart[f];
     for (size_t i = 1; i + 1 < face.size(); ++i) {
       out.addFace({face[0], face[i], face[i + 1]});
-      if (smooth)
-        for (size_t k : {size_t(0), i, i + 1}) out.cornerNormals.push_back(mesh.cornerNormals[first + k]);
+      if (indexed)
+        for (size_t k : {size_t(0), i, i + 1}) out.normalIndices.push_back(mesh.normalIndices[first + k]);
     }
   }
   return out;
+}
+
+void normalPerVertexWherePossible(Mesh& mesh) {
+  if (mesh.normalIndices.empty() || mesh.normalIndices.size() != mesh.indices.size()) return;
+  constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+  std::vector<uint32_t> normalOf(mesh.positions.size(), kNone);
+  for (size_t c = 0; c < mesh.indices.size(); ++c) {
+    uint32_t& n = normalOf[mesh.indices[c]];
+    if (n != kNone && n != mesh.normalIndices[c]) return;  // two normals at one vertex: indexed it stays
+    n = mesh.normalIndices[c];
+  }
+  std::vector<Vec3> perVertex(mesh.positions.size(), Vec3(0, 0, 1));
+  for (size_t v = 0; v < perVertex.size(); ++v)
+    if (normalOf[v] != kNone) perVertex[v] = mesh.normals[normalOf[v]];
+  mesh.normals = std::move(perVertex);
+  std::vector<uint32_t>().swap(mesh.normalIndices);
 }
 
 }  // namespace vplab

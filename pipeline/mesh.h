@@ -16,9 +16,16 @@ struct Mesh {
   std::vector<Vec3> positions;       // MC
   std::vector<uint32_t> indices;     // every face's vertex indices, concatenated
   std::vector<uint32_t> faceStart{0};  // face f is indices[faceStart[f] .. faceStart[f + 1])
-  std::vector<Vec3> cornerNormals;   // MC, one per entry of `indices`; empty: flat shading
+  // Smooth shading's normals, indexed as OBJ's "vn" are: corner c's normal is normals[normalIndices[c]],
+  // or, with no normal indices, the vertex's own normals[indices[c]] (a sphere: one normal a vertex,
+  // not three doubles a corner, 36 of the 1M-triangle sphere's 76 MiB). No normals: flat shading.
+  std::vector<Vec3> normals;            // MC
+  std::vector<uint32_t> normalIndices;  // one per entry of `indices`, or none
 
   size_t faceCount() const { return faceStart.size() - 1; }
+  bool smooth() const { return !normals.empty(); }
+  /// The normal of corner c (an entry of `indices`) of a smooth mesh.
+  const Vec3& cornerNormal(size_t c) const { return normals[normalIndices.empty() ? indices[c] : normalIndices[c]]; }
   size_t vertexCount() const { return positions.size(); }
   std::span<const uint32_t> face(size_t f) const {
     return {indices.data() + faceStart[f], indices.data() + faceStart[f + 1]};
@@ -26,7 +33,7 @@ struct Mesh {
   /// The largest number of vertices of any face (sizes the clipper's scratch buffers).
   size_t maxFaceSize() const;
 
-  /// Appends a face of vertex indices (and, for smooth shading, one normal per corner).
+  /// Appends a face of vertex indices (a smooth mesh with normal indices appends its corners' too).
   void addFace(std::initializer_list<uint32_t> face);
   void addFace(std::span<const uint32_t> face);
 };
@@ -81,5 +88,9 @@ class UniqueEdgesJob {
 
 /// The same mesh with each face split into a fan of triangles (for the GPU and benchmarks).
 Mesh triangulated(const Mesh& mesh);
+
+/// Drops a smooth mesh's normal indices when each vertex's corners all name one normal: the normals
+/// become one a vertex (a vertex no face uses gets +z). Unchanged otherwise.
+void normalPerVertexWherePossible(Mesh& mesh);
 
 }  // namespace vplab

@@ -51,22 +51,27 @@ Mesh cylinder(int n) {
   for (int k = 0; k < n; ++k) m.positions.push_back({std::cos(k * delta), std::sin(k * delta), -1.0});
   auto top = [](int k) { return uint32_t(k); };
   auto bottom = [n](int k) { return uint32_t(n + k); };
-  auto radial = [&](uint32_t i) { return Vec3(m.positions[i].x, m.positions[i].y, 0.0); };
+  // Normals: the n radial directions (a side's top and bottom corners share theirs), then +z and −z
+  // for the caps: a rim vertex has two, so the corners index them.
+  for (int k = 0; k < n; ++k) m.normals.push_back({std::cos(k * delta), std::sin(k * delta), 0.0});
+  const uint32_t up = uint32_t(n), down = uint32_t(n + 1);
+  m.normals.push_back({0, 0, 1});
+  m.normals.push_back({0, 0, -1});
   for (int k = 0; k < n; ++k) {
     const int k1 = (k + 1) % n;
     // The seed lists top(φ), top(φ+δ), bottom(φ+δ), bottom(φ): clockwise from outside. Reversed.
     const uint32_t q[4] = {top(k), bottom(k), bottom(k1), top(k1)};
     m.addFace(q);
-    for (uint32_t i : q) m.cornerNormals.push_back(radial(i));
+    m.normalIndices.insert(m.normalIndices.end(), {uint32_t(k), uint32_t(k), uint32_t(k1), uint32_t(k1)});
   }
   std::vector<uint32_t> cap;
   for (int k = 0; k < n; ++k) cap.push_back(top(k));  // counter-clockwise seen from +z
   m.addFace(cap);
-  m.cornerNormals.insert(m.cornerNormals.end(), n, Vec3(0, 0, 1));
+  m.normalIndices.insert(m.normalIndices.end(), size_t(n), up);
   cap.clear();
   for (int k = n - 1; k >= 0; --k) cap.push_back(bottom(k));  // counter-clockwise seen from −z
   m.addFace(cap);
-  m.cornerNormals.insert(m.cornerNormals.end(), n, Vec3(0, 0, -1));
+  m.normalIndices.insert(m.normalIndices.end(), size_t(n), down);
   return m;
 }
 
@@ -90,7 +95,7 @@ Mesh sphere(int n) {
   for (int l = 1; l < rings; ++l)
     for (int k = 0; k < n; ++k) m.addFace({at(l, k), at(l + 1, k), at(l + 1, k + 1), at(l, k + 1)});
   for (int k = 0; k < n; ++k) m.addFace({south, at(rings, k + 1), at(rings, k)});
-  for (uint32_t i : m.indices) m.cornerNormals.push_back(m.positions[i]);  // radius ⟂ surface
+  m.normals = m.positions;  // one a vertex: the radius ⟂ the surface
   return m;
 }
 

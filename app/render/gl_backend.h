@@ -86,7 +86,9 @@ class GlBackend {
   const std::vector<glm::vec4>& labelsPlaced() const { return labelsPlaced_; }
   /// The bytes of the meshes' GPU buffers (faces, edges), on llvmpipe and SwiftShader the process's own.
   MemoryUse gpuMemoryUse() const {
-    return {{"gpu.mesh faces", meshes_.faceBytes()}, {"gpu.mesh edges", meshes_.edgeBytes()}};
+    return {{"gpu.mesh faces", meshes_.faceBytes()},
+            {"gpu.mesh edges", meshes_.edgeBytes()},
+            {"gpu.mesh corner map (CPU)", meshes_.cornerMapBytes()}};
   }
 
  private:

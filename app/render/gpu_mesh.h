@@ -5,7 +5,7 @@
 // edges takes a tenth of the first upload of a large mesh. They go in chunks as the faces do.
 //
 // The faces go to the GPU in chunks of consecutive faces, each with buffers of its own of at most
-// about chunkCorners() corners: a chunk is made at once with its data, so no frame makes (and
+// about chunkCorners() corners (corners of one vertex with one normal share a GPU vertex): a chunk is made at once with its data, so no frame makes (and
 // WebGL clears) the 60 MB of a million triangles at once, and a page uploads a mesh a chunk at a time.
 #pragma once
 
@@ -19,12 +19,15 @@
 
 namespace vplab {
 
-/// Faces [firstFace, endFace) of a mesh: GPU vertex i is the mesh's face corner firstCorner + i.
+/// Faces [firstFace, endFace) of a mesh: the mesh's face corner firstCorner + i is GPU vertex
+/// cornerVertex[i]; corners of one mesh vertex with the same normal share theirs.
 struct GpuMeshChunk {
   gl::VertexArray vao;  // location 0: MC position, 1: MC normal; its element buffer is `indices`
   gl::Buffer vertices, indices;
   size_t firstFace = 0, endFace = 0;
   uint32_t firstCorner = 0;
+  uint32_t vertexCount = 0;            // GPU vertices (distinct position and normal pairs)
+  std::vector<uint32_t> cornerVertex;  // CPU: each corner's GPU vertex (the volume partition's lists)
   size_t bytes = 0;  // of its two buffers (on llvmpipe and SwiftShader, the process's memory)
 };
 
@@ -70,6 +73,8 @@ class GpuMeshCache {
   /// The bytes of the buffers uploaded (faces; edges), over every mesh held.
   size_t faceBytes() const;
   size_t edgeBytes() const;
+  /// The CPU bytes of the chunks' corner maps (GpuMeshChunk::cornerVertex).
+  size_t cornerMapBytes() const;
   /// The corners a chunk holds at most (unless one face has more); for tests of chunk boundaries.
   /// Meshes uploaded before keep their chunks.
   void setChunkCorners(uint32_t corners) { chunkCorners_ = std::max<uint32_t>(corners, 3); }
@@ -87,6 +92,7 @@ class GpuMeshCache {
   Entry& entry(const std::shared_ptr<const Mesh>& mesh);
   const GladGLContext* gl_;
   uint32_t chunkCorners_ = kChunkCorners;
+  std::vector<uint32_t> slotOf_;  // while a mesh is uploaded: makeChunk's GPU vertex of each mesh vertex
   std::unordered_map<const Mesh*, Entry> entries_;
 };
 

@@ -84,7 +84,8 @@ void VolumePartitions::sideVertices(Part& part, const ObjectRun& o, size_t end) 
 }
 
 void VolumePartitions::listChunk(Part& part, const Mesh& mesh, const GpuMeshChunk& chunk, Chunk& out) {
-  // Face f's corners are the chunk's vertices faceStart[f] − firstCorner …, fanned from the first.
+  // Face f's corners are the chunk's corners faceStart[f] − firstCorner …, fanned from the first,
+  // each its GPU vertex through the chunk's corner map (the chunk's own triangles, in its order).
   size_t capacity = 0;
   for (size_t f = chunk.firstFace; f < chunk.endFace; ++f) capacity += 3 * (std::max<uint32_t>(mesh.face(f).size(), 2) - 2);
   std::array<uint32_t*, kLists> end{};
@@ -99,11 +100,12 @@ void VolumePartitions::listChunk(Part& part, const Mesh& mesh, const GpuMeshChun
     for (uint32_t v : face) all &= sides[v];
     const bool outsideOnePlane = all & 0x3f, insideAll = all & kInside;
     const uint32_t first = mesh.faceStart[f] - chunk.firstCorner, n = uint32_t(face.size());
+    const uint32_t* vertex = chunk.cornerVertex.data() + first;
     auto add = [&](size_t list) {
       for (uint32_t c = 1; c + 1 < n; ++c) {
-        end[list][0] = first;
-        end[list][1] = first + c;
-        end[list][2] = first + c + 1;
+        end[list][0] = vertex[0];
+        end[list][1] = vertex[c];
+        end[list][2] = vertex[c + 1];
         end[list] += 3;
       }
     };

@@ -140,9 +140,9 @@ std::vector<PaintedPolygon> paintedPolygons(const Fill& fill, const DisplayList&
         npcH.push_back(proj.npcH(h));
       }
       Vec3 normal = newellNormal(space);
-      if (!mesh.cornerNormals.empty()) {  // the interpolated corner normals at the centroid
+      if (mesh.smooth()) {  // the interpolated corner normals at the centroid
         Vec3 sum(0);
-        for (uint32_t i = mesh.faceStart[f]; i < mesh.faceStart[f + 1]; ++i) sum += mesh.cornerNormals[i];
+        for (uint32_t i = mesh.faceStart[f]; i < mesh.faceStart[f + 1]; ++i) sum += mesh.cornerNormal(i);
         normal = normalFromMc * sum;
       }
       painter.face(space, npcH, normal, m.color);

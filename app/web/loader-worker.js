@@ -2,7 +2,7 @@
 // scene's meshes off the page's thread. Messages from the page:
 //   {put: PATH, bytes: Uint8Array}                      a file the page was given (/uploads/…)
 //   {id, text: Uint8Array, source, baseDir}             a scene's text to read, its meshes to build
-// Answers: {id, error, meshes: [[positions, indices, faceStart, cornerNormals], …]} (ArrayBuffers,
+// Answers: {id, error, meshes: [[positions, indices, faceStart, normals, normalIndices], …]} (ArrayBuffers,
 // transferred), one entry per object in order; {id, failure: {source, reason}, meshes: []} when the
 // loader itself failed (the page words it).
 "use strict";
@@ -27,7 +27,7 @@ function build(M, m) {
   const size = M._malloc(4);
   for (let i = 0, n = M._vplab_loader_objects(answer); i < n; ++i) {
     const arrays = [];
-    for (let which = 0; which < 4; ++which) {
+    for (let which = 0; which < 5; ++which) {  // vplab_loader_array: positions, indices, face starts, normals, normal indices
       const at = M._vplab_loader_array(answer, i, which, size);
       const copy = M.HEAPU8.slice(at, at + M.HEAPU32[size >> 2]);
       arrays.push(copy.buffer);

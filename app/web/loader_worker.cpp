@@ -47,9 +47,9 @@ EMSCRIPTEN_KEEPALIVE const char* vplab_loader_error(const Answer* a) { return a-
 
 EMSCRIPTEN_KEEPALIVE size_t vplab_loader_objects(const Answer* a) { return a->error.empty() ? a->scene.objects.size() : 0; }
 
-/// Object `i`'s mesh as one of four arrays: 0 positions (3 doubles a vertex), 1 indices (uint32),
-/// 2 face starts (uint32), 3 corner normals (3 doubles a corner, none for flat shading). Returns the
-/// address; its size in bytes goes to *bytes.
+/// Object `i`'s mesh as one of five arrays: 0 positions (3 doubles a vertex), 1 indices (uint32),
+/// 2 face starts (uint32), 3 normals (3 doubles each, none for flat shading), 4 normal indices (uint32
+/// a corner, or none: one normal a vertex). Returns the address; its size in bytes goes to *bytes.
 EMSCRIPTEN_KEEPALIVE const void* vplab_loader_array(const Answer* a, size_t i, int which, size_t* bytes) {
   *bytes = 0;
   if (i >= vplab_loader_objects(a) || !a->scene.objects[i].mesh) return nullptr;
@@ -58,7 +58,8 @@ EMSCRIPTEN_KEEPALIVE const void* vplab_loader_array(const Answer* a, size_t i, i
     case 0: *bytes = m.positions.size() * sizeof(vplab::Vec3); return m.positions.data();
     case 1: *bytes = m.indices.size() * sizeof(uint32_t); return m.indices.data();
     case 2: *bytes = m.faceStart.size() * sizeof(uint32_t); return m.faceStart.data();
-    case 3: *bytes = m.cornerNormals.size() * sizeof(vplab::Vec3); return m.cornerNormals.data();
+    case 3: *bytes = m.normals.size() * sizeof(vplab::Vec3); return m.normals.data();
+    case 4: *bytes = m.normalIndices.size() * sizeof(uint32_t); return m.normalIndices.data();
     default: return nullptr;
   }
 }

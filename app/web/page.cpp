@@ -92,7 +92,7 @@ struct Page {
   // a part at a time (vplab_loader_part), for request arrivingId.
   uint64_t arrivingId = 0;
   std::vector<std::shared_ptr<Mesh>> arriving;
-  std::vector<std::array<size_t, 4>> arrivingCounts;  // each mesh's arrays' announced sizes (elements)
+  std::vector<std::array<size_t, 5>> arrivingCounts;  // each mesh's arrays' announced sizes (elements)
 
   Page() {
     auto chooser = std::make_unique<page::BrowserFiles>();
@@ -505,11 +505,11 @@ EMSCRIPTEN_KEEPALIVE void vplab_wheel(Page* p, double x, double y, double steps)
 
 /// The address's fragment changed (a link pasted, the back button): shown unless it is the page's own.
 /// The loader worker's answer to request `id` (index.html), one mesh at a time and in order: makes
-/// object i's mesh for arrays of these sizes in bytes (positions, indices, face starts, corner
-/// normals), reserved but empty (vplab_loader_part fills them). 0 when the sizes cannot be a mesh's
-/// within the limits (checked before allocating; the answer is then an error).
+/// object i's mesh for arrays of these sizes in bytes (positions, indices, face starts, normals,
+/// normal indices), reserved but empty (vplab_loader_part fills them). 0 when the sizes cannot be a
+/// mesh's within the limits (checked before allocating; the answer is then an error).
 EMSCRIPTEN_KEEPALIVE int vplab_loader_mesh(Page* p, double id, int i, double positions, double indices,
-                                           double faceStarts, double normals) {
+                                           double faceStarts, double normals, double normalIndices) {
   if (uint64_t(id) != p->arrivingId) {
     p->arrivingId = uint64_t(id);
     p->arriving.clear();
@@ -521,26 +521,28 @@ EMSCRIPTEN_KEEPALIVE int vplab_loader_mesh(Page* p, double id, int i, double pos
     return size_t(bytes / each);
   };
   const auto v = count(positions, sizeof(vplab::Vec3), l.vertices), c = count(indices, 4, l.corners),
-             f = count(faceStarts, 4, l.faces + 1), n = count(normals, sizeof(vplab::Vec3), l.corners);
-  if (i != int(p->arriving.size()) || i >= 100000 || !v || !c || !f || !n) return 0;
+             f = count(faceStarts, 4, l.faces + 1), n = count(normals, sizeof(vplab::Vec3), std::max(l.vertices, l.corners)),
+             ni = count(normalIndices, 4, l.corners);
+  if (i != int(p->arriving.size()) || i >= 100000 || !v || !c || !f || !n || !ni) return 0;
   auto mesh = std::make_shared<vplab::Mesh>();
   mesh->positions.reserve(*v);
   mesh->indices.reserve(*c);
   mesh->faceStart.clear();  // a new Mesh's list holds face 0's start: it comes with the others
   mesh->faceStart.reserve(*f);
-  mesh->cornerNormals.reserve(*n);
-  p->arrivingCounts.push_back({*v, *c, *f, *n});
+  mesh->normals.reserve(*n);
+  mesh->normalIndices.reserve(*ni);
+  p->arrivingCounts.push_back({*v, *c, *f, *n, *ni});
   p->arriving.push_back(std::move(mesh));
   return 1;
 }
 
-/// The next `bytes` of array k (0 positions, 1 indices, 2 face starts, 3 corner normals) of the mesh
+/// The next `bytes` of array k (0 positions, 1 indices, 2 face starts, 3 normals, 4 normal indices) of the mesh
 /// vplab_loader_mesh made last for request `id`: grows the array by them and returns where
 /// JavaScript copies them. A large mesh arrives in parts of a few MB, each in a task of its own, so
 /// that no frame waits for 100 MB to be copied. 0 for another request, a part that is no whole
 /// number of elements or one past the announced size.
 EMSCRIPTEN_KEEPALIVE uint32_t vplab_loader_part(Page* p, double id, int k, double bytes) {
-  if (uint64_t(id) != p->arrivingId || p->arriving.empty() || k < 0 || k > 3) return 0;
+  if (uint64_t(id) != p->arrivingId || p->arriving.empty() || k < 0 || k > 4) return 0;
   vplab::Mesh& mesh = *p->arriving.back();
   const size_t announced = p->arrivingCounts.back()[size_t(k)];
   auto grow = [&](auto& array) -> uint32_t {
@@ -556,7 +558,8 @@ EMSCRIPTEN_KEEPALIVE uint32_t vplab_loader_part(Page* p, double id, int k, doubl
     case 0: return grow(mesh.positions);
     case 1: return grow(mesh.indices);
     case 2: return grow(mesh.faceStart);
-    default: return grow(mesh.cornerNormals);
+    case 3: return grow(mesh.normals);
+    default: return grow(mesh.normalIndices);
   }
 }
 
@@ -568,8 +571,8 @@ EMSCRIPTEN_KEEPALIVE void vplab_loader_done(Page* p, double id, const char* erro
   if (uint64_t(id) == p->arrivingId)
     for (size_t m = 0; m < p->arriving.size(); ++m) {
       const vplab::Mesh& mesh = *p->arriving[m];
-      const std::array<size_t, 4> got{mesh.positions.size(), mesh.indices.size(), mesh.faceStart.size(),
-                                      mesh.cornerNormals.size()};
+      const std::array<size_t, 5> got{mesh.positions.size(), mesh.indices.size(), mesh.faceStart.size(),
+                                      mesh.normals.size(), mesh.normalIndices.size()};
       whole = whole && got == p->arrivingCounts[m];
       built.push_back(std::move(p->arriving[m]));
     }

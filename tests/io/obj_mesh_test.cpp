@@ -7,6 +7,7 @@
 #include "tests/support/test_util.h"
 
 #include <gmock/gmock.h>
+#include <cmath>
 #include <gtest/gtest.h>
 
 namespace vplab {
@@ -22,7 +23,9 @@ TEST(ObjMesh, QuadsWithNormalsLoad) {
   EXPECT_EQ(m.vertexCount(), 8u);
   ASSERT_EQ(m.faceCount(), 6u);
   for (size_t f = 0; f < 6; ++f) EXPECT_EQ(m.face(f).size(), 4u) << f;  // not triangulated
-  ASSERT_EQ(m.cornerNormals.size(), 24u);
+  // Six "vn" lines, one a face: each vertex has three, so the 24 corners index them.
+  ASSERT_EQ(m.normals.size(), 6u);
+  ASSERT_EQ(m.normalIndices.size(), 24u);
   EXPECT_EQ(m.positions[0], Vec3(0, 0, 0));
   EXPECT_EQ(m.positions[6], Vec3(1, 1, 1));
   // Indices are 0-based in the mesh (1-based in the file): the first face is "1 4 3 2".
@@ -32,12 +35,12 @@ TEST(ObjMesh, QuadsWithNormalsLoad) {
   // are counter-clockwise seen from outside, and outward from the box centre.
   for (size_t f = 0; f < 6; ++f) {
     const Vec3 n = glm::normalize(faceNormal(m, f));
-    for (uint32_t k = m.faceStart[f]; k < m.faceStart[f + 1]; ++k) EXPECT_EQ(m.cornerNormals[k], n) << f;
+    for (uint32_t k = m.faceStart[f]; k < m.faceStart[f + 1]; ++k) EXPECT_EQ(m.cornerNormal(k), n) << f;
     Vec3 c(0);
     for (uint32_t i : m.face(f)) c += m.positions[i] / 4.0;
     EXPECT_GT(glm::dot(n, c - Vec3(0.5)), 0) << f;
   }
-  EXPECT_EQ(m.cornerNormals[0], Vec3(0, 0, -1));
+  EXPECT_EQ(m.cornerNormal(0), Vec3(0, 0, -1));
 }
 
 TEST(ObjMesh, ParseObjFromText) {
@@ -58,8 +61,53 @@ TEST(ObjMesh, ParseObjFromText) {
   EXPECT_EQ(m.face(0).size(), 5u);
   EXPECT_EQ(m.face(0)[0], 0u);
   EXPECT_EQ(m.face(0)[4], 4u);
-  EXPECT_TRUE(m.cornerNormals.empty());  // no normals in the file: flat shading
+  EXPECT_FALSE(m.smooth());  // no normals in the file: flat shading
+  EXPECT_TRUE(m.normalIndices.empty());
   EXPECT_EQ(m.positions[4], Vec3(-0.5, 1, 0));
+}
+
+// Normals are kept indexed as the file has them, each "vn" the faces name once; when every vertex's
+// corners name one normal, the mesh keeps one a vertex and no indices (an exported smooth sphere).
+TEST(ObjMesh, NormalsStayIndexedOrBecomeOneAVertex) {
+  const std::string quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\n";
+  // A vertex normal each (vn 2 ... 5 for v 1 ... 4, vn 1 unused, v 5 in no face): one a vertex.
+  Mesh m = parseObj(quad + "vn 9 9 9\nvn 0 0 1\nvn 0 0.5 0.75\nvn 0.5 0 0.75\nvn 0 -0.5 0.75\n"
+                           "f 1//2 2//3 3//4\nf 1//2 3//4 4//5\n", "smooth.obj");
+  EXPECT_TRUE(m.normalIndices.empty());
+  ASSERT_EQ(m.normals.size(), m.positions.size());
+  EXPECT_EQ(m.cornerNormal(0), Vec3(0, 0, 1));
+  // tinyobjloader's own number parser: 0.75 comes out an ulp or so above.
+  EXPECT_NEAR(glm::length(m.cornerNormal(4) - Vec3(0.5, 0, 0.75)), 0, 1e-15) << "v 3 in the second face";
+  EXPECT_EQ(m.normals[4], Vec3(0, 0, 1)) << "a vertex no face uses: +z";
+  EXPECT_NO_THROW(checkWellFormed(m));
+  // Vertex 1 with two normals: indexed, the unused "vn 9 9 9" left out.
+  m = parseObj(quad + "vn 9 9 9\nvn 0 0 1\nvn 1 0 0\nf 1//2 2//2 3//2\nf 1//3 3//3 4//3\n", "creased.obj");
+  ASSERT_EQ(m.normals.size(), 2u);
+  ASSERT_EQ(m.normalIndices.size(), 6u);
+  EXPECT_EQ(m.cornerNormal(0), Vec3(0, 0, 1));
+  EXPECT_EQ(m.cornerNormal(3), Vec3(1, 0, 0));
+  EXPECT_NO_THROW(checkWellFormed(m));
+}
+
+// A mesh made elsewhere (the page's loader worker) is checked before use: normal indices that do not
+// match the corners or name no normal, per-vertex normals of the wrong count, non-finite normals.
+TEST(ObjMesh, IllFormedNormalsAreRefusedWithTheValues) {
+  const Mesh good = parseObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 1\nvn 1 0 0\n"
+                              "f 1//1 2//1 3//1\nf 1//2 3//2 4//2\n", "creased.obj");
+  ASSERT_EQ(good.normalIndices.size(), 6u);
+  ASSERT_NO_THROW(checkWellFormed(good));
+  Mesh m = good;
+  m.normalIndices.pop_back();
+  EXPECT_THAT(errorOf([&] { checkWellFormed(m); }), HasSubstr("5 normal indices for 6 corners"));
+  m = good;
+  m.normalIndices[1] = 7;
+  EXPECT_THAT(errorOf([&] { checkWellFormed(m); }), HasSubstr("corner 1 names normal 7 of 2"));
+  m = good;
+  m.normalIndices.clear();  // one a vertex, but two normals for four vertices
+  EXPECT_THAT(errorOf([&] { checkWellFormed(m); }), HasSubstr("2 normals, one a vertex, for 4 vertices"));
+  m = good;
+  m.normals[1].y = std::nan("");
+  EXPECT_THAT(errorOf([&] { checkWellFormed(m); }), HasSubstr("normal 1 is not finite"));
 }
 
 // When only some corners carry a normal, none are used (flat shading) rather than a misaligned list.
@@ -68,7 +116,8 @@ TEST(ObjMesh, PartialNormalsAreDropped) {
                           "f 1//1 2//1 3//1\nf 1 2 4\n",
                           "partial.obj");
   EXPECT_EQ(m.faceCount(), 2u);
-  EXPECT_TRUE(m.cornerNormals.empty());
+  EXPECT_FALSE(m.smooth());  // a face without normals: the whole mesh flat
+  EXPECT_TRUE(m.normalIndices.empty());
 }
 
 struct BadObj {

@@ -23,13 +23,14 @@ TEST(MemoryUse, AMeshsPartsAreItsArrays) {
   m.positions.shrink_to_fit();
   m.indices.shrink_to_fit();
   m.faceStart.shrink_to_fit();
-  m.cornerNormals.shrink_to_fit();
+  m.normals.shrink_to_fit();
   const MemoryUse use = memoryUse(m);
   EXPECT_EQ(bytesOf(use, "mesh.positions"), m.vertexCount() * 3 * sizeof(double));
   EXPECT_EQ(bytesOf(use, "mesh.indices"), m.indices.size() * 4);
   EXPECT_EQ(bytesOf(use, "mesh.faceStart"), (m.faceCount() + 1) * 4);
-  EXPECT_EQ(bytesOf(use, "mesh.cornerNormals"), m.indices.size() * 3 * sizeof(double));
-  EXPECT_EQ(totalBytes(use), (m.vertexCount() + m.indices.size()) * 24 + m.indices.size() * 4 + (m.faceCount() + 1) * 4);
+  EXPECT_EQ(bytesOf(use, "mesh.normals"), m.vertexCount() * 3 * sizeof(double));  // one a vertex
+  EXPECT_EQ(bytesOf(use, "mesh.normalIndices"), 0u);
+  EXPECT_EQ(totalBytes(use), 2 * m.vertexCount() * 24 + m.indices.size() * 4 + (m.faceCount() + 1) * 4);
 }
 
 // Two objects sharing one mesh hold it once; a second mesh adds its own.

@@ -75,7 +75,7 @@ TEST(Primitives, Cube) {
     EXPECT_LT(e.a, e.b);
     EXPECT_EQ(glm::length(m.positions[e.a] - m.positions[e.b]), 1.0);  // edge length 1
   }
-  EXPECT_TRUE(m.cornerNormals.empty());  // flat shading
+  EXPECT_FALSE(m.smooth());  // flat shading
   const Bounds b = bounds(m);
   EXPECT_EQ(b.min, Vec3(-0.5));
   EXPECT_EQ(b.max, Vec3(0.5));
@@ -121,11 +121,13 @@ TEST(Primitives, Cylinder) {
       EXPECT_NEAR(std::hypot(p.x, p.y), 1, 1e-15);  // radius 1
       EXPECT_EQ(std::abs(p.z), 1);                   // z = ±1
     }
-    EXPECT_EQ(m.cornerNormals.size(), m.indices.size());
+    // n radial normals and the caps' two, named by every corner (a rim vertex has two normals).
+    EXPECT_EQ(m.normals.size(), size_t(n) + 2);
+    EXPECT_EQ(m.normalIndices.size(), m.indices.size());
     for (size_t f = 0; f < m.faceCount(); ++f) {
       const Vec3 faceN = glm::normalize(faceNormal(m, f));
       for (uint32_t k = m.faceStart[f]; k < m.faceStart[f + 1]; ++k) {
-        const Vec3& cn = m.cornerNormals[k];
+        const Vec3& cn = m.cornerNormal(k);
         EXPECT_NEAR(glm::length(cn), 1, 1e-15);  // cos² + sin², an ulp or two from 1
         EXPECT_GT(glm::dot(cn, faceN), 0.49) << "corner normal on the face's side (cos 60° for n = 3)";
         if (f < size_t(n)) {
@@ -159,8 +161,9 @@ TEST(Primitives, Sphere) {
     std::map<long long, int> heights;
     for (const Vec3& p : m.positions) ++heights[std::llround(p.z * 1e9)];
     EXPECT_EQ(heights.size(), rings + 2);
-    EXPECT_EQ(m.cornerNormals.size(), m.indices.size());
-    for (size_t k = 0; k < m.indices.size(); ++k) EXPECT_EQ(m.cornerNormals[k], m.positions[m.indices[k]]);
+    EXPECT_TRUE(m.normalIndices.empty()) << "one normal a vertex";
+    EXPECT_EQ(m.normals.size(), m.positions.size());
+    for (size_t k = 0; k < m.indices.size(); ++k) EXPECT_EQ(m.cornerNormal(k), m.positions[m.indices[k]]);
     expectOutwardFaces(m);
     expectClosedAndConsistent(m);
     expectPlanarFaces(m);
@@ -195,7 +198,17 @@ TEST(Mesh, TriangulatedKeepsOrientationAndArea) {
     size_t expectedTriangles = 0;
     for (size_t f = 0; f < m.faceCount(); ++f) expectedTriangles += m.face(f).size() - 2;
     EXPECT_EQ(t.faceCount(), expectedTriangles);
-    EXPECT_EQ(t.cornerNormals.size(), m.cornerNormals.empty() ? 0u : t.indices.size());
+    EXPECT_EQ(t.normals, m.normals);
+    EXPECT_EQ(t.normalIndices.size(), m.normalIndices.empty() ? 0u : t.indices.size());
+    // Each triangle's corners have the normals of the face's corners they came from (fanned from the first).
+    if (m.smooth())
+      for (size_t f = 0, tf = 0; f < m.faceCount(); ++f)
+        for (size_t k = 1; k + 1 < m.face(f).size(); ++k, ++tf) {
+          const uint32_t c = m.faceStart[f];
+          EXPECT_EQ(t.cornerNormal(t.faceStart[tf]), m.cornerNormal(c)) << f;
+          EXPECT_EQ(t.cornerNormal(t.faceStart[tf] + 1), m.cornerNormal(c + k)) << f;
+          EXPECT_EQ(t.cornerNormal(t.faceStart[tf] + 2), m.cornerNormal(c + k + 1)) << f;
+        }
     // Fan triangles of a planar convex face: their Newell normals sum to the face's.
     size_t tf = 0;
     for (size_t f = 0; f < m.faceCount(); ++f) {

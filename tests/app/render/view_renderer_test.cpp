@@ -116,35 +116,49 @@ TEST(WorldViewPartition, EachPassDrawsAboutTheFacesOnItsSide) {
 namespace vplab {
 namespace {
 
-// The GPU buffers' bytes (`vplab bench --memory`) against the mesh: a corner is a position and a normal
-// (six floats), a fan triangle three 32-bit indices, an edge its two end points (six floats). The
-// edges are uploaded only once a wireframe style draws them.
-TEST(ViewRenderer, TheGpuBuffersHoldEachCornerTriangleAndEdgeOnce) {
+// The GPU buffers' bytes (`vplab bench --memory`) against the meshes: a GPU vertex is a position and
+// a normal (six floats), one per distinct (mesh vertex, normal) pair: a smooth sphere's corners share
+// their vertex's (its normal is its position), a cube's 24 corners each have their face's normal. A
+// fan triangle is three 32-bit indices, an edge its two end points (six floats); the corner map one
+// index a corner. The edges are uploaded only once a wireframe style draws them.
+TEST(ViewRenderer, TheGpuBuffersHoldEachVertexNormalPairTriangleAndEdgeOnce) {
   test::GlFixture& gl = test::egl();
   gl.context->makeCurrent();
   ViewRenderer renderer(*gl.context);  // its own mesh cache: nothing of other tests' meshes
   Scene scene = defaultScene();
-  scene.objects.resize(1);
+  scene.objects.resize(2);
   scene.objects[0].shape = Shape::sphere;
   scene.objects[0].segments = 24;
   scene.objects[0].mesh = std::make_shared<const Mesh>(sphere(24));
-  const Mesh& mesh = *scene.objects[0].mesh;
-  size_t triangles = 0;
-  for (size_t f = 0; f < mesh.faceCount(); ++f) triangles += mesh.face(f).size() - 2;
-  const size_t faces = mesh.indices.size() * 6 * sizeof(float) + triangles * 3 * sizeof(uint32_t);
-  const size_t edges = uniqueEdges(mesh).size() * 6 * sizeof(float);
+  scene.objects[1].shape = Shape::cube;
+  scene.objects[1].mesh = std::make_shared<const Mesh>(cube());
+  const Mesh &ball = *scene.objects[0].mesh, &box = *scene.objects[1].mesh;
+  ASSERT_TRUE(ball.smooth()) << "the sphere is smooth";
+  ASSERT_FALSE(box.smooth()) << "the cube is flat";
+  ASSERT_EQ(box.indices.size(), 24u);
+  size_t triangles = 0, corners = 0, edges = 0;
+  for (const Mesh* mesh : {&ball, &box}) {
+    for (size_t f = 0; f < mesh->faceCount(); ++f) triangles += mesh->face(f).size() - 2;
+    corners += mesh->indices.size();
+    edges += uniqueEdges(*mesh).size();
+  }
+  const size_t gpuVertices = ball.vertexCount() + box.indices.size();
+  ASSERT_LT(gpuVertices, corners) << "the sphere's corners share vertices";
+  const size_t faceBytes = gpuVertices * 6 * sizeof(float) + triangles * 3 * sizeof(uint32_t);
+  const size_t edgeBytes = edges * 6 * sizeof(float);
   const PipelineRun run = runPipeline(scene, {ClipStrategy::npc, false, true});
 
   renderer.render(ViewKind::all, scene, run, displaySettingsFor(scene, Style::shaded, 4.0 / 3), {}, 400, 300);
   MemoryUse use = renderer.gpuMemoryUse();
-  ASSERT_EQ(use.size(), 2u);
-  EXPECT_EQ(use[0].bytes, faces) << use[0].name;
+  ASSERT_EQ(use.size(), 3u);
+  EXPECT_EQ(use[0].bytes, faceBytes) << use[0].name;
   EXPECT_EQ(use[1].bytes, 0u) << use[1].name;
+  EXPECT_EQ(use[2].bytes, corners * sizeof(uint32_t)) << use[2].name;
 
   renderer.render(ViewKind::all, scene, run, displaySettingsFor(scene, Style::wire, 4.0 / 3), {}, 400, 300);
   use = renderer.gpuMemoryUse();
-  EXPECT_EQ(use[0].bytes, faces) << "the faces uploaded again";
-  EXPECT_EQ(use[1].bytes, edges) << use[1].name;
+  EXPECT_EQ(use[0].bytes, faceBytes) << "the faces uploaded again";
+  EXPECT_EQ(use[1].bytes, edgeBytes) << use[1].name;
 }
 
 }  // namespace
