@@ -141,7 +141,7 @@ class GlBackend {
   bool drawPart(const draw::DisplayList& list, gl::RenderTarget& target, Cursor& cursor, size_t& triangles,
                 PolygonBuffers& polygons);
   /// The triangles of a slice drawn before the rasterizer is waited for (drawSlice).
-  static constexpr size_t kTrianglesAtOnce = size_t(1) << 17;
+  static constexpr size_t kTrianglesAtOnce = size_t(1) << 16;
   /// The lines, points or triangles of a batch drawn at once at most (drawMarksSlice).
   static constexpr size_t kMarksAtOnce = size_t(1) << 16;
   std::vector<draw::Vertex> segmentScratch_;  // a part's segments (Lines::segmentsInto)
