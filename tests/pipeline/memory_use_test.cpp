@@ -2,6 +2,7 @@
 // worked out here from the element counts (an allocation holds at least its elements).
 #include "pipeline/memory_use.h"
 #include "pipeline/primitives.h"
+#include "tests/support/memory_use_support.h"
 
 #include <gtest/gtest.h>
 
@@ -10,12 +11,7 @@
 namespace vplab {
 namespace {
 
-size_t bytesOf(const MemoryUse& use, const std::string& name) {
-  for (const MemoryPart& p : use)
-    if (p.name == name) return p.bytes;
-  ADD_FAILURE() << "no part named " << name;
-  return 0;
-}
+using test::bytesOf;
 
 // A sphere's arrays, shrunk to their sizes: each part is exactly its element count × element size.
 TEST(MemoryUse, AMeshsPartsAreItsArrays) {

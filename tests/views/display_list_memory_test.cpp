@@ -2,6 +2,7 @@
 // list's own contents, counted here.
 #include "pipeline/primitives.h"
 #include "tests/views/view_test_support.h"
+#include "tests/support/memory_use_support.h"
 
 #include <gtest/gtest.h>
 
@@ -12,12 +13,7 @@ namespace {
 
 using namespace draw;
 
-size_t bytesOf(const MemoryUse& use, const std::string& name) {
-  for (const MemoryPart& p : use)
-    if (p.name == name) return p.bytes;
-  ADD_FAILURE() << "no part named " << name;
-  return 0;
-}
+using test::bytesOf;
 
 // The wire style's world view: the clipped edges by reference (Lines::runEdges), which the "lines" part
 // counts without the segments they stand for; the labels and batches as held.
