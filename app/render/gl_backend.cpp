@@ -275,8 +275,9 @@ bool GlBackend::drawMeshes(const draw::Fill& fill, const ViewCamera& camera, int
         const GLuint own = g.chunks[k].indices.id(), list = elements(k);
         gl_.BindVertexArray(g.chunks[k].vao.id());
         if (list) gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, list);  // the VAO's until restored
-        gl_.DrawElements(GL_TRIANGLES, GLsizei(3 * now), GL_UNSIGNED_INT,
-                         reinterpret_cast<const void*>(size_t(local) * sizeof(uint32_t)));
+        const GpuMeshChunk& chunk = g.chunks[k];  // its lists' indices are as wide as its own
+        gl_.DrawElements(GL_TRIANGLES, GLsizei(3 * now), chunk.indexType,
+                         reinterpret_cast<const void*>(size_t(local) * chunk.indexSize()));
         if (list) gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, own);
         c.index = begin + GLsizei(3 * now);
         triangles -= now;

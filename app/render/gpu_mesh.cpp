@@ -63,9 +63,15 @@ GpuMeshChunk makeChunk(const GladGLContext& gl, const Mesh& mesh, size_t first, 
   gl.EnableVertexAttribArray(1);
   gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), reinterpret_cast<void*>(sizeof(glm::vec3)));
   gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, chunk.indices.id());
-  gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(triangles.size() * sizeof(uint32_t)), triangles.data(), GL_STATIC_DRAW);
   chunk.vertexCount = uint32_t(vertices.size() / 2);
-  chunk.bytes = vertices.size() * sizeof(glm::vec3) + triangles.size() * sizeof(uint32_t);
+  if (chunk.vertexCount <= 65536) {
+    chunk.indexType = GL_UNSIGNED_SHORT;
+    const std::vector<uint16_t> shorter(triangles.begin(), triangles.end());
+    gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(shorter.size() * sizeof(uint16_t)), shorter.data(), GL_STATIC_DRAW);
+  } else {
+    gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(triangles.size() * sizeof(uint32_t)), triangles.data(), GL_STATIC_DRAW);
+  }
+  chunk.bytes = vertices.size() * sizeof(glm::vec3) + triangles.size() * chunk.indexSize();
   gl.BindVertexArray(0);
   gl.BindBuffer(GL_ARRAY_BUFFER, 0);
   return chunk;

@@ -27,6 +27,10 @@ struct GpuMeshChunk {
   size_t firstFace = 0, endFace = 0;
   uint32_t firstCorner = 0;
   uint32_t vertexCount = 0;            // GPU vertices (distinct position and normal pairs)
+  /// 16-bit indices when its vertices allow (every chunk of at most 65 536 corners): half the bytes
+  /// of its own index buffer and of the volume partition's lists; 32-bit for a larger face.
+  GLenum indexType = GL_UNSIGNED_INT;
+  size_t indexSize() const { return indexType == GL_UNSIGNED_SHORT ? 2 : 4; }
   std::vector<uint32_t> cornerVertex;  // CPU: each corner's GPU vertex (the volume partition's lists)
   size_t bytes = 0;  // of its two buffers (on llvmpipe and SwiftShader, the process's memory)
 };

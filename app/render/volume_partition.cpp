@@ -120,12 +120,17 @@ void VolumePartitions::listChunk(Part& part, const Mesh& mesh, const GpuMeshChun
     if (!out.indices[l]) out.indices[l] = gl::makeBuffer(gl);
     // Bound as an array buffer: the element binding belongs to whichever VAO is bound.
     gl.BindBuffer(GL_ARRAY_BUFFER, out.indices[l].id());
-    const GLsizeiptr bytes = GLsizeiptr(out.count[l]) * GLsizeiptr(sizeof(uint32_t));
+    const void* data = scratch_[l].data();
+    if (chunk.indexType == GL_UNSIGNED_SHORT) {  // as wide as the chunk's own (GpuMeshChunk::indexType)
+      shortScratch_.assign(scratch_[l].begin(), scratch_[l].begin() + out.count[l]);
+      data = shortScratch_.data();
+    }
+    const GLsizeiptr bytes = GLsizeiptr(out.count[l]) * GLsizeiptr(chunk.indexSize());
     if (bytes > out.capacity[l] || bytes < out.capacity[l] / 4) {
       out.capacity[l] = bytes + bytes / 4;
       gl.BufferData(GL_ARRAY_BUFFER, out.capacity[l], nullptr, GL_STREAM_DRAW);
     }
-    gl.BufferSubData(GL_ARRAY_BUFFER, 0, bytes, scratch_[l].data());
+    gl.BufferSubData(GL_ARRAY_BUFFER, 0, bytes, data);
   }
   gl.BindBuffer(GL_ARRAY_BUFFER, 0);
 }

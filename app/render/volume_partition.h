@@ -63,6 +63,7 @@ class VolumePartitions {
   const GladGLContext* gl_;
   std::vector<Part> parts_;
   std::array<std::vector<uint32_t>, kLists> scratch_;  // one chunk's lists before their upload
+  std::vector<uint16_t> shortScratch_;                  // a list of a 16-bit chunk, as uploaded
 };
 
 }  // namespace vplab

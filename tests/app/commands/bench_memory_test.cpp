@@ -46,13 +46,14 @@ TEST_F(BenchMemory, ReportsEveryStructureAndThePeaksOfTheViewerAndOfRenderAll) {
   const Json& meshes = m["structures"]["meshes"];
   EXPECT_GE(partMiB(meshes, "mesh.positions") * kMiB, double(vertices * 24));
   EXPECT_GE(partMiB(meshes, "mesh.indices") * kMiB, double(corners * 4));
-  // The GPU's faces: six floats a GPU vertex and three indices a triangle. The sphere's corners share
+  // The GPU's faces: six floats a GPU vertex and three 16-bit indices a triangle (every chunk has at
+  // most 65 536 corners, so fewer vertices). The sphere's corners share
   // their vertex's GPU vertex (one normal each) within a chunk of 65 536 corners; a chunk repeats the
   // vertices it shares with the one before, at most two rings of the sphere (2 × 1 025) at each of the
   // 31 boundaries (12 % of its 523 266 vertices). The corner map: one index a corner.
   const double gpuFaces = partMiB(m["structures"]["gpu_buffers"], "gpu.mesh faces") * kMiB;
-  EXPECT_GE(gpuFaces, double(vertices * 24 + triangles * 12) - 1.0);
-  EXPECT_LE(gpuFaces, double(vertices) * 1.12 * 24 + double(triangles * 12));
+  EXPECT_GE(gpuFaces, double(vertices * 24 + triangles * 6) - 1.0);
+  EXPECT_LE(gpuFaces, double(vertices) * 1.12 * 24 + double(triangles * 6));
   EXPECT_NEAR(partMiB(m["structures"]["gpu_buffers"], "gpu.mesh corner map (CPU)") * kMiB, double(corners * 4), 1.0);
   for (const char* style : {"display_lists_shaded", "display_lists_wire"})
     for (const char* view : {"camera", "world", "npc"})

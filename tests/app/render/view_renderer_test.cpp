@@ -10,7 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <vector>
 
 namespace vplab {
 namespace {
@@ -42,6 +44,26 @@ void expectSamePictures(const Scene& scene, const std::string& name) {
           << name << ", " << toString(style) << ", observer turned by " << yaw << "°, " << pitch << "°";
     }
   }
+}
+
+// A face of 70 000 corners: its chunk has more vertices than 16-bit indices reach, so its own indices
+// and the partition's lists are 32-bit (every other test's chunks are 16-bit): the same pixels,
+// partitioned or not.
+Scene tiltedDisc(int corners) {
+  Scene scene = test::cutSphereScene();
+  std::vector<Vec3> ring;
+  for (int k = 0; k < corners; ++k) {
+    const double t = 2 * kPi * k / corners;
+    ring.push_back({std::cos(t), std::sin(t), 0.5 * std::cos(t)});  // on the plane z = x / 2
+  }
+  scene.objects[0].name = "disc";
+  scene.objects[0].shape = Shape::mesh;
+  scene.objects[0].mesh = std::make_shared<const Mesh>(polygon(ring));
+  return scene;
+}
+
+TEST(WorldViewPartition, SamePixelsForAFaceBeyondSixteenBitIndices) {
+  expectSamePictures(tiltedDisc(70000), "a disc of 70 000 corners");
 }
 
 // Translucent batches blend their colour but accumulate alpha: every pixel of every view's picture is
@@ -144,7 +166,8 @@ TEST(ViewRenderer, TheGpuBuffersHoldEachVertexNormalPairTriangleAndEdgeOnce) {
   }
   const size_t gpuVertices = ball.vertexCount() + box.indices.size();
   ASSERT_LT(gpuVertices, corners) << "the sphere's corners share vertices";
-  const size_t faceBytes = gpuVertices * 6 * sizeof(float) + triangles * 3 * sizeof(uint32_t);
+  // Every chunk here has fewer than 65 536 vertices: 16-bit indices.
+  const size_t faceBytes = gpuVertices * 6 * sizeof(float) + triangles * 3 * sizeof(uint16_t);
   const size_t edgeBytes = edges * 6 * sizeof(float);
   const PipelineRun run = runPipeline(scene, {ClipStrategy::npc, false, true});
 
@@ -159,6 +182,18 @@ TEST(ViewRenderer, TheGpuBuffersHoldEachVertexNormalPairTriangleAndEdgeOnce) {
   use = renderer.gpuMemoryUse();
   EXPECT_EQ(use[0].bytes, faceBytes) << "the faces uploaded again";
   EXPECT_EQ(use[1].bytes, edgeBytes) << use[1].name;
+}
+
+// A face of more corners than 16-bit indices reach: its chunk's indices are 32-bit.
+TEST(ViewRenderer, AFaceBeyondSixteenBitIndicesHasThirtyTwoBitOnes) {
+  test::GlFixture& gl = test::egl();
+  gl.context->makeCurrent();
+  ViewRenderer renderer(*gl.context);
+  constexpr size_t kCorners = 70000;
+  const Scene scene = tiltedDisc(int(kCorners));
+  const PipelineRun run = runPipeline(scene, {ClipStrategy::npc, false, true});
+  renderer.render(ViewKind::camera, scene, run, displaySettingsFor(scene, Style::flat, 4.0 / 3), {}, 400, 300);
+  EXPECT_EQ(renderer.gpuMemoryUse()[0].bytes, kCorners * 6 * sizeof(float) + (kCorners - 2) * 3 * sizeof(uint32_t));
 }
 
 }  // namespace
