@@ -31,9 +31,9 @@ MemoryUse memoryUse(const PipelineRun& run) {
                       heapBytes(o.clippedFaces) + heapBytes(o.clippedStart) + heapBytes(o.clippedRefs)},
                      {"run.created (NPC, planes, DC)",
                       heapBytes(o.createdNpcH) + heapBytes(o.createdOnPlanes) + heapBytes(o.createdDc)},
-                     {"run.dc", heapBytes(o.dc)},
                      {"run.edges", heapBytes(o.edges)},
-                     {"run.edgeRanges", heapBytes(o.edgeRanges)},
+                     {"run.edge fates, clipped edges",
+                      heapBytes(o.edgeFate) + heapBytes(o.clippedEdges) + heapBytes(o.clippedEdgeRanges)},
                      {"run.clip value cache", heapBytes(o.valueSlots) + heapBytes(o.values)},
                      {"run.userForms", heapBytes(o.userForms)}});
   accumulate(use, {{"run.objects", heapBytes(run.objects)}});

@@ -1,5 +1,5 @@
-// Index: 1 names and accessors  2 the vertex pass (stages 1–3, classification, stage 5 of the
-//        vertices inside)  3 the face pass (stage 4: trivial accept and reject, per-face clipping),
+// Index: 1 names and accessors (stage 5 of a mesh vertex)  2 the vertex pass (stages 1–3,
+//        classification)  3 the face pass (stage 4: trivial accept and reject, per-face clipping),
 //        edges, bounding box  4 stage 5 of the created vertices  5 the run, in steps (PipelineJob)
 #include "pipeline/pipeline.h"
 
@@ -12,6 +12,29 @@
 namespace vplab {
 
 // ---------------------------------------------------------------- 1 names and accessors
+
+// dcFromNpc scales x and y and moves y (docs/conventions.md stage 5): its diagonal and last column are all
+// there is to it, so a vertex inside costs two multiplications more than the division (one division
+// and three multiplications instead of three divisions; safe: inside, w ≥ dmin > 0 or w = 1).
+Vec3 ObjectRun::dc(uint32_t v) const {
+  const Vec4& h = npcH[v];
+  const double inv = 1.0 / h.w;
+  const Mat4& m = dcFromNpc;
+  return {m[0][0] * (h.x * inv) + m[3][0], m[1][1] * (h.y * inv) + m[3][1], m[2][2] * (h.z * inv) + m[3][2]};
+}
+
+EdgeRange ObjectRun::edgeRange(size_t e) const {
+  switch (edgeFate[e]) {
+    case Fate::accepted: return {0, 1, true};
+    case Fate::clipped: {
+      const auto it = std::lower_bound(clippedEdges.begin(), clippedEdges.end(), uint32_t(e));
+      return clippedEdgeRanges[size_t(it - clippedEdges.begin())];
+    }
+    case Fate::rejected:
+    case Fate::clippedAway: break;
+  }
+  return {0, 0, false};
+}
 
 std::span<const uint32_t> ObjectRun::clippedFace(size_t f) const {
   switch (fate[f]) {
@@ -114,41 +137,31 @@ namespace {
 
 // ---------------------------------------------------------------- 2 the vertex pass
 
-// Stages 1–3, the classification and stage 5 in one pass over the vertices: each MC vertex is read
-// once, and only what later stages read is written (npcH, outcode, DC). `classify(i, h)` gives the
-// outcode of vertex i with homogeneous NPC h. Stage 5 here rather than after the face pass: a vertex
-// with outcode 0 is inside (w > 0), and the clipped polygons use no other mesh vertex.
+// Stages 1–3 and the classification in one pass over the vertices: each MC vertex is read once, and
+// only what later stages read is written (npcH, outcode). `classify(i, h)` gives the outcode of
+// vertex i with homogeneous NPC h. Stage 5 of the mesh vertices is counted here (those with outcode
+// 0: inside, w > 0, the only mesh vertices the clipped polygons use) and worked out where it is read
+// (ObjectRun::dc): a stored DC was 24 B a vertex that the GPU path never reads.
 // [[gnu::flatten]]: GCC otherwise leaves GLM's vector operators out of line in this file (they are
 // used too often), which costs a call per operation in the one loop that must run at the speed of
 // a plain transform.
 // Over the vertices [begin, end): a run in steps (PipelineJob) passes over them a range at a time;
 // the arrays are sized by the object's start (startObject).
 template <class Classify>
-[[gnu::flatten]] void vertexPass(ObjectRun& o, const Mat4& dcFromNpcM, Classify classify, PipelineStats& stats,
+[[gnu::flatten]] void vertexPass(ObjectRun& o, Classify classify, PipelineStats& stats,
                                  size_t begin, size_t end) {
   const Mesh& mesh = *o.mesh;
   const Vec4 c0(o.npcFromMc[0]), c1(o.npcFromMc[1]), c2(o.npcFromMc[2]), c3(o.npcFromMc[3]);
-  // dcFromNpc scales x and y and moves y (docs/conventions.md stage 5): its diagonal and last column are all
-  // there is to it, so the vertices inside cost two multiplications more than the division.
-  const double sx = dcFromNpcM[0][0], sy = dcFromNpcM[1][1], sz = dcFromNpcM[2][2];
-  const double tx = dcFromNpcM[3][0], ty = dcFromNpcM[3][1], tz = dcFromNpcM[3][2];
   const Vec3* mc = mesh.positions.data();
   Vec4* npcH = o.npcH.data();
   Outcode* oc = o.outcodes.data();
-  Vec3* dc = o.dc.data();
   uint64_t mapped = 0;
   for (size_t i = begin; i < end; ++i) {
     const Vec4 h = c0 * mc[i].x + c1 * mc[i].y + c2 * mc[i].z + c3;
     npcH[i] = h;
     const Outcode code = classify(i, h);
     oc[i] = code;
-    if (code == 0) {
-      // Inside, so w ≥ dmin > 0 (perspective) or w = 1: the division is safe; one division and three
-      // multiplications instead of three divisions.
-      const double inv = 1.0 / h.w;
-      dc[i] = Vec3(sx * (h.x * inv) + tx, sy * (h.y * inv) + ty, sz * (h.z * inv) + tz);
-      ++mapped;
-    }  // the DC of a vertex outside is never read (no clipped polygon uses it): not written
+    mapped += code == 0;
   }
   stats.verticesOutput += mapped;
 }
@@ -164,15 +177,15 @@ Outcode userBits(const ObjectRun& o, const Vec4& p) {
 // The strategy's classification. `kUser`: whether the user planes' bits are needed (decided once
 // per object, so the common case without user planes carries no test per vertex).
 template <bool kUser>
-void classifyVerticesWith(ObjectRun& o, const Mat4& dcFromNpcM, PipelineStats& stats, size_t begin, size_t end) {
+void classifyVerticesWith(ObjectRun& o, PipelineStats& stats, size_t begin, size_t end) {
   switch (o.strategy) {
     case ClipStrategy::npc:
-      vertexPass(o, dcFromNpcM,
+      vertexPass(o,
                  [&](size_t, const Vec4& h) { return Outcode(outcodeOf(h) | (kUser ? userBits(o, h) : 0)); }, stats,
                  begin, end);
       break;
     case ClipStrategy::wc:
-      vertexPass(o, dcFromNpcM,
+      vertexPass(o,
                  [&](size_t i, const Vec4&) {
                    const Vec3 wc = o.wc(uint32_t(i));
                    return Outcode(outcodeOf(wcBoundary(o.planesWc, wc)) | (kUser ? userBits(o, Vec4(wc, 1.0)) : 0));
@@ -180,7 +193,7 @@ void classifyVerticesWith(ObjectRun& o, const Mat4& dcFromNpcM, PipelineStats& s
                  stats, begin, end);
       break;
     case ClipStrategy::divideFirst:
-      vertexPass(o, dcFromNpcM,
+      vertexPass(o,
                  [&](size_t, const Vec4& h) {
                    const Vec4 d = dividedFirst(h);
                    return Outcode(outcodeOf(boundaryCoordinates(d)) | (kUser ? userBits(o, d) : 0));
@@ -190,9 +203,9 @@ void classifyVerticesWith(ObjectRun& o, const Mat4& dcFromNpcM, PipelineStats& s
   }
 }
 
-void classifyVertices(ObjectRun& o, const Mat4& dcFromNpcM, PipelineStats& stats, size_t begin, size_t end) {
-  if (o.userForms.empty()) classifyVerticesWith<false>(o, dcFromNpcM, stats, begin, end);
-  else classifyVerticesWith<true>(o, dcFromNpcM, stats, begin, end);
+void classifyVertices(ObjectRun& o, PipelineStats& stats, size_t begin, size_t end) {
+  if (o.userForms.empty()) classifyVerticesWith<false>(o, stats, begin, end);
+  else classifyVerticesWith<true>(o, stats, begin, end);
 }
 
 // ---------------------------------------------------------------- 3 the face pass (stage 4)
@@ -315,20 +328,25 @@ void clipFaces(ObjectRun& o, const PipelineRun& run, ClipScratch& scratch, Pipel
   }
 }
 
-// Over the edges [begin, end); edgeRanges is sized by the object's start.
+// Over the edges [begin, end); edgeFate is sized by the object's start (startEdges).
+// The clipped edges are appended in the edges' order, so they stay ascending however the run is cut.
 void clipEdges(ObjectRun& o, PipelineStats& stats, size_t begin, size_t end) {
   for (size_t i = begin; i < end; ++i) {
     const Edge& e = o.edges[i];
     const Outcode a = o.outcodes[e.a], b = o.outcodes[e.b];
     if (a & b) {
-      o.edgeRanges[i] = {0, 0, false};
+      o.edgeFate[i] = Fate::rejected;
       ++stats.edgesRejected;
     } else if (!(a | b)) {
-      o.edgeRanges[i] = {0, 1, true};
+      o.edgeFate[i] = Fate::accepted;
       ++stats.edgesAccepted;
     } else {
-      o.edgeRanges[i] = clipEdge(o.sharedClipValues(e.a), o.sharedClipValues(e.b), Outcode(a | b));
-      ++(o.edgeRanges[i].visible ? stats.edgesClipped : stats.edgesRejected);
+      const EdgeRange r = clipEdge(o.sharedClipValues(e.a), o.sharedClipValues(e.b), Outcode(a | b));
+      o.edgeFate[i] = r.visible ? Fate::clipped : Fate::clippedAway;
+      ++(r.visible ? stats.edgesClipped : stats.edgesRejected);
+      if (!r.visible) continue;
+      o.clippedEdges.push_back(uint32_t(i));
+      o.clippedEdgeRanges.push_back(r);
     }
   }
 }
@@ -356,7 +374,7 @@ void decideByBox(ObjectRun& o, PipelineStats& stats) {
   ++(inside ? stats.objectsAcceptedByBox : stats.objectsRejectedByBox);
   stats.polygonsDecidedByBox += mesh.faceCount();
   if (!o.edges.empty()) {
-    o.edgeRanges.assign(o.edges.size(), inside ? EdgeRange{0, 1, true} : EdgeRange{0, 0, false});
+    o.edgeFate.assign(o.edges.size(), inside ? Fate::accepted : Fate::rejected);
     (inside ? stats.edgesAccepted : stats.edgesRejected) += o.edges.size();
   }
 }
@@ -378,6 +396,7 @@ void startObject(ObjectRun& o, const PipelineRun& run, PipelineStats& stats) {
   const Mesh& mesh = *o.mesh;
   o.vrcFromWc = run.vrcFromWc;
   o.npcFromMc = run.npcFromWc * o.wcFromMc;
+  o.dcFromNpc = run.dcFromNpc;
   o.strategy = run.options.strategy;
   o.planesWc = frustumPlanesWc(run.npcFromWc);
   o.userForms = run.options.strategy == ClipStrategy::wc ? run.userPlanesWc : run.userPlanesNpc;
@@ -389,10 +408,8 @@ void startObject(ObjectRun& o, const PipelineRun& run, PipelineStats& stats) {
   // once held the page's frame for a tenth of a second. The memory is taken here, untouched.
   o.npcH.clear();
   o.outcodes.clear();
-  o.dc.clear();
   o.npcH.reserve(mesh.vertexCount());
   o.outcodes.reserve(mesh.vertexCount());
-  o.dc.reserve(mesh.vertexCount());
   o.fate.resize(mesh.faceCount());
   o.clippedFaces.clear();
   o.clippedStart.assign(1, 0);
@@ -418,20 +435,21 @@ void startObject(ObjectRun& o, const PipelineRun& run, PipelineStats& stats) {
 
 // The object's edges known (listed, or none clipped): their ranges sized and counted.
 void startEdges(ObjectRun& o, PipelineStats& stats) {
-  o.edgeRanges.resize(o.edges.size());
+  o.edgeFate.resize(o.edges.size());
+  o.clippedEdges.clear();
+  o.clippedEdgeRanges.clear();
   stats.edges += o.edges.size();
 }
 
 // Vertices [begin, end) of an object started by startObject.
-void passVertices(ObjectRun& o, const PipelineRun& run, PipelineStats& stats, size_t begin, size_t end) {
+void passVertices(ObjectRun& o, PipelineStats& stats, size_t begin, size_t end) {
   o.npcH.resize(end);
   o.outcodes.resize(end);
-  o.dc.resize(end);
   if (o.classified()) {
-    classifyVertices(o, run.dcFromNpc, stats, begin, end);
+    classifyVertices(o, stats, begin, end);
   } else {
-    // Decided by the box: the vertices are transformed (and those inside mapped), not classified.
-    vertexPass(o, run.dcFromNpc, [code = o.boxCode](size_t, const Vec4&) { return code; }, stats, begin, end);
+    // Decided by the box: the vertices are transformed (and those inside counted as mapped), not classified.
+    vertexPass(o, [code = o.boxCode](size_t, const Vec4&) { return code; }, stats, begin, end);
   }
 }
 
@@ -558,7 +576,7 @@ bool PipelineJob::step(uint64_t budget) {
       }
       case Phase::vertices: {
         const size_t end = take(o.mesh->vertexCount());  // o.vertexCount() grows with the pass
-        passVertices(o, run, run.stats, next_, end);
+        passVertices(o, run.stats, next_, end);
         next_ = end;
         if (next_ == o.mesh->vertexCount()) nextPhase(o.classified() ? Phase::faces : Phase::finish);
         break;

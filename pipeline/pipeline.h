@@ -4,11 +4,11 @@
 // vertex probe and the tests, plus statistics and operation counts (lecture notes 15.3.3).
 //
 // Data-oriented, in two passes: one over the vertices (stages 1–3 as the one composite matrix
-// npcFromMc, the classification, and stage 5 for the vertices inside) and one over the faces (trivial
+// npcFromMc and the classification) and one over the faces (trivial
 // accept and reject by the outcodes; Sutherland–Hodgman for the few faces that cross a plane).
 // Polygons index the vertex arrays, so a vertex is transformed and classified once however many
-// faces use it. Per vertex only what later stages read is stored (homogeneous NPC, outcode, DC); WC
-// and VRC are recomputed on demand from MC, bit for bit as the stage matrices give them. Per face
+// faces use it. Per vertex only what later stages read is stored (homogeneous NPC, outcode); WC,
+// VRC and DC are recomputed on demand, bit for bit as the stage matrices give them. Per face
 // only its fate is stored: an accepted face is drawn from the mesh's own indices. Buffers are
 // reused from run to run; no heap allocation per polygon in the hot loop.
 #pragma once
@@ -102,14 +102,26 @@ struct ObjectRun {
   std::vector<Vec4> createdNpcH;          // homogeneous NPC of the vertices created by clipping
   std::vector<uint16_t> createdOnPlanes;  // bit i: created on plane i (new edges join such vertices)
 
-  // Stage 5: DC of every vertex the clipped polygons use (mesh vertices with outcode 0; the entries
-  // of the others are not written: nothing reads them).
-  std::vector<Vec3> dc;
+  // Stage 5: DC of every vertex the clipped polygons use. A mesh vertex's (outcode 0: inside) is worked
+  // out where it is read, from npcH, the same arithmetic every time (bit for bit); a vertex made by
+  // clipping has its DC stored (few: only faces crossing a plane make them).
+  Mat4 dcFromNpc{1.0};  // the run's
+  Vec3 dc(uint32_t v) const;
   std::vector<Vec3> createdDc;
 
-  // Edges (PipelineOptions::clipEdges): the visible parameter range of each unique edge.
+  // Edges (PipelineOptions::clipEdges), kept as the faces are: each unique edge's fate, and only for
+  // the edges cut with something left (fate clipped), ascending, their visible parameter range
+  // [t0, t1] from a to b. An accepted edge is visible whole, [0, 1]; a rejected or clipped-away one not
+  // at all. (A range for every edge was 24 B an edge: 24 MiB for the large scene, whose few edges
+  // crossing a plane now take 24 B each and the rest 1 B.)
   std::vector<Edge> edges;
-  std::vector<EdgeRange> edgeRanges;
+  std::vector<Fate> edgeFate;
+  std::vector<uint32_t> clippedEdges;
+  std::vector<EdgeRange> clippedEdgeRanges;
+  /// The visible part of edge e: {0, 1, true} when accepted, the stored range when clipped, not
+  /// visible when rejected or clipped away.
+  EdgeRange edgeRange(size_t e) const;
+  bool edgeVisible(size_t e) const { return edgeFate[e] == Fate::accepted || edgeFate[e] == Fate::clipped; }
 
   // Cached per mesh (like `edges`): the number of vertices of every face, 0 when they differ.
   uint32_t uniformFaceSize = 0;
@@ -127,7 +139,7 @@ struct ObjectRun {
   /// A clipped polygon's vertex: homogeneous NPC, NPC after the division, DC.
   Vec4 clippedNpcH(uint32_t ref) const { return isCreated(ref) ? createdNpcH[ref - vertexCount()] : npcH[ref]; }
   Vec3 clippedNpc(uint32_t ref) const;
-  Vec3 clippedDc(uint32_t ref) const { return isCreated(ref) ? createdDc[ref - vertexCount()] : dc[ref]; }
+  Vec3 clippedDc(uint32_t ref) const { return isCreated(ref) ? createdDc[ref - vertexCount()] : dc(ref); }
   /// Whether the edge of clipped face f from corner i to corner i + 1 was made by clipping
   /// (it lies in a clip plane, so it is not part of the original polygon's boundary).
   bool isNewEdge(size_t f, size_t i) const;

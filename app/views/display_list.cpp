@@ -27,7 +27,7 @@ void Lines::polyline(std::span<const Vec3> points, bool closed, const glm::vec4&
   if (closed && points.size() > 2) line(points.back(), points.front(), color);
 }
 
-size_t RunEdges::count() const { return run ? std::min(run->edges.size(), run->edgeRanges.size()) : 0; }
+size_t RunEdges::count() const { return run ? std::min(run->edges.size(), run->edgeFate.size()) : 0; }
 
 size_t Lines::segmentCount() const {
   size_t n = segments.size() / 2;
@@ -50,8 +50,8 @@ void Lines::segmentsInto(size_t first, size_t end, std::vector<Vertex>& out) con
         out.insert(out.end(), {{a, r.color}, {b, r.color}});
         continue;
       }
-      const EdgeRange& range = o.edgeRanges[i - base];
-      if (!range.visible) continue;
+      if (!o.edgeVisible(i - base)) continue;
+      const EdgeRange range = o.edgeRange(i - base);
       // Boundary coordinates are linear along the WC segment, so t carries over from NPC.
       out.insert(out.end(), {{a + range.t0 * (b - a), r.color}, {a + range.t1 * (b - a), r.color}});
     }

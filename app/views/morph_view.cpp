@@ -23,7 +23,7 @@ struct Inverses {
 };
 
 StageValues stagesOf(const ObjectRun& o, uint32_t ref, const Inverses& inv, const Mat4& mcFromWc) {
-  if (!o.isCreated(ref)) return {o.mesh->positions[ref], o.wc(ref), o.vrc(ref), o.npcH[ref], o.dc[ref]};
+  if (!o.isCreated(ref)) return {o.mesh->positions[ref], o.wc(ref), o.vrc(ref), o.npcH[ref], o.dc(ref)};
   const Vec4 npcH = o.clippedNpcH(ref);
   const Vec4 vrcH = inv.vrcFromNpc * npcH;
   const Vec3 vrc = Vec3(vrcH) / vrcH.w;

@@ -53,9 +53,9 @@ TEST(CheckValues, RunPipelineMapsTheAxisPoints) {
   for (uint32_t i = 0; i < 3; ++i) {
     EXPECT_EQ(o.outcodes[i], 0) << i;  // on the front / back plane counts as inside
     // 1e-12: as above, a few roundings on values of order 100.
-    EXPECT_NEAR(o.dc[i].x, expected[i].x, 1e-12) << i;
-    EXPECT_NEAR(o.dc[i].y, expected[i].y, 1e-12) << i;
-    EXPECT_NEAR(o.dc[i].z, expected[i].z, 1e-12) << i;
+    EXPECT_NEAR(o.dc(i).x, expected[i].x, 1e-12) << i;
+    EXPECT_NEAR(o.dc(i).y, expected[i].y, 1e-12) << i;
+    EXPECT_NEAR(o.dc(i).z, expected[i].z, 1e-12) << i;
   }
   // (1.6, 1.2, −3) is behind the back plane: its outcode has the back bit (4) set.
   Scene outside = test::sceneWith(checkCamera(), {test::polygonObject("far", {{1.6, 1.2, -3}, {0, 0, -3}, {0, 1, -3}})});

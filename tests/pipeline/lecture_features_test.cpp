@@ -24,7 +24,7 @@ void expectNear(const Vec3& a, const Vec3& b, double eps, const std::string& wha
 }
 
 StageValues stagesOf(const ObjectRun& o, uint32_t v) {
-  return {o.mesh->positions[v], o.wc(v), o.vrc(v), o.npcH[v], o.dc[v]};
+  return {o.mesh->positions[v], o.wc(v), o.vrc(v), o.npcH[v], o.dc(v)};
 }
 
 TEST(StageMorph, IntegerTimesAreTheStages) {

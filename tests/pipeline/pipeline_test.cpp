@@ -12,6 +12,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 #include <functional>
@@ -66,17 +67,18 @@ void expectSameRun(const PipelineRun& a, const PipelineRun& b) {
     EXPECT_TRUE(bitwiseEqual(x.createdNpcH, y.createdNpcH));
     EXPECT_EQ(x.createdOnPlanes, y.createdOnPlanes);
     // DC is defined for the vertices inside (outcode 0): the clipped polygons use no other.
-    ASSERT_EQ(x.dc.size(), y.dc.size());
-    for (size_t i = 0; i < x.dc.size(); ++i)
+    for (uint32_t i = 0; i < x.vertexCount(); ++i)
       if (x.outcodes[i] == 0) {
-        EXPECT_TRUE(bitwiseEqual(x.dc[i], y.dc[i])) << "vertex " << i;
+        EXPECT_TRUE(bitwiseEqual(x.dc(i), y.dc(i))) << "vertex " << i;
       }
     EXPECT_TRUE(bitwiseEqual(x.createdDc, y.createdDc));
     EXPECT_TRUE(bitwiseEqual(x.edges, y.edges));
-    ASSERT_EQ(x.edgeRanges.size(), y.edgeRanges.size());  // field by field: EdgeRange has padding
-    for (size_t i = 0; i < x.edgeRanges.size(); ++i) {
-      EXPECT_TRUE(bitwiseEqual(x.edgeRanges[i].t0, y.edgeRanges[i].t0) && bitwiseEqual(x.edgeRanges[i].t1, y.edgeRanges[i].t1) &&
-                  x.edgeRanges[i].visible == y.edgeRanges[i].visible);
+    EXPECT_EQ(x.edgeFate, y.edgeFate);
+    EXPECT_EQ(x.clippedEdges, y.clippedEdges);
+    ASSERT_EQ(x.clippedEdgeRanges.size(), y.clippedEdgeRanges.size());  // field by field: EdgeRange has padding
+    for (size_t i = 0; i < x.clippedEdgeRanges.size(); ++i) {
+      const EdgeRange &r = x.clippedEdgeRanges[i], &s = y.clippedEdgeRanges[i];
+      EXPECT_TRUE(bitwiseEqual(r.t0, s.t0) && bitwiseEqual(r.t1, s.t1) && r.visible == s.visible);
     }
   }
 }
@@ -226,7 +228,7 @@ TEST(Pipeline, RandomScenesGiveCorrectOutput) {
           for (size_t i = 0; i < o.vertexCount(); ++i) {
             output += o.outcodes[i] == 0;
             behindEye += o.npcH[i].w <= 0;
-            EXPECT_TRUE(isFinite(o.npcH[i]) && isFinite(o.dc[i]));
+            EXPECT_TRUE(isFinite(o.npcH[i]) && (o.outcodes[i] != 0 || isFinite(o.dc(i))));
           }
           for (size_t f = 0; f < o.faceCount(); ++f) {
             ++fates[o.fate[f]];
@@ -487,14 +489,18 @@ TEST(Pipeline, EdgeClippingAgreesWithPolygonClipping) {
         const std::vector<Edge> expected = uniqueEdges(*o.mesh);
         ASSERT_EQ(o.edges.size(), expected.size());
         for (size_t i = 0; i < expected.size(); ++i) EXPECT_TRUE(o.edges[i].a == expected[i].a && o.edges[i].b == expected[i].b);
-        ASSERT_EQ(o.edgeRanges.size(), o.edges.size());
+        ASSERT_EQ(o.edgeFate.size(), o.edges.size());
+        // a range is kept only for the edges cut with something left, one each, ascending
+        EXPECT_EQ(size_t(std::count(o.edgeFate.begin(), o.edgeFate.end(), Fate::clipped)), o.clippedEdges.size());
+        EXPECT_EQ(o.clippedEdgeRanges.size(), o.clippedEdges.size());
+        EXPECT_TRUE(std::adjacent_find(o.clippedEdges.begin(), o.clippedEdges.end(), std::greater_equal<>()) == o.clippedEdges.end());
         edges += o.edges.size();
         const bool singlePolygon = o.faceCount() == 1;
         std::vector<Vec3> polygonDc;
         if (singlePolygon)
           for (uint32_t ref : o.clippedFace(0)) polygonDc.push_back(o.clippedDc(ref));
         for (size_t i = 0; i < o.edges.size(); ++i) {
-          const EdgeRange& r = o.edgeRanges[i];
+          const EdgeRange r = o.edgeRange(i);
           const Outcode a = o.outcodes[o.edges[i].a], b = o.outcodes[o.edges[i].b];
           if (a & b) {
             EXPECT_FALSE(r.visible);
@@ -536,9 +542,12 @@ TEST(Pipeline, EdgesOfObjectsDecidedByTheirBox) {
   const Scene s = test::sceneWith(test::checkCamera(), {test::shapeObject("inside", Shape::cube, {{0, 0, 0}, {}, {0.5, 0.5, 0.5}}),
                                                         test::shapeObject("outside", Shape::cube, {{9, 0, 0}, {}, {1, 1, 1}})});
   const PipelineRun run = runPipeline(s, {ClipStrategy::npc, true, true});
-  ASSERT_EQ(run.objects[0].edgeRanges.size(), 12u);
-  for (const EdgeRange& r : run.objects[0].edgeRanges) EXPECT_TRUE(r.visible && r.t0 == 0 && r.t1 == 1);
-  for (const EdgeRange& r : run.objects[1].edgeRanges) EXPECT_FALSE(r.visible);
+  ASSERT_EQ(run.objects[0].edgeFate.size(), 12u);
+  for (size_t e = 0; e < 12; ++e) {
+    const EdgeRange r = run.objects[0].edgeRange(e);
+    EXPECT_TRUE(r.visible && r.t0 == 0 && r.t1 == 1);
+    EXPECT_FALSE(run.objects[1].edgeRange(e).visible);
+  }
   EXPECT_EQ(run.stats.edgesAccepted, 12u);
   EXPECT_EQ(run.stats.edgesRejected, 12u);
 }

@@ -154,7 +154,7 @@ TEST(Strategies, DivideFirstWrapsAroundBehindTheEye) {
   for (size_t i = 0; i < npcEdges.objects[0].edges.size(); ++i) {
     const Edge& e = npcEdges.objects[0].edges[i];
     if (!(e.a == 0 && e.b == 2)) continue;
-    const EdgeRange right = npcEdges.objects[0].edgeRanges[i], wrongRange = dfEdges.objects[0].edgeRanges[i];
+    const EdgeRange right = npcEdges.objects[0].edgeRange(i), wrongRange = dfEdges.objects[0].edgeRange(i);
     ASSERT_TRUE(right.visible && wrongRange.visible);
     const Vec4 a = o.npcH[0], c = o.npcH[2];
     const Vec3 rightEnd = divideByW(a + right.t1 * (c - a));

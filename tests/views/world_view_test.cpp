@@ -97,7 +97,7 @@ TEST(WorldView, HiddenLineEdgesFromTheCpuClipperAfterTheOccluder) {
   size_t edges = 0, visible = 0;
   for (const ObjectRun& o : f.run.objects) {
     edges += o.edges.size();
-    for (const EdgeRange& r : o.edgeRanges) visible += r.visible;
+    for (size_t e = 0; e < o.edges.size(); ++e) visible += o.edgeVisible(e);
   }
   // by reference to the run's edges (issue 42: a million edges are not copied into the list)
   for (const Lines* l : {&faded, &solid, &dashed}) {

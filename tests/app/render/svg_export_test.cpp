@@ -624,7 +624,7 @@ TEST(SvgExport, CameraViewEndsClippedEdgesOnTheWindowBorder) {
   std::vector<Vec2> cuts;
   const Mat4 dc = dcFromNpc(Device{kWidth, kHeight});
   for (size_t i = 0; i < tetra->edges.size(); ++i) {
-    const EdgeRange& r = tetra->edgeRanges[i];
+    const EdgeRange r = tetra->edgeRange(i);
     if (!r.visible) continue;
     const Vec4 a = tetra->npcH[tetra->edges[i].a], b = tetra->npcH[tetra->edges[i].b];
     for (double t : {r.t0, r.t1}) {
