@@ -29,7 +29,7 @@ GpuMeshChunk makeChunk(const GladGLContext& gl, const Mesh& mesh, size_t first, 
   chunk.firstCorner = mesh.faceStart[first];
   const size_t cornerCount = mesh.faceStart[end] - chunk.firstCorner;
   if (slotOf.size() < mesh.positions.size()) slotOf.assign(mesh.positions.size(), kNone);  // all kNone between chunks
-  chunk.cornerVertex.resize(cornerCount);
+  std::vector<uint32_t> cornerVertex(cornerCount);
   std::vector<glm::vec3> vertices;  // position, normal, position, normal, …
   vertices.reserve(cornerCount * 2);
   std::vector<uint32_t> triangles;
@@ -46,10 +46,10 @@ GpuMeshChunk makeChunk(const GladGLContext& gl, const Mesh& mesh, size_t first, 
         vertices.emplace_back(mesh.positions[face[k]]);
         vertices.push_back(normal);
       }
-      chunk.cornerVertex[local + k] = slot;
+      cornerVertex[local + k] = slot;
     }
     for (uint32_t k = 1; k + 1 < face.size(); ++k)
-      triangles.insert(triangles.end(), {chunk.cornerVertex[local], chunk.cornerVertex[local + k], chunk.cornerVertex[local + k + 1]});
+      triangles.insert(triangles.end(), {cornerVertex[local], cornerVertex[local + k], cornerVertex[local + k + 1]});
   }
   for (size_t c = chunk.firstCorner; c < mesh.faceStart[end]; ++c) slotOf[mesh.indices[c]] = kNone;
   chunk.vao = gl::makeVertexArray(gl);
@@ -68,8 +68,10 @@ GpuMeshChunk makeChunk(const GladGLContext& gl, const Mesh& mesh, size_t first, 
     chunk.indexType = GL_UNSIGNED_SHORT;
     const std::vector<uint16_t> shorter(triangles.begin(), triangles.end());
     gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(shorter.size() * sizeof(uint16_t)), shorter.data(), GL_STATIC_DRAW);
+    chunk.cornerVertex16.assign(cornerVertex.begin(), cornerVertex.end());
   } else {
     gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(triangles.size() * sizeof(uint32_t)), triangles.data(), GL_STATIC_DRAW);
+    chunk.cornerVertex32 = std::move(cornerVertex);
   }
   chunk.bytes = vertices.size() * sizeof(glm::vec3) + triangles.size() * chunk.indexSize();
   gl.BindVertexArray(0);
@@ -192,7 +194,7 @@ size_t GpuMeshCache::faceBytes() const {
 size_t GpuMeshCache::cornerMapBytes() const {
   size_t sum = 0;
   for (const auto& [mesh, e] : entries_)
-    for (const GpuMeshChunk& c : e.gpu.chunks) sum += c.cornerVertex.capacity() * sizeof(uint32_t);
+    for (const GpuMeshChunk& c : e.gpu.chunks) sum += c.cornerMapBytes();
   return sum;
 }
 

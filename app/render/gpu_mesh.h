@@ -20,7 +20,7 @@
 namespace vplab {
 
 /// Faces [firstFace, endFace) of a mesh: the mesh's face corner firstCorner + i is GPU vertex
-/// cornerVertex[i]; corners of one mesh vertex with the same normal share theirs.
+/// cornerVertex16 or 32[i]; corners of one mesh vertex with the same normal share theirs.
 struct GpuMeshChunk {
   gl::VertexArray vao;  // location 0: MC position, 1: MC normal; its element buffer is `indices`
   gl::Buffer vertices, indices;
@@ -31,7 +31,11 @@ struct GpuMeshChunk {
   /// of its own index buffer and of the volume partition's lists; 32-bit for a larger face.
   GLenum indexType = GL_UNSIGNED_INT;
   size_t indexSize() const { return indexType == GL_UNSIGNED_SHORT ? 2 : 4; }
-  std::vector<uint32_t> cornerVertex;  // CPU: each corner's GPU vertex (the volume partition's lists)
+  // CPU: each corner's GPU vertex (the volume partition's lists), as wide as the indices: one of the
+  // two is filled.
+  std::vector<uint16_t> cornerVertex16;
+  std::vector<uint32_t> cornerVertex32;
+  size_t cornerMapBytes() const { return cornerVertex16.capacity() * 2 + cornerVertex32.capacity() * 4; }
   size_t bytes = 0;  // of its two buffers (on llvmpipe and SwiftShader, the process's memory)
 };
 
@@ -77,7 +81,7 @@ class GpuMeshCache {
   /// The bytes of the buffers uploaded (faces; edges), over every mesh held.
   size_t faceBytes() const;
   size_t edgeBytes() const;
-  /// The CPU bytes of the chunks' corner maps (GpuMeshChunk::cornerVertex).
+  /// The CPU bytes of the chunks' corner maps (GpuMeshChunk::cornerVertex16 or 32).
   size_t cornerMapBytes() const;
   /// The corners a chunk holds at most (unless one face has more); for tests of chunk boundaries.
   /// Meshes uploaded before keep their chunks.

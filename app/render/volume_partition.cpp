@@ -94,25 +94,29 @@ void VolumePartitions::listChunk(Part& part, const Mesh& mesh, const GpuMeshChun
     end[list] = scratch_[list].data();
   }
   const uint8_t* sides = part.sides.data();
-  for (size_t f = chunk.firstFace; f < chunk.endFace; ++f) {
-    const auto face = mesh.face(f);
-    uint8_t all = 0xff;
-    for (uint32_t v : face) all &= sides[v];
-    const bool outsideOnePlane = all & 0x3f, insideAll = all & kInside;
-    const uint32_t first = mesh.faceStart[f] - chunk.firstCorner, n = uint32_t(face.size());
-    const uint32_t* vertex = chunk.cornerVertex.data() + first;
-    auto add = [&](size_t list) {
-      for (uint32_t c = 1; c + 1 < n; ++c) {
-        end[list][0] = vertex[0];
-        end[list][1] = vertex[c];
-        end[list][2] = vertex[c + 1];
-        end[list] += 3;
-      }
-    };
-    if (insideAll) add(kInsideFaces);
-    else if (!outsideOnePlane) add(kInsidePass);
-    if (!insideAll) add(kOutsidePass);
-  }
+  auto listFaces = [&](const auto* cornerVertex) {
+    for (size_t f = chunk.firstFace; f < chunk.endFace; ++f) {
+      const auto face = mesh.face(f);
+      uint8_t all = 0xff;
+      for (uint32_t v : face) all &= sides[v];
+      const bool outsideOnePlane = all & 0x3f, insideAll = all & kInside;
+      const uint32_t first = mesh.faceStart[f] - chunk.firstCorner, n = uint32_t(face.size());
+      const auto* vertex = cornerVertex + first;
+      auto add = [&](size_t list) {
+        for (uint32_t c = 1; c + 1 < n; ++c) {
+          end[list][0] = vertex[0];
+          end[list][1] = vertex[c];
+          end[list][2] = vertex[c + 1];
+          end[list] += 3;
+        }
+      };
+      if (insideAll) add(kInsideFaces);
+      else if (!outsideOnePlane) add(kInsidePass);
+      if (!insideAll) add(kOutsidePass);
+    }
+  };
+  if (chunk.indexType == GL_UNSIGNED_SHORT) listFaces(chunk.cornerVertex16.data());
+  else listFaces(chunk.cornerVertex32.data());
   const GladGLContext& gl = *gl_;
   for (size_t l = 0; l < kLists; ++l) {
     out.count[l] = GLsizei(end[l] - scratch_[l].data());

@@ -50,11 +50,11 @@ TEST_F(BenchMemory, ReportsEveryStructureAndThePeaksOfTheViewerAndOfRenderAll) {
   // most 65 536 corners, so fewer vertices). The sphere's corners share
   // their vertex's GPU vertex (one normal each) within a chunk of 65 536 corners; a chunk repeats the
   // vertices it shares with the one before, at most two rings of the sphere (2 × 1 025) at each of the
-  // 31 boundaries (12 % of its 523 266 vertices). The corner map: one index a corner.
+  // 31 boundaries (12 % of its 523 266 vertices). The corner map: one 16-bit index a corner.
   const double gpuFaces = partMiB(m["structures"]["gpu_buffers"], "gpu.mesh faces") * kMiB;
   EXPECT_GE(gpuFaces, double(vertices * 24 + triangles * 6) - 1.0);
   EXPECT_LE(gpuFaces, double(vertices) * 1.12 * 24 + double(triangles * 6));
-  EXPECT_NEAR(partMiB(m["structures"]["gpu_buffers"], "gpu.mesh corner map (CPU)") * kMiB, double(corners * 4), 1.0);
+  EXPECT_NEAR(partMiB(m["structures"]["gpu_buffers"], "gpu.mesh corner map (CPU)") * kMiB, double(corners * 2), 1.0);
   for (const char* style : {"display_lists_shaded", "display_lists_wire"})
     for (const char* view : {"camera", "world", "npc"})
       EXPECT_GT(m["structures"][style][view]["total_mib"].get<double>(), 0.0) << style << " " << view;

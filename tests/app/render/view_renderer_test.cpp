@@ -141,8 +141,8 @@ namespace {
 // The GPU buffers' bytes (`vplab bench --memory`) against the meshes: a GPU vertex is a position and
 // a normal (six floats), one per distinct (mesh vertex, normal) pair: a smooth sphere's corners share
 // their vertex's (its normal is its position), a cube's 24 corners each have their face's normal. A
-// fan triangle is three 32-bit indices, an edge its two end points (six floats); the corner map one
-// index a corner. The edges are uploaded only once a wireframe style draws them.
+// fan triangle is three 16-bit indices here, an edge its two end points (six floats); the corner map one
+// 16-bit index a corner. The edges are uploaded only once a wireframe style draws them.
 TEST(ViewRenderer, TheGpuBuffersHoldEachVertexNormalPairTriangleAndEdgeOnce) {
   test::GlFixture& gl = test::egl();
   gl.context->makeCurrent();
@@ -176,7 +176,7 @@ TEST(ViewRenderer, TheGpuBuffersHoldEachVertexNormalPairTriangleAndEdgeOnce) {
   ASSERT_EQ(use.size(), 3u);
   EXPECT_EQ(use[0].bytes, faceBytes) << use[0].name;
   EXPECT_EQ(use[1].bytes, 0u) << use[1].name;
-  EXPECT_EQ(use[2].bytes, corners * sizeof(uint32_t)) << use[2].name;
+  EXPECT_EQ(use[2].bytes, corners * sizeof(uint16_t)) << use[2].name;
 
   renderer.render(ViewKind::all, scene, run, displaySettingsFor(scene, Style::wire, 4.0 / 3), {}, 400, 300);
   use = renderer.gpuMemoryUse();
@@ -193,7 +193,9 @@ TEST(ViewRenderer, AFaceBeyondSixteenBitIndicesHasThirtyTwoBitOnes) {
   const Scene scene = tiltedDisc(int(kCorners));
   const PipelineRun run = runPipeline(scene, {ClipStrategy::npc, false, true});
   renderer.render(ViewKind::camera, scene, run, displaySettingsFor(scene, Style::flat, 4.0 / 3), {}, 400, 300);
-  EXPECT_EQ(renderer.gpuMemoryUse()[0].bytes, kCorners * 6 * sizeof(float) + (kCorners - 2) * 3 * sizeof(uint32_t));
+  const MemoryUse use = renderer.gpuMemoryUse();
+  EXPECT_EQ(use[0].bytes, kCorners * 6 * sizeof(float) + (kCorners - 2) * 3 * sizeof(uint32_t));
+  EXPECT_EQ(use[2].bytes, kCorners * sizeof(uint32_t)) << use[2].name;
 }
 
 }  // namespace
