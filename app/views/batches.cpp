@@ -21,7 +21,7 @@ std::vector<PolygonSet> Recycled::polygonSets(size_t count) {
 }
 
 void Marks::line(const Vec3& a, const Vec3& b, const glm::vec4& color, float widthPx, float dashPx) {
-  std::vector<Vertex>& v = lines_[{widthPx, dashPx}];
+  std::vector<Vertex>& v = lines_[{widthPx, dashPx}].segments;
   v.push_back({a, color});
   v.push_back({b, color});
 }
@@ -31,6 +31,10 @@ void Marks::polyline(std::span<const Vec3> points, bool closed, const glm::vec4&
   if (points.size() < 2) return;
   for (size_t i = 0; i + 1 < points.size(); ++i) line(points[i], points[i + 1], color, widthPx, dashPx);
   if (closed && points.size() > 2) line(points.back(), points.front(), color, widthPx, dashPx);
+}
+
+void Marks::runEdges(const RunEdges& edges, float widthPx, float dashPx) {
+  lines_[{widthPx, dashPx}].runEdges.push_back(edges);
 }
 
 void Marks::point(const Vec3& p, const glm::vec4& color, float sizePx) { points_[sizePx].push_back({p, color}); }
@@ -49,10 +53,11 @@ void Marks::emit(DisplayList& list, Space space, Depth depth, float scale, bool 
     Triangles t{space, std::move(triangles_), depth, pushedBack};
     list.add(std::move(t));
   }
-  for (auto& [style, segments] : lines_) {
+  for (auto& [style, group] : lines_) {
     Lines l;
     l.space = space;
-    l.segments = std::move(segments);
+    l.segments = std::move(group.segments);
+    l.runEdges = std::move(group.runEdges);
     l.widthPx = style.first * scale;
     l.dashPx = style.second;
     l.depth = depth;

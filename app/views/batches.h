@@ -36,6 +36,8 @@ class Marks {
   void polyline(std::span<const Vec3> points, bool closed, const glm::vec4& color, float widthPx = 2.f,
                 float dashPx = 0.f);
   void point(const Vec3& p, const glm::vec4& color, float sizePx = 10.f);
+  /// A run's clipped edges by reference (RunEdges), drawn after the copied lines of their style.
+  void runEdges(const RunEdges& edges, float widthPx = 2.f, float dashPx = 0.f);
   void triangle(const Vec3& a, const Vec3& b, const Vec3& c, const glm::vec4& color);
   void quad(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const glm::vec4& color);
   bool empty() const { return lines_.empty() && points_.empty() && triangles_.empty(); }
@@ -48,7 +50,11 @@ class Marks {
   void emit(DisplayList& list, Space space, Depth depth, float scale, bool pushedBack = false);
 
  private:
-  std::map<std::pair<float, float>, std::vector<Vertex>> lines_;
+  struct LineGroup {
+    std::vector<Vertex> segments;
+    std::vector<RunEdges> runEdges;
+  };
+  std::map<std::pair<float, float>, LineGroup> lines_;
   std::map<float, std::vector<Vertex>> points_;
   std::vector<Vertex> triangles_;
 };

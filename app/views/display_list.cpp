@@ -29,6 +29,34 @@ void Lines::polyline(std::span<const Vec3> points, bool closed, const glm::vec4&
 
 size_t RunEdges::count() const { return run ? std::min(run->edges.size(), run->edgeFate.size()) : 0; }
 
+namespace {
+
+// Edges [first, end) of a run in NPC: the visible part [t0, t1] of each, taken where the strategy
+// clipped it (homogeneous NPC, linear in WC too, for the NPC and WC strategies; the divided points for
+// divide first), then divided by w: the same segments as the clipped polygons' boundaries along the
+// mesh's edges (lecture notes 15.3.2), which the NPC view once copied from them.
+void npcEdgesInto(const ObjectRun& o, const RunEdges& r, size_t first, size_t end, std::vector<Vertex>& out) {
+  const bool divided = o.strategy == ClipStrategy::divideFirst;
+  for (size_t i = first; i < end; ++i) {
+    const Edge& e = o.edges[i];
+    if (!r.visiblePart) {
+      out.insert(out.end(), {{divideByW(o.npcH[e.a]), r.color}, {divideByW(o.npcH[e.b]), r.color}});
+      continue;
+    }
+    if (!o.edgeVisible(i)) continue;
+    const EdgeRange range = o.edgeRange(i);
+    if (divided) {
+      const Vec3 a = divideByW(o.npcH[e.a]), b = divideByW(o.npcH[e.b]);
+      out.insert(out.end(), {{a + range.t0 * (b - a), r.color}, {a + range.t1 * (b - a), r.color}});
+    } else {
+      const Vec4 &a = o.npcH[e.a], &b = o.npcH[e.b];
+      out.insert(out.end(), {{divideByW(a + range.t0 * (b - a)), r.color}, {divideByW(a + range.t1 * (b - a)), r.color}});
+    }
+  }
+}
+
+}  // namespace
+
 size_t Lines::segmentCount() const {
   size_t n = segments.size() / 2;
   for (const RunEdges& r : runEdges) n += r.count();
@@ -42,6 +70,11 @@ void Lines::segmentsInto(size_t first, size_t end, std::vector<Vertex>& out) con
   for (const RunEdges& r : runEdges) {
     const size_t n = r.count();
     const size_t from = std::max(first, base), to = std::min(end, base + n);
+    if (space == Space::npc) {
+      npcEdgesInto(*r.run, r, from - base, to - base, out);
+      base += n;
+      continue;
+    }
     for (size_t i = from; i < to; ++i) {
       const ObjectRun& o = *r.run;
       const Edge& e = o.edges[i - base];

@@ -130,10 +130,11 @@ struct Vertex {
   glm::vec4 color;
 };
 
-/// A run's clipped edges in WC, by reference (the world view's wireframes: a million edges are not
-/// copied into each frame's list as 160 MB of segments, issue 42): edge i of `run` from wc(a) to
-/// wc(b), whole or only its visible part [t0, t1] (EdgeRange; none when it is not visible), in
-/// `color`. Points into the run the list was built from, which must outlive the list.
+/// A run's clipped edges by reference (the world and NPC views' wireframes: a million edges are not
+/// copied into each frame's list as 120–160 MB of segments, issue 42): edge i of `run` from a to b,
+/// whole or only its visible part [t0, t1] (EdgeRange; none when it is not visible), in `color`; in
+/// the space of the Lines that hold it (WC: wc(a) to wc(b); NPC: clipped where the strategy clips,
+/// then divided by w). Points into the run the list was built from, which must outlive the list.
 struct RunEdges {
   const ObjectRun* run = nullptr;
   glm::vec4 color{1, 1, 1, 1};
@@ -146,7 +147,7 @@ struct RunEdges {
 struct Lines {
   Space space = Space::wc;
   std::vector<Vertex> segments;        // segment i: segments[2i] → segments[2i + 1]
-  std::vector<RunEdges> runEdges;      // then these, segment by segment (WC only)
+  std::vector<RunEdges> runEdges;      // then these, segment by segment (WC or NPC)
   std::vector<MeshInstance> meshEdges; // every edge of these meshes, in their colour
   float widthPx = 2.f;
   float dashPx = 0.f;

@@ -131,9 +131,15 @@ void npcView(const ViewInput& in, DisplayList& list) {
   Marks outlines, dashedOutlines, newEdges, fadedOutlines;
   ClipScratch scratch;
   const bool outlined = !isFilled(style) || style == Style::hiddenLine;
+  // The mesh's edges by reference when the run clipped them (the wireframe styles' runs do, issue 42):
+  // each once, its visible part (the clipped polygons' boundaries along them); the polygons then add
+  // only the edges clipping made. A run without its edges has its polygons' edges copied, each once.
+  auto edgesByReference = [&](const ObjectRun& o) {
+    return outlined && !o.edges.empty() && o.edgeFate.size() == o.edges.size();
+  };
   size_t corners = 0;  // each edge is shared by about two faces
   if (outlined)
-    for (const ObjectRun& o : run.objects) corners += o.faceCount() * 3;
+    for (const ObjectRun& o : run.objects) corners += (edgesByReference(o) ? o.clippedFaces.size() : o.faceCount()) * 3;
   DrawnEdges drawnEdges(corners / 2);
   std::vector<Vec3> poly;  // reused: no allocation per polygon
   for (size_t k = 0; k < run.objects.size(); ++k) {
@@ -145,24 +151,31 @@ void npcView(const ViewInput& in, DisplayList& list) {
     }
     if (keepFaded) faded[k].color = glm::vec3(o.color);
     const glm::vec4 c = theme::ink(pal, glm::vec4(glm::vec3(o.color), 1.f));
+    const bool byReference = edgesByReference(o);
+    if (byReference && !isFilled(style)) outlines.runEdges({&o, c, true}, pal.edgeWidthPx);
+    if (byReference && style == Style::hiddenLine)
+      dashedOutlines.runEdges({&o, glm::vec4(glm::vec3(c), 0.8f), true}, pal.edgeWidthPx, theme::kDashPx);
     for (size_t f = 0; f < o.faceCount(); ++f) {
       const auto face = o.clippedFace(f);
       if (!face.empty()) {
         if (keepInside) inside[k].faces.push_back(uint32_t(f));
         // Only clipped faces have new edges; only the wireframe styles draw the others.
-        const bool clipped = ov.newEdges && o.fate[f] == Fate::clipped;
-        if (clipped || outlined) {
+        const bool cut = o.fate[f] == Fate::clipped, clipped = ov.newEdges && cut;
+        const bool outlineHere = outlined && (!byReference || cut);
+        if (clipped || outlineHere) {
           poly.clear();
           for (uint32_t ref : face) poly.push_back(o.clippedNpc(ref));
         }
-        for (size_t i = 0; (clipped || outlined) && i < face.size(); ++i) {
+        for (size_t i = 0; (clipped || outlineHere) && i < face.size(); ++i) {
           const Vec3 &a = poly[i], &b = poly[(i + 1) % poly.size()];
-          if (clipped && o.isNewEdge(f, i)) {
+          const bool made = cut && o.isNewEdge(f, i);
+          if (clipped && made) {
             newEdges.line(a, b, pal.newEdge, theme::kLineWidth + 0.5f);
             continue;
           }
+          if (!outlineHere || (byReference && !made)) continue;  // a mesh edge: drawn by reference
           // Two faces share each mesh edge: draw it once, or its dashes would overlap out of phase.
-          if (!outlined || !drawnEdges.insert(edgeKey(a, b))) continue;
+          if (!drawnEdges.insert(edgeKey(a, b))) continue;
           if (!isFilled(style)) outlines.line(a, b, c, pal.edgeWidthPx);
           if (style == Style::hiddenLine)
             dashedOutlines.line(a, b, glm::vec4(glm::vec3(c), 0.8f), pal.edgeWidthPx, theme::kDashPx);
