@@ -1,5 +1,6 @@
 #include "app/views/display_list.h"
 
+#include "app/views/view_geometry.h"
 #include "pipeline/pipeline.h"
 
 #include <algorithm>
@@ -39,6 +40,20 @@ void npcEdgesInto(const ObjectRun& o, const RunEdges& r, size_t first, size_t en
   const bool divided = o.strategy == ClipStrategy::divideFirst;
   for (size_t i = first; i < end; ++i) {
     const Edge& e = o.edges[i];
+    if (r.fadedPart) {
+      if (!(o.outcodes[e.a] | o.outcodes[e.b])) continue;
+      const Vec4 &a = o.npcH[e.a], &b = o.npcH[e.b];
+      const Boundary ga = geometry::grownBoundary(a, geometry::kFadedMargin), gb = geometry::grownBoundary(b, geometry::kFadedMargin);
+      Outcode planes = 0;
+      for (int k = 0; k < kPlaneCount; ++k)
+        if (ga[size_t(k)] < 0 || gb[size_t(k)] < 0) planes |= Outcode(1u << k);
+      const EdgeRange range = planes ? clipEdge(ga, gb, planes) : EdgeRange{0, 1, true};
+      if (!range.visible) continue;
+      const Vec4 p = a + range.t0 * (b - a), q = a + range.t1 * (b - a);
+      if (p.w <= 1e-12 || q.w <= 1e-12) continue;  // a point of the eye plane (the grown cube's apex)
+      out.insert(out.end(), {{Vec3(p) / p.w, r.color}, {Vec3(q) / q.w, r.color}});
+      continue;
+    }
     if (!r.visiblePart) {
       out.insert(out.end(), {{divideByW(o.npcH[e.a]), r.color}, {divideByW(o.npcH[e.b]), r.color}});
       continue;
@@ -71,7 +86,7 @@ void Lines::segmentsInto(size_t first, size_t end, std::vector<Vertex>& out) con
     const size_t n = r.count();
     const size_t from = std::max(first, base), to = std::min(end, base + n);
     if (space == Space::npc) {
-      npcEdgesInto(*r.run, r, from - base, to - base, out);
+      if (from < to) npcEdgesInto(*r.run, r, from - base, to - base, out);  // [first, end) may lie before or after these
       base += n;
       continue;
     }

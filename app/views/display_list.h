@@ -139,6 +139,10 @@ struct RunEdges {
   const ObjectRun* run = nullptr;
   glm::vec4 color{1, 1, 1, 1};
   bool visiblePart = true;  // false: every edge whole
+  /// NPC only, instead: the edges with an end outside (outcode ≠ 0: every face they bound was cut or
+  /// rejected), as far as they lie in the cube grown by geometry::kFadedMargin (which keeps w > 0),
+  /// whole: the outlines of what clipping cut away, each edge once.
+  bool fadedPart = false;
   size_t count() const;     // the run's edges with their ranges
 };
 

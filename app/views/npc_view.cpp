@@ -155,6 +155,10 @@ void npcView(const ViewInput& in, DisplayList& list) {
     if (byReference && !isFilled(style)) outlines.runEdges({&o, c, true}, pal.edgeWidthPx);
     if (byReference && style == Style::hiddenLine)
       dashedOutlines.runEdges({&o, glm::vec4(glm::vec3(c), 0.8f), true}, pal.edgeWidthPx, theme::kDashPx);
+    // What clipping cut away, outlined: by reference too (each edge once), else each face's copied.
+    const glm::vec4 fadedInk(glm::vec3(c), pal.fadedAlpha);
+    const bool fadedOutlined = ov.fadeOutside && !isFilled(style), fadedCopied = fadedOutlined && !byReference;
+    if (fadedOutlined && byReference) fadedOutlines.runEdges({&o, fadedInk, false, true}, pal.edgeWidthPx);
     for (size_t f = 0; f < o.faceCount(); ++f) {
       const auto face = o.clippedFace(f);
       if (!face.empty()) {
@@ -181,11 +185,10 @@ void npcView(const ViewInput& in, DisplayList& list) {
             dashedOutlines.line(a, b, glm::vec4(glm::vec3(c), 0.8f), pal.edgeWidthPx, theme::kDashPx);
         }
       }
-      if (ov.fadeOutside && o.fate[f] != Fate::accepted) {
+      if (ov.fadeOutside && o.fate[f] != Fate::accepted && (keepFaded || fadedCopied)) {
         geometry::fadedNpcPolygon(o, f, scratch, poly);
         if (poly.size() >= 3) {
-          if (!isFilled(style))
-            fadedOutlines.polyline(poly, true, glm::vec4(glm::vec3(c), pal.fadedAlpha), pal.edgeWidthPx);
+          if (fadedCopied) fadedOutlines.polyline(poly, true, fadedInk, pal.edgeWidthPx);
           if (keepFaded) faded[k].add(poly);
         }
       }

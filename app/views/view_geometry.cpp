@@ -44,17 +44,12 @@ std::vector<Vec3> fadedNpcPolygon(const ObjectRun& o, size_t f, ClipScratch& scr
   return out;
 }
 
-namespace {
-
-// The boundary coordinates of the cube grown by m on every side.
 Boundary grownBoundary(const Vec4& p, double m) {
   return {p.x + m * p.w, (1 + m) * p.w - p.x, p.y + m * p.w, (1 + m) * p.w - p.y, p.z + m * p.w, (1 + m) * p.w - p.z};
 }
 
-}  // namespace
-
 void fadedNpcPolygon(const ObjectRun& o, size_t f, ClipScratch& scratch, std::vector<Vec3>& out) {
-  constexpr double m = 0.5;
+  constexpr double m = kFadedMargin;
   const auto face = o.mesh->face(f);
   out.clear();
   // A face inside the grown cube (most of them): Sutherland–Hodgman would keep every vertex as it

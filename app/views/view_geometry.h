@@ -34,6 +34,11 @@ std::array<Vec3, 4> clipPlaneSquare(const UserClipPlane& plane, double halfSize)
 /// The half-size of those squares for a camera: 0.6 of the window's larger side.
 double clipPlaneSquareSize(const Camera& camera);
 
+/// How far the NPC view's faded parts reach beyond the cube: half its size on every side.
+inline constexpr double kFadedMargin = 0.5;
+/// The boundary coordinates of the cube grown by m on every side: x + m·w, (1 + m)·w − x, …
+Boundary grownBoundary(const Vec4& p, double m);
+
 /// The NPC view's faded polygon: face f as it was, clipped to the cube grown by half its size on
 /// every side (which also keeps w > 0), then divided. The same Sutherland–Hodgman kernel with other
 /// boundary values: x + m·w ≥ 0, (1 + m)·w − x ≥ 0, …

@@ -1,7 +1,9 @@
 // The NPC view's display list: the clipper's polygons, the faded rest, the cube, and the storage of
 // its polygon arrays kept from frame to frame.
 #include "app/views/theme.h"
+#include "app/views/view_geometry.h"
 #include "pipeline/primitives.h"
+#include "tests/support/test_util.h"
 #include "tests/views/view_test_support.h"
 
 #include <gtest/gtest.h>
@@ -111,6 +113,66 @@ TEST(NpcView, HiddenLineOutlinesEachEdgeOnceOverAnOccluder) {
                          << ") is not drawn";
     }
   }
+}
+
+// In the wire styles what clipping cut away is outlined by reference too: the edges with an end
+// outside, each once, as far as they lie in the cube grown by half its size. Against the faded
+// polygons (geometry::fadedNpcPolygon, face by face through Sutherland–Hodgman): every vertex of
+// theirs outside the cube is an end of a faded segment (within 1e-12: a few roundings in the unit cube).
+TEST(NpcView, WireOutlinesWhatWasCutAwayEachEdgeOnce) {
+  test::ViewFixture f(defaultScene(), Style::wire);
+  ASSERT_TRUE(f.settings.overlays.fadeOutside);
+  const DisplayList list = npcView(f.input());
+  const Lines* faded = nullptr;
+  for (const Lines* l : test::batchesOf<Lines>(list))
+    if (!l->runEdges.empty() && l->runEdges[0].fadedPart) faded = l;
+  ASSERT_TRUE(faded) << "the faded outlines name the run's edges";
+  const std::vector<Vertex> segments = test::segmentsOf(*faded);
+  ASSERT_GT(segments.size(), 0u);
+  std::set<std::array<double, 6>> drawn;
+  for (size_t i = 0; i + 1 < segments.size(); i += 2) {
+    const Vec3 &a = segments[i].position, &b = segments[i + 1].position;
+    EXPECT_LE(std::max(test::outsideCube(a), test::outsideCube(b)), 0.5 + 1e-9) << "within the grown cube";
+    const bool swap = std::tie(b.x, b.y, b.z) < std::tie(a.x, a.y, a.z);
+    const Vec3 &p = swap ? b : a, &q = swap ? a : b;
+    EXPECT_TRUE(drawn.insert({p.x, p.y, p.z, q.x, q.y, q.z}).second) << "segment " << i / 2 << " drawn twice";
+  }
+  ClipScratch scratch;
+  size_t checked = 0;
+  for (const ObjectRun& o : f.run.objects)
+    for (size_t face = 0; face < o.faceCount(); ++face) {
+      if (o.fate[face] == Fate::accepted) continue;
+      for (const Vec3& v : geometry::fadedNpcPolygon(o, face, scratch)) {
+        if (test::outsideCube(v) <= 1e-9 || test::outsideCube(v) >= 0.5 - 1e-9) continue;  // inside, or cut by the grown cube
+        bool found = false;
+        for (size_t i = 0; i < segments.size() && !found; ++i) found = glm::length(segments[i].position - v) <= 1e-12;
+        EXPECT_TRUE(found) << o.name << " face " << face << ": " << format(v) << " ends no faded segment";
+        ++checked;
+      }
+    }
+  EXPECT_GT(checked, 10u);
+}
+
+// The GL backend works out a batch's segments in parts ([first, end) of segmentCount()): every cut
+// of the range gives the segments of the whole, in order, whichever run's edges a part begins or
+// ends in (a part that ended before a run's edges once read far past them).
+TEST(NpcView, RunEdgesInPartsAreTheWhole) {
+  test::ViewFixture f(defaultScene(), Style::wire);
+  const DisplayList list = npcView(f.input());
+  size_t batches = 0;
+  for (const Lines* l : test::batchesOf<Lines>(list)) {
+    if (l->runEdges.size() < 2) continue;
+    ++batches;
+    const std::vector<Vertex> whole = test::segmentsOf(*l);
+    const size_t n = l->segmentCount();
+    for (size_t part : {size_t(1), size_t(7), size_t(100), n}) {
+      std::vector<Vertex> parts;
+      for (size_t first = 0; first < n; first += part) l->segmentsInto(first, std::min(n, first + part), parts);
+      ASSERT_EQ(parts.size(), whole.size()) << "parts of " << part;
+      for (size_t i = 0; i < whole.size(); ++i) EXPECT_EQ(parts[i].position, whole[i].position) << i;
+    }
+  }
+  EXPECT_GE(batches, 1u);
 }
 
 // Where a polygon set keeps its polygons: the run's face numbers, or its own points.
