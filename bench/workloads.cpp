@@ -5,12 +5,14 @@
 #include "pipeline/device_mapping.h"
 #include "base/error.h"
 #include "pipeline/modeling.h"
+#include "pipeline/parallel.h"
 #include "pipeline/primitives.h"
 #include "pipeline/view_mapping.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <ctime>
 #include <sstream>
 
@@ -210,6 +212,12 @@ Workloads::Workloads(int segments) : scene_(makeBenchScene(segments)), matrices_
 
 void Workloads::fullPipeline() { runPipeline(scene_, options_, run_); }
 
+void Workloads::everyCore() {
+  PipelineOptions o = options_;
+  o.parallel = true;
+  runPipeline(scene_, o, everyCoreRun_);
+}
+
 void Workloads::floor() { floorPass(mesh(), matrices_.npcFromMc, floor_); }
 
 void Workloads::textbook() { textbook_ = textbookPipeline(mesh(), matrices_); }
@@ -224,6 +232,27 @@ double threadCpuMs() {
   timespec ts{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
   return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) * 1e-6;
+}
+
+template <class T>
+bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+// The every-core run against the one-core run, bit for bit: the counts, every vertex's homogeneous
+// NPC and outcode, every face's fate, the clipped polygons and the vertices clipping created.
+bool sameResult(const PipelineRun& one, const PipelineRun& every) {
+  if (std::memcmp(&one.stats, &every.stats, sizeof one.stats) != 0) return false;
+  if (one.objects.size() != every.objects.size()) return false;
+  for (size_t k = 0; k < one.objects.size(); ++k) {
+    const ObjectRun &a = one.objects[k], &b = every.objects[k];
+    if (!sameBytes(a.npcH, b.npcH) || !sameBytes(a.outcodes, b.outcodes) || !sameBytes(a.fate, b.fate) ||
+        !sameBytes(a.clippedFaces, b.clippedFaces) || !sameBytes(a.clippedStart, b.clippedStart) ||
+        !sameBytes(a.clippedRefs, b.clippedRefs) || !sameBytes(a.createdNpcH, b.createdNpcH) ||
+        !sameBytes(a.createdOnPlanes, b.createdOnPlanes) || !sameBytes(a.edgeFate, b.edgeFate))
+      return false;
+  }
+  return true;
 }
 
 template <class F>
@@ -268,7 +297,9 @@ BenchReport runPipelineBenchmarks(int repetitions, int segments) {
   w.fullPipeline();
   w.floor();
   w.textbook();
+  w.everyCore();
   r.check = checkSameVisibleResult(w.run(), w.textbookResult());
+  r.everyCoreSameResult = sameResult(w.run(), w.everyCoreRun());
 
   // Each timed call follows an untimed one of the same workload: every workload is measured in its
   // steady state (as the viewer runs the pipeline frame after frame), not cold after another one
@@ -280,10 +311,16 @@ BenchReport runPipelineBenchmarks(int repetitions, int segments) {
     time(r.floor, [&] { w.floor(); });
     w.textbook();
     time(r.textbook, [&] { w.textbook(); });
+    w.everyCore();
+    time(r.everyCore, [&] { w.everyCore(); });
   }
   finish(r.full);
   finish(r.floor);
   finish(r.textbook);
+  finish(r.everyCore);
+  r.cores = parallelThreads();
+  r.oneOverEveryCore = r.full.medianMs / r.everyCore.medianMs;
+  r.oneOverEveryCoreMet = r.oneOverEveryCore >= BenchReport::everyCoreTarget(r.cores);
 
   const PipelineStats& st = w.run().stats;
   r.triangles = st.polygons;
@@ -316,7 +353,7 @@ Json toJson(const BenchReport& r) {
   j["optimized_build"] = false;  // assertions on: the figures mean little
 #endif
   j["repetitions"] = r.repetitions;
-  j["threads"] = 1;
+  j["threads"] = 1;  // full, floor and textbook; every core: "every_core"
   j["scene"] = {{"segments", r.segments},
                 {"triangles", r.triangles},
                 {"vertices", r.vertices},
@@ -337,6 +374,14 @@ Json toJson(const BenchReport& r) {
   j["median_cpu_ms"] = three([](const WorkloadTiming& t) { return t.cpuMedianMs; });
   j["ratios_cpu"] = {{"full_over_floor", r.fullOverFloorCpu}, {"textbook_over_full", r.textbookOverFullCpu}};
   j["samples_ms"] = three([](const WorkloadTiming& t) { return t.samplesMs; });
+  j["every_core"] = {{"threads", r.cores},
+                     {"median_ms", r.everyCore.medianMs},
+                     {"min_ms", r.everyCore.minMs},
+                     {"samples_ms", r.everyCore.samplesMs},
+                     {"one_core_over_every_core", r.oneOverEveryCore},
+                     {"target_min", BenchReport::everyCoreTarget(r.cores)},
+                     {"target_met", r.oneOverEveryCoreMet},
+                     {"same_result_bit_for_bit", r.everyCoreSameResult}};
   j["check"] = {{"ok", r.check.ok},
                 {"tolerance", r.check.tolerance},
                 {"message", r.check.message},

@@ -1,12 +1,20 @@
 // Index: 1 names and accessors (stage 5 of a mesh vertex)  2 the vertex pass (stages 1–3,
 //        classification)  3 the face pass (stage 4: trivial accept and reject, per-face clipping),
 //        edges, bounding box  4 stage 5 of the created vertices  5 the run, in steps (PipelineJob)
+//
+// Every core (PipelineOptions::parallel, pipeline/parallel.h): the vertex pass and the trivial
+// decisions of faces and edges run over chunks of their range on every core, each chunk writing only
+// its own vertices', faces' and edges' entries; the faces and edges the outcodes cannot decide are
+// then clipped in ascending order by one thread, as the serial run clips them (they append created
+// vertices and fill the clip values' cache). So the run on every core is the serial run bit for bit.
 #include "pipeline/pipeline.h"
 
 #include "base/error.h"
+#include "pipeline/parallel.h"
 #include "pipeline/view_mapping.h"
 
 #include <algorithm>
+#include <atomic>
 #include <limits>
 
 namespace vplab {
@@ -147,9 +155,9 @@ namespace {
 // a plain transform.
 // Over the vertices [begin, end): a run in steps (PipelineJob) passes over them a range at a time;
 // the arrays are sized by the object's start (startObject).
+// Returns the number of vertices inside (mapped to DC).
 template <class Classify>
-[[gnu::flatten]] void vertexPass(ObjectRun& o, Classify classify, PipelineStats& stats,
-                                 size_t begin, size_t end) {
+[[gnu::flatten]] uint64_t vertexPass(ObjectRun& o, Classify classify, size_t begin, size_t end) {
   const Mesh& mesh = *o.mesh;
   const Vec4 c0(o.npcFromMc[0]), c1(o.npcFromMc[1]), c2(o.npcFromMc[2]), c3(o.npcFromMc[3]);
   const Vec3* mc = mesh.positions.data();
@@ -163,7 +171,7 @@ template <class Classify>
     oc[i] = code;
     mapped += code == 0;
   }
-  stats.verticesOutput += mapped;
+  return mapped;
 }
 
 // The user planes' outcode bits (6 … 11) of a vertex.
@@ -177,43 +185,58 @@ Outcode userBits(const ObjectRun& o, const Vec4& p) {
 // The strategy's classification. `kUser`: whether the user planes' bits are needed (decided once
 // per object, so the common case without user planes carries no test per vertex).
 template <bool kUser>
-void classifyVerticesWith(ObjectRun& o, PipelineStats& stats, size_t begin, size_t end) {
+uint64_t classifyVerticesWith(ObjectRun& o, size_t begin, size_t end) {
   switch (o.strategy) {
     case ClipStrategy::npc:
-      vertexPass(o,
-                 [&](size_t, const Vec4& h) { return Outcode(outcodeOf(h) | (kUser ? userBits(o, h) : 0)); }, stats,
-                 begin, end);
-      break;
+      return vertexPass(
+          o, [&](size_t, const Vec4& h) { return Outcode(outcodeOf(h) | (kUser ? userBits(o, h) : 0)); }, begin, end);
     case ClipStrategy::wc:
-      vertexPass(o,
-                 [&](size_t i, const Vec4&) {
-                   const Vec3 wc = o.wc(uint32_t(i));
-                   return Outcode(outcodeOf(wcBoundary(o.planesWc, wc)) | (kUser ? userBits(o, Vec4(wc, 1.0)) : 0));
-                 },
-                 stats, begin, end);
-      break;
+      return vertexPass(
+          o,
+          [&](size_t i, const Vec4&) {
+            const Vec3 wc = o.wc(uint32_t(i));
+            return Outcode(outcodeOf(wcBoundary(o.planesWc, wc)) | (kUser ? userBits(o, Vec4(wc, 1.0)) : 0));
+          },
+          begin, end);
     case ClipStrategy::divideFirst:
-      vertexPass(o,
-                 [&](size_t, const Vec4& h) {
-                   const Vec4 d = dividedFirst(h);
-                   return Outcode(outcodeOf(boundaryCoordinates(d)) | (kUser ? userBits(o, d) : 0));
-                 },
-                 stats, begin, end);
-      break;
+      return vertexPass(
+          o,
+          [&](size_t, const Vec4& h) {
+            const Vec4 d = dividedFirst(h);
+            return Outcode(outcodeOf(boundaryCoordinates(d)) | (kUser ? userBits(o, d) : 0));
+          },
+          begin, end);
   }
+  return 0;
 }
 
-void classifyVertices(ObjectRun& o, PipelineStats& stats, size_t begin, size_t end) {
-  if (o.userForms.empty()) classifyVerticesWith<false>(o, stats, begin, end);
-  else classifyVerticesWith<true>(o, stats, begin, end);
+uint64_t classifyVertices(ObjectRun& o, size_t begin, size_t end) {
+  return o.userForms.empty() ? classifyVerticesWith<false>(o, begin, end) : classifyVerticesWith<true>(o, begin, end);
+}
+
+// The chunks a range is shared out in (pipeline/parallel.h): large enough that a chunk's work
+// (about 0.1 ms) outweighs handing it to a core, small enough that two cores finish together.
+constexpr size_t kChunk = size_t(1) << 15;
+
+// Calls body(chunkBegin, chunkEnd, k) for the chunks k of [begin, end).
+template <class Body>
+void forChunks(size_t begin, size_t end, bool parallel, Body body) {
+  forEachChunk(chunkCount(end - begin, kChunk), parallel, [&](size_t k) {
+    const size_t b = begin + k * kChunk;
+    body(b, std::min(end, b + kChunk), k);
+  });
 }
 
 // ---------------------------------------------------------------- 3 the face pass (stage 4)
 
 // How each strategy presents a mesh vertex to the clipper, and what a created vertex becomes.
+// `shared`: its clip values from the run's cache (one thread clips), else worked out anew (clipping on
+// every core): the same values bit for bit either way (ObjectRun::clipValuesOf).
 struct NpcSource {
   ObjectRun& o;
-  ClipVertex vertex(uint32_t v) const { return {o.npcH[v], o.sharedClipValues(v), v}; }
+  bool shared;
+  ClipValues values(uint32_t v) const { return shared ? o.sharedClipValues(v) : o.clipValuesOf(v); }
+  ClipVertex vertex(uint32_t v) const { return {o.npcH[v], values(v), v}; }
   Vec4 npcH(const ClipVertex& c) const {
     Vec4 p = c.p;
     snapToPlanes(p, c.onPlanes);
@@ -223,8 +246,10 @@ struct NpcSource {
 
 struct WcSource {
   ObjectRun& o;
+  bool shared;
   const Mat4& npcFromWc;
-  ClipVertex vertex(uint32_t v) const { return {Vec4(o.wc(v), 1.0), o.sharedClipValues(v), v}; }
+  ClipValues values(uint32_t v) const { return shared ? o.sharedClipValues(v) : o.clipValuesOf(v); }
+  ClipVertex vertex(uint32_t v) const { return {Vec4(o.wc(v), 1.0), values(v), v}; }
   Vec4 npcH(const ClipVertex& c) const {
     Vec4 p = npcFromWc * c.p;  // the plane equations were exact in WC; snap away the rounding
     snapToPlanes(p, c.onPlanes);
@@ -234,7 +259,9 @@ struct WcSource {
 
 struct DivideFirstSource {
   ObjectRun& o;
-  ClipVertex vertex(uint32_t v) const { return {dividedFirst(o.npcH[v]), o.sharedClipValues(v), v}; }
+  bool shared;
+  ClipValues values(uint32_t v) const { return shared ? o.sharedClipValues(v) : o.clipValuesOf(v); }
+  ClipVertex vertex(uint32_t v) const { return {dividedFirst(o.npcH[v]), values(v), v}; }
   Vec4 npcH(const ClipVertex& c) const {
     Vec4 p = c.p;
     snapToPlanes(p, c.onPlanes);
@@ -242,36 +269,78 @@ struct DivideFirstSource {
   }
 };
 
+// What a chunk of faces or edges leaves for the run when clipped on every core: the ones its
+// outcodes could not decide, and what clipping made of them, in ascending order, as the run keeps it
+// (the faces' ends in clippedStart, without the run's leading 0; created vertices numbered from the
+// mesh's vertex count within the chunk). joinChunk appends it to the run, renumbered.
+}  // namespace
+
+struct detail::ChunkWork {
+  std::vector<ClipCandidate> crossing;
+  ClipScratch scratch;
+  std::vector<uint32_t> clippedFaces, clippedStart, clippedRefs;
+  std::vector<Vec4> createdNpcH;
+  std::vector<uint16_t> createdOnPlanes;
+  std::vector<EdgeRange> ranges;  // edges: crossing[i]'s
+
+  void clear() {
+    crossing.clear();
+    clippedFaces.clear();
+    clippedStart.clear();
+    clippedRefs.clear();
+    createdNpcH.clear();
+    createdOnPlanes.clear();
+    ranges.clear();
+  }
+};
+
+namespace {
+
+using detail::ChunkWork;
+
 // A face the outcodes cannot decide: Sutherland–Hodgman. Rare (the faces crossing a plane), so it
-// stays out of the face loop.
-template <class Source>
-[[gnu::noinline]] Fate clipFace(ObjectRun& o, const Source& source, ClipScratch& scratch, uint32_t f,
-                                Outcode planes) {
+// stays out of the face loop. Appended to `out`: the run itself (one thread) or a chunk's ChunkWork.
+template <class Source, class Out>
+[[gnu::noinline]] Fate clipFace(const ObjectRun& o, const Source& source, ClipScratch& scratch, uint32_t f,
+                                Outcode planes, Out& out) {
   const uint32_t nv = uint32_t(o.vertexCount());
   scratch.a.clear();
   for (uint32_t v : o.mesh->face(f)) scratch.a.push_back(source.vertex(v));
-  const auto out = clipPolygon(planes, scratch);
-  if (out.empty()) return Fate::clippedAway;
-  for (const ClipVertex& c : out) {
+  const auto clipped = clipPolygon(planes, scratch);
+  if (clipped.empty()) return Fate::clippedAway;
+  for (const ClipVertex& c : clipped) {
     if (c.source != ClipVertex::kCreated) {
-      o.clippedRefs.push_back(c.source);
+      out.clippedRefs.push_back(c.source);
       continue;
     }
-    o.clippedRefs.push_back(nv + uint32_t(o.createdNpcH.size()));
-    o.createdNpcH.push_back(source.npcH(c));
-    o.createdOnPlanes.push_back(c.onPlanes);
+    out.clippedRefs.push_back(nv + uint32_t(out.createdNpcH.size()));
+    out.createdNpcH.push_back(source.npcH(c));
+    out.createdOnPlanes.push_back(c.onPlanes);
   }
-  o.clippedFaces.push_back(f);
-  o.clippedStart.push_back(uint32_t(o.clippedRefs.size()));
+  out.clippedFaces.push_back(f);
+  out.clippedStart.push_back(uint32_t(out.clippedRefs.size()));
   return Fate::clipped;
 }
 
-// Trivial accept and reject by the outcodes (lecture notes 15.2.4), Sutherland–Hodgman for the rest. Per face
-// only its fate is written. Over the faces [begin, end), in ascending ranges (clippedFaces stays
-// sorted); finishFaces adds what is counted once per object.
-template <class Source>
-void clipFaces(ObjectRun& o, const Source& source, ClipScratch& scratch, PipelineStats& stats, uint32_t begin,
-               uint32_t end) {
+// A chunk's clipped faces appended to the run: its created vertices renumbered after the run's.
+void joinChunk(ObjectRun& o, const ChunkWork& w) {
+  const uint32_t nv = uint32_t(o.vertexCount());
+  const uint32_t created = uint32_t(o.createdNpcH.size()), refs = uint32_t(o.clippedRefs.size());
+  o.clippedFaces.insert(o.clippedFaces.end(), w.clippedFaces.begin(), w.clippedFaces.end());
+  for (uint32_t end : w.clippedStart) o.clippedStart.push_back(refs + end);
+  for (uint32_t ref : w.clippedRefs) o.clippedRefs.push_back(ref >= nv ? ref + created : ref);
+  o.createdNpcH.insert(o.createdNpcH.end(), w.createdNpcH.begin(), w.createdNpcH.end());
+  o.createdOnPlanes.insert(o.createdOnPlanes.end(), w.createdOnPlanes.begin(), w.createdOnPlanes.end());
+}
+
+struct TrivialCounts {
+  uint64_t accepted = 0, rejected = 0;
+};
+
+// Trivial accept and reject by the outcodes (lecture notes 15.2.4) over the faces [begin, end): only
+// their fates are written; the faces that cross a plane are listed in `crossing` (ascending) for
+// Sutherland–Hodgman.
+TrivialCounts decideFaces(ObjectRun& o, uint32_t begin, uint32_t end, std::vector<ClipCandidate>& crossing) {
   const Mesh& mesh = *o.mesh;
   const uint32_t* idx = mesh.indices.data();
   const uint32_t* start = mesh.faceStart.data();
@@ -279,7 +348,7 @@ void clipFaces(ObjectRun& o, const Source& source, ClipScratch& scratch, Pipelin
   Fate* fate = o.fate.data();
   // Counted in locals, not in an array indexed by the fate: that would chain every face to the
   // previous one through memory.
-  uint64_t accepted = 0, rejected = 0, clipped = 0;
+  uint64_t accepted = 0, rejected = 0;
   auto decide = [&](uint32_t f, Outcode all, Outcode any) {
     if (all) {
       fate[f] = Fate::rejected;
@@ -288,8 +357,7 @@ void clipFaces(ObjectRun& o, const Source& source, ClipScratch& scratch, Pipelin
       fate[f] = Fate::accepted;
       ++accepted;
     } else {
-      fate[f] = clipFace(o, source, scratch, f, any);
-      ++clipped;
+      crossing.push_back({f, any});
     }
   };
   if (o.uniformFaceSize == 3) {  // triangles (the GPU's and the benchmark's meshes): no faceStart
@@ -307,6 +375,41 @@ void clipFaces(ObjectRun& o, const Source& source, ClipScratch& scratch, Pipelin
       decide(f, all, any);
     }
   }
+  return {accepted, rejected};
+}
+
+// Whether a pass over [begin, end) is shared between cores: then the faces and edges that cross a
+// plane are clipped by their chunk's thread too, with clip values worked out anew (no shared cache).
+bool onEveryCore(size_t begin, size_t end, bool parallel) {
+  return parallel && parallelAvailable() && chunkCount(end - begin, kChunk) > 1;
+}
+
+// The faces [begin, end): decided by their outcodes in chunks, the crossing ones clipped, all in the
+// faces' order (clippedFaces stays sorted however the run is cut). On every core each chunk clips its
+// own crossing faces and the chunks join the run in order; on one, they are clipped into the run.
+// finishFaces adds what is counted once per object.
+template <class Source>
+void clipFaces(ObjectRun& o, const Source& source, ClipScratch& scratch, std::vector<ChunkWork>& work,
+               PipelineStats& stats, uint32_t begin, uint32_t end, bool everyCore) {
+  const size_t chunks = chunkCount(end - begin, kChunk);
+  if (work.size() < chunks) work.resize(chunks);
+  std::atomic<uint64_t> accepted = 0, rejected = 0;
+  forChunks(begin, end, everyCore, [&](size_t b, size_t e, size_t k) {
+    ChunkWork& w = work[k];
+    w.clear();
+    const TrivialCounts n = decideFaces(o, uint32_t(b), uint32_t(e), w.crossing);
+    accepted += n.accepted;
+    rejected += n.rejected;
+    if (everyCore)
+      for (const ClipCandidate& c : w.crossing) o.fate[c.index] = clipFace(o, source, w.scratch, c.index, c.planes, w);
+  });
+  uint64_t clipped = 0;
+  for (size_t k = 0; k < chunks; ++k) {
+    clipped += work[k].crossing.size();
+    if (everyCore) joinChunk(o, work[k]);
+    else
+      for (const ClipCandidate& c : work[k].crossing) o.fate[c.index] = clipFace(o, source, scratch, c.index, c.planes, o);
+  }
   stats.polygonsTriviallyAccepted += accepted;
   stats.polygonsTriviallyRejected += rejected;
   stats.polygonsClippedAway += clipped;  // finishFaces moves those with something left to polygonsClipped
@@ -319,36 +422,76 @@ void finishFaces(const ObjectRun& o, PipelineStats& stats) {
   stats.verticesCreated += o.createdNpcH.size();
 }
 
-void clipFaces(ObjectRun& o, const PipelineRun& run, ClipScratch& scratch, PipelineStats& stats, uint32_t begin,
-               uint32_t end) {
+void clipFaces(ObjectRun& o, const PipelineRun& run, ClipScratch& scratch, std::vector<ChunkWork>& work,
+               PipelineStats& stats, uint32_t begin, uint32_t end) {
+  const bool every = onEveryCore(begin, end, run.options.parallel), shared = !every;
   switch (o.strategy) {
-    case ClipStrategy::npc: clipFaces(o, NpcSource{o}, scratch, stats, begin, end); break;
-    case ClipStrategy::wc: clipFaces(o, WcSource{o, run.npcFromWc}, scratch, stats, begin, end); break;
-    case ClipStrategy::divideFirst: clipFaces(o, DivideFirstSource{o}, scratch, stats, begin, end); break;
+    case ClipStrategy::npc: clipFaces(o, NpcSource{o, shared}, scratch, work, stats, begin, end, every); break;
+    case ClipStrategy::wc:
+      clipFaces(o, WcSource{o, shared, run.npcFromWc}, scratch, work, stats, begin, end, every);
+      break;
+    case ClipStrategy::divideFirst:
+      clipFaces(o, DivideFirstSource{o, shared}, scratch, work, stats, begin, end, every);
+      break;
   }
 }
 
-// Over the edges [begin, end); edgeFate is sized by the object's start (startEdges).
-// The clipped edges are appended in the edges' order, so they stay ascending however the run is cut.
-void clipEdges(ObjectRun& o, PipelineStats& stats, size_t begin, size_t end) {
+// The trivial decisions of the edges [begin, end) (as decideFaces'); the crossing ones listed.
+TrivialCounts decideEdges(ObjectRun& o, size_t begin, size_t end, std::vector<ClipCandidate>& crossing) {
+  const Edge* edges = o.edges.data();
+  const Outcode* oc = o.outcodes.data();
+  Fate* fate = o.edgeFate.data();
+  uint64_t accepted = 0, rejected = 0;
   for (size_t i = begin; i < end; ++i) {
-    const Edge& e = o.edges[i];
-    const Outcode a = o.outcodes[e.a], b = o.outcodes[e.b];
+    const Outcode a = oc[edges[i].a], b = oc[edges[i].b];
     if (a & b) {
-      o.edgeFate[i] = Fate::rejected;
-      ++stats.edgesRejected;
+      fate[i] = Fate::rejected;
+      ++rejected;
     } else if (!(a | b)) {
-      o.edgeFate[i] = Fate::accepted;
-      ++stats.edgesAccepted;
+      fate[i] = Fate::accepted;
+      ++accepted;
     } else {
-      const EdgeRange r = clipEdge(o.sharedClipValues(e.a), o.sharedClipValues(e.b), Outcode(a | b));
-      o.edgeFate[i] = r.visible ? Fate::clipped : Fate::clippedAway;
-      ++(r.visible ? stats.edgesClipped : stats.edgesRejected);
-      if (!r.visible) continue;
-      o.clippedEdges.push_back(uint32_t(i));
-      o.clippedEdgeRanges.push_back(r);
+      crossing.push_back({uint32_t(i), Outcode(a | b)});
     }
   }
+  return {accepted, rejected};
+}
+
+// Over the edges [begin, end); edgeFate is sized by the object's start (startEdges). Decided and the
+// crossing ones clipped as clipFaces does its faces, so that the clipped edges stay ascending however
+// the run is cut.
+void clipEdges(ObjectRun& o, std::vector<ChunkWork>& work, PipelineStats& stats, size_t begin, size_t end,
+               bool parallel) {
+  const size_t chunks = chunkCount(end - begin, kChunk);
+  if (work.size() < chunks) work.resize(chunks);
+  const bool everyCore = onEveryCore(begin, end, parallel);
+  auto clip = [&o, everyCore](const ClipCandidate& c) {
+    const Edge& e = o.edges[c.index];
+    if (everyCore) return clipEdge(o.clipValuesOf(e.a), o.clipValuesOf(e.b), c.planes);
+    return clipEdge(o.sharedClipValues(e.a), o.sharedClipValues(e.b), c.planes);
+  };
+  std::atomic<uint64_t> accepted = 0, rejected = 0;
+  forChunks(begin, end, everyCore, [&](size_t b, size_t e, size_t k) {
+    ChunkWork& w = work[k];
+    w.clear();
+    const TrivialCounts n = decideEdges(o, b, e, w.crossing);
+    accepted += n.accepted;
+    rejected += n.rejected;
+    if (everyCore)
+      for (const ClipCandidate& c : w.crossing) w.ranges.push_back(clip(c));
+  });
+  stats.edgesAccepted += accepted;
+  stats.edgesRejected += rejected;
+  for (size_t k = 0; k < chunks; ++k)
+    for (size_t i = 0; i < work[k].crossing.size(); ++i) {
+      const ClipCandidate& c = work[k].crossing[i];
+      const EdgeRange r = everyCore ? work[k].ranges[i] : clip(c);
+      o.edgeFate[c.index] = r.visible ? Fate::clipped : Fate::clippedAway;
+      ++(r.visible ? stats.edgesClipped : stats.edgesRejected);
+      if (!r.visible) continue;
+      o.clippedEdges.push_back(c.index);
+      o.clippedEdgeRanges.push_back(r);
+    }
 }
 
 // lecture notes 15.3.4: one test of the object's bounding box can decide all its polygons at once.
@@ -405,11 +548,15 @@ void startObject(ObjectRun& o, const PipelineRun& run, PipelineStats& stats) {
   stats.polygons += mesh.faceCount();
 
   // The per-vertex arrays grow with the vertex pass (passVertices): sizing a million vertices' at
-  // once held the page's frame for a tenth of a second. The memory is taken here, untouched.
-  o.npcH.clear();
-  o.outcodes.clear();
-  o.npcH.reserve(mesh.vertexCount());
-  o.outcodes.reserve(mesh.vertexCount());
+  // once held the page's frame for a tenth of a second. The memory is taken here, untouched. Arrays
+  // of the mesh's size already (the run before was of the same mesh) are only overwritten: emptied
+  // and grown again, 16 MiB of zeros a million vertices were written on one core in every run.
+  if (o.npcH.size() != mesh.vertexCount()) {
+    o.npcH.clear();
+    o.outcodes.clear();
+    o.npcH.reserve(mesh.vertexCount());
+    o.outcodes.reserve(mesh.vertexCount());
+  }
   o.fate.resize(mesh.faceCount());
   o.clippedFaces.clear();
   o.clippedStart.assign(1, 0);
@@ -441,16 +588,22 @@ void startEdges(ObjectRun& o, PipelineStats& stats) {
   stats.edges += o.edges.size();
 }
 
-// Vertices [begin, end) of an object started by startObject.
-void passVertices(ObjectRun& o, PipelineStats& stats, size_t begin, size_t end) {
-  o.npcH.resize(end);
-  o.outcodes.resize(end);
-  if (o.classified()) {
-    classifyVertices(o, stats, begin, end);
-  } else {
-    // Decided by the box: the vertices are transformed (and those inside counted as mapped), not classified.
-    vertexPass(o, [code = o.boxCode](size_t, const Vec4&) { return code; }, stats, begin, end);
+// Vertices [begin, end) of an object started by startObject, in chunks (on every core when `parallel`).
+void passVertices(ObjectRun& o, PipelineStats& stats, size_t begin, size_t end, bool parallel) {
+  if (o.npcH.size() < end) {
+    o.npcH.resize(end);
+    o.outcodes.resize(end);
   }
+  std::atomic<uint64_t> mapped = 0;
+  forChunks(begin, end, parallel, [&](size_t b, size_t e, size_t) {
+    if (o.classified()) {
+      mapped += classifyVertices(o, b, e);
+    } else {
+      // Decided by the box: the vertices are transformed (and those inside counted as mapped), not classified.
+      mapped += vertexPass(o, [code = o.boxCode](size_t, const Vec4&) { return code; }, b, e);
+    }
+  });
+  stats.verticesOutput += mapped;
 }
 
 uint32_t uniformFaceSize(const Mesh& mesh) {
@@ -466,6 +619,8 @@ uint32_t uniformFaceSize(const Mesh& mesh) {
 // The run's phases for each object, in order; the units of work are its vertices, faces, edges.
 // listEdges only for a mesh whose edges this run buffer has not listed yet (the viewer clips edges).
 enum class PipelineJob::Phase : uint8_t { start, listEdges, vertices, faces, edges, finish };
+
+PipelineJob::~PipelineJob() = default;
 
 PipelineJob::PipelineJob(const Scene& scene, const PipelineOptions& options, PipelineRun& run)
     : run_(run) {
@@ -575,15 +730,15 @@ bool PipelineJob::step(uint64_t budget) {
         break;
       }
       case Phase::vertices: {
-        const size_t end = take(o.mesh->vertexCount());  // o.vertexCount() grows with the pass
-        passVertices(o, run.stats, next_, end);
+        const size_t end = take(o.mesh->vertexCount());  // o.vertexCount() may grow with the pass
+        passVertices(o, run.stats, next_, end, run.options.parallel);
         next_ = end;
         if (next_ == o.mesh->vertexCount()) nextPhase(o.classified() ? Phase::faces : Phase::finish);
         break;
       }
       case Phase::faces: {
         const size_t end = take(o.faceCount());
-        clipFaces(o, run, scratch_, run.stats, uint32_t(next_), uint32_t(end));
+        clipFaces(o, run, scratch_, work_, run.stats, uint32_t(next_), uint32_t(end));
         next_ = end;
         if (next_ == o.faceCount()) {
           finishFaces(o, run.stats);
@@ -593,7 +748,7 @@ bool PipelineJob::step(uint64_t budget) {
       }
       case Phase::edges: {
         const size_t end = take(o.edges.size());
-        clipEdges(o, run.stats, next_, end);
+        clipEdges(o, work_, run.stats, next_, end, run.options.parallel);
         next_ = end;
         if (next_ == o.edges.size()) nextPhase(Phase::finish);
         break;

@@ -39,6 +39,9 @@ struct PipelineOptions {
   ClipStrategy strategy = ClipStrategy::npc;
   bool boundingBoxTest = false;  // decide whole objects by their MC bounding box first (lecture notes 15.3.4)
   bool clipEdges = false;        // also clip every unique edge (wireframe styles and overlays)
+  /// The vertices, and the faces and edges the outcodes decide, on every core (pipeline/parallel.h;
+  /// natively only): the result is the serial run's bit for bit.
+  bool parallel = true;
 };
 
 /// What stage 4 did with a face.
@@ -179,6 +182,17 @@ struct PipelineRun {
 /// `run` must outlive the job (the scene need not: the run holds its meshes); `run` is complete only when step returns true (until then
 /// it is half old, half new: not to be shown). A job dropped before it is done leaves `run` fit to be
 /// run into again.
+namespace detail {
+struct ChunkWork;  // a chunk's share of stage 4 (pipeline.cpp)
+}  // namespace detail
+
+/// A face or an edge its outcodes could not decide (stage 4): clipped after the trivial decisions, in
+/// order, by one thread (it creates vertices and fills the clip values' cache).
+struct ClipCandidate {
+  uint32_t index;  // the face's or edge's
+  Outcode planes;  // the planes its vertices' outcodes name (OR)
+};
+
 class PipelineJob {
  public:
   /// Computes every matrix: throws vplab::Error when the camera or a transform is invalid, before
@@ -186,6 +200,7 @@ class PipelineJob {
   PipelineJob(const Scene& scene, const PipelineOptions& options, PipelineRun& run);
   PipelineJob(const PipelineJob&) = delete;
   PipelineJob& operator=(const PipelineJob&) = delete;
+  ~PipelineJob();
 
   /// Does at most about `budget` units; returns whether the run is complete.
   bool step(uint64_t budget);
@@ -197,6 +212,7 @@ class PipelineJob {
   enum class Phase : uint8_t;
   PipelineRun& run_;
   ClipScratch scratch_;
+  std::vector<detail::ChunkWork> work_;  // one a chunk of the faces or edges
   std::optional<UniqueEdgesJob> edgeJob_;  // Phase::listEdges
   size_t object_ = 0;
   Phase phase_{};

@@ -12,6 +12,7 @@ packages=(
   libglfw3-dev libglm-dev libimgui-dev libstb-dev
   libegl-dev libgl-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
   nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libgif-dev
+  libtbb-dev  # every core: the pipeline's stages over objects and faces (oneTBB)
   zlib1g-dev  # the course kit's feedback zip: zlib's crc32
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth x11-utils xdotool fonts-dejavu-core strace desktop-file-utils

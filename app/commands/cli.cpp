@@ -651,7 +651,7 @@ int runCommandLine(int argc, char** argv) {
   std::string benchOnly;
   CLI::App* benchCmd = app.add_subcommand(
       "bench", "Measure, in one run on this machine: the CPU pipeline on ~1M triangles against a floor pass and a "
-               "textbook baseline; frame times per view at 1280×720; the start-up of vplab render; the time "
+               "textbook baseline, on one core and on every core; frame times per view at 1280×720; the start-up of vplab render; the time "
                "from an input event to the updated frame; where the memory of the 1M-triangle scene goes");
   benchCmd->add_flag("--json", bench.json, "Print the report as JSON on stdout (progress goes to stderr)");
   benchCmd->add_option("--repetitions", bench.repetitions, "Rounds of the pipeline workloads (median reported)")

@@ -5,6 +5,8 @@
 #include "pipeline/pipeline.h"
 
 #include "pipeline/device_mapping.h"
+#include "pipeline/mesh.h"
+#include "pipeline/parallel.h"
 #include "pipeline/primitives.h"
 #include "pipeline/view_mapping.h"
 #include "tests/support/test_util.h"
@@ -632,6 +634,45 @@ TEST(PipelineJob, StepsOfAnySizeEqualTheWholeRun) {
     }
     expectSameRun(stepped, whole);
   }
+}
+
+// The run on every core (PipelineOptions::parallel) is the serial run bit for bit. Two spheres of
+// 300 segments (45 000 vertices, 45 000 quads and triangles; the same triangulated: 90 000
+// triangles) cut by the cube's planes and by a user plane, so that every pass is shared out in
+// several chunks (32 768 units) and crossing faces and edges lie in many of them; the three
+// strategies, with and without the box test and the edges; whole, and in steps that end inside chunks.
+TEST(Pipeline, EveryCoreEqualsOneCoreBitForBit) {
+  ASSERT_TRUE(parallelAvailable()) << "the native build shares the stages' work between cores (oneTBB)";
+  const ModelTransform cut{{0.6, 0.4, 0.5}, {{{1, 2, 3}, 20, {}}}, {1.1, 1.1, 1.1}};
+  SceneObject quads = test::shapeObject("sphere", Shape::sphere, cut, 300);
+  SceneObject triangles = quads;
+  triangles.name = "triangulated sphere";
+  triangles.transform.translate = {-0.7, -0.5, -0.4};
+  triangles.mesh = std::make_shared<const Mesh>(triangulated(*quads.mesh));
+  Scene s = test::sceneWith(test::checkCamera(), {quads, triangles});
+  s.clipPlanes.push_back({glm::normalize(Vec3(1, 1, 0)), {0.2, 0.1, 0}, true});
+  int crossingChunks = 0;
+  for (const PipelineOptions& o : {PipelineOptions{ClipStrategy::npc, false, true}, PipelineOptions{ClipStrategy::wc, true, true},
+                                   PipelineOptions{ClipStrategy::divideFirst, false, false},
+                                   PipelineOptions{ClipStrategy::npc, true, false}}) {
+    SCOPED_TRACE(std::string(toString(o.strategy)) + (o.boundingBoxTest ? " box" : "") + (o.clipEdges ? " edges" : ""));
+    PipelineOptions serial = o, parallel = o;
+    serial.parallel = false;
+    parallel.parallel = true;
+    const PipelineRun one = runPipeline(s, serial);
+    for (const ObjectRun& r : one.objects) {
+      ASSERT_GT(r.vertexCount(), 32768u);
+      ASSERT_GT(r.clippedFaces.size(), 100u) << "faces crossing planes in many chunks";
+      crossingChunks += r.clippedFaces.front() / 32768 != r.clippedFaces.back() / 32768;
+    }
+    expectSameRun(runPipeline(s, parallel), one);
+    PipelineRun stepped;
+    PipelineJob job(s, parallel, stepped);
+    while (!job.step(50'001)) {
+    }
+    expectSameRun(stepped, one);
+  }
+  EXPECT_GT(crossingChunks, 0);
 }
 
 // A job dropped half way (a newer camera replaced it) leaves its run fit to be run into again.
