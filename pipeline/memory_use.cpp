@@ -35,6 +35,7 @@ MemoryUse memoryUse(const PipelineRun& run) {
                      {"run.edge fates, clipped edges",
                       heapBytes(o.edgeFate) + heapBytes(o.clippedEdges) + heapBytes(o.clippedEdgeRanges)},
                      {"run.clip value cache", heapBytes(o.valueSlots) + heapBytes(o.values)},
+                     {"run.face clusters", heapBytes(o.faceClusters)},
                      {"run.userForms", heapBytes(o.userForms)}});
   accumulate(use, {{"run.objects", heapBytes(run.objects)}});
   return use;

@@ -158,6 +158,38 @@ bool UniqueEdgesJob::step(uint64_t budget) {
   }
 }
 
+FaceCluster faceCluster(const Mesh& mesh, size_t c, std::vector<uint32_t>& v) {
+  // Vertices up to kJoin apart are joined into one interval: the few between cost less to read than
+  // an interval more. A cluster whose intervals together are over kMostRead times its corners is read
+  // face by face instead (reading the intervals would cost more than the faces' own outcodes).
+  constexpr uint32_t kJoin = 16, kMostRead = 8;
+  const size_t f0 = c * FaceCluster::kFaces, f1 = std::min(mesh.faceCount(), f0 + FaceCluster::kFaces);
+  v.assign(mesh.indices.begin() + mesh.faceStart[f0], mesh.indices.begin() + mesh.faceStart[f1]);
+  if (v.empty()) return {};
+  std::sort(v.begin(), v.end());
+  FaceCluster k;
+  uint64_t read = 0;
+  uint32_t first = v.front(), last = v.front();
+  auto close = [&] {
+    if (k.runs == FaceCluster::kRuns) return false;
+    k.first[k.runs] = first;
+    k.last[k.runs] = last;
+    ++k.runs;
+    read += uint64_t(last - first) + 1;
+    return true;
+  };
+  for (uint32_t x : v) {
+    if (x - last <= kJoin) {
+      last = x;
+      continue;
+    }
+    if (!close()) return {};
+    first = last = x;
+  }
+  if (!close() || read > uint64_t(kMostRead) * v.size()) return {};
+  return k;
+}
+
 Mesh triangulated(const Mesh& mesh) {
   Mesh out;
   out.positions = mesh.positions;

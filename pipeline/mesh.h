@@ -86,6 +86,23 @@ class UniqueEdgesJob {
   std::vector<Edge> edges_;
 };
 
+/// Where the vertices of a cluster of faces lie: the faces [c · kFaces, (c + 1) · kFaces) of a mesh (the
+/// last cluster may have fewer), and at most kRuns intervals [first, last] of vertex numbers that hold
+/// every vertex of those faces (and maybe a few between them, which only make a test of them
+/// stricter). No interval (runs 0) when the vertices lie scattered. The face pass decides a cluster's
+/// faces at once when the outcodes of its intervals agree (lecture notes 15.3.4: the bounding box test
+/// for a group of faces, by its vertices' own outcodes): a mesh made row by row, as a sphere or a
+/// grid, has a cluster's vertices in two or three runs.
+struct FaceCluster {
+  static constexpr uint32_t kFaces = 64, kRuns = 4;
+  std::array<uint32_t, kRuns> first{}, last{};
+  uint32_t runs = 0;
+};
+/// The number of clusters of the mesh's faces.
+inline size_t clusterCount(const Mesh& mesh) { return (mesh.faceCount() + FaceCluster::kFaces - 1) / FaceCluster::kFaces; }
+/// Cluster c of the mesh; `scratch` is any buffer (reused between calls).
+FaceCluster faceCluster(const Mesh& mesh, size_t c, std::vector<uint32_t>& scratch);
+
 /// The same mesh with each face split into a fan of triangles (for the GPU and benchmarks).
 Mesh triangulated(const Mesh& mesh);
 

@@ -101,6 +101,7 @@ ClipValues ObjectRun::clipValuesOf(uint32_t v) const {
 }
 
 const ClipValues& ObjectRun::sharedClipValues(uint32_t v) {
+  if (valueSlots.size() != vertexCount()) valueSlots.assign(vertexCount(), 0);  // the first run that uses it
   uint64_t& slot = valueSlots[v];
   if (slot >> 32 == generation) return values[uint32_t(slot)];
   slot = uint64_t(generation) << 32 | uint32_t(values.size());
@@ -218,24 +219,25 @@ uint64_t classifyVertices(ObjectRun& o, size_t begin, size_t end) {
 // (about 0.1 ms) outweighs handing it to a core, small enough that two cores finish together.
 constexpr size_t kChunk = size_t(1) << 15;
 
-// Calls body(chunkBegin, chunkEnd, k) for the chunks k of [begin, end).
+// Calls body(chunkBegin, chunkEnd, k) for the chunks k of [begin, end), `grain` units each.
 template <class Body>
-void forChunks(size_t begin, size_t end, bool parallel, Body body) {
-  forEachChunk(chunkCount(end - begin, kChunk), parallel, [&](size_t k) {
-    const size_t b = begin + k * kChunk;
-    body(b, std::min(end, b + kChunk), k);
+void forChunks(size_t begin, size_t end, bool parallel, Body body, size_t grain = kChunk) {
+  forEachChunk(chunkCount(end - begin, grain), parallel, [&](size_t k) {
+    const size_t b = begin + k * grain;
+    body(b, std::min(end, b + grain), k);
   });
 }
 
 // ---------------------------------------------------------------- 3 the face pass (stage 4)
 
 // How each strategy presents a mesh vertex to the clipper, and what a created vertex becomes.
-// `shared`: its clip values from the run's cache (one thread clips), else worked out anew (clipping on
-// every core): the same values bit for bit either way (ObjectRun::clipValuesOf).
+// A vertex's clip values are worked out anew where they are a few subtractions (NPC, divide first:
+// cheaper than looking them up); the WC strategy's plane equations (a WC vertex and six dot products)
+// come from the run's cache when `shared` (one thread clips), else anew too (clipping on every core).
+// The same values bit for bit either way (ObjectRun::clipValuesOf).
 struct NpcSource {
   ObjectRun& o;
-  bool shared;
-  ClipValues values(uint32_t v) const { return shared ? o.sharedClipValues(v) : o.clipValuesOf(v); }
+  ClipValues values(uint32_t v) const { return o.clipValuesOf(v); }
   ClipVertex vertex(uint32_t v) const { return {o.npcH[v], values(v), v}; }
   Vec4 npcH(const ClipVertex& c) const {
     Vec4 p = c.p;
@@ -259,8 +261,7 @@ struct WcSource {
 
 struct DivideFirstSource {
   ObjectRun& o;
-  bool shared;
-  ClipValues values(uint32_t v) const { return shared ? o.sharedClipValues(v) : o.clipValuesOf(v); }
+  ClipValues values(uint32_t v) const { return o.clipValuesOf(v); }
   ClipVertex vertex(uint32_t v) const { return {dividedFirst(o.npcH[v]), values(v), v}; }
   Vec4 npcH(const ClipVertex& c) const {
     Vec4 p = c.p;
@@ -337,10 +338,9 @@ struct TrivialCounts {
   uint64_t accepted = 0, rejected = 0;
 };
 
-// Trivial accept and reject by the outcodes (lecture notes 15.2.4) over the faces [begin, end): only
-// their fates are written; the faces that cross a plane are listed in `crossing` (ascending) for
-// Sutherland–Hodgman.
-TrivialCounts decideFaces(ObjectRun& o, uint32_t begin, uint32_t end, std::vector<ClipCandidate>& crossing) {
+// Trivial accept and reject by the outcodes (lecture notes 15.2.4) over the faces [begin, end), face by
+// face: only their fates are written; the faces that cross a plane are listed in `crossing`.
+void decideEach(ObjectRun& o, uint32_t begin, uint32_t end, std::vector<ClipCandidate>& crossing, TrivialCounts& n) {
   const Mesh& mesh = *o.mesh;
   const uint32_t* idx = mesh.indices.data();
   const uint32_t* start = mesh.faceStart.data();
@@ -375,7 +375,47 @@ TrivialCounts decideFaces(ObjectRun& o, uint32_t begin, uint32_t end, std::vecto
       decide(f, all, any);
     }
   }
-  return {accepted, rejected};
+  n.accepted += accepted;
+  n.rejected += rejected;
+}
+
+// A cluster's faces decided at once (mesh.h FaceCluster; lecture notes 15.3.4): all accepted when no
+// vertex of its intervals is outside a plane, all rejected when every one is outside the same plane.
+enum class ClusterVerdict : uint8_t { inside, outside, mixed };
+ClusterVerdict clusterVerdict(const ObjectRun& o, const FaceCluster& k) {
+  if (k.runs == 0) return ClusterVerdict::mixed;
+  const Outcode* oc = o.outcodes.data();
+  Outcode all = kAllPlanes, any = 0;
+  for (uint32_t r = 0; r < k.runs; ++r)
+    for (uint32_t v = k.first[r]; v <= k.last[r]; ++v) {  // consecutive: the compiler's vector loop
+      all &= oc[v];
+      any |= oc[v];
+    }
+  return all ? ClusterVerdict::outside : any ? ClusterVerdict::mixed : ClusterVerdict::inside;
+}
+
+// The faces [begin, end): a cluster at a time when its verdict decides its faces (the cluster's
+// intervals read once instead of three outcodes a face), else face by face. A cluster's verdict holds
+// for any of its faces, so a range that cuts a cluster (a run in steps) uses it too.
+TrivialCounts decideFaces(ObjectRun& o, uint32_t begin, uint32_t end, std::vector<ClipCandidate>& crossing) {
+  TrivialCounts n;
+  for (uint32_t f = begin; f < end;) {
+    const size_t c = f / FaceCluster::kFaces;
+    const uint32_t stop = std::min(end, uint32_t((c + 1) * FaceCluster::kFaces));
+    switch (c < o.faceClusters.size() ? clusterVerdict(o, o.faceClusters[c]) : ClusterVerdict::mixed) {
+      case ClusterVerdict::inside:
+        std::fill(o.fate.begin() + f, o.fate.begin() + stop, Fate::accepted);
+        n.accepted += stop - f;
+        break;
+      case ClusterVerdict::outside:
+        std::fill(o.fate.begin() + f, o.fate.begin() + stop, Fate::rejected);
+        n.rejected += stop - f;
+        break;
+      case ClusterVerdict::mixed: decideEach(o, f, stop, crossing, n); break;
+    }
+    f = stop;
+  }
+  return n;
 }
 
 // Whether a pass over [begin, end) is shared between cores: then the faces and edges that cross a
@@ -426,12 +466,12 @@ void clipFaces(ObjectRun& o, const PipelineRun& run, ClipScratch& scratch, std::
                PipelineStats& stats, uint32_t begin, uint32_t end) {
   const bool every = onEveryCore(begin, end, run.options.parallel), shared = !every;
   switch (o.strategy) {
-    case ClipStrategy::npc: clipFaces(o, NpcSource{o, shared}, scratch, work, stats, begin, end, every); break;
+    case ClipStrategy::npc: clipFaces(o, NpcSource{o}, scratch, work, stats, begin, end, every); break;
     case ClipStrategy::wc:
       clipFaces(o, WcSource{o, shared, run.npcFromWc}, scratch, work, stats, begin, end, every);
       break;
     case ClipStrategy::divideFirst:
-      clipFaces(o, DivideFirstSource{o, shared}, scratch, work, stats, begin, end, every);
+      clipFaces(o, DivideFirstSource{o}, scratch, work, stats, begin, end, every);
       break;
   }
 }
@@ -465,10 +505,11 @@ void clipEdges(ObjectRun& o, std::vector<ChunkWork>& work, PipelineStats& stats,
   const size_t chunks = chunkCount(end - begin, kChunk);
   if (work.size() < chunks) work.resize(chunks);
   const bool everyCore = onEveryCore(begin, end, parallel);
-  auto clip = [&o, everyCore](const ClipCandidate& c) {
+  const bool shared = !everyCore && o.strategy == ClipStrategy::wc;  // as the faces' sources
+  auto clip = [&o, shared](const ClipCandidate& c) {
     const Edge& e = o.edges[c.index];
-    if (everyCore) return clipEdge(o.clipValuesOf(e.a), o.clipValuesOf(e.b), c.planes);
-    return clipEdge(o.sharedClipValues(e.a), o.sharedClipValues(e.b), c.planes);
+    if (shared) return clipEdge(o.sharedClipValues(e.a), o.sharedClipValues(e.b), c.planes);
+    return clipEdge(o.clipValuesOf(e.a), o.clipValuesOf(e.b), c.planes);
   };
   std::atomic<uint64_t> accepted = 0, rejected = 0;
   forChunks(begin, end, everyCore, [&](size_t b, size_t e, size_t k) {
@@ -588,6 +629,24 @@ void startEdges(ObjectRun& o, PipelineStats& stats) {
   stats.edges += o.edges.size();
 }
 
+// Whether the face pass has the mesh's clusters (or needs none: an object its box decides has no face pass).
+bool clustersListed(const ObjectRun& o) {
+  return !o.classified() || o.faceClusters.size() == clusterCount(*o.mesh);
+}
+
+// Clusters [from, to) of the object's mesh appended, in chunks of 512 (about a millisecond each; on
+// every core when `parallel`).
+void listClusters(ObjectRun& o, size_t from, size_t to, bool parallel) {
+  o.faceClusters.resize(to);
+  forChunks(
+      from, to, parallel,
+      [&](size_t b, size_t e, size_t) {
+        std::vector<uint32_t> scratch;
+        for (size_t c = b; c < e; ++c) o.faceClusters[c] = faceCluster(*o.mesh, c, scratch);
+      },
+      512);
+}
+
 // Vertices [begin, end) of an object started by startObject, in chunks (on every core when `parallel`).
 void passVertices(ObjectRun& o, PipelineStats& stats, size_t begin, size_t end, bool parallel) {
   if (o.npcH.size() < end) {
@@ -618,7 +677,8 @@ uint32_t uniformFaceSize(const Mesh& mesh) {
 
 // The run's phases for each object, in order; the units of work are its vertices, faces, edges.
 // listEdges only for a mesh whose edges this run buffer has not listed yet (the viewer clips edges).
-enum class PipelineJob::Phase : uint8_t { start, listEdges, vertices, faces, edges, finish };
+// listClusters for a mesh whose face clusters this run buffer has not listed yet.
+enum class PipelineJob::Phase : uint8_t { start, listEdges, listClusters, vertices, faces, edges, finish };
 
 PipelineJob::~PipelineJob() = default;
 
@@ -671,10 +731,11 @@ PipelineJob::PipelineJob(const Scene& scene, const PipelineOptions& options, Pip
   for (size_t k = 0; k < visible.size(); ++k) {
     const SceneObject& so = scene.objects[visible[k]];
     ObjectRun& o = run.objects[k];
-    if (o.mesh != so.mesh) {  // the edge list, the face size and the value cache belong to the mesh
+    if (o.mesh != so.mesh) {  // the edge list, the face size, the clusters and the value cache belong to the mesh
       o.edges.clear();
+      o.faceClusters.clear();
       o.uniformFaceSize = uniformFaceSize(*so.mesh);
-      o.valueSlots.assign(so.mesh->vertexCount(), 0);
+      o.valueSlots.clear();  // sized when first used (the WC strategy's clipping)
       o.generation = 0;
     }
     o.name = so.name;
@@ -684,6 +745,7 @@ PipelineJob::PipelineJob(const Scene& scene, const PipelineOptions& options, Pip
     o.wcFromMc = wcFromMcs[k];
     total_ += so.mesh->vertexCount() + so.mesh->faceCount() + (options.clipEdges ? so.mesh->indices.size() / 2 : 0);  // edges: about half the corners
     if (options.clipEdges && o.edges.empty()) total_ += UniqueEdgesJob::units(*so.mesh);  // about: listing
+    if (o.faceClusters.size() < clusterCount(*so.mesh)) total_ += so.mesh->faceCount();
   }
   // The clipper's buffers grow to the largest face clipped (no pass over every face to size them).
   scratch_.a.reserve(16);
@@ -713,7 +775,7 @@ bool PipelineJob::step(uint64_t budget) {
           nextPhase(Phase::listEdges);
         } else {
           startEdges(o, run.stats);
-          nextPhase(Phase::vertices);
+          nextPhase(clustersListed(o) ? Phase::vertices : Phase::listClusters);
         }
         break;
       case Phase::listEdges: {
@@ -725,8 +787,20 @@ bool PipelineJob::step(uint64_t budget) {
           o.edges = edgeJob_->take();
           edgeJob_.reset();
           startEdges(o, run.stats);
-          nextPhase(Phase::vertices);
+          nextPhase(clustersListed(o) ? Phase::vertices : Phase::listClusters);
         }
+        break;
+      }
+      case Phase::listClusters: {
+        // From where the list ends (a dropped job may have left part of it), a cluster a step at least.
+        const size_t from = o.faceClusters.size();
+        const size_t to = from + size_t(std::min<uint64_t>(clusterCount(*o.mesh) - from,
+                                                           std::max<uint64_t>(1, budget / FaceCluster::kFaces)));
+        listClusters(o, from, to, run.options.parallel);
+        const uint64_t units = (to - from) * FaceCluster::kFaces;
+        budget -= std::min(budget, units);
+        done_ += units;
+        if (clustersListed(o)) nextPhase(Phase::vertices);
         break;
       }
       case Phase::vertices: {

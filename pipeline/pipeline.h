@@ -126,8 +126,10 @@ struct ObjectRun {
   EdgeRange edgeRange(size_t e) const;
   bool edgeVisible(size_t e) const { return edgeFate[e] == Fate::accepted || edgeFate[e] == Fate::clipped; }
 
-  // Cached per mesh (like `edges`): the number of vertices of every face, 0 when they differ.
+  // Cached per mesh (like `edges`): the number of vertices of every face, 0 when they differ; the
+  // clusters of faces the face pass decides at once when it can (listed in the run's steps).
   uint32_t uniformFaceSize = 0;
+  std::vector<FaceCluster> faceClusters;
   // sharedClipValues' cache: per vertex the run that filled its slot (high 32 bits) and the slot.
   std::vector<uint64_t> valueSlots;
   std::vector<ClipValues> values;

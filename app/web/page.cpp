@@ -213,7 +213,11 @@ struct Page {
     const bool due = input.changed || !input.queue.empty() || viewer.wakeIn() <= 0 || now >= nextWake;
     if (!due) return;  // idle: nothing is drawn
     input.changed = false;
+    const double start = emscripten_get_now();
     drawFrame(w, h);
+    // The frame's own work (the wasm's, and the WebGL calls it makes; not the GPU process's drawing),
+    // as a performance measure "vplab frame" (issue 42: no frame of the page's over 50 ms).
+    page::frameWorked(start, emscripten_get_now());
     nextWake = emscripten_get_now() + 1000 * std::min(viewer.wakeIn(), kLongestWait);
   }
 

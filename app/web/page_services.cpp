@@ -42,6 +42,7 @@ EM_JS(int, jsRememberLanguage, (const char* code), { return vplabPage.rememberLa
 EM_JS(void, jsReplaceLocationHash, (const char* fragment), { vplabPage.replaceHash(UTF8ToString(fragment)); });
 EM_JS(void, jsSetUnsaved, (int unsaved), { vplabPage.unsaved = !!unsaved; });
 EM_JS(void, jsFirstFrame, (), { vplabPage.firstFrame(); });
+EM_JS(void, jsFrameWorked, (double start, double end), { vplabPage.frameWorked(start, end); });
 EM_JS(void, jsKeysWanted, (int wanted), { vplabPage.keysWanted(!!wanted); });
 EM_JS(void, jsFullScreen, (int on), { vplabPage.fullScreen(!!on); });
 EM_JS(void, jsBuildInWorker, (double id, const char* text, size_t length, const char* source, const char* baseDir), {
@@ -146,6 +147,7 @@ void buildInWorker(uint64_t id, const std::string& text, const std::string& sour
 }
 
 void firstFrameDrawn() { jsFirstFrame(); }
+void frameWorked(double start, double end) { jsFrameWorked(start, end); }
 void setKeysWanted(bool wanted) { jsKeysWanted(wanted ? 1 : 0); }
 void setFullScreen(bool on) { jsFullScreen(on ? 1 : 0); }
 void setPageTitle(const std::string& title) { jsSetTitle(title.c_str()); }

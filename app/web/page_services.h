@@ -49,6 +49,8 @@ void setUnsavedChanges(bool unsaved);
 void buildInWorker(uint64_t id, const std::string& text, const std::string& source, const std::filesystem::path& baseDir);
 /// The first frame is on the canvas: resolves window.vplab.ready and notes the time.
 void firstFrameDrawn();
+/// A frame's own work from `start` to `end` (emscripten_get_now(), ms): a performance measure "vplab frame".
+void frameWorked(double start, double end);
 /// Whether a field has the keys: when none has, the page's hidden input lets go of the focus, which
 /// closes a phone's on-screen keyboard (index.html opens it, in the tap's handler).
 void setKeysWanted(bool wanted);

@@ -675,6 +675,56 @@ TEST(Pipeline, EveryCoreEqualsOneCoreBitForBit) {
   EXPECT_GT(crossingChunks, 0);
 }
 
+// The face pass decides whole clusters of faces where their vertices' outcodes agree (mesh.h
+// FaceCluster): every face's fate is still its own outcodes' verdict (AND ≠ 0: rejected; OR = 0:
+// accepted; else clipped or clipped away). Spheres of quads and of triangles (the two face loops),
+// inside, outside and across the cube's planes, with and without a user plane, whole and in steps
+// that cut clusters.
+TEST(Pipeline, FacesDecidedByClusterKeepTheirOwnVerdicts) {
+  const std::vector<std::shared_ptr<const Mesh>> meshes = {std::make_shared<const Mesh>(sphere(96)),
+                                                           std::make_shared<const Mesh>(triangulated(sphere(96)))};
+  const std::vector<ModelTransform> places = {{{0, 0, 0}, {}, {0.3, 0.3, 0.3}},
+                                              {{6, 5, 4}, {}, {1, 1, 1}},
+                                              {{0.8, 0.5, 0.3}, {{{1, 1, 0}, 30, {}}}, {0.9, 0.9, 0.9}}};
+  size_t decidedWhole = 0;
+  for (const auto& mesh : meshes)
+    for (const ModelTransform& t : places)
+      for (bool userPlane : {false, true}) {
+        SceneObject o = test::shapeObject("sphere", Shape::sphere, t);
+        o.mesh = mesh;
+        Scene s = test::sceneWith(test::checkCamera(), {o});
+        if (userPlane) s.clipPlanes.push_back({glm::normalize(Vec3(1, -1, 0.5)), {0.1, 0, 0}, true});
+        PipelineRun stepped;
+        PipelineJob job(s, {}, stepped);
+        while (!job.step(1000)) {
+        }
+        const PipelineRun whole = runPipeline(s);
+        expectSameRun(stepped, whole);
+        const ObjectRun& r = whole.objects[0];
+        ASSERT_EQ(r.faceClusters.size(), clusterCount(*mesh));
+        for (size_t f = 0; f < r.faceCount(); ++f) {
+          Outcode all = 0xffff, any = 0;
+          for (uint32_t v : mesh->face(f)) {
+            all &= r.outcodes[v];
+            any |= r.outcodes[v];
+          }
+          const Fate want = all ? Fate::rejected : any ? Fate::clipped : Fate::accepted;
+          if (want == Fate::clipped) EXPECT_TRUE(r.fate[f] == Fate::clipped || r.fate[f] == Fate::clippedAway) << f;
+          else EXPECT_EQ(r.fate[f], want) << "face " << f;
+        }
+        for (const FaceCluster& k : r.faceClusters) {
+          Outcode all = 0xffff, any = 0;
+          for (uint32_t i = 0; i < k.runs; ++i)
+            for (uint32_t v = k.first[i]; v <= k.last[i]; ++v) {
+              all &= r.outcodes[v];
+              any |= r.outcodes[v];
+            }
+          decidedWhole += k.runs > 0 && (all || !any);
+        }
+      }
+  EXPECT_GT(decidedWhole, 100u) << "clusters decided their faces at once";
+}
+
 // A job dropped half way (a newer camera replaced it) leaves its run fit to be run into again.
 TEST(PipelineJob, ADroppedJobLeavesTheRunReusable) {
   test::Rng rng(12);
