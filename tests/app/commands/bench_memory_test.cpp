@@ -6,6 +6,8 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -59,6 +61,25 @@ TEST_F(BenchMemory, ReportsEveryStructureAndThePeaksOfTheViewerAndOfRenderAll) {
     for (const char* view : {"camera", "world", "npc"})
       EXPECT_GT(m["structures"][style][view]["total_mib"].get<double>(), 0.0) << style << " " << view;
   EXPECT_GT(m["structures"]["pipeline_run"]["total_mib"].get<double>(), double(vertices * 32) / kMiB);
+  // Each list's build timed (the first time and again), and the longest of them a goal's row.
+  double longest = 0;
+  for (const char* style : {"list_build_ms_shaded", "list_build_ms_wire"})
+    for (const char* view : {"camera", "world", "npc"}) {
+      const Json& t = m["structures"][style][view];
+      ASSERT_TRUE(t.contains("first") && t.contains("again")) << style << " " << view;
+      EXPECT_GE(t["first"].get<double>(), 0.0);
+      longest = std::max({longest, t["first"].get<double>(), t["again"].get<double>()});
+    }
+  EXPECT_GT(m["structures"]["list_build_ms_shaded"]["npc"]["again"].get<double>(), 0.0)
+      << "a million clipped polygons take a measurable time";
+  bool row = false;
+  for (const Json& g : report["goals"])
+    if (g["goal"].get<std::string>().find("view list") != std::string::npos) {
+      row = true;
+      EXPECT_EQ(g["figure"].get<double>(), longest);
+      EXPECT_EQ(g["target"].get<double>(), 20.0);
+    }
+  EXPECT_TRUE(row) << "no goal row for the lists' build";
 
   // The peaks: a process showing the large scene holds at least its meshes more than the default's;
   // the figure per triangle is that difference over the triangles.
