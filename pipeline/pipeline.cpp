@@ -270,12 +270,12 @@ struct DivideFirstSource {
   }
 };
 
+}  // namespace
+
 // What a chunk of faces or edges leaves for the run when clipped on every core: the ones its
 // outcodes could not decide, and what clipping made of them, in ascending order, as the run keeps it
 // (the faces' ends in clippedStart, without the run's leading 0; created vertices numbered from the
 // mesh's vertex count within the chunk). joinChunk appends it to the run, renumbered.
-}  // namespace
-
 struct detail::ChunkWork {
   std::vector<ClipCandidate> crossing;
   ClipScratch scratch;
@@ -629,6 +629,11 @@ void startEdges(ObjectRun& o, PipelineStats& stats) {
   stats.edges += o.edges.size();
 }
 
+// The units of work a cluster's listing counts for: three a face (a face's share of the sorting, 9 ns,
+// is about three vertices of the vertex pass, a unit each), so that a step's budget takes as long in
+// this phase as in the others.
+constexpr uint64_t kClusterUnits = 3 * FaceCluster::kFaces;
+
 // Whether the face pass has the mesh's clusters (or needs none: an object its box decides has no face pass).
 bool clustersListed(const ObjectRun& o) {
   return !o.classified() || o.faceClusters.size() == clusterCount(*o.mesh);
@@ -745,7 +750,7 @@ PipelineJob::PipelineJob(const Scene& scene, const PipelineOptions& options, Pip
     o.wcFromMc = wcFromMcs[k];
     total_ += so.mesh->vertexCount() + so.mesh->faceCount() + (options.clipEdges ? so.mesh->indices.size() / 2 : 0);  // edges: about half the corners
     if (options.clipEdges && o.edges.empty()) total_ += UniqueEdgesJob::units(*so.mesh);  // about: listing
-    if (o.faceClusters.size() < clusterCount(*so.mesh)) total_ += so.mesh->faceCount();
+    if (o.faceClusters.size() < clusterCount(*so.mesh)) total_ += clusterCount(*so.mesh) * kClusterUnits;
   }
   // The clipper's buffers grow to the largest face clipped (no pass over every face to size them).
   scratch_.a.reserve(16);
@@ -795,9 +800,9 @@ bool PipelineJob::step(uint64_t budget) {
         // From where the list ends (a dropped job may have left part of it), a cluster a step at least.
         const size_t from = o.faceClusters.size();
         const size_t to = from + size_t(std::min<uint64_t>(clusterCount(*o.mesh) - from,
-                                                           std::max<uint64_t>(1, budget / FaceCluster::kFaces)));
+                                                           std::max<uint64_t>(1, budget / kClusterUnits)));
         listClusters(o, from, to, run.options.parallel);
-        const uint64_t units = (to - from) * FaceCluster::kFaces;
+        const uint64_t units = (to - from) * kClusterUnits;
         budget -= std::min(budget, units);
         done_ += units;
         if (clustersListed(o)) nextPhase(Phase::vertices);

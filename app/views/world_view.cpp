@@ -88,8 +88,9 @@ void addEdges(const ViewInput& in, float scale, DisplayList& list) {
     const RunEdges edges{&o, c, true};
     if (edges.count() == 0) continue;
     if (in.settings.overlays.fadeOutside) faded.runEdges.push_back({&o, glm::vec4(glm::vec3(c), pal.fadedAlpha), false});
-    const auto fates = std::span(o.edgeFate).first(edges.count());
-    if (std::none_of(fates.begin(), fates.end(), [](Fate f) { return f == Fate::accepted || f == Fate::clipped; })) continue;
+    size_t e = 0;
+    while (e < edges.count() && !o.edgeVisible(e)) ++e;
+    if (e == edges.count()) continue;  // no edge visible
     solid.runEdges.push_back(edges);
     if (style == Style::hiddenLine) dashed.runEdges.push_back({&o, glm::vec4(glm::vec3(c), 0.8f), true});
   }

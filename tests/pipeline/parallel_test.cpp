@@ -56,7 +56,7 @@ TEST(Parallel, HelpersRunAtTheCallersPriority) {
   std::set<std::thread::id> threads;
   std::vector<int> nices;
   auto record = [&](size_t) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));  // long enough for a busy machine to wake a helper
     std::lock_guard lock(m);
     threads.insert(std::this_thread::get_id());
     nices.push_back(niceOfThisThread());
