@@ -5,8 +5,9 @@
 // Every core (PipelineOptions::parallel, pipeline/parallel.h): the vertex pass and the trivial
 // decisions of faces and edges run over chunks of their range on every core, each chunk writing only
 // its own vertices', faces' and edges' entries; the faces and edges the outcodes cannot decide are
-// then clipped in ascending order by one thread, as the serial run clips them (they append created
-// vertices and fill the clip values' cache). So the run on every core is the serial run bit for bit.
+// clipped by their chunk's thread into the chunk's own lists, which join the run in ascending order
+// with their created vertices renumbered (ChunkWork, joinChunk). So the run on every core is the
+// serial run bit for bit.
 #include "pipeline/pipeline.h"
 
 #include "base/error.h"

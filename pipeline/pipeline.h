@@ -93,7 +93,8 @@ struct ObjectRun {
   /// then the user planes'), computed as the vertex pass computed them for the outcode.
   ClipValues clipValuesOf(uint32_t v) const;
   /// The same, computed once per vertex when a polygon or edge crossing a plane first needs them
-  /// and kept for every other one using the vertex (Hill 7.4), in a cache reused from run to run.
+  /// and kept for every other one using the vertex (Hill 7.4), in a cache reused from run to run
+  /// (the WC strategy's clipping on one thread; the others work the values out anew, as cheap).
   const ClipValues& sharedClipValues(uint32_t v);
 
   // Stage 4, per face: its fate. The faces cut with something left (fate clipped), ascending, and
