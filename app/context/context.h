@@ -40,6 +40,9 @@ class GlContext {
   virtual std::unique_ptr<GlContext> createShared() { return nullptr; }
   /// Makes no context current on the calling thread (a render thread does before it ends).
   virtual void releaseCurrent() {}
+  /// Whether glGetError waits for the GPU to run every draw queued before it (WebGL's round trip to
+  /// the browser's GPU process): then a frame's errors are read later (app/render/frame_errors.h).
+  virtual bool readingErrorsWaits() const { return false; }
 
   const GladGLContext& gl() const { return gl_; }
   /// "llvmpipe (LLVM 15.0.6, 256 bits) — 4.5 (Core Profile) Mesa 22.3.6".

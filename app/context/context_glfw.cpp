@@ -74,6 +74,7 @@ void GlfwWindow::setIcon(int width, int height, const std::uint8_t* rgba) {
   glfwGetError(nullptr);  // Wayland has no window icons: its error is not the next call's
 }
 bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_); }
+bool GlfwWindow::readingErrorsWaits() const { return false; }  // a native driver answers from its own state
 void GlfwWindow::setShouldClose(bool close) { glfwSetWindowShouldClose(window_, close ? GLFW_TRUE : GLFW_FALSE); }
 void GlfwWindow::swapBuffers() { glfwSwapBuffers(window_); }
 void GlfwWindow::framebufferSize(int& width, int& height) const { glfwGetFramebufferSize(window_, &width, &height); }

@@ -23,6 +23,7 @@ class GlfwWindow final : public GlContext {
   /// A hidden window whose context shares this window's objects (the views' render thread).
   std::unique_ptr<GlContext> createShared() override;
   void releaseCurrent() override;
+  bool readingErrorsWaits() const override;  // in the page (WebGL)
 
   GLFWwindow* handle() const { return window_; }
   void setTitle(const std::string& title);

@@ -45,6 +45,7 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title, bool deb
 std::unique_ptr<GlContext> GlfwWindow::createShared() { return nullptr; }  // the page draws its views itself
 void GlfwWindow::releaseCurrent() {}
 bool GlfwWindow::shouldClose() const { return false; }  // a page is closed by its tab, not by itself
+bool GlfwWindow::readingErrorsWaits() const { return true; }  // getError is a round trip to the GPU process
 void GlfwWindow::setShouldClose(bool) {}
 void GlfwWindow::swapBuffers() {}  // the browser presents the canvas when the frame's callback returns
 

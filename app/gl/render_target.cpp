@@ -43,8 +43,14 @@ void RenderTarget::resize(int width, int height, int samples) {
     gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msColor_.id());
     gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
   }
-  const GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
+  // Completeness depends on the attachments' formats and sample count, always the same but the count,
+  // not on the size (one the driver refuses is a GL error of the allocation above, read with the
+  // frame's errors). So it is checked once a count: in WebGL the check is a round trip that waits
+  // for every draw queued (issue 42), and the page's views are resized whenever their windows are.
+  const bool known = !checkComplete_ || samples_ == checkedSamples_;
+  const GLenum status = known ? GL_FRAMEBUFFER_COMPLETE : gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
   gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (status == GL_FRAMEBUFFER_COMPLETE) checkedSamples_ = samples_;
   if (status != GL_FRAMEBUFFER_COMPLETE)
     throw Error("the framebuffer for " + std::to_string(width) + " × " + std::to_string(height) + " × " +
                 std::to_string(samples_) + " samples is incomplete (status " + std::to_string(status) + ")");

@@ -13,7 +13,10 @@ Image readPixels(const GladGLContext& gl, GLuint framebuffer, int width, int hei
 
 class RenderTarget {
  public:
-  explicit RenderTarget(const GladGLContext& gl) : gl_(&gl) {}
+  /// `checkComplete`: whether resize asks the driver if the framebuffer is complete. Not where that
+  /// question waits for every draw queued (WebGL: GlContext::readingErrorsWaits): there a framebuffer
+  /// that is not complete makes its draws GL_INVALID_FRAMEBUFFER_OPERATION, read with the frame's errors.
+  explicit RenderTarget(const GladGLContext& gl, bool checkComplete = true) : gl_(&gl), checkComplete_(checkComplete) {}
 
   /// (Re)allocates for w × h pixels with `samples` per pixel (1: no multisampling).
   void resize(int width, int height, int samples = 1);
@@ -35,6 +38,8 @@ class RenderTarget {
  private:
   const GladGLContext* gl_;
   int width_ = 0, height_ = 0, samples_ = 1;
+  bool checkComplete_;
+  int checkedSamples_ = 0;  // the sample count found complete (0: none yet)
   Texture color_;
   Framebuffer resolved_;      // colour texture
   Framebuffer drawn_;         // the multisampled buffers, or == resolved_ when samples_ == 1

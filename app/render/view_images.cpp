@@ -73,10 +73,24 @@ GLuint drawViewInto(GlContext& context, ViewRenderer& renderer, ViewTargets& t, 
   return 0;
 }
 
-ViewImages::ViewImages(GlContext& context, ViewRenderer& renderer)
-    : ctx_(context), renderer_(renderer), targets_(context.gl()), back_(context.gl()), divideFirst_(context.gl()) {}
+namespace {
 
-ViewImages::~ViewImages() = default;
+/// Whether the views' render targets ask the driver if they are complete: not where that waits for
+/// the GPU (WebGL; gl::RenderTarget).
+bool askComplete(const GlContext& context) { return !context.readingErrorsWaits(); }
+
+}  // namespace
+
+ViewImages::ViewImages(GlContext& context, ViewRenderer& renderer)
+    : ctx_(context),
+      renderer_(renderer),
+      targets_(context.gl(), askComplete(context)),
+      back_(context.gl(), askComplete(context)),
+      divideFirst_(context.gl(), askComplete(context)) {}
+
+ViewImages::~ViewImages() {
+  if (sliceFence_) ctx_.gl().DeleteSync(sliceFence_);  // the context is current, as for the targets' objects
+}
 
 void ViewImages::useWorker(std::unique_ptr<GlContext> context, std::function<void()> wake) {
   worker_ = std::make_unique<ViewWorker>(std::move(context), std::move(wake));
@@ -93,30 +107,52 @@ void ViewImages::drawInSlices(size_t trianglesPerFrame) {
   }
 }
 
-SlicePacing SlicePacing::after(double frameSeconds) const {
-  // AIMD, as TCP paces what it sends: cut hard when a frame took far longer than aimed at, grow
+SlicePacing SlicePacing::after(double sliceSeconds, double ownSeconds) const {
+  // AIMD, as TCP paces what it sends: cut hard when a slice took far longer than aimed at, grow
   // gently when under it.
-  if (frameSeconds > kMostSeconds)  // down to kMinTriangles (a smaller start stays)
+  if (sliceSeconds > kMostSeconds || ownSeconds > kMostOwnSeconds)  // down to kMinTriangles (a smaller start stays)
     return {std::max(std::min(kMinTriangles, triangles), triangles / 2)};
-  if (frameSeconds < kAimSeconds) return {std::min(kMaxTriangles, triangles + triangles / 4)};
+  if (sliceSeconds < kAimSeconds && ownSeconds < kMostOwnSeconds / 2) return {std::min(kMaxTriangles, triangles + triangles / 4)};
   return *this;
 }
 
+void ViewImages::passedSliceFence() {
+  gpuBehind_ = false;
+  if (!sliceFence_) return;
+  const GladGLContext& gl = ctx_.gl();
+  // Its status never blocks. (Not glClientWaitSync with no wait: through emscripten's table of GL
+  // functions its 64-bit timeout is a signature mismatch, a trap.)
+  GLint status = GL_SIGNALED;
+  gl.GetSynciv(sliceFence_, GL_SYNC_STATUS, 1, nullptr, &status);
+  if (status == GL_UNSIGNALED) {
+    gpuBehind_ = ctx_.readingErrorsWaits();  // a native driver's upload does not wait: no need to hold back
+    return;
+  }
+  pacing_ = pacing_.after(std::chrono::duration<double>(std::chrono::steady_clock::now() - sliceSubmitted_).count(),
+                          fencedOwnSeconds_);
+  gl.DeleteSync(sliceFence_);
+  sliceFence_ = nullptr;
+}
+
 void ViewImages::beginFrame() {
-  const auto now = std::chrono::steady_clock::now();
-  if (pacing_.triangles > 0 && slicedLastFrame_)
-    pacing_ = pacing_.after(std::chrono::duration<double>(now - frameStart_).count());
+  if (pacing_.triangles > 0) passedSliceFence();
   trianglesLeft_ = pacing_.triangles;
-  frameStart_ = now;
-  slicedLastFrame_ = false;
   slicedThisFrame_ = false;
+  sliceOwnSeconds_ = 0;
+  listStartedThisFrame_ = false;
+  frameBegan_ = std::chrono::steady_clock::now();
   frameWaitLeft_ = kFrameWaitForViews;
   ++frameNumber_;
   for (Slot& s : slots_) s.asked = false;
 }
 
 void ViewImages::endFrame() {
-  slicedLastFrame_ = slicedThisFrame_;
+  if (slicedThisFrame_ && !sliceFence_) {
+    sliceFence_ = ctx_.gl().FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    ctx_.gl().Flush();  // a native driver starts on it (the browser sends a frame's commands anyway)
+    sliceSubmitted_ = std::chrono::steady_clock::now();
+    fencedOwnSeconds_ = sliceOwnSeconds_;
+  }
   for (Slot& s : slots_)
     if (!s.asked) {  // not shown any more: its image is not waited for
       s.pending = s.busy = false;
@@ -185,19 +221,36 @@ GLuint ViewImages::inSlices(Slot& slot, ViewRequest r, Stamp stamp) {
   try {
     gl::RenderTarget& back = back_.of(kind);
     if (!slot.slicing || !(slot.requested == stamp)) {  // a new image: its list is built now
+      // ... or in the next frame (SlicePacing::kListStartSeconds): shown busy meanwhile.
+      const double intoFrame = std::chrono::duration<double>(std::chrono::steady_clock::now() - frameBegan_).count();
+      if (listStartedThisFrame_ || (intoFrame > SlicePacing::kListStartSeconds && !slot.putOff)) {
+        slot.putOff = true;
+        slot.pending = slot.busy = true;
+        return slot.texture;
+      }
+      slot.putOff = false;
+      listStartedThisFrame_ = true;
       const bool device = kind == ViewKind::camera || kind == ViewKind::all;  // at the device's W × H
       back.resize(device ? r.scene->device.width : r.width, device ? r.scene->device.height : r.height,
                   device ? 1 : r.samples);
+      const auto timed = parts_->time("view list");
       renderer_.startSlices(kind, *r.scene, *r.run, r.settings, r.highlights, back, slot.slices);
       slot.slicing = std::move(r);
       slot.requested = std::move(stamp);
       slot.pending = true;
     }
-    if (trianglesLeft_ > 0 || slot.slices.cursor.batch == 0) {
+    if (!gpuBehind_ && (trianglesLeft_ > 0 || slot.slices.cursor.batch == 0)) {
       slicedThisFrame_ = true;
       // A slice may draw nothing of the meshes (none left in this frame) and still the rest of the
       // list up to its first fill: a view of a small scene is complete in the frame that asks.
-      if (renderer_.drawSlice(slot.slices, back, trianglesLeft_)) {
+      const auto began = std::chrono::steady_clock::now();
+      const bool complete = [&] {
+        const auto timed = parts_->time("view slice");
+        return renderer_.drawSlice(slot.slices, back, trianglesLeft_);
+      }();
+      sliceOwnSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+      if (complete) {
+        const auto timed = parts_->time("view shown");
         back.resolve();
         std::swap(targets_.of(kind), back);  // the complete image is shown; the old one drawn over next
         slot.texture = kind == ViewKind::camera || kind == ViewKind::all ? showCameraView(ctx_, targets_, *slot.slicing)
@@ -231,6 +284,10 @@ GLuint ViewImages::divideFirst(const Scene& scene, const PipelineRun& run, const
     divideFirstRevision_ = runRevision;
   }
   return divideFirst_.colorTexture();
+}
+
+bool ViewImages::listPutOff() const {
+  return std::any_of(slots_.begin(), slots_.end(), [](const Slot& s) { return s.putOff && s.pending; });
 }
 
 std::vector<ViewKind> ViewImages::notReady() const {
@@ -267,10 +324,11 @@ void ViewImages::forget() {
 
 void ViewImages::recreateGlObjects() {
   if (worker_) throw Error("the views' render thread cannot recreate its context's objects");
-  targets_ = ViewTargets(ctx_.gl());
-  back_ = ViewTargets(ctx_.gl());
-  slicedLastFrame_ = false;
-  divideFirst_ = gl::RenderTarget(ctx_.gl());
+  targets_ = ViewTargets(ctx_.gl(), askComplete(ctx_));
+  back_ = ViewTargets(ctx_.gl(), askComplete(ctx_));
+  sliceFence_ = nullptr;  // went with the context
+  gpuBehind_ = false;
+  divideFirst_ = gl::RenderTarget(ctx_.gl(), askComplete(ctx_));
   divideFirstRevision_ = 0;
   for (Slot& s : slots_) s = Slot{};
 }

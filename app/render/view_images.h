@@ -7,6 +7,7 @@
 
 #include "app/context/context.h"
 #include "app/gl/render_target.h"
+#include "app/render/frame_parts.h"
 #include "app/render/view_renderer.h"
 
 #include <array>
@@ -35,7 +36,8 @@ struct ViewRequest {
 
 /// The render targets of one image of each view, and the camera view's difference image.
 struct ViewTargets {
-  explicit ViewTargets(const GladGLContext& gl) : world(gl), camera(gl), npc(gl), morph(gl) {}
+  explicit ViewTargets(const GladGLContext& gl, bool checkComplete = true)
+      : world(gl, checkComplete), camera(gl, checkComplete), npc(gl, checkComplete), morph(gl, checkComplete) {}
   gl::RenderTarget world, camera, npc, morph;
   gl::Texture difference;
   /// The target `kind` is drawn into (the camera view's for camera and all).
@@ -49,24 +51,30 @@ GLuint drawViewInto(GlContext& context, ViewRenderer& renderer, ViewTargets& tar
 /// difference overlay the image of where it differs from the CPU's clipped polygons.
 GLuint showCameraView(GlContext& context, ViewTargets& targets, const ViewRequest& r);
 
-/// How many triangles the views drawn in slices (the page) may draw in a frame, adapted to the frame
-/// times (AIMD: halved after a frame over kMostSeconds, a quarter more after one under kAimSeconds,
-/// never under kMinTriangles unless it started lower).
+/// How many triangles the views drawn in slices (the page) may draw in a frame, adapted to how long
+/// the GPU took for the last slice (AIMD: halved after a slice over kMostSeconds, a quarter more after
+/// one under kAimSeconds, never under kMinTriangles unless it started lower).
 struct SlicePacing {
-  /// The frame time slices aim at. SwiftShader runs the draw calls after the frame that made them,
-  /// and the frame after waits for them, so a slice's cost shows in the next frame's time. (Aiming at
-  /// 55-85 ms and growing only after two fast frames in a row gave as long a longest frame on
-  /// large-mesh, and views complete in 25-30 s instead of 12-24: docs/measured.md "Large scenes in the
-  /// page".)
+  /// The time a slice aims at, from its draw calls to the GPU's fence after them (SwiftShader runs
+  /// them after the frame that made them). The next slice waits for that fence, so the page's own
+  /// work never waits for the GPU's (issue 42; docs/measured.md "Large scenes in the page").
   static constexpr double kAimSeconds = 0.05, kMostSeconds = 0.1;
+  /// The most of a frame a slice's own work may take (its polygons' buffers, their upload: a browser's
+  /// upload behind a busy GPU waits for it): over it the slice is too large, however fast the GPU.
+  static constexpr double kMostOwnSeconds = 0.02;
+  /// A view's new list (a million triangles' takes the page 20-50 ms) is started in a frame only when
+  /// no other was and the frame has spent less than this (a pipeline step, a scene's arrival), or
+  /// when it was put off once already.
+  static constexpr double kListStartSeconds = 0.01;
   /// SwiftShader draws about 400 000 triangles a second (three views of a million in 7 s): 10 000
   /// take it some 25 ms, so even a slow machine's frames keep a view filling in.
   static constexpr size_t kMinTriangles = 10000, kMaxTriangles = size_t(1) << 24;
 
   size_t triangles = 0;  // in the next frame; 0: views drawn whole
 
-  /// The pacing after a frame that drew a slice and took `frameSeconds`.
-  SlicePacing after(double frameSeconds) const;
+  /// The pacing after a slice that took the GPU `sliceSeconds` (its draw calls to its fence) and the
+  /// frame `ownSeconds` of its own work.
+  SlicePacing after(double sliceSeconds, double ownSeconds = 0) const;
 };
 
 class ViewWorker;
@@ -88,6 +96,8 @@ class ViewImages {
   /// times (SlicePacing); a view shows its last image, busy, until its new one is complete.
   /// 0: each view whole in the frame that asks for it (the default).
   void drawInSlices(size_t trianglesPerFrame);
+  /// Times a slice's list, its drawing and the camera view's showing as parts of the frame (the page).
+  void timeParts(const FrameParts& parts) { parts_ = &parts; }
 
   /// A new frame: no view asked for yet; the frame may wait a little for the render thread.
   void beginFrame();
@@ -101,6 +111,9 @@ class ViewImages {
   /// The divide-first comparison at the device's size, drawn again only for a new run.
   GLuint divideFirst(const Scene& scene, const PipelineRun& run, const DisplaySettings& settings, unsigned runRevision);
 
+  /// Whether a view's new list was put off to this frame (drawn in slices): the frame leaves the
+  /// pipeline's step for it (Viewer::updateRun).
+  bool listPutOff() const;
   /// Whether `kind` shows an older image in this frame while its current one is drawn.
   bool busy(ViewKind kind) const { return slots_[size_t(kind)].busy; }
   /// The views asked for in this frame that are busy: a screenshot waits until there are none.
@@ -159,10 +172,13 @@ class ViewImages {
     // alive for the list, which points into them), and how far.
     std::optional<ViewRequest> slicing;
     ViewRenderer::Slices slices;
+    bool putOff = false;  // its new list was put off to the next frame (inSlices)
     std::optional<ViewRequest> lastRequest;  // what its image was last drawn from (lastRequest())
   };
   GLuint onWorker(Slot& slot, ViewRequest r, Stamp stamp);
   GLuint inSlices(Slot& slot, ViewRequest r, Stamp stamp);
+  /// Whether the GPU passed the last slices' fence (gpuBehind_ when not); when it did, paces the next.
+  void passedSliceFence();
 
   static constexpr size_t kViews = kViewKindCount;
   GlContext& ctx_;
@@ -171,9 +187,17 @@ class ViewImages {
   ViewTargets back_;              // drawn in slices: the images not complete yet (swapped in when they are)
   SlicePacing pacing_;            // drawInSlices
   size_t trianglesLeft_ = 0;      // in this frame
-  bool slicedLastFrame_ = false;  // the last frame drew a slice: its time tells what one costs
   bool slicedThisFrame_ = false;
-  std::chrono::steady_clock::time_point frameStart_;
+  bool listStartedThisFrame_ = false;
+  std::chrono::steady_clock::time_point frameBegan_;
+  // The fence after the last frame's slices, until the GPU passed it: its time paces the next
+  // (SlicePacing), and in WebGL no slice is drawn meanwhile (an upload behind a busy GPU waits for it:
+  // GlContext::readingErrorsWaits).
+  GLsync sliceFence_ = nullptr;
+  std::chrono::steady_clock::time_point sliceSubmitted_;
+  double sliceOwnSeconds_ = 0;    // the slices' own work in this frame
+  double fencedOwnSeconds_ = 0;   // ... in the frame sliceFence_ follows
+  bool gpuBehind_ = false;  // in this frame: sliceFence_ not passed yet
   gl::RenderTarget divideFirst_;
   unsigned divideFirstRevision_ = 0;  // the run it was drawn from (0: none yet)
   std::array<Slot, kViews> slots_;
@@ -182,6 +206,8 @@ class ViewImages {
   uint64_t frameNumber_ = 0;
   unsigned drawn_ = 0;
   std::optional<std::string> error_;
+  FrameParts noParts_;
+  const FrameParts* parts_ = &noParts_;  // timeParts
 };
 
 }  // namespace vplab

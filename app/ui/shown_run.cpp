@@ -58,10 +58,7 @@ void ShownRun::update() {
   }
   // Once a frame: update() runs again in the frame after a change (the session's callback), and
   // the frame's share of time is to be spent once.
-  if (job_ && steppedFrame_ != frameNumber_) {
-    steppedFrame_ = frameNumber_;
-    stepJob();
-  }
+  if (job_ && steppedFrame_ != frameNumber_) stepJob();
   if (!pending_) return;
   // Only the frame that asked for the run waits for it, when it is expected in time (a small scene's
   // arrives in it); later frames only look whether it is finished.
@@ -87,6 +84,13 @@ std::shared_ptr<PipelineRun>& ShownRun::nextRun() {
 void ShownRun::stepJob() {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
+  const double spent = std::chrono::duration<double>(start - frameStart_).count();
+  // A frame left to other work (leaveFrame) leaves the run to the next, which steps whatever it has.
+  if (leaveFrame_ && skippedFrame_ + 1 != frameNumber_) skippedFrame_ = frameNumber_;
+  if (skippedFrame_ == frameNumber_) return;  // (update() runs again in a frame that changed the scene)
+  steppedFrame_ = frameNumber_;
+  // What is left of the frame's share, but at least kLeastStepSeconds (or the share, when smaller).
+  const double budget = std::max(std::min(kLeastStepSeconds, stepSeconds_), stepSeconds_ - spent);
   for (;;) {
     const Clock::time_point before = Clock::now();
     const bool done = job_->job.step(unitsPerCheck_);
@@ -98,7 +102,7 @@ void ShownRun::stepJob() {
       job_.reset();
       return;
     }
-    if (std::chrono::duration<double>(Clock::now() - start).count() >= stepSeconds_) return;
+    if (std::chrono::duration<double>(Clock::now() - start).count() >= budget) return;
   }
 }
 

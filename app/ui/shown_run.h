@@ -11,6 +11,7 @@
 #include "app/ui/viewer_state.h"
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -28,11 +29,20 @@ class ShownRun {
   /// finished. `wake` wakes the window's event wait (called on the worker). Without it (headless, the
   /// UI tests) the pipeline runs in the frame that needs it.
   void useWorker(std::function<void()> wake);
-  /// Runs the pipeline in steps from now on, spending about `secondsPerFrame` of each frame on it (a
-  /// small scene's run still completes in the frame that asks for it).
+  /// Runs the pipeline in steps from now on, spending what is left of `secondsPerFrame` from the
+  /// frame's start on it, at least kLeastStepSeconds (a small scene's run still completes in the frame
+  /// that asks for it; a frame that opened a scene leaves the run little; issue 42).
   void runInSteps(double secondsPerFrame) { stepSeconds_ = secondsPerFrame; }
+  static constexpr double kLeastStepSeconds = 0.004;
   /// A new frame: the frame that asks for a run may wait a little for it.
-  void beginFrame() { ++frameNumber_; }
+  void beginFrame() {
+    ++frameNumber_;
+    frameStart_ = std::chrono::steady_clock::now();
+    leaveFrame_ = false;
+  }
+  /// In steps: this frame has other long work (a view's list put off to it): the run takes no step in
+  /// it, unless it took none in the frame before either.
+  void leaveFrame() { leaveFrame_ = true; }
   /// Runs, or asks the worker for, a run when the shown scene or the options changed; publishes a
   /// finished one. A failed run leaves the last one and says why in state.runError.
   void update();
@@ -65,6 +75,7 @@ class ShownRun {
   uint64_t ticket_ = 0;            // the worker's run asked for last
   uint64_t askedAt_ = 0;           // the frame that asked for it
   uint64_t frameNumber_ = 0;
+  std::chrono::steady_clock::time_point frameStart_;
   bool pending_ = false;
   double lastSeconds_ = 0;         // how long the worker's last run took
   // In steps: the run under way, the scene it runs and the buffer it runs into (nextRun's).
@@ -79,6 +90,8 @@ class ShownRun {
   std::unique_ptr<Job> job_;
   uint64_t unitsPerCheck_ = 0;  // units of work between two looks at the clock
   uint64_t steppedFrame_ = 0;   // the frame that spent its share on the run in steps
+  uint64_t skippedFrame_ = 0;   // the last frame left to other work (leaveFrame) with no step
+  bool leaveFrame_ = false;
 };
 
 }  // namespace vplab

@@ -79,6 +79,7 @@ constexpr double kBusyMarkStep = 0.1;
 Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
     : ctx_(context),
       renderer_(context, uiScale),
+      errors_(context, context.readingErrorsWaits()),
       images_(context, renderer_),
       s_(std::move(scene)),
       run_(s_),
@@ -94,6 +95,7 @@ Viewer::Viewer(GlContext& context, Scene scene, float uiScale)
       windows_(s_, session_),
       menus_(context, s_, session_, images_, renderer_),
       uiScale_(uiScale) {
+  images_.timeParts(parts_);
   IMGUI_CHECKVERSION();
   imgui_ = ImGui::CreateContext();
   ImGui::SetCurrentContext(imgui_);  // CreateContext makes it current only when none is
@@ -159,7 +161,12 @@ void Viewer::setStatus(std::string message, bool error) { s_.setStatus(std::move
 
 // ---------------------------------------------------------------- 2 the frame
 
-void Viewer::updateRun() { run_.update(); }
+void Viewer::updateRun() {
+  const auto timed = parts_.time("pipeline");
+  // One long thing a frame in the page: a view's list put off to this frame, or the run's step.
+  if (images_.listPutOff()) run_.leaveFrame();
+  run_.update();
+}
 
 std::vector<ViewKind> Viewer::viewsNotReady() const {
   // While a run is under way every view shows the last one: none is of the current state.
@@ -234,10 +241,11 @@ void Viewer::drawFrame(GLuint framebuffer, int width, int height) {
   // The font atlas is locked during a frame: the scale (and with it the style) changes before one.
   if (s_.uiScale != uiScale_ || s_.display.theme != styledTheme_ || s_.touch != styledTouch_ || (s_.touch && s_.cssPixel != styledCssPixel_)) applyUiScale(s_.uiScale);
   if (settleFrames_ > 0) --settleFrames_;
+  errors_.frameStarts();
   images_.beginFrame();
   rects_.visible.clear();  // filled again by this frame's widgets
   run_.beginFrame();
-  if (session_.beginFrame()) requestFrames(2);
+  if (const auto timed = parts_.time("session"); session_.beginFrame()) requestFrames(2);
   const Scene atFrameStart = s_.doc.scene();
   const unsigned generation = s_.doc.generation();
   ImGui_ImplOpenGL3_NewFrame();
@@ -262,7 +270,47 @@ void Viewer::drawFrame(GLuint framebuffer, int width, int height) {
   s_.captionHeight = captionHeight;
   panes_.beginFrame(uiScale_, relayout_);
   menus_.beginFrame(uiScale_);
+  {
+    const auto timed = parts_.time("panels");
+    windows(now, modal);
+  }
+  images_.endFrame();
+  if (const auto error = images_.takeError()) {  // a view's image failed on the render thread: said, counted
+    setStatus(*error, true);
+    ++caught_.count;
+    caught_.last = *error;
+  }
+  {
+    const auto timed = parts_.time("panels' lists");
+    ImGui::Render();
+  }
 
+  // Going straight from one field into the next keeps some item active in every frame: the change
+  // of the active item ends one undo step and begins the next.
+  // A document started in this frame (opened, New) begins with an empty history: the scene at
+  // the frame's start belongs to the previous document.
+  const ImGuiID active = ImGui::GetActiveID();
+  if (active != lastActive_ && lastActive_ != 0 && s_.doc.generation() == generation) s_.doc.recordStep(atFrameStart);
+  lastActive_ = active;
+  // A move into a lesson's step is one undo step, recorded when it is over.
+  const bool editing = active != 0 || s_.drag.kind == Drag::Kind::handle || ui::lessonMoving(s_, now);
+  s_.doc.endFrame(editing);
+  ui::lessonEndFrame(s_, now);
+  session_.endFrame(ImGui::GetTime());
+
+  const auto timed = parts_.time("panels drawn");
+  const GladGLContext& gl = ctx_.gl();
+  gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  gl.Viewport(0, 0, width, height);
+  // The windows' background colour, opaque: the view windows have none of their own (view_panes.cpp).
+  const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+  gl.ClearColor(bg.x, bg.y, bg.z, 1.f);
+  gl.Clear(GL_COLOR_BUFFER_BIT);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  errors_.frameEnds();
+}
+
+void Viewer::windows(double now, bool modal) {
   if (!modal) menus_.shortcuts();
   if (s_.lectureMode) {
     s_.doc.endFrame(true);
@@ -295,36 +343,6 @@ void Viewer::drawFrame(GLuint framebuffer, int width, int height) {
   touchScroll_.endOfFrame(s_.touch, now);
   relayout_ = false;
   if (std::exchange(s_.lessonReframe, false)) session_.reframeLesson();
-  images_.endFrame();
-  if (const auto error = images_.takeError()) {  // a view's image failed on the render thread: said, counted
-    setStatus(*error, true);
-    ++caught_.count;
-    caught_.last = *error;
-  }
-  ImGui::Render();
-
-  // Going straight from one field into the next keeps some item active in every frame: the change
-  // of the active item ends one undo step and begins the next.
-  // A document started in this frame (opened, New) begins with an empty history: the scene at
-  // the frame's start belongs to the previous document.
-  const ImGuiID active = ImGui::GetActiveID();
-  if (active != lastActive_ && lastActive_ != 0 && s_.doc.generation() == generation) s_.doc.recordStep(atFrameStart);
-  lastActive_ = active;
-  // A move into a lesson's step is one undo step, recorded when it is over.
-  const bool editing = active != 0 || s_.drag.kind == Drag::Kind::handle || ui::lessonMoving(s_, now);
-  s_.doc.endFrame(editing);
-  ui::lessonEndFrame(s_, now);
-  session_.endFrame(ImGui::GetTime());
-
-  const GladGLContext& gl = ctx_.gl();
-  gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-  gl.Viewport(0, 0, width, height);
-  // The windows' background colour, opaque: the view windows have none of their own (view_panes.cpp).
-  const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
-  gl.ClearColor(bg.x, bg.y, bg.z, 1.f);
-  gl.Clear(GL_COLOR_BUFFER_BIT);
-  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  ctx_.checkErrors("drawing the viewer's frame");
 }
 
 // ---------------------------------------------------------------- 3 layout and windows
@@ -342,6 +360,7 @@ void Viewer::recreateGlObjects() {
   ctx_.discardErrors();
   renderer_.recreateGlObjects();
   images_.recreateGlObjects();
+  errors_.forgetFence();
   const bool es = gl::dialectOf(ctx_.gl()) == gl::GlslDialect::es300;
   if (!ImGui_ImplOpenGL3_Init(es ? "#version 300 es" : "#version 330 core"))
     throw Error("ImGui's OpenGL3 renderer could not be initialised again on the " + std::string(ctx_.backend()) + " context");

@@ -4,6 +4,7 @@
 // render --view ui`, the UI tests). It owns ImGui's context and composes the frame from its parts:
 //   ShownRun   the pipeline's run of the shown scene (app/ui/shown_run.h)
 //   ViewImages the views' images, here or on the render thread (app/render/view_images.h)
+//   FrameErrors, FrameParts  the frames' GL errors and where their time goes (app/render/frame_*.h)
 //   ViewPanes  the views in their windows and the mouse in them (app/ui/view_panes.h)
 //   Session    files, autosave, recovery, links, lessons opened, without ImGui (app/session/session.h),
 //              and its dialogs (app/ui/session_dialogs.h)
@@ -13,6 +14,7 @@
 #pragma once
 
 #include "app/context/context.h"
+#include "app/render/frame_errors.h"
 #include "app/gl/render_target.h"
 #include "app/ui/menus.h"
 #include "app/ui/panel_windows.h"
@@ -92,6 +94,8 @@ class Viewer {
   const ViewImages& images() const { return images_; }
   /// The pipeline's run of the shown scene (app/ui/shown_run.h): in the frame, on a worker thread
   /// (useWorker, the window) or in steps across frames (runInSteps, the page).
+  /// The frame's parts, timed when a sink is set (the page: app/render/frame_parts.h).
+  FrameParts& parts() { return parts_; }
   ShownRun& run() { return run_; }
   const ShownRun& run() const { return run_; }
   /// The metrics the views' labels are measured with (the tests of where the labels went).
@@ -121,6 +125,8 @@ class Viewer {
 
  private:
   void drawFrame(GLuint framebuffer, int width, int height);
+  /// The frame's windows: the menus, panels, views and dialogs (the lecture's and the embed form's few).
+  void windows(double now, bool modal);
   /// After a frame ended in `what`: ImGui's frame closed, the last good state back, the reason said.
   void recoverFrom(const std::string& what);
   /// The pipeline's run of the shown scene, when it changed (app/ui/shown_run.h).
@@ -131,6 +137,8 @@ class Viewer {
   GlContext& ctx_;
   ImGuiContext* imgui_ = nullptr;
   ViewRenderer renderer_;
+  FrameParts parts_;
+  FrameErrors errors_;  // the frames' GL errors (read later in the page: app/render/frame_errors.h)
   ViewImages images_;
   ViewerState s_;
   ShownRun run_;

@@ -43,6 +43,7 @@ EM_JS(void, jsReplaceLocationHash, (const char* fragment), { vplabPage.replaceHa
 EM_JS(void, jsSetUnsaved, (int unsaved), { vplabPage.unsaved = !!unsaved; });
 EM_JS(void, jsFirstFrame, (), { vplabPage.firstFrame(); });
 EM_JS(void, jsFrameWorked, (double start, double end), { vplabPage.frameWorked(start, end); });
+EM_JS(void, jsPartWorked, (const char* part, double start, double end), { vplabPage.partWorked(UTF8ToString(part), start, end); });
 EM_JS(void, jsKeysWanted, (int wanted), { vplabPage.keysWanted(!!wanted); });
 EM_JS(void, jsFullScreen, (int on), { vplabPage.fullScreen(!!on); });
 EM_JS(void, jsBuildInWorker, (double id, const char* text, size_t length, const char* source, const char* baseDir), {
@@ -148,6 +149,10 @@ void buildInWorker(uint64_t id, const std::string& text, const std::string& sour
 
 void firstFrameDrawn() { jsFirstFrame(); }
 void frameWorked(double start, double end) { jsFrameWorked(start, end); }
+void partWorked(const char* part, double seconds) {
+  const double end = emscripten_get_now();
+  jsPartWorked(part, end - 1000 * seconds, end);
+}
 void setKeysWanted(bool wanted) { jsKeysWanted(wanted ? 1 : 0); }
 void setFullScreen(bool on) { jsFullScreen(on ? 1 : 0); }
 void setPageTitle(const std::string& title) { jsSetTitle(title.c_str()); }

@@ -51,6 +51,9 @@ void buildInWorker(uint64_t id, const std::string& text, const std::string& sour
 void firstFrameDrawn();
 /// A frame's own work from `start` to `end` (emscripten_get_now(), ms): a performance measure "vplab frame".
 void frameWorked(double start, double end);
+/// A part of the frame (app/render/frame_parts.h) that took `seconds` and ended now: a measure
+/// "vplab part: <part>".
+void partWorked(const char* part, double seconds);
 /// Whether a field has the keys: when none has, the page's hidden input lets go of the focus, which
 /// closes a phone's on-screen keyboard (index.html opens it, in the tap's handler).
 void setKeysWanted(bool wanted);

@@ -24,18 +24,32 @@ async function waitForState(page, predicate, what, timeout = 30_000) {
   }
 }
 
+/** What the frame of `frame` ({start, duration}) spent its time on: its parts, longest first. */
+function partsOf(frame, parts) {
+  const within = parts.filter((p) => p.start >= frame.start - 0.5 && p.start + p.duration <= frame.start + frame.duration + 0.5);
+  const sums = new Map();
+  for (const p of within) sums.set(p.part, (sums.get(p.part) ?? 0) + p.duration);
+  return [...sums].sort((a, b) => b[1] - a[1]).map(([part, ms]) => `${part} ${ms.toFixed(0)}`).join(', ');
+}
+
 /**
  * Runs `action` and returns the page's frame intervals meanwhile (requestAnimationFrame, ms) and each
- * frame's own work (the page's "vplab frame" performance measures, ms; index.html frameWorked).
+ * frame's own work (the page's "vplab frame" performance measures, ms; index.html frameWorked), with
+ * each frame's start (`frames`), and the frames' parts ("vplab part: <name>" measures; partWorked).
  */
 async function framesWhile(page, action) {
   await page.evaluate(() => {
     window.__frames = [];
     window.__work = [];
     window.__stopFrames = false;
-    window.__observer = new PerformanceObserver((list) => {
-      for (const e of list.getEntriesByName('vplab frame')) window.__work.push(e.duration);
-    });
+    window.__parts = [];
+    window.__take = (entries) => {
+      for (const e of entries) {
+        if (e.name === 'vplab frame') window.__work.push({ start: e.startTime, duration: e.duration });
+        else if (e.name.startsWith('vplab part: ')) window.__parts.push({ part: e.name.slice(12), start: e.startTime, duration: e.duration });
+      }
+    };
+    window.__observer = new PerformanceObserver((list) => window.__take(list.getEntries()));
     window.__observer.observe({ entryTypes: ['measure'] });
     let last = performance.now();
     const tick = (now) => {
@@ -47,13 +61,13 @@ async function framesWhile(page, action) {
   });
   const begin = Date.now();
   await action();
-  const { intervals, work } = await page.evaluate(() => {
+  const { intervals, work, parts } = await page.evaluate(() => {
     window.__stopFrames = true;
-    for (const e of window.__observer.takeRecords()) if (e.name === 'vplab frame') window.__work.push(e.duration);
+    window.__take(window.__observer.takeRecords());
     window.__observer.disconnect();
-    return { intervals: window.__frames, work: window.__work };
+    return { intervals: window.__frames, work: window.__work, parts: window.__parts };
   });
-  return { intervals, work, seconds: (Date.now() - begin) / 1000 };
+  return { intervals, work: work.map((w) => w.duration), frames: work, parts, seconds: (Date.now() - begin) / 1000 };
 }
 
 test('a large scene loads in the worker while the page answers; Cancel keeps the open scene', { timeout: 300_000 }, async (t) => {
@@ -116,7 +130,11 @@ test('a large scene loads in the worker while the page answers; Cancel keeps the
     // asserted above, with the worker held. Here it is measured and reported, and a frame that held
     // the page for half a second (the whole scene read or drawn at once: 1.75 s before the slices)
     // fails, or on a machine so busy that the default scene's frames pass 250 ms, one over twice
-    // their longest.
+    // their longest. And the page's own work in a frame (the wasm's and the WebGL calls it makes,
+    // not SwiftShader's drawing after them) stays within 50 ms (issue 42): the scene's arrival, the
+    // run's steps, a view's new list and its slices each in frames of their own, no GL call that
+    // waits for the GPU (38-42 ms on the 2 cores this was written on, the scene's arrival and a
+    // view's first list; 164-170 ms before). The report names each long frame's parts.
     const longest = Math.max(...frames.intervals);
     const sorted = [...frames.work].sort((a, b) => a - b);
     const longestWork = sorted[sorted.length - 1];
@@ -126,9 +144,14 @@ test('a large scene loads in the worker while the page answers; Cancel keeps the
                    `(${frames.work.length} measured): median ${sorted[sorted.length >> 1].toFixed(1)} ms, the longest ` +
                    `${longestWork.toFixed(1)} ms, the five longest ${sorted.slice(-5).map((d) => d.toFixed(0)).join(', ')} ms; ` +
                    `pressing P in the default scene: the longest ${Math.max(...baseline.intervals).toFixed(0)} ms`;
+    const worst = [...frames.frames].sort((a, b) => b.duration - a.duration).slice(0, 5);
+    const where = worst.map((f) => `${f.duration.toFixed(0)} ms: ${partsOf(f, frames.parts) || 'no part measured'}`).join('; ');
+    t.diagnostic(`the five longest frames' parts (ms): ${where}`);
+    console.log(`the five longest frames' parts (ms): ${where}`);
     t.diagnostic(report);
     console.log(report);
     assert.ok(longest < Math.max(500, 2 * Math.max(...baseline.intervals)), report);
+    assert.ok(longestWork <= 50, `a frame of the page's own work took ${longestWork.toFixed(1)} ms (over 50): ${where}`);
     // The mesh the worker built is the sphere with n = 1024: the pipeline's run of it.
     assert.equal((await vplabState(page)).run.vertices, 523266);
   } finally {

@@ -3,6 +3,7 @@
 // synchronous viewer shows (the worker alone: tests/app/workers/pipeline_worker_test.cpp). And the
 // page's way without threads: the run in steps across frames.
 #include "app/ui/headless_viewer.h"
+#include "app/ui/shown_run.h"
 #include "app/workers/pipeline_worker.h"
 #include "io/dump.h"
 #include "tests/support/gl_test_support.h"
@@ -104,6 +105,47 @@ TEST(PipelineSteps, TheViewerRunsALargeSceneAcrossFramesThenShowsWhatTheSynchron
     writePng(b, (test::outputDir() / "pipeline_steps_sync.png").string());
   }
   EXPECT_EQ(differ, 0u) << "the run in steps draws what the synchronous one draws";
+}
+
+// The page's frames share their time (issue 42): the run's step takes what is left of the frame's
+// share from its start, and a frame left to a view's list (leaveFrame) takes no step, but never two
+// frames in a row, so the run always goes on. (ShownRun alone, no GL: progress says whether it stepped.)
+TEST(PipelineSteps, AStepTakesWhatIsLeftOfTheFrameAndALeftFrameNoneButNeverTwoInARow) {
+  ViewerState state(test::sphereScene(256));
+  ShownRun run(state);
+  run.runInSteps(1e-9);  // one step of the smallest size a frame: progress tells frames apart
+  run.beginFrame();
+  run.update();
+  ASSERT_TRUE(run.pending());
+  const double first = run.progress().value_or(-1);
+  EXPECT_GT(first, 0.0);
+
+  run.beginFrame();
+  run.leaveFrame();
+  run.update();
+  run.update();  // again in the same frame (the session's callback): still no step
+  EXPECT_EQ(run.progress().value_or(-1), first) << "a frame left to a view's list stepped the run";
+  run.beginFrame();
+  run.leaveFrame();
+  run.update();
+  const double second = run.progress().value_or(-1);
+  EXPECT_GT(second, first) << "two frames in a row left the run: it could starve";
+  run.beginFrame();
+  run.update();
+  EXPECT_GT(run.progress().value_or(-1), second);
+
+  // A frame that spent its share before the run's turn still steps, the least step: ~4 ms of work
+  // besides making the job, where the whole share would be 100 ms (the tolerance: the job's arrays,
+  // slower under ASan, and a step's overrun by its last check, about a millisecond's units).
+  ShownRun shared(state);
+  shared.runInSteps(0.1);
+  shared.beginFrame();
+  std::this_thread::sleep_for(std::chrono::milliseconds(110));
+  const auto before = std::chrono::steady_clock::now();
+  shared.update();
+  const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - before).count();
+  EXPECT_GT(shared.progress().value_or(1), 0.0);
+  EXPECT_LT(took, 0.05) << "the step took the whole share after the frame had spent it";
 }
 
 }  // namespace
