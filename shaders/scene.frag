@@ -1,7 +1,8 @@
 // Flat: the object's colour, unlit. Shaded (SHADED defined): ambient, diffuse and specular
 // (Blinn–Phong) from the scene's point lights, with the normal transformed by the inverse transpose
-// (lecture notes 13.5). The variants are separate programs: a software renderer runs every instruction of a
-// shader, taken branches or not, so a flat program must not carry the lighting.
+// (lecture notes 13.5); with FACE_NORMAL the normal of each fragment's plane (CPU polygons). The
+// variants are separate programs: a software renderer runs every instruction of a shader, taken
+// branches or not, so a flat program must not carry the lighting.
 // No #version line: the loader (app/gl/shader.cpp) puts "#version 330 core" or "#version 300 es" first.
 precision highp float;
 
@@ -43,9 +44,17 @@ void main() {
 #ifndef SHADED
   fragColor = vec4(color, alpha);
 #else
+  vec3 toEye = normalize(eyeWc.w == 0.0 ? eyeWc.xyz : eyeWc.xyz - wcPosition);
+#ifdef FACE_NORMAL
+  // CPU polygons share their corners, which carry no normal: the plane's, from the change of the
+  // position across the pixel (any two differences within a planar polygon span its plane), turned
+  // to the side it is seen from, as Newell's normal flipped for a back face is.
+  vec3 n = normalize(cross(dFdx(wcPosition), dFdy(wcPosition)));
+  if (dot(n, toEye) < 0.0) n = -n;
+#else
   vec3 n = normalize(wcNormal);
   if (!gl_FrontFacing) n = -n;  // polygons are lit from the side they are seen from
-  vec3 toEye = normalize(eyeWc.w == 0.0 ? eyeWc.xyz : eyeWc.xyz - wcPosition);
+#endif
   vec3 c = ambient * color;
   for (int i = 0; i < LIGHT_COUNT; ++i) {
     vec3 l = normalize(lightPositions[i] - wcPosition);

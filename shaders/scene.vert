@@ -36,7 +36,11 @@ out float gl_ClipDistance[6];
 void main() {
   vec4 wc = wcFromMc * vec4(mcPosition, 1.0);
   wcPosition = wc.xyz;
+#ifdef FACE_NORMAL
+  wcNormal = vec3(0.0);  // the fragment shader takes the plane's
+#else
   wcNormal = wcNormalFromMc * mcNormal;
+#endif
 
   volumeNpcH = volumeNpcFromWc * wc;
 #ifdef USER_PLANES

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 #include <variant>
 
 namespace vplab {
@@ -25,14 +26,17 @@ GlBackend::GlBackend(GlContext& context, float textScale)
   ctx_.checkErrors("creating the GL backend");
 }
 
-const gl::Program& GlBackend::sceneProgram(bool volumeTest, int lights, bool userPlanes) {
+const gl::Program& GlBackend::sceneProgram(bool volumeTest, int lights, bool userPlanes, bool faceNormal) {
   lights = std::clamp(lights, 0, 4);
-  std::optional<gl::Program>& p = scenePrograms_[size_t(volumeTest) + 2 * size_t(lights) + 10 * size_t(userPlanes)];
+  faceNormal = faceNormal && lights > 0;  // unlit, no normal is read
+  std::optional<gl::Program>& p =
+      scenePrograms_[size_t(volumeTest) + 2 * size_t(lights) + 10 * size_t(userPlanes) + 20 * size_t(faceNormal)];
   if (!p) {
     std::string defines;
     if (volumeTest) defines += "#define VOLUME_TEST\n";
     if (lights > 0) defines += "#define SHADED\n#define LIGHT_COUNT " + std::to_string(lights) + "\n";
     if (userPlanes) defines += "#define USER_PLANES\n";
+    if (faceNormal) defines += "#define FACE_NORMAL\n";
     p = gl::Program::fromFiles(gl_, {"scene.vert", "scene.frag"}, defines);
   }
   return *p;
@@ -60,19 +64,55 @@ void GlBackend::draw(const draw::DisplayList& list, gl::RenderTarget& target) {
 
 bool GlBackend::drawSlice(const draw::DisplayList& list, gl::RenderTarget& target, Cursor& c, size_t& triangles,
                           PolygonBuffers& polygons) {
-  // In parts of at most kTrianglesAtOnce, each rasterized before the next is given (glFinish):
-  // llvmpipe keeps every binned triangle (~130 B of setup data) until its scene is rasterized, and
-  // binning runs ahead of the rasterizer threads: a 1M-triangle view held ~140 MB of bins besides
-  // its CPU polygons' buffer, which now holds one part (issue 42, heaptrack). Parts draw what one
-  // slice does (the ViewSlices tests). WebGL gets no glFinish: the browser batches a frame anyway.
+  // In parts of at most kTrianglesAtOnce, each handed to the rasterizer (glFlush) while the next is
+  // binned, and waited for (a fence) before the one after it: llvmpipe keeps every binned triangle
+  // (~130 B of setup data) until its scene is rasterized, and binning runs ahead of the rasterizer
+  // threads: a 1M-triangle view held ~140 MB of bins besides its CPU polygons' buffer, which now
+  // holds two parts (issue 42, heaptrack). Each part waited for at once (glFinish) left the
+  // rasterizer threads idle while this thread shaded and binned the next (the NPC view of the
+  // million triangles 93 → 72 ms). Parts draw what one slice does (the ViewSlices tests). WebGL gets
+  // neither: the browser batches a frame anyway.
+  PartFence before(gl_);  // the part before the last one drawn
   for (;;) {
     const size_t given = std::min(triangles, kTrianglesAtOnce);
     size_t part = given;
     const bool done = drawPart(list, target, c, part, polygons);
     triangles -= given - part;
-    if (!es_ && part < given) gl_.Finish();  // also after the last part: a window's next frame bins more
-    if (done || triangles == 0 || part == given) return done;
+    if (!es_ && part < given) {
+      PartFence last(gl_);
+      last.put();
+      gl_.Flush();
+      before.wait();
+      before = std::move(last);
+    }
+    if (done || triangles == 0 || part == given) {
+      if (before) gl_.Finish();  // a window's next frame bins more
+      return done;
+    }
   }
+}
+
+GlBackend::PartFence::~PartFence() {
+  if (sync_) gl_->DeleteSync(sync_);
+}
+
+GlBackend::PartFence& GlBackend::PartFence::operator=(PartFence&& o) noexcept {
+  if (this != &o) {
+    if (sync_) gl_->DeleteSync(sync_);
+    gl_ = o.gl_;
+    sync_ = std::exchange(o.sync_, nullptr);
+  }
+  return *this;
+}
+
+void GlBackend::PartFence::put() { sync_ = gl_->FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0); }
+
+void GlBackend::PartFence::wait() {
+  if (!sync_) return;
+  GLenum r = GL_TIMEOUT_EXPIRED;
+  while (r == GL_TIMEOUT_EXPIRED) r = gl_->ClientWaitSync(sync_, 0, GLuint64(1'000'000'000));  // flushed already
+  if (r == GL_WAIT_FAILED) gl_->Finish();
+  gl_->DeleteSync(std::exchange(sync_, nullptr));
 }
 
 bool GlBackend::drawPart(const draw::DisplayList& list, gl::RenderTarget& target, Cursor& c, size_t& triangles,
@@ -333,93 +373,141 @@ bool GlBackend::drawMeshes(const draw::Fill& fill, const ViewCamera& camera, int
   return done;
 }
 
-void GlBackend::uploadPolygons(const draw::Fill& fill, const std::vector<PolygonSegment>& segments, GLsizei vertices,
-                               bool newSlot, PolygonBuffers& polygons) {
+void* GlBackend::startWriting(GLenum target, GLsizeiptr bytes, GLsizeiptr& capacity) {
+  if (bytes > capacity || bytes < capacity / 4) {
+    capacity = bytes + bytes / 4;
+    gl_.BufferData(target, capacity, nullptr, GL_STREAM_DRAW);
+  }
+  void* out = nullptr;
+  if (es_) {
+    polygonStaging_.resize(size_t(bytes));
+    out = polygonStaging_.data();
+  } else {
+    out = gl_.MapBufferRange(target, 0, bytes, GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_RANGE_BIT);
+  }
+  if (!out) throw Error("could not map a polygon buffer (" + std::to_string(bytes) + " bytes)");
+  return out;
+}
+
+void GlBackend::doneWriting(GLenum target, GLsizeiptr bytes) {
+  if (es_) gl_.BufferSubData(target, 0, bytes, polygonStaging_.data());
+  else gl_.UnmapBuffer(target);
+}
+
+GlBackend::PolygonBuffer& GlBackend::polygonSlot(const draw::Fill& fill, bool newSlot, PolygonBuffers& polygons) {
   if (newSlot && polygonSlot_ >= polygons.size()) {
-    PolygonBuffer b{gl::makeVertexArray(gl_), gl::makeBuffer(gl_)};
+    PolygonBuffer b{gl::makeVertexArray(gl_), gl::makeBuffer(gl_), 0,
+                    gl::makeVertexArray(gl_), gl::makeBuffer(gl_), gl::makeBuffer(gl_), 0, 0, {}};
     gl_.BindVertexArray(b.vao.id());
     gl_.BindBuffer(GL_ARRAY_BUFFER, b.vbo.id());
     gl_.EnableVertexAttribArray(0);
-    gl_.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), nullptr);
-    gl_.EnableVertexAttribArray(1);
-    gl_.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), reinterpret_cast<void*>(sizeof(glm::vec3)));
+    gl_.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    gl_.BindVertexArray(b.indexedVao.id());
+    gl_.BindBuffer(GL_ARRAY_BUFFER, b.vertices.id());
+    gl_.EnableVertexAttribArray(0);
+    gl_.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.indices.id());  // the vertex array's own binding
+    gl_.BindVertexArray(0);
     polygons.push_back(std::move(b));
   }
-  if (newSlot) ++polygonSlot_;
-  PolygonBuffer& buffer = polygons[polygonSlot_ - 1];
-  gl_.BindVertexArray(buffer.vao.id());
-  if (vertices == 0) return;  // a slice with no triangles left: only the slot taken
-  gl_.BindBuffer(GL_ARRAY_BUFFER, buffer.vbo.id());
-  const GLsizeiptr bytes = GLsizeiptr(vertices) * GLsizeiptr(2 * sizeof(glm::vec3));
-  // Storage grows by a quarter more than asked and shrinks when a quarter of it would do.
-  if (bytes > buffer.capacity || bytes < buffer.capacity / 4) {
-    buffer.capacity = bytes + bytes / 4;
-    gl_.BufferData(GL_ARRAY_BUFFER, buffer.capacity, nullptr, GL_STREAM_DRAW);
+  if (!newSlot) return polygons[polygonSlot_ - 1];
+  PolygonBuffer& slot = polygons[polygonSlot_++];
+  // The runs' vertices in NPC, mesh vertices then created ones (ObjectRun::clippedNpc), each run's
+  // once however many sets refer to it: the very points the polygons of points are made of.
+  slot.bases.assign(fill.polygons.size(), 0);
+  GLuint count = 0;
+  std::vector<std::pair<const ObjectRun*, GLuint>> runs;  // each run and its first vertex
+  for (size_t i = 0; i < fill.polygons.size(); ++i) {
+    const ObjectRun* run = fill.polygons[i].npcOf;
+    if (!run) continue;
+    auto seen = std::find_if(runs.begin(), runs.end(), [&](const auto& r) { return r.first == run; });
+    if (seen == runs.end()) {
+      seen = runs.insert(runs.end(), {run, count});
+      count += GLuint(run->vertexCount() + run->createdNpcH.size());
+    }
+    slot.bases[i] = seen->second;
   }
-  // OpenGL maps the buffer and the loop writes into it; WebGL2 has no mapping (OpenGL ES's path
-  // writes into memory of its own and hands it over with glBufferSubData).
-  glm::vec3* out = nullptr;
-  if (es_) {
-    polygonStaging_.resize(size_t(vertices) * 2);
-    out = polygonStaging_.data();
-  } else {
-    out = static_cast<glm::vec3*>(gl_.MapBufferRange(GL_ARRAY_BUFFER, 0, bytes, GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_RANGE_BIT));
+  if (count == 0) return slot;
+  gl_.BindBuffer(GL_ARRAY_BUFFER, slot.vertices.id());
+  const GLsizeiptr bytes = GLsizeiptr(count) * GLsizeiptr(sizeof(glm::vec3));
+  auto* out = static_cast<glm::vec3*>(startWriting(GL_ARRAY_BUFFER, bytes, slot.verticesCapacity));
+  for (const auto& [run, base] : runs) {
+    const uint32_t n = uint32_t(run->vertexCount() + run->createdNpcH.size());
+    for (uint32_t ref = 0; ref < n; ++ref) *out++ = glm::vec3(run->clippedNpc(ref));
   }
-  if (!out) throw Error("could not map the polygon buffer (" + std::to_string(bytes) + " bytes)");
-  std::vector<Vec3> scratch;  // a polygon worked out from the run (PolygonSet::clippedNpcOf)
-  for (const PolygonSegment& segment : segments) {
-    const draw::PolygonSet& set = fill.polygons[segment.set];
-    for (size_t k = segment.begin; k < segment.end; ++k) {
-      const std::span<const Vec3> poly = set.polygon(k, scratch);
-      if (poly.size() < 3) continue;
-      Vec3 n{0};  // Newell's normal
-      for (size_t i = 0; i < poly.size(); ++i) {
-        const Vec3 &p = poly[i], &q = poly[(i + 1) % poly.size()];
-        n += Vec3((p.y - q.y) * (p.z + q.z), (p.z - q.z) * (p.x + q.x), (p.x - q.x) * (p.y + q.y));
-      }
-      const double len = glm::length(n);
-      const glm::vec3 normal = len > 0 ? glm::vec3(n / len) : glm::vec3(0, 0, 1);
-      const glm::vec3 corner0(poly[0]);
-      for (size_t i = 1; i + 1 < poly.size(); ++i) {
-        out[0] = corner0;
-        out[1] = normal;
-        out[2] = glm::vec3(poly[i]);
-        out[3] = normal;
-        out[4] = glm::vec3(poly[i + 1]);
-        out[5] = normal;
-        out += 6;
+  doneWriting(GL_ARRAY_BUFFER, bytes);
+  return slot;
+}
+
+void GlBackend::uploadPolygons(const draw::Fill& fill, const std::vector<PolygonSegment>& segments, GLsizei vertices,
+                               GLsizei indices, PolygonBuffer& slot) {
+  if (vertices > 0) {
+    gl_.BindBuffer(GL_ARRAY_BUFFER, slot.vbo.id());
+    const GLsizeiptr bytes = GLsizeiptr(vertices) * GLsizeiptr(sizeof(glm::vec3));
+    auto* out = static_cast<glm::vec3*>(startWriting(GL_ARRAY_BUFFER, bytes, slot.capacity));
+    std::vector<Vec3> scratch;
+    for (const PolygonSegment& segment : segments) {
+      if (segment.indexed) continue;
+      const draw::PolygonSet& set = fill.polygons[segment.set];
+      for (size_t k = segment.begin; k < segment.end; ++k) {
+        const std::span<const Vec3> poly = set.polygon(k, scratch);
+        for (size_t i = 1; i + 1 < poly.size(); ++i) {
+          *out++ = glm::vec3(poly[0]);
+          *out++ = glm::vec3(poly[i]);
+          *out++ = glm::vec3(poly[i + 1]);
+        }
       }
     }
+    doneWriting(GL_ARRAY_BUFFER, bytes);
   }
-  if (es_) gl_.BufferSubData(GL_ARRAY_BUFFER, 0, bytes, polygonStaging_.data());
-  else gl_.UnmapBuffer(GL_ARRAY_BUFFER);
+  if (indices > 0) {
+    gl_.BindVertexArray(slot.indexedVao.id());  // the element array buffer is the vertex array's
+    const GLsizeiptr bytes = GLsizeiptr(indices) * GLsizeiptr(sizeof(GLuint));
+    auto* out = static_cast<GLuint*>(startWriting(GL_ELEMENT_ARRAY_BUFFER, bytes, slot.indicesCapacity));
+    for (const PolygonSegment& segment : segments) {
+      if (!segment.indexed) continue;
+      const draw::PolygonSet& set = fill.polygons[segment.set];
+      const GLuint base = slot.bases[segment.set];
+      for (size_t k = segment.begin; k < segment.end; ++k) {
+        const std::span<const uint32_t> refs = set.refs(k);
+        for (size_t i = 1; i + 1 < refs.size(); ++i) {
+          *out++ = base + refs[0];
+          *out++ = base + refs[i];
+          *out++ = base + refs[i + 1];
+        }
+      }
+    }
+    doneWriting(GL_ELEMENT_ARRAY_BUFFER, bytes);
+  }
 }
 
 bool GlBackend::drawPolygons(const draw::Fill& fill, const ViewCamera& camera, Cursor& c, size_t& triangles,
                              PolygonBuffers& polygons) {
   // The polygons of this slice: whole polygons from the cursor's (set c.mesh, polygon c.index) on
   // while the triangles last, at least one. They are fan-triangulated (a polygon of n corners gives
-  // n − 2 triangles, three GPU vertices each) into the fill's buffer and drawn: a slice writes only
-  // its own (the clipped polygons of a million triangles are 70 MB of GPU vertices).
+  // n − 2 triangles) into the fill's slot and drawn: a slice writes only its own corners or indices
+  // (the clipped polygons of a million triangles were 70 MB of GPU vertices).
   const bool resumed = c.pass == 2;
   size_t set = resumed ? c.mesh : 0, k = resumed ? size_t(c.index) : 0;
   std::vector<PolygonSegment> segments;
-  GLsizei vertices = 0;
+  GLsizei vertices = 0, indices = 0;
   bool more = false;  // polygons left for the next slice
   for (; set < fill.polygons.size() && !more; ++set, k = 0) {
     const draw::PolygonSet& s = fill.polygons[set];
-    PolygonSegment segment{set, k, k, vertices, 0};
+    const bool indexed = s.npcOf != nullptr;
+    GLsizei& used = indexed ? indices : vertices;
+    PolygonSegment segment{set, k, k, indexed, used, 0};
     for (; k < s.polygonCount(); ++k) {
       const size_t n = s.polygonSize(k), t = n >= 3 ? n - 2 : 0;
-      if (t > triangles && (vertices > 0 || triangles == 0)) {
+      if (t > triangles && (vertices + indices > 0 || triangles == 0)) {
         more = true;
         break;
       }
       triangles -= std::min(triangles, t);
-      vertices += GLsizei(3 * t);
+      used += GLsizei(3 * t);
     }
     segment.end = k;
-    segment.count = vertices - segment.first;
+    segment.count = used - segment.first;
     if (segment.count > 0) segments.push_back(segment);
     if (more) break;
   }
@@ -428,10 +516,14 @@ bool GlBackend::drawPolygons(const draw::Fill& fill, const ViewCamera& camera, C
     c.mesh = set;
     c.index = GLsizei(k);
   }
-  if (vertices == 0 && !more) return true;
-  uploadPolygons(fill, segments, vertices, !resumed, polygons);
+  PolygonBuffer& slot = polygonSlot(fill, !resumed, polygons);
+  if (vertices + indices == 0) {  // a slice with no triangles left: only the slot taken
+    gl_.BindVertexArray(0);
+    return !more;
+  }
+  uploadPolygons(fill, segments, vertices, indices, slot);
   const int lights = fill.lit ? int(std::clamp<size_t>(fill.lights.size(), 1, 4)) : 0;
-  const gl::Program& p = sceneProgram(false, lights, false);
+  const gl::Program& p = sceneProgram(false, lights, false, true);
   draw::Fill state;  // the fill's uniforms without volume test and user planes (CPU polygons are clipped)
   state.lit = fill.lit;
   state.lights = fill.lights;
@@ -442,7 +534,14 @@ bool GlBackend::drawPolygons(const draw::Fill& fill, const ViewCamera& camera, C
   p.set("wcNormalFromMc", Mat3(1.0));
   for (const PolygonSegment& segment : segments) {
     p.set("color", fill.polygons[segment.set].color);
-    gl_.DrawArrays(GL_TRIANGLES, segment.first, segment.count);
+    if (segment.indexed) {
+      gl_.BindVertexArray(slot.indexedVao.id());
+      gl_.DrawElements(GL_TRIANGLES, segment.count, GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(uintptr_t(segment.first) * sizeof(GLuint)));
+    } else {
+      gl_.BindVertexArray(slot.vao.id());
+      gl_.DrawArrays(GL_TRIANGLES, segment.first, segment.count);
+    }
   }
   gl_.BindVertexArray(0);
   return !more;

@@ -17,9 +17,11 @@
 #include "app/views/image.h"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace vplab {
@@ -33,13 +35,20 @@ class GlBackend {
   /// GL errors are left for the caller's GlContext::checkErrors, which names what it drew.
   void draw(const draw::DisplayList& list, gl::RenderTarget& target);
 
-  /// CPU polygons, fan-triangulated (position, Newell normal per corner), one buffer per polygon
-  /// fill of a list so that filling one never waits for the rasterizer to finish another. Each keeps
-  /// its storage from frame to frame and is written in place through glMapBufferRange.
+  /// CPU polygons, fan-triangulated, one slot per polygon fill of a list so that filling one never
+  /// waits for the rasterizer to finish another. Polygons of points become GPU vertices (a position
+  /// each); polygons by reference to a run's faces become indices into the run's vertices, which the
+  /// fill's first slice writes once (a mesh vertex is shaded once for the faces around it, not once a
+  /// corner). The normal comes from the fragment shader's derivatives (scene.frag, FACE_NORMAL). Each
+  /// buffer keeps its storage from frame to frame and is written in place through glMapBufferRange.
   struct PolygonBuffer {
-    gl::VertexArray vao;
+    gl::VertexArray vao;  // polygons of points: `vbo` holds a slice's fan-triangulated corners
     gl::Buffer vbo;
     GLsizeiptr capacity = 0;
+    gl::VertexArray indexedVao;  // polygons by reference: the runs' vertices and a slice's indices
+    gl::Buffer vertices, indices;
+    GLsizeiptr verticesCapacity = 0, indicesCapacity = 0;
+    std::vector<GLuint> bases;  // per polygon set of the fill: its run's first vertex in `vertices`
   };
   using PolygonBuffers = std::vector<PolygonBuffer>;
 
@@ -105,16 +114,26 @@ class GlBackend {
   bool drawMeshes(const draw::Fill& fill, const ViewCamera& camera, int samples, Cursor& cursor, size_t& triangles);
   bool drawPolygons(const draw::Fill& fill, const ViewCamera& camera, Cursor& cursor, size_t& triangles,
                     PolygonBuffers& polygons);
-  /// Polygons [begin, end) of the fill's set `set`, as GPU vertices [first, first + count).
+  /// Polygons [begin, end) of the fill's set `set`, as GPU vertices [first, first + count) of the
+  /// slot's `vbo`, or (`indexed`: a set by reference) as indices [first, first + count).
   struct PolygonSegment {
     size_t set = 0, begin = 0, end = 0;
+    bool indexed = false;
     GLint first = 0;
     GLsizei count = 0;
   };
-  /// Fan-triangulates the segments' polygons (`vertices` GPU vertices) into the fill's buffer of
-  /// `polygons`: the next one when `newSlot` (the fill's first slice), else the one it took.
+  /// The fill's slot of `polygons`: the next one when `newSlot` (the fill's first slice, which also
+  /// writes the vertices of the runs its sets refer to), else the one it took.
+  PolygonBuffer& polygonSlot(const draw::Fill& fill, bool newSlot, PolygonBuffers& polygons);
+  /// Fan-triangulates the segments' polygons into the slot: `vertices` GPU vertices of the polygons
+  /// of points, `indices` indices of those by reference.
   void uploadPolygons(const draw::Fill& fill, const std::vector<PolygonSegment>& segments, GLsizei vertices,
-                      bool newSlot, PolygonBuffers& polygons);
+                      GLsizei indices, PolygonBuffer& slot);
+  /// Room for `bytes` in the buffer bound to `target` (grown by a quarter more than asked, shrunk
+  /// when a quarter would do), mapped for writing; OpenGL ES (WebGL2), which has no mapping, gets
+  /// staging memory that doneWriting hands over with glBufferSubData.
+  void* startWriting(GLenum target, GLsizeiptr bytes, GLsizeiptr& capacity);
+  void doneWriting(GLenum target, GLsizeiptr bytes);
   /// The mesh edges of `lines` from the cursor on, while `triangles` last (two an edge); true when done.
   bool drawMeshEdges(const draw::Lines& lines, const View& view, Cursor& cursor, size_t& triangles);
   /// One OverlayBatch's worth of lines, points and triangles, primitives [first, end) of each batch
@@ -129,14 +148,31 @@ class GlBackend {
   void setFillProgram(const gl::Program& p, const draw::Fill& fill, const ViewCamera& camera, int planes);
   void setClipDistances(int planes);
 
-  /// scene.vert/.frag in the variant a fill needs (compiled on first use).
-  const gl::Program& sceneProgram(bool volumeTest, int lights, bool userPlanes);
+  /// scene.vert/.frag in the variant a fill needs (compiled on first use); `faceNormal`: lit by the
+  /// normal of the plane each fragment lies in (CPU polygons, whose corners carry none).
+  const gl::Program& sceneProgram(bool volumeTest, int lights, bool userPlanes, bool faceNormal = false);
 
   GlContext& ctx_;
   const GladGLContext& gl_;
   bool es_;  // OpenGL ES: no gl_ClipDistance enables
-  std::array<std::optional<gl::Program>, 2 * 5 * 2> scenePrograms_;
+  std::array<std::optional<gl::Program>, 2 * 5 * 2 * 2> scenePrograms_;
   GpuMeshCache meshes_;
+  /// A fence after a part of drawSlice, deleted with it.
+  class PartFence {
+   public:
+    explicit PartFence(const GladGLContext& gl) : gl_(&gl) {}
+    PartFence(PartFence&& o) noexcept : gl_(o.gl_), sync_(std::exchange(o.sync_, nullptr)) {}
+    PartFence& operator=(PartFence&& o) noexcept;
+    ~PartFence();
+    void put();
+    /// Until the rasterizer passed it (glFinish should the wait fail); then it is deleted.
+    void wait();
+    explicit operator bool() const { return sync_ != nullptr; }
+
+   private:
+    const GladGLContext* gl_;
+    GLsync sync_ = nullptr;
+  };
   /// A slice of drawSlice, up to `triangles`, with no wait for the rasterizer inside.
   bool drawPart(const draw::DisplayList& list, gl::RenderTarget& target, Cursor& cursor, size_t& triangles,
                 PolygonBuffers& polygons);
@@ -149,7 +185,7 @@ class GlBackend {
   std::unique_ptr<TextRenderer> text_;
   PolygonBuffers polygonBuffers_;  // a list drawn whole (draw)
   size_t polygonSlot_ = 0;
-  std::vector<glm::vec3> polygonStaging_;  // OpenGL ES (WebGL2): the polygons' vertices before glBufferSubData
+  std::vector<std::byte> polygonStaging_;  // OpenGL ES (WebGL2): the polygons' data before glBufferSubData
   VolumePartitions partitions_;
   std::vector<glm::vec4> labelsPlaced_;
   bool partitioned_ = true;

@@ -7,18 +7,17 @@
 
 namespace vplab::draw {
 
-size_t PolygonSet::polygonSize(size_t i) const {
-  if (clippedNpcOf) return clippedNpcOf->clippedFace(faces[i]).size();
-  return ends[i] - (i ? ends[i - 1] : 0);
+std::span<const uint32_t> PolygonSet::refs(size_t i) const {
+  return wholeFaces ? npcOf->mesh->face(faces[i]) : npcOf->clippedFace(faces[i]);
 }
 
 std::span<const Vec3> PolygonSet::polygon(size_t i, std::vector<Vec3>& scratch) const {
-  if (!clippedNpcOf) {
+  if (!npcOf) {
     const uint32_t begin = i ? ends[i - 1] : 0;
     return {points.data() + begin, ends[i] - begin};
   }
   scratch.clear();
-  for (uint32_t ref : clippedNpcOf->clippedFace(faces[i])) scratch.push_back(clippedNpcOf->clippedNpc(ref));
+  for (uint32_t ref : refs(i)) scratch.push_back(npcOf->clippedNpc(ref));
   return scratch;
 }
 

@@ -74,29 +74,38 @@ struct MeshInstance {
 };
 
 /// Polygons made on the CPU (the clipper's output), all of one colour: in flat arrays (polygon i is
-/// points[ends[i − 1] .. ends[i])), or by reference to a run's clipped faces in NPC, read when drawn
-/// (the NPC view of a million triangles copies 4 MB of face numbers instead of 72 MB of points).
+/// points[ends[i − 1] .. ends[i])), or by reference to a run's faces in NPC, read when drawn (the
+/// NPC view of a million triangles copies 4 MB of face numbers instead of 72 MB of points, and a
+/// backend can share the run's vertices between the faces that meet at them).
 struct PolygonSet {
   glm::vec3 color{1, 1, 1};
   std::vector<Vec3> points;
   std::vector<uint32_t> ends;
-  /// Set: polygon i is clipped face faces[i] of this run, divided by w (NPC). Points into the run
-  /// the list was built from, which must outlive the list.
-  const ObjectRun* clippedNpcOf = nullptr;
+  /// Set: polygon i is a face of this run in NPC: clipped face faces[i] (ObjectRun::clippedFace), or
+  /// with `wholeFaces` mesh face faces[i] as it is (one whose corners all lie in front of the eye,
+  /// w > 0: the NPC view's faded faces inside its grown cube). Either way its corners are
+  /// references into the run's vertices, mesh vertices first and then those clipping created
+  /// (ObjectRun::clippedNpc(ref), divided by w). Points into the run the list was built from, which
+  /// must outlive the list.
+  const ObjectRun* npcOf = nullptr;
+  bool wholeFaces = false;
   std::vector<uint32_t> faces;
 
   void add(std::span<const Vec3> polygon) {
     points.insert(points.end(), polygon.begin(), polygon.end());
     ends.push_back(uint32_t(points.size()));
   }
-  size_t polygonCount() const { return clippedNpcOf ? faces.size() : ends.size(); }
-  size_t polygonSize(size_t i) const;
-  /// Polygon i's points: in `points`, or (clippedNpcOf) worked out into `scratch`.
+  size_t polygonCount() const { return npcOf ? faces.size() : ends.size(); }
+  size_t polygonSize(size_t i) const { return npcOf ? refs(i).size() : ends[i] - (i ? ends[i - 1] : 0); }
+  /// Polygon i's corners as references into npcOf's vertices (npcOf set only).
+  std::span<const uint32_t> refs(size_t i) const;
+  /// Polygon i's points: in `points`, or (npcOf) worked out into `scratch`.
   std::span<const Vec3> polygon(size_t i, std::vector<Vec3>& scratch) const;
   void clear() {
     points.clear();
     ends.clear();
-    clippedNpcOf = nullptr;
+    npcOf = nullptr;
+    wholeFaces = false;
     faces.clear();
   }
 };

@@ -127,7 +127,9 @@ void npcView(const ViewInput& in, DisplayList& list) {
   // (filled styles), one set per object.
   const bool keepInside = style != Style::wire, keepFaded = isFilled(style) && ov.fadeOutside;
   std::vector<PolygonSet> inside = recycled.polygonSets(keepInside ? run.objects.size() : 0);
-  std::vector<PolygonSet> faded = recycled.polygonSets(keepFaded ? run.objects.size() : 0);
+  // Two faded sets an object: its faces whole inside the grown cube by reference, then those the
+  // grown cube cuts, copied (the same colour and alpha: their order among themselves shows nowhere).
+  std::vector<PolygonSet> faded = recycled.polygonSets(keepFaded ? 2 * run.objects.size() : 0);
   Marks outlines, dashedOutlines, newEdges, fadedOutlines;
   ClipScratch scratch;
   const bool outlined = !isFilled(style) || style == Style::hiddenLine;
@@ -145,11 +147,15 @@ void npcView(const ViewInput& in, DisplayList& list) {
   for (size_t k = 0; k < run.objects.size(); ++k) {
     const ObjectRun& o = run.objects[k];
     if (keepInside) {  // the clipped faces by number: their points are read from the run when drawn
-      inside[k].clippedNpcOf = &o;
+      inside[k].npcOf = &o;
       inside[k].faces.reserve(o.faceCount());
       inside[k].color = glm::vec3(o.color);
     }
-    if (keepFaded) faded[k].color = glm::vec3(o.color);
+    if (keepFaded) {
+      faded[2 * k].npcOf = &o;
+      faded[2 * k].wholeFaces = true;
+      faded[2 * k].color = faded[2 * k + 1].color = glm::vec3(o.color);
+    }
     const glm::vec4 c = theme::ink(pal, glm::vec4(glm::vec3(o.color), 1.f));
     const bool byReference = edgesByReference(o);
     if (byReference && !isFilled(style)) outlines.runEdges({&o, c, true}, pal.edgeWidthPx);
@@ -186,10 +192,14 @@ void npcView(const ViewInput& in, DisplayList& list) {
         }
       }
       if (ov.fadeOutside && o.fate[f] != Fate::accepted && (keepFaded || fadedCopied)) {
+        if (keepFaded && geometry::fadedFaceWhole(o, f)) {
+          faded[2 * k].faces.push_back(uint32_t(f));
+          continue;
+        }
         geometry::fadedNpcPolygon(o, f, scratch, poly);
         if (poly.size() >= 3) {
           if (fadedCopied) fadedOutlines.polyline(poly, true, fadedInk, pal.edgeWidthPx);
-          if (keepFaded) faded[k].add(poly);
+          if (keepFaded) faded[2 * k + 1].add(poly);
         }
       }
     }

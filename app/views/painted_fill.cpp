@@ -148,7 +148,7 @@ std::vector<PaintedPolygon> paintedPolygons(const Fill& fill, const DisplayList&
       painter.face(space, npcH, normal, m.color);
     }
   }
-  std::vector<Vec3> scratch;  // a polygon worked out from the run (PolygonSet::clippedNpcOf)
+  std::vector<Vec3> scratch;  // a polygon worked out from the run (PolygonSet::npcOf)
   for (const PolygonSet& s : fill.polygons)
     for (size_t i = 0; i < s.polygonCount(); ++i) {
       const std::span<const Vec3> p = s.polygon(i, scratch);

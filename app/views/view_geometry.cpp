@@ -48,20 +48,27 @@ Boundary grownBoundary(const Vec4& p, double m) {
   return {p.x + m * p.w, (1 + m) * p.w - p.x, p.y + m * p.w, (1 + m) * p.w - p.y, p.z + m * p.w, (1 + m) * p.w - p.z};
 }
 
+bool fadedFaceWhole(const ObjectRun& o, size_t f) {
+  // Sutherland–Hodgman would keep every vertex of such a face as it is, so its faded polygon is the
+  // face divided by w, without the clipper's copies.
+  const auto face = o.mesh->face(f);
+  bool inside = face.size() >= 3;
+  for (size_t k = 0; inside && k < face.size(); ++k) {
+    const Vec4& p = o.npcH[face[k]];
+    inside = p.w > 1e-12;
+    for (double bc : grownBoundary(p, kFadedMargin)) inside = inside && bc >= 0;
+  }
+  return inside;
+}
+
 void fadedNpcPolygon(const ObjectRun& o, size_t f, ClipScratch& scratch, std::vector<Vec3>& out) {
-  constexpr double m = kFadedMargin;
   const auto face = o.mesh->face(f);
   out.clear();
-  // A face inside the grown cube (most of them): Sutherland–Hodgman would keep every vertex as it
-  // is, so the result is the face divided by w, without the clipper's copies.
-  bool inside = face.size() >= 3;
-  for (size_t k = 0; inside && k < face.size(); ++k)
-    for (double bc : grownBoundary(o.npcH[face[k]], m)) inside = inside && bc >= 0;
-  if (inside) {
-    for (uint32_t v : face)
-      if (const Vec4& p = o.npcH[v]; p.w > 1e-12) out.push_back(Vec3(p) / p.w);
+  if (fadedFaceWhole(o, f)) {  // most of them
+    for (uint32_t v : face) out.push_back(o.clippedNpc(v));
     return;
   }
+  constexpr double m = kFadedMargin;
   scratch.a.clear();
   for (uint32_t v : face) scratch.a.push_back({o.npcH[v], clipValues(grownBoundary(o.npcH[v], m)), v});
   for (const ClipVertex& c : clipPolygon(0x3f /* the six grown cube planes */, scratch))

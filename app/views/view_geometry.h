@@ -45,6 +45,9 @@ Boundary grownBoundary(const Vec4& p, double m);
 std::vector<Vec3> fadedNpcPolygon(const ObjectRun& o, size_t f, ClipScratch& scratch);
 /// The same into `out` (cleared first), without allocating once `out` has grown.
 void fadedNpcPolygon(const ObjectRun& o, size_t f, ClipScratch& scratch, std::vector<Vec3>& out);
+/// Whether face f lies inside that grown cube with every corner in front of the eye (w > 0): its
+/// faded polygon is then the face itself, divided by w (most faded faces are).
+bool fadedFaceWhole(const ObjectRun& o, size_t f);
 
 /// A label at a point of the view's space.
 struct AnchoredLabel {

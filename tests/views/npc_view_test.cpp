@@ -2,6 +2,7 @@
 // its polygon arrays kept from frame to frame.
 #include "app/views/theme.h"
 #include "app/views/view_geometry.h"
+#include "io/scene_io.h"
 #include "pipeline/primitives.h"
 #include "tests/support/test_util.h"
 #include "tests/views/view_test_support.h"
@@ -12,12 +13,61 @@
 #include <array>
 #include <cmath>
 #include <set>
+#include <string>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 namespace vplab {
 namespace {
 
 using namespace draw;
+
+// The faded rest, two sets an object: its faces inside the grown cube whole, by reference, then
+// those the grown cube cuts, as points; every face clipping cut or rejected is in one of them (or
+// has nothing left in the grown cube), in face order, as geometry::fadedNpcPolygon makes it.
+// Returns how many faces were whole and how many cut.
+std::pair<size_t, size_t> expectFadedSets(const PipelineRun& run, const Fill& faded) {
+  EXPECT_EQ(faded.polygons.size(), 2 * run.objects.size());
+  if (faded.polygons.size() != 2 * run.objects.size()) return {0, 0};
+  size_t wholeFaces = 0, cutFaces = 0;
+  for (size_t k = 0; k < run.objects.size(); ++k) {
+    const ObjectRun& o = run.objects[k];
+    const PolygonSet &whole = faded.polygons[2 * k], &cut = faded.polygons[2 * k + 1];
+    EXPECT_EQ(whole.npcOf, &o) << o.name;
+    EXPECT_TRUE(whole.wholeFaces) << o.name;
+    EXPECT_EQ(cut.npcOf, nullptr) << o.name;
+    EXPECT_EQ(whole.color, glm::vec3(o.color));
+    EXPECT_EQ(cut.color, glm::vec3(o.color));
+    size_t w = 0, c = 0;
+    ClipScratch clip;
+    std::vector<Vec3> scratch;
+    for (size_t face = 0; face < o.faceCount(); ++face) {
+      if (o.fate[face] == Fate::accepted) continue;
+      const std::vector<Vec3> expected = geometry::fadedNpcPolygon(o, face, clip);
+      if (expected.size() < 3) continue;
+      const bool isWhole = w < whole.polygonCount() && whole.faces[w] == face;
+      const PolygonSet& set = isWhole ? whole : cut;
+      if ((isWhole ? w : c) >= set.polygonCount()) {
+        ADD_FAILURE() << o.name << " face " << face << " is in neither set";
+        break;
+      }
+      const std::span<const Vec3> got = set.polygon(isWhole ? w++ : c++, scratch);
+      EXPECT_EQ(std::vector<Vec3>(got.begin(), got.end()), expected) << o.name << " face " << face;
+      // A whole face lies in the grown cube (half the cube's size on every side).
+      for (const Vec3& p : isWhole ? expected : std::vector<Vec3>{})
+        for (int i = 0; i < 3; ++i) {
+          EXPECT_GE(p[i], -geometry::kFadedMargin - 1e-12) << o.name << " face " << face;
+          EXPECT_LE(p[i], 1 + geometry::kFadedMargin + 1e-12) << o.name << " face " << face;
+        }
+    }
+    EXPECT_EQ(w, whole.polygonCount()) << o.name;
+    EXPECT_EQ(c, cut.polygonCount()) << o.name;
+    wholeFaces += w;
+    cutFaces += c;
+  }
+  return {wholeFaces, cutFaces};
+}
 
 TEST(NpcView, FilledPolygonsAreTheClippersThenTheFadedRest) {
   test::ViewFixture f(defaultScene(), Style::shaded);
@@ -35,10 +85,9 @@ TEST(NpcView, FilledPolygonsAreTheClippersThenTheFadedRest) {
       cut += o.fate[face] != Fate::accepted;
     }
     EXPECT_EQ(inside.polygons[k].polygonCount(), visible) << o.name;
-    EXPECT_LE(faded.polygons[k].polygonCount(), cut) << o.name;
     EXPECT_EQ(inside.polygons[k].color, glm::vec3(o.color));
     // The clipper's polygons are the run's, by reference: polygon i is the i-th face left, in NPC.
-    EXPECT_EQ(inside.polygons[k].clippedNpcOf, &o) << o.name;
+    EXPECT_EQ(inside.polygons[k].npcOf, &o) << o.name;
     EXPECT_TRUE(inside.polygons[k].points.empty()) << o.name;
     std::vector<Vec3> scratch;
     size_t i = 0;
@@ -51,6 +100,7 @@ TEST(NpcView, FilledPolygonsAreTheClippersThenTheFadedRest) {
       EXPECT_EQ(std::vector<Vec3>(got.begin(), got.end()), expected) << o.name << " face " << face;
     }
   }
+  EXPECT_GT(expectFadedSets(f.run, faded).first, 0u);
   EXPECT_TRUE(inside.lit);
   ASSERT_EQ(inside.lights.size(), 1u);  // one white light by the observer's eye
   EXPECT_EQ(inside.lights[0].position, Vec3(list.observer.camera.eyeWc) + Vec3(0.6, 1.2, 0.4));
@@ -61,6 +111,17 @@ TEST(NpcView, FilledPolygonsAreTheClippersThenTheFadedRest) {
   ASSERT_FALSE(triangles.empty());
   EXPECT_TRUE(triangles[0]->pushedBack);
   EXPECT_EQ(triangles[0]->depth, Depth::test);
+}
+
+// A scene with objects far outside the view volume: faces the grown cube cuts, as points.
+TEST(NpcView, FadedFacesTheGrownCubeCutsAreCopiedTheRestReferred) {
+  test::ViewFixture f(loadScene(std::string(VPLAB_ASSETS) + "/scenes/clipping-wc-vs-npc.json"), Style::shaded);
+  const DisplayList list = npcView(f.input());
+  const auto fills = test::batchesOf<Fill>(list);
+  ASSERT_EQ(fills.size(), 2u);
+  const auto [whole, cut] = expectFadedSets(f.run, *fills[1]);
+  EXPECT_GT(whole, 0u);
+  EXPECT_GT(cut, 0u);
 }
 
 // The outlines are the clipped polygons' edges, each once (two faces share it; new edges are drawn
@@ -177,7 +238,7 @@ TEST(NpcView, RunEdgesInPartsAreTheWhole) {
 
 // Where a polygon set keeps its polygons: the run's face numbers, or its own points.
 const void* storageOf(const PolygonSet& s) {
-  return s.clippedNpcOf ? static_cast<const void*>(s.faces.data()) : static_cast<const void*>(s.points.data());
+  return s.npcOf ? static_cast<const void*>(s.faces.data()) : static_cast<const void*>(s.points.data());
 }
 
 // A frame of a large scene must not allocate its polygon arrays anew (as the old renderer kept them).
@@ -190,7 +251,7 @@ TEST(NpcView, BuildingIntoThePreviousListKeepsThePolygonArrays) {
   std::vector<const void*> before;
   for (const Fill* fill : test::batchesOf<Fill>(list))
     for (const PolygonSet& s : fill->polygons) before.push_back(storageOf(s));
-  ASSERT_EQ(before.size(), 2 * f.run.objects.size());
+  ASSERT_EQ(before.size(), 3 * f.run.objects.size());  // inside, faded whole and faded cut
   npcView(f.input(), list);
   std::vector<const void*> after;
   for (const Fill* fill : test::batchesOf<Fill>(list))

@@ -10,6 +10,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 namespace vplab {
 namespace {
 
@@ -72,7 +76,7 @@ TEST(GlBackend, ABatchInASpaceTheViewDoesNotLookAtIsAnError) {
 TEST(GlBackend, ARunOfXrayBatchesDrawsTheHiddenPartsFaintly) {
   draw::DisplayList list = emptyList(40, 40, {0, 0, 0});
   draw::Fill square;
-  square.polygons.push_back({{1, 1, 1}, {{0, 0, 0.8}, {0.5, 0, 0.8}, {0.5, 1, 0.8}, {0, 1, 0.8}}, {4}, nullptr, {}});
+  square.polygons.push_back({{1, 1, 1}, {{0, 0, 0.8}, {0.5, 0, 0.8}, {0.5, 1, 0.8}, {0, 1, 0.8}}, {4}, nullptr, false, {}});
   list.add(square);
   draw::Lines red;
   red.widthPx = 4;
@@ -103,6 +107,70 @@ TEST(GlBackend, ARunOfXrayBatchesDrawsTheHiddenPartsFaintly) {
   EXPECT_LT(visibleGreen.r, 100);  // the disc's rim is darker: the centre is the colour
   EXPECT_GT(visibleGreen.g, 80);
   EXPECT_NO_THROW(test::egl().context->checkErrors("drawing the x-ray list"));
+}
+
+// CPU polygons carry no normal: the fragment shader lights each by its plane's (scene.frag,
+// FACE_NORMAL), turned to the side it is seen from. A tilted square covering the view, lit by one
+// light, against Blinn–Phong worked out here for its plane's normal at each pixel centre (the
+// observer is parallel, looking down −z: the eye's direction is +z). Tolerance 2 of 255: the
+// shader's single precision and the rounding to 8 bits; the normal of an untilted square would miss
+// by tens. Both windings give the same picture.
+TEST(GlBackend, PolygonsAreLitByTheirPlanesNormalFromTheSideTheyAreSeenFrom) {
+  const int size = 32;
+  const Vec3 n = glm::normalize(Vec3(0.35, -0.25, 1));  // the plane n · p = n · (0.5, 0.5, 0.5)
+  const double d = glm::dot(n, Vec3(0.5));
+  auto zAt = [&](double x, double y) { return (d - n.x * x - n.y * y) / n.z; };
+  std::vector<Vec3> square;
+  for (const auto& [x, y] : {std::pair{-0.1, -0.1}, {1.1, -0.1}, {1.1, 1.1}, {-0.1, 1.1}}) square.push_back({x, y, zAt(x, y)});
+  const glm::vec3 color(0.8f, 0.5f, 0.3f);
+  const Light light{{0.2, 1.4, 1.6}, {1, 1, 1}};
+  const float ambient = 0.3f;
+  auto expected = [&](int px, int py) {
+    const double x = (px + 0.5) / size, y = 1 - (py + 0.5) / size;
+    const Vec3 p(x, y, zAt(x, y)), toEye(0, 0, 1), l = glm::normalize(light.position - p);
+    const double diffuse = std::max(glm::dot(n, l), 0.0);
+    const double h = std::max(glm::dot(n, glm::normalize(l + toEye)), 0.0);
+    const double specular = diffuse > 0 ? std::pow(h, 48) : 0;
+    return glm::min(Vec3(color) * double(ambient) + light.color * (diffuse * Vec3(color) + 0.3 * specular), Vec3(1));
+  };
+  for (bool reversed : {false, true}) {
+    draw::DisplayList list = emptyList(size, size, {0, 0, 0});
+    list.observer.space = draw::Space::npc;
+    draw::Fill fill;
+    fill.space = draw::Space::npc;
+    fill.lit = true;
+    fill.lights = {light};
+    fill.ambient = ambient;
+    draw::PolygonSet set;
+    set.color = color;
+    std::vector<Vec3> corners = square;
+    if (reversed) std::reverse(corners.begin(), corners.end());
+    set.add(corners);
+    fill.polygons.push_back(set);
+    list.add(fill);
+    gl::RenderTarget target(test::egl().context->gl());
+    target.resize(size, size, 1);
+    backend().draw(list, target);
+    const Image image = target.read();
+    int worst = 0, missedByUntilted = 0;
+    for (int py = 0; py < size; ++py)
+      for (int px = 0; px < size; ++px) {
+        const Vec3 e = expected(px, py) * 255.0;
+        const Rgba got = image.at(px, py);
+        worst = std::max({worst, int(std::lround(std::abs(got.r - e.r))), int(std::lround(std::abs(got.g - e.g))),
+                          int(std::lround(std::abs(got.b - e.b)))});
+      }
+    EXPECT_LE(worst, 2) << (reversed ? "reversed" : "as given");
+    // the normal matters: the untilted square's light differs by more than the tolerance
+    const Vec3 flat = [&] {
+      const Vec3 p(0.5, 0.5, 0.5), l = glm::normalize(light.position - p), up(0, 0, 1);
+      const double diffuse = std::max(glm::dot(up, l), 0.0);
+      return Vec3(color) * double(ambient) + diffuse * Vec3(color);
+    }() * 255.0;
+    missedByUntilted = int(std::abs(image.at(size / 2, size / 2).r - flat.r));
+    EXPECT_GT(missedByUntilted, 10);
+  }
+  EXPECT_NO_THROW(test::egl().context->checkErrors("drawing the lit square"));
 }
 
 }  // namespace

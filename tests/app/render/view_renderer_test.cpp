@@ -200,3 +200,59 @@ TEST(ViewRenderer, AFaceBeyondSixteenBitIndicesHasThirtyTwoBitOnes) {
 
 }  // namespace
 }  // namespace vplab
+
+namespace vplab {
+namespace {
+
+// The NPC view's polygons by reference (the run's faces, drawn as indices into the run's vertices)
+// against the same polygons as points (fan-triangulated corners): the same triangles from the same
+// float positions through the same program, so the same pixels, byte for byte; the polygon
+// buffer's slot, each run's first vertex and the fans' indices are what this checks. With the
+// keepObjects sphere the inside and faded fills refer to seven runs each; the faded fill's sets
+// alternate between whole faces by reference and cut ones as points.
+draw::DisplayList asPoints(draw::DisplayList list) {
+  for (draw::Batch& b : list.batches) {
+    auto* fill = std::get_if<draw::Fill>(&b);
+    if (!fill) continue;
+    for (draw::PolygonSet& set : fill->polygons) {
+      if (!set.npcOf) continue;
+      draw::PolygonSet points;
+      points.color = set.color;
+      std::vector<Vec3> scratch;
+      for (size_t i = 0; i < set.polygonCount(); ++i) points.add(set.polygon(i, scratch));
+      set = std::move(points);
+    }
+  }
+  return list;
+}
+
+TEST(NpcViewPolygons, ByReferenceTheyDrawTheSamePixelsAsTheirPoints) {
+  ViewRenderer& renderer = *test::egl().renderer;
+  const Scene scene = test::cutSphereScene(true);
+  const PipelineRun run = runPipeline(scene, {ClipStrategy::npc, false, true});
+  for (Style style : {Style::shaded, Style::flat, Style::hiddenLine}) {
+    for (const auto& [yaw, pitch] : {std::pair{0.0, 0.0}, {70.0, -15.0}, {200.0, 40.0}}) {
+      DisplaySettings settings = displaySettingsFor(scene, style, 400.0 / 300.0);
+      orbitBy(settings.npc.orbit, yaw, pitch);
+      const ViewInput in{scene, run, settings, {}, 400, 300, renderer.textMetrics()};
+      draw::DisplayList list;
+      npcView(in, list);
+      size_t byReference = 0;
+      for (const draw::Batch& b : list.batches)
+        if (const auto* fill = std::get_if<draw::Fill>(&b))
+          for (const draw::PolygonSet& set : fill->polygons) byReference += set.npcOf ? set.polygonCount() : 0;
+      ASSERT_GT(byReference, 2000u) << "the sphere's faces by reference";
+      auto picture = [&](const draw::DisplayList& l) {
+        draw::Picture p{400, 300, {0, 0, 0}, {draw::Panel{0, 0, l}}};
+        return renderer.render(p);
+      };
+      const Image indexed = picture(list), points = picture(asPoints(list));
+      ASSERT_GE(test::distinctColours(indexed), 4u);
+      EXPECT_EQ(test::differingPixels(indexed, points), 0u)
+          << toString(style) << ", observer turned by " << yaw << "°, " << pitch << "°";
+    }
+  }
+}
+
+}  // namespace
+}  // namespace vplab
