@@ -395,48 +395,61 @@ void GlBackend::doneWriting(GLenum target, GLsizeiptr bytes) {
 }
 
 GlBackend::PolygonBuffer& GlBackend::polygonSlot(const draw::Fill& fill, bool newSlot, PolygonBuffers& polygons) {
-  if (newSlot && polygonSlot_ >= polygons.size()) {
-    PolygonBuffer b{gl::makeVertexArray(gl_), gl::makeBuffer(gl_), 0,
-                    gl::makeVertexArray(gl_), gl::makeBuffer(gl_), gl::makeBuffer(gl_), 0, 0, {}};
+  if (!polygons.vertices) polygons.vertices = gl::makeBuffer(gl_);
+  if (newSlot && polygonSlot_ >= polygons.slots.size()) {
+    PolygonBuffer b{gl::makeVertexArray(gl_), gl::makeBuffer(gl_), 0, gl::makeVertexArray(gl_), gl::makeBuffer(gl_), 0, {}};
     gl_.BindVertexArray(b.vao.id());
     gl_.BindBuffer(GL_ARRAY_BUFFER, b.vbo.id());
     gl_.EnableVertexAttribArray(0);
     gl_.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
     gl_.BindVertexArray(b.indexedVao.id());
-    gl_.BindBuffer(GL_ARRAY_BUFFER, b.vertices.id());
+    gl_.BindBuffer(GL_ARRAY_BUFFER, polygons.vertices.id());
     gl_.EnableVertexAttribArray(0);
     gl_.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
     gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.indices.id());  // the vertex array's own binding
     gl_.BindVertexArray(0);
-    polygons.push_back(std::move(b));
+    polygons.slots.push_back(std::move(b));
   }
-  if (!newSlot) return polygons[polygonSlot_ - 1];
-  PolygonBuffer& slot = polygons[polygonSlot_++];
-  // The runs' vertices in NPC, mesh vertices then created ones (ObjectRun::clippedNpc), each run's
-  // once however many sets refer to it: the very points the polygons of points are made of.
-  slot.bases.assign(fill.polygons.size(), 0);
-  GLuint count = 0;
-  std::vector<std::pair<const ObjectRun*, GLuint>> runs;  // each run and its first vertex
-  for (size_t i = 0; i < fill.polygons.size(); ++i) {
-    const ObjectRun* run = fill.polygons[i].npcOf;
-    if (!run) continue;
-    auto seen = std::find_if(runs.begin(), runs.end(), [&](const auto& r) { return r.first == run; });
-    if (seen == runs.end()) {
-      seen = runs.insert(runs.end(), {run, count});
+  if (!newSlot) return polygons.slots[polygonSlot_ - 1];
+  PolygonBuffer& slot = polygons.slots[polygonSlot_++];
+  writeRunVertices(fill, polygons, slot);
+  return slot;
+}
+
+void GlBackend::writeRunVertices(const draw::Fill& fill, PolygonBuffers& polygons, PolygonBuffer& slot) {
+  // The runs this draw wrote already serve its other fills (the NPC view's faded faces refer to
+  // the runs its clipped ones do): written again only for a new draw or a run not among them.
+  auto firstVertex = [&](const ObjectRun* run) -> const GLuint* {
+    for (const auto& [r, first] : polygons.runs)
+      if (r == run) return &first;
+    return nullptr;
+  };
+  bool written = polygons.serial == serial_;
+  for (const draw::PolygonSet& set : fill.polygons) written = written && (!set.npcOf || firstVertex(set.npcOf));
+  if (!written) {
+    if (polygons.serial != serial_) polygons.runs.clear();
+    polygons.serial = serial_;
+    for (const draw::PolygonSet& set : fill.polygons)
+      if (set.npcOf && !firstVertex(set.npcOf)) polygons.runs.push_back({set.npcOf, 0});
+    GLuint count = 0;
+    for (auto& [run, first] : polygons.runs) {
+      first = count;
       count += GLuint(run->vertexCount() + run->createdNpcH.size());
     }
-    slot.bases[i] = seen->second;
+    if (count > 0) {
+      gl_.BindBuffer(GL_ARRAY_BUFFER, polygons.vertices.id());
+      const GLsizeiptr bytes = GLsizeiptr(count) * GLsizeiptr(sizeof(glm::vec3));
+      auto* out = static_cast<glm::vec3*>(startWriting(GL_ARRAY_BUFFER, bytes, polygons.verticesCapacity));
+      for (const auto& [run, first] : polygons.runs) {
+        const uint32_t n = uint32_t(run->vertexCount() + run->createdNpcH.size());
+        for (uint32_t ref = 0; ref < n; ++ref) *out++ = glm::vec3(run->clippedNpc(ref));
+      }
+      doneWriting(GL_ARRAY_BUFFER, bytes);
+    }
   }
-  if (count == 0) return slot;
-  gl_.BindBuffer(GL_ARRAY_BUFFER, slot.vertices.id());
-  const GLsizeiptr bytes = GLsizeiptr(count) * GLsizeiptr(sizeof(glm::vec3));
-  auto* out = static_cast<glm::vec3*>(startWriting(GL_ARRAY_BUFFER, bytes, slot.verticesCapacity));
-  for (const auto& [run, base] : runs) {
-    const uint32_t n = uint32_t(run->vertexCount() + run->createdNpcH.size());
-    for (uint32_t ref = 0; ref < n; ++ref) *out++ = glm::vec3(run->clippedNpc(ref));
-  }
-  doneWriting(GL_ARRAY_BUFFER, bytes);
-  return slot;
+  slot.bases.assign(fill.polygons.size(), 0);
+  for (size_t i = 0; i < fill.polygons.size(); ++i)
+    if (const GLuint* first = fill.polygons[i].npcOf ? firstVertex(fill.polygons[i].npcOf) : nullptr) slot.bases[i] = *first;
 }
 
 void GlBackend::uploadPolygons(const draw::Fill& fill, const std::vector<PolygonSegment>& segments, GLsizei vertices,

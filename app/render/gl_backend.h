@@ -38,19 +38,28 @@ class GlBackend {
   /// CPU polygons, fan-triangulated, one slot per polygon fill of a list so that filling one never
   /// waits for the rasterizer to finish another. Polygons of points become GPU vertices (a position
   /// each); polygons by reference to a run's faces become indices into the run's vertices, which the
-  /// fill's first slice writes once (a mesh vertex is shaded once for the faces around it, not once a
-  /// corner). The normal comes from the fragment shader's derivatives (scene.frag, FACE_NORMAL). Each
-  /// buffer keeps its storage from frame to frame and is written in place through glMapBufferRange.
+  /// list's first slice that needs them writes once for all its fills (a mesh vertex is shaded once
+  /// for the faces around it, not once a corner). The normal comes from the fragment shader's
+  /// derivatives (scene.frag, FACE_NORMAL). Each buffer keeps its storage from frame to frame and is
+  /// written in place through glMapBufferRange.
   struct PolygonBuffer {
     gl::VertexArray vao;  // polygons of points: `vbo` holds a slice's fan-triangulated corners
     gl::Buffer vbo;
     GLsizeiptr capacity = 0;
-    gl::VertexArray indexedVao;  // polygons by reference: the runs' vertices and a slice's indices
-    gl::Buffer vertices, indices;
-    GLsizeiptr verticesCapacity = 0, indicesCapacity = 0;
-    std::vector<GLuint> bases;  // per polygon set of the fill: its run's first vertex in `vertices`
+    gl::VertexArray indexedVao;  // polygons by reference: the runs' vertices and a slice's `indices`
+    gl::Buffer indices;
+    GLsizeiptr indicesCapacity = 0;
+    std::vector<GLuint> bases;  // per polygon set of the fill: its run's first vertex
   };
-  using PolygonBuffers = std::vector<PolygonBuffer>;
+  struct PolygonBuffers {
+    std::vector<PolygonBuffer> slots;
+    /// The runs' vertices in NPC (ObjectRun::clippedNpc: mesh vertices, then those clipping made),
+    /// each run's from its first vertex in `runs`, written for draw `serial`.
+    gl::Buffer vertices;
+    GLsizeiptr verticesCapacity = 0;
+    uint64_t serial = 0;
+    std::vector<std::pair<const ObjectRun*, GLuint>> runs;
+  };
 
   /// Where a list drawn in slices goes on: the next batch and, in a fill, the next mesh instance (or
   /// polygon set), pass and index. A new Cursor is the list's start.
@@ -123,8 +132,9 @@ class GlBackend {
     GLsizei count = 0;
   };
   /// The fill's slot of `polygons`: the next one when `newSlot` (the fill's first slice, which also
-  /// writes the vertices of the runs its sets refer to), else the one it took.
+  /// finds its sets' runs' vertices, writing them unless this draw did already), else the one it took.
   PolygonBuffer& polygonSlot(const draw::Fill& fill, bool newSlot, PolygonBuffers& polygons);
+  void writeRunVertices(const draw::Fill& fill, PolygonBuffers& polygons, PolygonBuffer& slot);
   /// Fan-triangulates the segments' polygons into the slot: `vertices` GPU vertices of the polygons
   /// of points, `indices` indices of those by reference.
   void uploadPolygons(const draw::Fill& fill, const std::vector<PolygonSegment>& segments, GLsizei vertices,
@@ -177,7 +187,7 @@ class GlBackend {
   bool drawPart(const draw::DisplayList& list, gl::RenderTarget& target, Cursor& cursor, size_t& triangles,
                 PolygonBuffers& polygons);
   /// The triangles of a slice drawn before the rasterizer is waited for (drawSlice).
-  static constexpr size_t kTrianglesAtOnce = size_t(1) << 16;
+  static constexpr size_t kTrianglesAtOnce = size_t(1) << 14;
   /// The lines, points or triangles of a batch drawn at once at most (drawMarksSlice).
   static constexpr size_t kMarksAtOnce = size_t(1) << 16;
   std::vector<draw::Vertex> segmentScratch_;  // a part's segments (Lines::segmentsInto)

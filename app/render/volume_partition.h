@@ -58,12 +58,20 @@ class VolumePartitions {
   static constexpr size_t kKeptPerInstance = 4;
   Part& partFor(uint64_t serial, size_t instance);
   void start(Part& part, const draw::MeshInstance& m, const Mat4& npcFromWc, const GpuMesh& g);
-  void sideVertices(Part& part, const ObjectRun& run, size_t end);
-  void listChunk(Part& part, const Mesh& mesh, const GpuMeshChunk& chunk, Chunk& out);
+  /// One chunk's lists before their upload, as wide as its indices.
+  struct ChunkLists {
+    std::array<std::vector<uint16_t>, kLists> narrow;
+    std::array<std::vector<uint32_t>, kLists> wide;
+    std::array<size_t, kLists> count{};
+  };
+  /// The sides of vertices [begin, end): only theirs are written (blocks run on every core).
+  static void sideVertices(Part& part, const ObjectRun& run, size_t begin, size_t end);
+  /// A chunk's faces into its lists: reads only the part's sides (chunks run on every core).
+  static void listChunk(const Part& part, const Mesh& mesh, const GpuMeshChunk& chunk, ChunkLists& out);
+  void uploadChunk(const GpuMeshChunk& chunk, const ChunkLists& lists, Chunk& out);
   const GladGLContext* gl_;
   std::vector<Part> parts_;
-  std::array<std::vector<uint32_t>, kLists> scratch_;  // one chunk's lists before their upload
-  std::vector<uint16_t> shortScratch_;                  // a list of a 16-bit chunk, as uploaded
+  std::vector<ChunkLists> lists_;  // one a thread
 };
 
 }  // namespace vplab
