@@ -220,6 +220,7 @@ GLuint ViewImages::inSlices(Slot& slot, ViewRequest r, Stamp stamp) {
   const ViewKind kind = r.kind;
   try {
     gl::RenderTarget& back = back_.of(kind);
+    bool listedNow = false;
     if (!slot.slicing || !(slot.requested == stamp)) {  // a new image: its list is built now
       // ... or in the next frame (SlicePacing::kListStartSeconds): shown busy meanwhile.
       const double intoFrame = std::chrono::duration<double>(std::chrono::steady_clock::now() - frameBegan_).count();
@@ -238,8 +239,15 @@ GLuint ViewImages::inSlices(Slot& slot, ViewRequest r, Stamp stamp) {
       slot.slicing = std::move(r);
       slot.requested = std::move(stamp);
       slot.pending = true;
+      listedNow = true;
     }
-    if (!gpuBehind_ && (trianglesLeft_ > 0 || slot.slices.cursor.batch == 0)) {
+    // A list that leaves the frame past its share is drawn from the next frame on: the NPC view's
+    // first slice of a million faces writes the run's vertices (a list of 17 ms and that slice of 31 ms
+    // made one frame of the page 50 ms long). A small scene's list leaves the frame well within it.
+    const bool frameSpent =
+        listedNow &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - frameBegan_).count() > SlicePacing::kListStartSeconds;
+    if (!gpuBehind_ && !frameSpent && (trianglesLeft_ > 0 || slot.slices.cursor.batch == 0)) {
       slicedThisFrame_ = true;
       // A slice may draw nothing of the meshes (none left in this frame) and still the rest of the
       // list up to its first fill: a view of a small scene is complete in the frame that asks.

@@ -12,8 +12,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <string>
 #include <thread>
+#include <vector>
 
 namespace vplab {
 namespace {
@@ -286,16 +289,31 @@ TEST(ViewSlices, OneNewListAFrameAndNoneInALongFrameButNeverPutOffTwice) {
   for (int i = 0; i < 1000 && (images.busy(ViewKind::world) || images.busy(ViewKind::npc)); ++i) frame(settings, false);
   ASSERT_FALSE(images.busy(ViewKind::world) || images.busy(ViewKind::npc));
 
-  // Turned, in long frames only: the first puts both off, the next builds one, the one after the other.
+  // Turned, in long frames only: the first puts both off, the next builds one, the one after the other;
+  // a list built in a frame past its share is sliced from the next frame on (no slice after a list).
+  std::vector<std::string> parts;  // this frame's, in order
+  FrameParts timer;
+  timer.setSink([&](const char* part, double) { parts.emplace_back(part); });
+  images.timeParts(timer);
+  int slicedAfterAList = 0, listsInLongFrames = 0;
+  auto longFrame = [&](const DisplaySettings& s) {
+    parts.clear();
+    frame(s, true);
+    const auto list = std::find(parts.begin(), parts.end(), "view list");
+    listsInLongFrames += list != parts.end();
+    slicedAfterAList += std::find(list, parts.end(), "view slice") != parts.end();
+  };
   DisplaySettings turned = settings;
   orbitBy(turned.world.orbit, 40, 10);
   orbitBy(turned.npc.orbit, 40, 10);
-  frame(turned, true);
+  longFrame(turned);
   EXPECT_TRUE(images.listPutOff()) << "a new list in a frame that had spent its share";
   int frames = 1;
-  for (; frames < 1000 && (images.busy(ViewKind::world) || images.busy(ViewKind::npc)); ++frames) frame(turned, true);
+  for (; frames < 1000 && (images.busy(ViewKind::world) || images.busy(ViewKind::npc)); ++frames) longFrame(turned);
   EXPECT_FALSE(images.busy(ViewKind::world) || images.busy(ViewKind::npc)) << "long frames starved a view";
-  EXPECT_GE(frames, 3);
+  EXPECT_GE(frames, 4);
+  EXPECT_EQ(listsInLongFrames, 2);
+  EXPECT_EQ(slicedAfterAList, 0) << "a slice drawn after a list in a frame past its share";
   EXPECT_EQ(test::differingPixels(readTexture(gl.context->gl(), images.texture(ViewKind::npc)),
                                   drawWhole(*gl.renderer, ViewKind::npc, *scene, *run, turned, 1)), 0u);
 }
