@@ -122,7 +122,7 @@ struct VolumeTest {
 struct Fill {
   Space space = Space::wc;
   std::vector<MeshInstance> meshes;
-  std::vector<PolygonSet> polygons;  // normals: Newell's, per polygon
+  std::vector<PolygonSet> polygons;  // normals: each polygon's plane's (Newell's; GL: the fragment's derivatives)
   bool lit = false;
   std::vector<Light> lights;  // in the batch's space; the viewer's eye is the observer's
   float ambient = 0.28f;
