@@ -30,15 +30,6 @@ ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t) {
   return v;
 }
 
-void snapToPlanes(Vec4& p, uint16_t onPlanes) {
-  if (onPlanes & 1u << kLeft) p.x = 0;
-  if (onPlanes & 1u << kRight) p.x = p.w;
-  if (onPlanes & 1u << kBottom) p.y = 0;
-  if (onPlanes & 1u << kTop) p.y = p.w;
-  if (onPlanes & 1u << kBack) p.z = 0;
-  if (onPlanes & 1u << kFront) p.z = p.w;
-}
-
 namespace {
 
 // The new vertex on the edge from an inside vertex to an outside one, snapped onto the plane:

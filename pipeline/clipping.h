@@ -122,6 +122,15 @@ inline Vec3 divideByW(const Vec4& p) {
 /// Puts a homogeneous NPC point exactly onto the cube's planes in `onPlanes` (x = 0, x = w, …),
 /// removing the rounding of the interpolation so clipped output never lies a few ulps outside the
 /// cube. (User planes are not axis planes: their vertices keep the interpolated coordinates.)
-void snapToPlanes(Vec4& p, uint16_t onPlanes);
+/// Inline: a call made the clipper write the point's coordinates one by one to memory and read them
+/// back at once as pairs, which waits for the writes (store forwarding fails).
+inline void snapToPlanes(Vec4& p, uint16_t onPlanes) {
+  if (onPlanes & 1u << kLeft) p.x = 0;
+  if (onPlanes & 1u << kRight) p.x = p.w;
+  if (onPlanes & 1u << kBottom) p.y = 0;
+  if (onPlanes & 1u << kTop) p.y = p.w;
+  if (onPlanes & 1u << kBack) p.z = 0;
+  if (onPlanes & 1u << kFront) p.z = p.w;
+}
 
 }  // namespace vplab

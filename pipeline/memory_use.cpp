@@ -29,15 +29,19 @@ MemoryUse memoryUse(const PipelineRun& run) {
                      {"run.fate", heapBytes(o.fate)},
                      {"run.clipped (faces, starts, refs)",
                       heapBytes(o.clippedFaces) + heapBytes(o.clippedStart) + heapBytes(o.clippedRefs)},
-                     {"run.created (NPC, planes, DC)",
-                      heapBytes(o.createdNpcH) + heapBytes(o.createdOnPlanes) + heapBytes(o.createdDc)},
+                     {"run.created (NPC, planes)", heapBytes(o.createdNpcH) + heapBytes(o.createdOnPlanes)},
                      {"run.edges", heapBytes(o.edges)},
                      {"run.edge fates, clipped edges",
                       heapBytes(o.edgeFate) + heapBytes(o.clippedEdges) + heapBytes(o.clippedEdgeRanges)},
                      {"run.clip value cache", heapBytes(o.valueSlots) + heapBytes(o.values)},
                      {"run.face clusters", heapBytes(o.faceClusters)},
                      {"run.userForms", heapBytes(o.userForms)}});
-  accumulate(use, {{"run.objects", heapBytes(run.objects)}});
+  size_t clipWork = heapBytes(run.clipWork.scratch.a) + heapBytes(run.clipWork.scratch.b) + heapBytes(run.clipWork.chunks);
+  for (const detail::ChunkWork& w : run.clipWork.chunks)
+    clipWork += heapBytes(w.crossing) + heapBytes(w.scratch.a) + heapBytes(w.scratch.b) + heapBytes(w.clippedFaces) +
+                heapBytes(w.clippedStart) + heapBytes(w.clippedRefs) + heapBytes(w.createdNpcH) +
+                heapBytes(w.createdOnPlanes) + heapBytes(w.ranges);
+  accumulate(use, {{"run.objects", heapBytes(run.objects)}, {"run.stage 4 working lists", clipWork}});
   return use;
 }
 

@@ -1,6 +1,6 @@
-// Index: 1 names and accessors (stage 5 of a mesh vertex)  2 the vertex pass (stages 1–3,
+// Index: 1 names and accessors (stage 5, where read)  2 the vertex pass (stages 1–3,
 //        classification)  3 the face pass (stage 4: trivial accept and reject, per-face clipping),
-//        edges, bounding box  4 stage 5 of the created vertices  5 the run, in steps (PipelineJob)
+//        edges, bounding box  4 the run, in steps (PipelineJob)
 //
 // Every core (PipelineOptions::parallel, pipeline/parallel.h): the vertex pass and the trivial
 // decisions of faces and edges run over chunks of their range on every core, each chunk writing only
@@ -87,18 +87,23 @@ Vec4 userPoint(ClipStrategy s, const Vec4& npcH, const Vec3& wc) {
 }  // namespace
 
 ClipValues ObjectRun::clipValuesOf(uint32_t v) const {
+  ClipValues out;
+  clipValuesInto(v, out);
+  return out;
+}
+
+// Written where they are kept: the clipper builds its vertices in place (clipFace).
+void ObjectRun::clipValuesInto(uint32_t v, ClipValues& out) const {
   Boundary cube;
   switch (strategy) {
     case ClipStrategy::npc: cube = boundaryCoordinates(npcH[v]); break;
     case ClipStrategy::wc: cube = wcBoundary(planesWc, wc(v)); break;
     case ClipStrategy::divideFirst: cube = boundaryCoordinates(dividedFirst(npcH[v])); break;
   }
-  std::array<double, kMaxUserPlanes> user{};
-  if (!userForms.empty()) {
-    const Vec4 p = userPoint(strategy, npcH[v], strategy == ClipStrategy::wc ? wc(v) : Vec3(0));
-    for (size_t k = 0; k < userForms.size(); ++k) user[k] = glm::dot(userForms[k], p);
-  }
-  return clipValues(cube, {user.data(), userForms.size()});
+  std::copy(cube.begin(), cube.end(), out.begin());
+  const Vec4 p = userForms.empty() ? Vec4(0) : userPoint(strategy, npcH[v], strategy == ClipStrategy::wc ? wc(v) : Vec3(0));
+  for (size_t k = 0; k < size_t(kMaxUserPlanes); ++k)
+    out[kPlaneCount + k] = k < userForms.size() ? glm::dot(userForms[k], p) : 1.0;  // no plane: inside
 }
 
 const ClipValues& ObjectRun::sharedClipValues(uint32_t v) {
@@ -238,8 +243,10 @@ void forChunks(size_t begin, size_t end, bool parallel, Body body, size_t grain 
 // The same values bit for bit either way (ObjectRun::clipValuesOf).
 struct NpcSource {
   ObjectRun& o;
-  ClipValues values(uint32_t v) const { return o.clipValuesOf(v); }
-  ClipVertex vertex(uint32_t v) const { return {o.npcH[v], values(v), v}; }
+  void vertexInto(uint32_t v, ClipVertex& c) const {
+    c.p = o.npcH[v];
+    o.clipValuesInto(v, c.bc);
+  }
   Vec4 npcH(const ClipVertex& c) const {
     Vec4 p = c.p;
     snapToPlanes(p, c.onPlanes);
@@ -251,8 +258,11 @@ struct WcSource {
   ObjectRun& o;
   bool shared;
   const Mat4& npcFromWc;
-  ClipValues values(uint32_t v) const { return shared ? o.sharedClipValues(v) : o.clipValuesOf(v); }
-  ClipVertex vertex(uint32_t v) const { return {Vec4(o.wc(v), 1.0), values(v), v}; }
+  void vertexInto(uint32_t v, ClipVertex& c) const {
+    c.p = Vec4(o.wc(v), 1.0);
+    if (shared) c.bc = o.sharedClipValues(v);
+    else o.clipValuesInto(v, c.bc);
+  }
   Vec4 npcH(const ClipVertex& c) const {
     Vec4 p = npcFromWc * c.p;  // the plane equations were exact in WC; snap away the rounding
     snapToPlanes(p, c.onPlanes);
@@ -262,8 +272,10 @@ struct WcSource {
 
 struct DivideFirstSource {
   ObjectRun& o;
-  ClipValues values(uint32_t v) const { return o.clipValuesOf(v); }
-  ClipVertex vertex(uint32_t v) const { return {dividedFirst(o.npcH[v]), values(v), v}; }
+  void vertexInto(uint32_t v, ClipVertex& c) const {
+    c.p = dividedFirst(o.npcH[v]);
+    o.clipValuesInto(v, c.bc);
+  }
   Vec4 npcH(const ClipVertex& c) const {
     Vec4 p = c.p;
     snapToPlanes(p, c.onPlanes);
@@ -271,34 +283,14 @@ struct DivideFirstSource {
   }
 };
 
-}  // namespace
-
-// What a chunk of faces or edges leaves for the run when clipped on every core: the ones its
-// outcodes could not decide, and what clipping made of them, in ascending order, as the run keeps it
-// (the faces' ends in clippedStart, without the run's leading 0; created vertices numbered from the
-// mesh's vertex count within the chunk). joinChunk appends it to the run, renumbered.
-struct detail::ChunkWork {
-  std::vector<ClipCandidate> crossing;
-  ClipScratch scratch;
-  std::vector<uint32_t> clippedFaces, clippedStart, clippedRefs;
-  std::vector<Vec4> createdNpcH;
-  std::vector<uint16_t> createdOnPlanes;
-  std::vector<EdgeRange> ranges;  // edges: crossing[i]'s
-
-  void clear() {
-    crossing.clear();
-    clippedFaces.clear();
-    clippedStart.clear();
-    clippedRefs.clear();
-    createdNpcH.clear();
-    createdOnPlanes.clear();
-    ranges.clear();
-  }
-};
-
-namespace {
-
 using detail::ChunkWork;
+
+// Face f's corners. A triangle mesh's are found without faceStart: a 4 MiB array a million faces
+// that the face pass otherwise never reads, so each clipped face waited for it from memory.
+std::span<const uint32_t> corners(const ObjectRun& o, uint32_t f) {
+  if (o.uniformFaceSize == 3) return {o.mesh->indices.data() + 3 * size_t(f), 3};
+  return o.mesh->face(f);
+}
 
 // A face the outcodes cannot decide: Sutherland–Hodgman. Rare (the faces crossing a plane), so it
 // stays out of the face loop. Appended to `out`: the run itself (one thread) or a chunk's ChunkWork.
@@ -306,8 +298,16 @@ template <class Source, class Out>
 [[gnu::noinline]] Fate clipFace(const ObjectRun& o, const Source& source, ClipScratch& scratch, uint32_t f,
                                 Outcode planes, Out& out) {
   const uint32_t nv = uint32_t(o.vertexCount());
-  scratch.a.clear();
-  for (uint32_t v : o.mesh->face(f)) scratch.a.push_back(source.vertex(v));
+  // Built in place (ObjectRun::clipValuesInto); sized without clearing: a vector's new elements are
+  // zeroed first (a `rep stos` that cost a third of this function), and faces are mostly of one size.
+  const std::span<const uint32_t> face = corners(o, f);
+  scratch.a.resize(face.size());
+  for (size_t i = 0; i < face.size(); ++i) {
+    ClipVertex& c = scratch.a[i];
+    source.vertexInto(face[i], c);
+    c.source = face[i];
+    c.onPlanes = 0;
+  }
   const auto clipped = clipPolygon(planes, scratch);
   if (clipped.empty()) return Fate::clippedAway;
   for (const ClipVertex& c : clipped) {
@@ -322,6 +322,21 @@ template <class Source, class Out>
   out.clippedFaces.push_back(f);
   out.clippedStart.push_back(uint32_t(out.clippedRefs.size()));
   return Fate::clipped;
+}
+
+// The crossing faces clipped in order into `out`. They lie scattered over the mesh, and their
+// vertices' npcH (32 B each, written by the vertex pass megabytes earlier) are far from the core:
+// a face's are fetched while the faces a few places before it are clipped.
+template <class Source, class Out>
+void clipCrossing(ObjectRun& o, const Source& source, ClipScratch& scratch, std::span<const ClipCandidate> crossing,
+                  Out& out) {
+  constexpr size_t kAhead = 4;
+  for (size_t i = 0; i < crossing.size(); ++i) {
+    if (i + kAhead < crossing.size())
+      for (uint32_t v : corners(o, crossing[i + kAhead].index)) __builtin_prefetch(o.npcH.data() + v);
+    const ClipCandidate& c = crossing[i];
+    o.fate[c.index] = clipFace(o, source, scratch, c.index, c.planes, out);
+  }
 }
 
 // A chunk's clipped faces appended to the run: its created vertices renumbered after the run's.
@@ -446,15 +461,14 @@ void clipFaces(ObjectRun& o, const Source& source, ClipScratch& scratch, std::ve
     const TrivialCounts n = decideFaces(o, uint32_t(b), uint32_t(e), w.crossing);
     accepted += n.accepted;
     rejected += n.rejected;
-    if (everyCore)
-      for (const ClipCandidate& c : w.crossing) o.fate[c.index] = clipFace(o, source, w.scratch, c.index, c.planes, w);
+    // One core runs the chunks in order, so it clips into the run while the chunk's indices are near.
+    if (everyCore) clipCrossing(o, source, w.scratch, w.crossing, w);
+    else clipCrossing(o, source, scratch, w.crossing, o);
   });
   uint64_t clipped = 0;
   for (size_t k = 0; k < chunks; ++k) {
     clipped += work[k].crossing.size();
     if (everyCore) joinChunk(o, work[k]);
-    else
-      for (const ClipCandidate& c : work[k].crossing) o.fate[c.index] = clipFace(o, source, scratch, c.index, c.planes, o);
   }
   stats.polygonsTriviallyAccepted += accepted;
   stats.polygonsTriviallyRejected += rejected;
@@ -569,17 +583,7 @@ void decideByBox(ObjectRun& o, PipelineStats& stats) {
   }
 }
 
-// ---------------------------------------------------------------- 4 stage 5 of the created vertices
-
-// Divide by w only now, after clipping: every vertex created on a clip plane has w > 0.
-void mapCreatedToDevice(ObjectRun& o, const Mat4& dcFromNpc, PipelineStats& stats) {
-  o.createdDc.resize(o.createdNpcH.size());
-  for (size_t i = 0; i < o.createdNpcH.size(); ++i)
-    o.createdDc[i] = Vec3(dcFromNpc * Vec4(divideByW(o.createdNpcH[i]), 1.0));
-  stats.verticesOutput += o.createdNpcH.size();
-}
-
-// ---------------------------------------------------------------- 5 the run, in steps
+// ---------------------------------------------------------------- 4 the run, in steps
 
 // An object's start: its matrices, its arrays sized, its per-run state cleared, the box test.
 void startObject(ObjectRun& o, const PipelineRun& run, PipelineStats& stats) {
@@ -759,8 +763,8 @@ PipelineJob::PipelineJob(const Scene& scene, const PipelineOptions& options, Pip
     if (o.faceClusters.size() < clusterCount(*so.mesh)) total_ += clusterCount(*so.mesh) * kClusterUnits;
   }
   // The clipper's buffers grow to the largest face clipped (no pass over every face to size them).
-  scratch_.a.reserve(16);
-  scratch_.b.reserve(16);
+  run.clipWork.scratch.a.reserve(16);
+  run.clipWork.scratch.b.reserve(16);
 }
 
 bool PipelineJob::step(uint64_t budget) {
@@ -823,7 +827,7 @@ bool PipelineJob::step(uint64_t budget) {
       }
       case Phase::faces: {
         const size_t end = take(o.faceCount());
-        clipFaces(o, run, scratch_, work_, run.stats, uint32_t(next_), uint32_t(end));
+        clipFaces(o, run, run.clipWork.scratch, run.clipWork.chunks, run.stats, uint32_t(next_), uint32_t(end));
         next_ = end;
         if (next_ == o.faceCount()) {
           finishFaces(o, run.stats);
@@ -833,7 +837,7 @@ bool PipelineJob::step(uint64_t budget) {
       }
       case Phase::edges: {
         const size_t end = take(o.edges.size());
-        clipEdges(o, work_, run.stats, next_, end, run.options.parallel);
+        clipEdges(o, run.clipWork.chunks, run.stats, next_, end, run.options.parallel);
         next_ = end;
         if (next_ == o.edges.size()) nextPhase(Phase::finish);
         break;
@@ -843,7 +847,7 @@ bool PipelineJob::step(uint64_t budget) {
           decideByBox(o, run.stats);
           done_ += o.faceCount();
         }
-        mapCreatedToDevice(o, run.dcFromNpc, run.stats);
+        run.stats.verticesOutput += o.createdNpcH.size();  // mapped to DC where read (ObjectRun::createdDc)
         ++object_;
         nextPhase(Phase::start);
         break;

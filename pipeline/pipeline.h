@@ -92,6 +92,8 @@ struct ObjectRun {
   /// frustum's plane equations at wc, equal in exact arithmetic; divide first: the BCs of npcH / w;
   /// then the user planes'), computed as the vertex pass computed them for the outcode.
   ClipValues clipValuesOf(uint32_t v) const;
+  /// The same, written into `out` (the clipper's vertices are built in place).
+  void clipValuesInto(uint32_t v, ClipValues& out) const;
   /// The same, computed once per vertex when a polygon or edge crossing a plane first needs them
   /// and kept for every other one using the vertex (Hill 7.4), in a cache reused from run to run
   /// (the WC strategy's clipping on one thread; the others work the values out anew, as cheap).
@@ -106,12 +108,15 @@ struct ObjectRun {
   std::vector<Vec4> createdNpcH;          // homogeneous NPC of the vertices created by clipping
   std::vector<uint16_t> createdOnPlanes;  // bit i: created on plane i (new edges join such vertices)
 
-  // Stage 5: DC of every vertex the clipped polygons use. A mesh vertex's (outcode 0: inside) is worked
-  // out where it is read, from npcH, the same arithmetic every time (bit for bit); a vertex made by
-  // clipping has its DC stored (few: only faces crossing a plane make them).
+  // Stage 5: DC of every vertex the clipped polygons use, worked out where it is read from its
+  // homogeneous NPC, the same arithmetic every time (bit for bit): a mesh vertex's (outcode 0: inside)
+  // and a created one's. (Stored, a mesh vertex's DC was 24 B the GPU path never reads, and the
+  // created vertices' a serial step at the end of every run.)
   Mat4 dcFromNpc{1.0};  // the run's
   Vec3 dc(uint32_t v) const;
-  std::vector<Vec3> createdDc;
+  /// A created vertex's (i counts from 0): divided as divideByW divides, so that one on the plane
+  /// x = w lands exactly on the window's edge (x / w is 1, x · (1 / w) need not be).
+  Vec3 createdDc(size_t i) const { return Vec3(dcFromNpc * Vec4(divideByW(createdNpcH[i]), 1.0)); }
 
   // Edges (PipelineOptions::clipEdges), kept as the faces are: each unique edge's fate, and only for
   // the edges cut with something left (fate clipped), ascending, their visible parameter range
@@ -145,11 +150,51 @@ struct ObjectRun {
   /// A clipped polygon's vertex: homogeneous NPC, NPC after the division, DC.
   Vec4 clippedNpcH(uint32_t ref) const { return isCreated(ref) ? createdNpcH[ref - vertexCount()] : npcH[ref]; }
   Vec3 clippedNpc(uint32_t ref) const;
-  Vec3 clippedDc(uint32_t ref) const { return isCreated(ref) ? createdDc[ref - vertexCount()] : dc(ref); }
+  Vec3 clippedDc(uint32_t ref) const { return isCreated(ref) ? createdDc(ref - vertexCount()) : dc(ref); }
   /// Whether the edge of clipped face f from corner i to corner i + 1 was made by clipping
   /// (it lies in a clip plane, so it is not part of the original polygon's boundary).
   bool isNewEdge(size_t f, size_t i) const;
 };
+
+/// A face or an edge its outcodes could not decide (stage 4): clipped after the trivial decisions, in
+/// order, by one thread (it creates vertices and fills the clip values' cache).
+struct ClipCandidate {
+  uint32_t index;  // the face's or edge's
+  Outcode planes;  // the planes its vertices' outcodes name (OR)
+};
+
+namespace detail {
+/// What a chunk of faces or edges leaves for the run when clipped on every core: the ones its
+/// outcodes could not decide, and what clipping made of them, in ascending order, as the run keeps it
+/// (the faces' ends in clippedStart, without the run's leading 0; created vertices numbered from the
+/// mesh's vertex count within the chunk). pipeline.cpp's joinChunk appends it to the run, renumbered.
+struct ChunkWork {
+  std::vector<ClipCandidate> crossing;
+  ClipScratch scratch;
+  std::vector<uint32_t> clippedFaces, clippedStart, clippedRefs;
+  std::vector<Vec4> createdNpcH;
+  std::vector<uint16_t> createdOnPlanes;
+  std::vector<EdgeRange> ranges;  // edges: crossing[i]'s
+
+  void clear() {
+    crossing.clear();
+    clippedFaces.clear();
+    clippedStart.clear();
+    clippedRefs.clear();
+    createdNpcH.clear();
+    createdOnPlanes.clear();
+    ranges.clear();
+  }
+};
+
+/// Stage 4's working lists, kept by the run from one run to the next so that they keep their memory
+/// (made anew by every run they were 4 % of the large scene's run on one core: allocations and their
+/// growth). Not a result: what a run leaves in them means nothing.
+struct ClipWork {
+  ClipScratch scratch;
+  std::vector<ChunkWork> chunks;  // one a chunk of the faces or edges
+};
+}  // namespace detail
 
 struct PipelineRun {
   Camera camera;
@@ -177,6 +222,7 @@ struct PipelineRun {
   std::vector<ObjectRun> objects;  // one per visible scene object, in scene order
   std::vector<size_t> sceneIndex;  // objects[i] is scene.objects[sceneIndex[i]]
   PipelineStats stats;
+  detail::ClipWork clipWork;
 };
 
 /// The five stages run in steps, so that a page with no threads can run a large scene across frames
@@ -185,17 +231,6 @@ struct PipelineRun {
 /// `run` must outlive the job (the scene need not: the run holds its meshes); `run` is complete only when step returns true (until then
 /// it is half old, half new: not to be shown). A job dropped before it is done leaves `run` fit to be
 /// run into again.
-namespace detail {
-struct ChunkWork;  // a chunk's share of stage 4 (pipeline.cpp)
-}  // namespace detail
-
-/// A face or an edge its outcodes could not decide (stage 4): clipped after the trivial decisions, in
-/// order, by one thread (it creates vertices and fills the clip values' cache).
-struct ClipCandidate {
-  uint32_t index;  // the face's or edge's
-  Outcode planes;  // the planes its vertices' outcodes name (OR)
-};
-
 class PipelineJob {
  public:
   /// Computes every matrix: throws vplab::Error when the camera or a transform is invalid, before
@@ -214,8 +249,6 @@ class PipelineJob {
  private:
   enum class Phase : uint8_t;
   PipelineRun& run_;
-  ClipScratch scratch_;
-  std::vector<detail::ChunkWork> work_;  // one a chunk of the faces or edges
   std::optional<UniqueEdgesJob> edgeJob_;  // Phase::listEdges
   size_t object_ = 0;
   Phase phase_{};

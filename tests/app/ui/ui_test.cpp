@@ -86,7 +86,6 @@ void expectRunFinite(const PipelineRun& run) {
     for (uint32_t v = 0; v < o.vertexCount(); ++v) bad += !finite(o.wc(v)) + !finite(o.vrc(v)), values += 2;
     for (const Vec4& p : o.npcH) bad += !finite(p), ++values;
     for (const Vec4& p : o.createdNpcH) bad += !finite(p), ++values;
-    for (const Vec3& p : o.createdDc) bad += !finite(p), ++values;
     for (size_t f = 0; f < o.faceCount(); ++f)
       for (uint32_t ref : o.clippedFace(f)) bad += !finite(o.clippedDc(ref)), ++values;
   }
