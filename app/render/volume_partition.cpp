@@ -87,24 +87,28 @@ namespace {
 
 // Face f's corners are the chunk's corners faceStart[f] − firstCorner …, fanned from the first,
 // each its GPU vertex through the chunk's corner map (the chunk's own triangles, in its order),
-// written as wide as the chunk's own indices.
-template <class Index>
+// written as wide as the chunk's own indices. kTriangles: every face is a triangle, whose corners
+// start at 3 f without faceStart (a 4 MiB array a million faces, read twice: about a quarter of the
+// lists' time).
+template <bool kTriangles, class Index>
 void listFaces(const uint8_t* sides, const Mesh& mesh, const GpuMeshChunk& chunk, const Index* cornerVertex,
                std::array<std::vector<Index>, VolumePartitions::kLists>& lists, std::array<size_t, VolumePartitions::kLists>& count) {
+  auto firstCorner = [&](size_t f) { return kTriangles ? uint32_t(3 * f) : mesh.faceStart[f]; };
+  auto cornerCount = [&](size_t f) { return kTriangles ? 3u : mesh.faceStart[f + 1] - mesh.faceStart[f]; };
   size_t capacity = 0;
-  for (size_t f = chunk.firstFace; f < chunk.endFace; ++f) capacity += 3 * (std::max<uint32_t>(mesh.face(f).size(), 2) - 2);
+  for (size_t f = chunk.firstFace; f < chunk.endFace; ++f) capacity += 3 * (std::max<uint32_t>(cornerCount(f), 2) - 2);
   std::array<Index*, VolumePartitions::kLists> end{};
   for (size_t list = 0; list < VolumePartitions::kLists; ++list) {
     lists[list].resize(capacity);  // only what the loop writes is read
     end[list] = lists[list].data();
   }
   for (size_t f = chunk.firstFace; f < chunk.endFace; ++f) {
-    const auto face = mesh.face(f);
+    const uint32_t first = firstCorner(f), n = cornerCount(f);
+    const uint32_t* corner = mesh.indices.data() + first;
     uint8_t all = 0xff;
-    for (uint32_t v : face) all &= sides[v];
+    for (uint32_t c = 0; c < n; ++c) all &= sides[corner[c]];
     const bool outsideOnePlane = all & 0x3f, insideAll = all & kInside;
-    const uint32_t first = mesh.faceStart[f] - chunk.firstCorner, n = uint32_t(face.size());
-    const Index* vertex = cornerVertex + first;
+    const Index* vertex = cornerVertex + (first - chunk.firstCorner);
     auto add = [&](size_t list) {
       for (uint32_t c = 1; c + 1 < n; ++c) {
         end[list][0] = vertex[0];
@@ -120,11 +124,20 @@ void listFaces(const uint8_t* sides, const Mesh& mesh, const GpuMeshChunk& chunk
   for (size_t list = 0; list < VolumePartitions::kLists; ++list) count[list] = size_t(end[list] - lists[list].data());
 }
 
+template <class Index>
+void listFaces(bool triangles, const uint8_t* sides, const Mesh& mesh, const GpuMeshChunk& chunk, const Index* cornerVertex,
+               std::array<std::vector<Index>, VolumePartitions::kLists>& lists, std::array<size_t, VolumePartitions::kLists>& count) {
+  if (triangles) listFaces<true>(sides, mesh, chunk, cornerVertex, lists, count);
+  else listFaces<false>(sides, mesh, chunk, cornerVertex, lists, count);
+}
+
 }  // namespace
 
 void VolumePartitions::listChunk(const Part& part, const Mesh& mesh, const GpuMeshChunk& chunk, ChunkLists& out) {
-  if (chunk.indexType == GL_UNSIGNED_SHORT) listFaces(part.sides.data(), mesh, chunk, chunk.cornerVertex16.data(), out.narrow, out.count);
-  else listFaces(part.sides.data(), mesh, chunk, chunk.cornerVertex32.data(), out.wide, out.count);
+  const bool triangles = part.run->uniformFaceSize == 3;
+  if (chunk.indexType == GL_UNSIGNED_SHORT)
+    listFaces(triangles, part.sides.data(), mesh, chunk, chunk.cornerVertex16.data(), out.narrow, out.count);
+  else listFaces(triangles, part.sides.data(), mesh, chunk, chunk.cornerVertex32.data(), out.wide, out.count);
 }
 
 void VolumePartitions::uploadChunk(const GpuMeshChunk& chunk, const ChunkLists& lists, Chunk& out) {
