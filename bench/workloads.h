@@ -139,6 +139,9 @@ struct WorkloadTiming {
 };
 
 struct BenchReport {
+  /// The workloads of a millisecond or two (full, floor, every core) are timed this many times a
+  /// round, the textbook once (runPipelineBenchmarks).
+  static constexpr int kShortSamples = 5;
   static constexpr double kFullOverFloorTarget = 1.5;     // at most (issue 11)
   static constexpr double kTextbookOverFullTarget = 10;   // at least
   /// One core's time over every core's, at least (issue 42): 1.7 on 2 cores, 0.8 × the cores beyond;

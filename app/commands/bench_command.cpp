@@ -367,8 +367,9 @@ void printHuman(const Json& j) {
     const Json& med = p["median_ms"];
     const Json& ratio = p["ratios"];
     const Json& target = p["targets"];
-    std::cout << "CPU pipeline on " << p["scene"].value("triangles", 0) << " triangles (one core, median of "
-              << p.value("repetitions", 0) << "):\n"
+    const int rounds = p.value("repetitions", 0), samples = p["samples_each_round"].value("full_pipeline", 1);
+    std::cout << "CPU pipeline on " << p["scene"].value("triangles", 0) << " triangles (one core; medians of "
+              << rounds * samples << " samples, the textbook's of " << rounds << "):\n"
               << "  full " << ms(med.value("full_pipeline", 0.0)) << ", floor " << ms(med.value("floor_pass", 0.0))
               << ", textbook " << ms(med.value("textbook", 0.0)) << "\n"
               << "  full / floor = " << fixed(ratio.value("full_over_floor", 0.0)) << " by wall time, "
