@@ -156,16 +156,16 @@ struct ObjectRun {
   bool isNewEdge(size_t f, size_t i) const;
 };
 
-/// A face or an edge its outcodes could not decide (stage 4): clipped after the trivial decisions, in
-/// order, by one thread (it creates vertices and fills the clip values' cache).
+/// A face or an edge its outcodes could not decide (stage 4): clipped after its chunk's trivial
+/// decisions, in order, by the thread that decided them.
 struct ClipCandidate {
   uint32_t index;  // the face's or edge's
   Outcode planes;  // the planes its vertices' outcodes name (OR)
 };
 
 namespace detail {
-/// What a chunk of faces or edges leaves for the run when clipped on every core: the ones its
-/// outcodes could not decide, and what clipping made of them, in ascending order, as the run keeps it
+/// What a chunk of faces or edges leaves for the run: the ones its outcodes could not decide, and
+/// (clipped on every core) what clipping made of them, in ascending order, as the run keeps it
 /// (the faces' ends in clippedStart, without the run's leading 0; created vertices numbered from the
 /// mesh's vertex count within the chunk). pipeline.cpp's joinChunk appends it to the run, renumbered.
 struct ChunkWork {
